@@ -1,0 +1,107 @@
+// damimpact command line: a thin shell over the engine. Exit 0 ok, 2 bad input or failed run.
+#include <CLI/CLI.hpp>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+
+#include "engine/common/error.hpp"
+#include "engine/scenario/scenario.hpp"
+#include "engine/sim/run.hpp"
+#include "engine/verify/validate.hpp"
+
+#ifndef DMI_VERSION
+#define DMI_VERSION "0.0.0"
+#endif
+
+namespace {
+
+dmi::ProgressMode progress_mode(bool quiet, const std::string& p) {
+  if (quiet) return dmi::ProgressMode::quiet;
+  if (p == "lines") return dmi::ProgressMode::lines;
+  if (p == "terminal") return dmi::ProgressMode::terminal;
+  return dmi::ProgressMode::automatic;
+}
+
+int simulate(const std::string& file, const std::string& out, int threads, bool quiet, const std::string& progress, bool dry_run) {
+  const dmi::Scenario s = dmi::load_scenario(file);
+  if (dry_run) {
+    std::printf("%s: valid scenario '%s' (%dD, %zu bodies, %zu materials, %zu walls)\n", file.c_str(), s.name.c_str(),
+                s.analysis.dimension, s.bodies.size(), s.materials.size(), s.walls.size());
+    return 0;
+  }
+  dmi::RunOptions o;
+  o.out_dir = out;
+  o.threads = threads;
+  o.progress = progress_mode(quiet, progress);
+  o.software_version = DMI_VERSION;
+  const dmi::RunOutput r = dmi::run_scenario(s, o);
+  if (!quiet) std::printf("wrote %s (%.0f steps, %.2f s wall)\n", r.results_path.c_str(), r.results.info.numbers.at("steps"),
+                          r.results.info.numbers.at("wall_seconds"));
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // OpenMP threads that spin while waiting stall badly when the cores are shared (a second run, a
+  // parallel test job): ~100x slower on 2 cores. libgomp reads OMP_WAIT_POLICY when it loads, so set
+  // a passive default and re-execute once; a user's own setting is respected.
+  if (!std::getenv("OMP_WAIT_POLICY")) {
+    setenv("OMP_WAIT_POLICY", "passive", 1);
+    execv("/proc/self/exe", argv);  // returns only on failure: then go on as we are
+  }
+  CLI::App app{"damimpact " DMI_VERSION " - check dams hit by boulders and debris flows: MPM simulation, design checks, reports"};
+  app.set_version_flag("--version", DMI_VERSION);
+  app.require_subcommand(1);
+
+  std::string file, out = "out", progress = "auto";
+  int threads = 0;
+  bool quiet = false, dry_run = false, json = false, list = false, markdown = false;
+  auto add_run_options = [&](CLI::App* c) {
+    c->add_option("scenario", file, "scenario JSON file (docs/scenario.md)")->required()->check(CLI::ExistingFile);
+    c->add_option("-o,--out", out, "output folder (results.h5, fields/)")->capture_default_str();
+    c->add_option("-t,--threads", threads, "OpenMP threads (0 = all cores)")->capture_default_str();
+    c->add_flag("-q,--quiet", quiet, "no progress output");
+    c->add_option("--progress", progress, "progress display: auto | terminal | lines")->check(CLI::IsMember({"auto", "terminal", "lines"}));
+  };
+  CLI::App* run = app.add_subcommand("run", "simulate a scenario and write results (the whole chain)");
+  add_run_options(run);
+  CLI::App* sim = app.add_subcommand("simulate", "simulate a scenario: OUT/results.h5 and ParaView files OUT/fields/");
+  add_run_options(sim);
+  sim->add_flag("--dry-run", dry_run, "only read and validate the scenario");
+  std::vector<std::string> cases;
+  CLI::App* val = app.add_subcommand("validate", "run the verification cases against closed forms; exit 0 when all pass");
+  val->add_option("cases", cases, "case names (default: all; see --list)");
+  val->add_flag("--json", json, "print a JSON array of {case, metric, value, reference, error, tolerance, passed, wall_seconds}");
+  val->add_flag("--list", list, "list the cases and exit");
+  val->add_option("-t,--threads", threads, "OpenMP threads (0 = all cores)");
+  CLI::App* sch = app.add_subcommand("schema", "print the scenario key reference (Markdown, as in docs/scenario.md)");
+  sch->add_flag("--markdown", markdown, "Markdown tables (default)");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);
+    return rc == 0 ? 0 : 2;
+  }
+  try {
+    if (*run || *sim) return simulate(file, out, threads, quiet, progress, dry_run);
+    if (*val) return dmi::validate_main(cases, json, list, threads);
+    if (*sch) {
+      std::cout << dmi::scenario_reference_markdown();
+      return 0;
+    }
+  } catch (const dmi::InputError& e) {
+    std::fprintf(stderr, "damimpact: error: %s\n", e.what());
+    return 2;
+  } catch (const dmi::RunError& e) {
+    std::fprintf(stderr, "damimpact: run failed: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "damimpact: error: %s\n", e.what());
+    return 2;
+  }
+  return 0;
+}

@@ -1,0 +1,61 @@
+// In-memory form of what results.h5 holds (layout: docs/results.md). Writer and reader share it.
+// Solver-independent: plain arrays, so design/ and render/ never see solver objects.
+#pragma once
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace dmi {
+
+constexpr int kResultsFormatVersion = 1;
+
+// A time series sampled at the history times: rows = samples, cols = components.
+struct Series {
+  std::string path;                     // e.g. "energy/kinetic", "probes/tip/velocity", "walls/floor/force"
+  std::string unit;                     // e.g. "J", "m/s", "N"
+  std::vector<std::string> components;  // e.g. {"x","y"}; one entry for scalars
+  std::vector<double> data;             // row-major, size = samples * components.size()
+  std::size_t samples() const { return components.empty() ? 0 : data.size() / components.size(); }
+};
+
+// Particle field snapshot at one instant.
+struct Snapshot {
+  double time = 0.0;   // s
+  long step = 0;
+  int dim = 2;
+  std::size_t count = 0;
+  std::vector<double> position;      // count * dim (m)
+  std::vector<double> displacement;  // count * dim (m)
+  std::vector<double> velocity;      // count * dim (m/s)
+  std::vector<double> stress;        // count * 6, Voigt xx yy zz xy yz xz (Pa)
+  std::vector<double> von_mises;     // count (Pa)
+  std::vector<double> volume;        // count (m^3)
+  std::vector<std::int32_t> body;    // count, body index
+  std::vector<std::int32_t> material;  // count, material index
+};
+
+struct RunInfo {
+  std::string scenario_name;
+  std::string scenario_file;
+  std::string scenario_json;   // the scenario text as given
+  std::string software_version;
+  int dimension = 2;
+  std::vector<std::string> body_names, material_names;
+  std::map<std::string, double> numbers;       // e.g. "cell_size", "end_time", "wall_seconds", "steps"
+  std::map<std::string, std::string> strings;  // e.g. "shape_function", "transfer", "status"
+};
+
+struct Results {
+  RunInfo info;
+  bool complete = false;
+  std::vector<double> time;        // history sample times (s)
+  std::vector<Series> series;      // all histories
+  std::vector<Snapshot> snapshots; // may be left empty by a reader asked for histories only
+  const Series* find(const std::string& path) const {
+    for (const auto& s : series) if (s.path == path) return &s;
+    return nullptr;
+  }
+};
+
+}  // namespace dmi

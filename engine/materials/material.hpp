@@ -1,0 +1,52 @@
+// Material interface: one call per body (a contiguous particle range), never per particle
+// inside the transfer kernels. Laws read the velocity gradient L and deformation gradient F
+// (already advanced by the solver) and write stress, out-of-plane stress and current volume.
+#pragma once
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "engine/mpm/particles.hpp"
+#include "engine/scenario/config.hpp"
+
+namespace dmi {
+
+template <int D> class Material {
+ public:
+  virtual ~Material() = default;
+  virtual double density() const = 0;      // kg/m^3
+  virtual double wave_speed() const = 0;   // fastest elastic wave speed (m/s), for the CFL step
+  // Stress update over particles [begin, end) for a step of length dt (s).
+  virtual void update(Particles<D>& p, Index begin, Index end, double dt) const = 0;
+  // Stored (recoverable) strain energy of particles [begin, end) (J).
+  virtual double strain_energy(const Particles<D>& p, Index begin, Index end) const = 0;
+};
+
+// Lamé constants from E and nu (3D / plane strain).
+struct Elastic {
+  double E, nu, lambda, mu;
+  Elastic(double E_, double nu_) : E(E_), nu(nu_), lambda(E_ * nu_ / ((1 + nu_) * (1 - 2 * nu_))), mu(E_ / (2 * (1 + nu_))) {}
+  // P-wave speed: sqrt(E/(rho(1-nu^2))) in plane stress, sqrt((lambda+2mu)/rho) otherwise.
+  double wave_speed(double rho, Plane plane) const {
+    const double M = plane == Plane::stress ? E / (1 - nu * nu) : lambda + 2 * mu;
+    return std::sqrt(M / rho);
+  }
+};
+
+// Explicit registry of material laws: name -> factory. Filled by register_materials(); no static
+// initialiser tricks, so a static library cannot silently drop a law.
+template <int D> class MaterialRegistry {
+ public:
+  using Factory = std::function<std::unique_ptr<Material<D>>(const MaterialConfig&, Plane)>;
+  void add(const std::string& model, Factory f) { factories_[model] = std::move(f); }
+  std::unique_ptr<Material<D>> make(const MaterialConfig& c, Plane plane) const;
+  bool has(const std::string& model) const { return factories_.count(model) != 0; }
+
+ private:
+  std::map<std::string, Factory> factories_;
+};
+
+template <int D> void register_materials(MaterialRegistry<D>& r);
+
+}  // namespace dmi

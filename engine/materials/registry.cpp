@@ -1,0 +1,26 @@
+#include <stdexcept>
+
+#include "engine/materials/material.hpp"
+
+namespace dmi {
+
+template <int D> std::unique_ptr<Material<D>> make_linear_elastic(const MaterialConfig&, Plane);
+template <int D> std::unique_ptr<Material<D>> make_neo_hookean(const MaterialConfig&, Plane);
+
+template <int D> std::unique_ptr<Material<D>> MaterialRegistry<D>::make(const MaterialConfig& c, Plane plane) const {
+  auto it = factories_.find(c.model);
+  if (it == factories_.end()) throw std::invalid_argument("unknown material model '" + c.model + "'");
+  return it->second(c, plane);
+}
+
+template <int D> void register_materials(MaterialRegistry<D>& r) {
+  r.add("linear_elastic", make_linear_elastic<D>);
+  r.add("neo_hookean", make_neo_hookean<D>);
+}
+
+template class MaterialRegistry<2>;
+template class MaterialRegistry<3>;
+template void register_materials<2>(MaterialRegistry<2>&);
+template void register_materials<3>(MaterialRegistry<3>&);
+
+}  // namespace dmi

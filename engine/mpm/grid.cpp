@@ -1,0 +1,105 @@
+#include "engine/mpm/grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dmi {
+
+template <int D>
+Grid<D>::Grid(const Vec<D>& origin, const IVec<D>& cells, double h, int nfields)
+    : origin_(origin), cells_(cells), h_(h), inv_h_(1.0 / h), nfields_(nfields) {
+  nnodes_ = 1;
+  ntiles_ = 1;
+  for (int d = 0; d < D; ++d) {
+    nodes_[d] = cells[d] + 1;
+    tiles_[d] = (cells[d] + T - 1) / T;
+    nnodes_ *= nodes_[d];
+    ntiles_ *= tiles_[d];
+  }
+  const auto n = static_cast<std::size_t>(nnodes_ * nfields);
+  m.assign(n, 0.0);
+  p.assign(n, Vec<D>::Zero());
+  f.assign(n, Vec<D>::Zero());
+  v.assign(n, Vec<D>::Zero());
+  vL.assign(n, Vec<D>::Zero());
+  if (nfields > 1) grad_m.assign(n, Vec<D>::Zero());
+  flag_.assign(static_cast<std::size_t>(nnodes_), 0);
+  tile_start_.assign(static_cast<std::size_t>(ntiles_ + 1), 0);
+}
+
+template <int D> void Grid<D>::bin(const std::vector<Vec<D>>& x) {
+  const Index np = static_cast<Index>(x.size());
+  tile_of_.resize(x.size());
+  tile_particles_.resize(x.size());
+  std::fill(tile_start_.begin(), tile_start_.end(), 0);
+  for (Index i = 0; i < np; ++i) {
+    const Vec<D> xr = grid_coord(x[i]);
+    Index t = 0;
+    for (int d = D - 1; d >= 0; --d) {
+      const int c = std::clamp(static_cast<int>(std::floor(xr[d])), 0, cells_[d] - 1);
+      t = t * tiles_[d] + c / T;
+    }
+    tile_of_[i] = t;
+    ++tile_start_[t + 1];
+  }
+  for (Index t = 0; t < ntiles_; ++t) tile_start_[t + 1] += tile_start_[t];
+  std::vector<Index> fill(tile_start_.begin(), tile_start_.end() - 1);
+  for (Index i = 0; i < np; ++i) tile_particles_[fill[tile_of_[i]]++] = i;
+
+  for (auto& c : color_tiles_) c.clear();
+  active_.clear();
+  for (Index t = 0; t < ntiles_; ++t) {
+    if (tile_start_[t + 1] == tile_start_[t]) continue;
+    Index rest = t;
+    IVec<D> ti;
+    int color = 0;
+    for (int d = 0; d < D; ++d) {
+      ti[d] = static_cast<int>(rest % tiles_[d]);
+      rest /= tiles_[d];
+      color |= (ti[d] & 1) << d;
+    }
+    color_tiles_[color].push_back(t);
+    // Nodes a particle of this tile can touch: cells [tT, tT+T-1] -> nodes [tT-1, tT+T+1].
+    IVec<D> lo, hi;
+    for (int d = 0; d < D; ++d) {
+      lo[d] = std::max(0, ti[d] * T - 1);
+      hi[d] = std::min(nodes_[d] - 1, ti[d] * T + T + 1);
+    }
+    IVec<D> ijk = lo;
+    while (true) {
+      const Index id = node_id(ijk);
+      if (!flag_[id]) {
+        flag_[id] = 1;
+        active_.push_back(id);
+      }
+      int d = 0;
+      for (; d < D; ++d) {
+        if (++ijk[d] <= hi[d]) break;
+        ijk[d] = lo[d];
+      }
+      if (d == D) break;
+    }
+  }
+  std::sort(active_.begin(), active_.end());
+  const bool grad = nfields_ > 1;
+  const Index na = static_cast<Index>(active_.size());
+#pragma omp parallel for schedule(static)
+  for (Index a = 0; a < na; ++a) {
+    const Index id = active_[a];
+    flag_[id] = 0;
+    for (int fld = 0; fld < nfields_; ++fld) {
+      const Index k = fld * nnodes_ + id;
+      m[k] = 0;
+      p[k].setZero();
+      f[k].setZero();
+      v[k].setZero();
+      vL[k].setZero();
+      if (grad) grad_m[k].setZero();
+    }
+  }
+}
+
+template class Grid<2>;
+template class Grid<3>;
+
+}  // namespace dmi

@@ -1,0 +1,83 @@
+// Background grid: uniform cells of size h, dense node storage (allocated once, zeroed lazily)
+// and an active-node list rebuilt each step from the occupied tiles, so per-step cost follows
+// the occupied cells, not the box. Several velocity fields (one per contact body) share a node
+// layout: array index = field * nnodes + node.
+// Particles are binned into tiles of T^D cells; tiles are coloured by the parity of their tile
+// index (2^D colours). Same-colour tiles are >= T cells apart, wider than any stencil (T = 4 >
+// 2 + 1), so a colour's tiles scatter in parallel without locks, and the summation order per
+// node (colour, tile, particle index) does not depend on the thread count.
+#pragma once
+#include <array>
+#include <vector>
+
+#include "engine/common/types.hpp"
+
+namespace dmi {
+
+template <int D> class Grid {
+ public:
+  static constexpr int T = 4;  // tile width in cells
+
+  Grid(const Vec<D>& origin, const IVec<D>& cells, double h, int nfields);
+
+  Index node_id(const IVec<D>& ijk) const {
+    Index id = ijk[D - 1];
+    for (int d = D - 2; d >= 0; --d) id = id * nodes_[d] + ijk[d];
+    return id;
+  }
+  IVec<D> node_ijk(Index id) const {
+    IVec<D> ijk;
+    for (int d = 0; d < D; ++d) {
+      ijk[d] = static_cast<int>(id % nodes_[d]);
+      id /= nodes_[d];
+    }
+    return ijk;
+  }
+  Vec<D> node_pos(Index id) const { return origin_ + h_ * node_ijk(id).template cast<double>(); }
+  Vec<D> grid_coord(const Vec<D>& x) const { return (x - origin_) * inv_h_; }
+  // True when every shape function's stencil around x lies on the grid: 1/2 <= xr < cells - 1/2.
+  bool interior(const Vec<D>& x) const {
+    const Vec<D> xr = grid_coord(x);
+    for (int d = 0; d < D; ++d)
+      if (!(xr[d] >= 0.5 && xr[d] < cells_[d] - 0.5)) return false;
+    return true;
+  }
+
+  // Bins particle positions into tiles (stable counting sort), rebuilds the active-node list and
+  // zeroes every field at the active nodes.
+  void bin(const std::vector<Vec<D>>& x);
+
+  double h() const { return h_; }
+  double inv_h() const { return inv_h_; }
+  const Vec<D>& origin() const { return origin_; }
+  const IVec<D>& cells() const { return cells_; }
+  const IVec<D>& nodes() const { return nodes_; }
+  Index nnodes() const { return nnodes_; }
+  int nfields() const { return nfields_; }
+  const std::vector<Index>& active() const { return active_; }
+  const std::vector<Index>& color_tiles(int c) const { return color_tiles_[c]; }
+  // Particles of tile t: tile_particles()[tile_start()[t] .. tile_start()[t+1]).
+  const std::vector<Index>& tile_start() const { return tile_start_; }
+  const std::vector<Index>& tile_particles() const { return tile_particles_; }
+
+  // Nodal fields, size nfields * nnodes.
+  std::vector<double> m;        // mass (kg)
+  std::vector<Vec<D>> p;        // momentum (kg m/s)
+  std::vector<Vec<D>> f;        // total force (N)
+  std::vector<Vec<D>> v;        // velocity at the start of the step v^k (m/s)
+  std::vector<Vec<D>> vL;       // updated velocity v^L (m/s)
+  std::vector<Vec<D>> grad_m;   // sum_p m_p grad N_i(x_p): outward from a body, for contact normals (kg/m)
+
+ private:
+  Vec<D> origin_;
+  IVec<D> cells_, nodes_, tiles_;
+  double h_, inv_h_;
+  Index nnodes_, ntiles_;
+  int nfields_;
+  std::vector<Index> active_;
+  std::vector<unsigned char> flag_;
+  std::vector<Index> tile_of_, tile_start_, tile_particles_;
+  std::array<std::vector<Index>, (1 << D)> color_tiles_;
+};
+
+}  // namespace dmi

@@ -1,0 +1,66 @@
+// Particle storage, struct-of-arrays: one contiguous array per field, indexed by particle.
+// Bodies own contiguous index ranges [begin, end), so material laws run once per range.
+// In 2D, mass and volume include the out-of-plane thickness: forces are in N, energies in J.
+#pragma once
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "engine/common/types.hpp"
+
+namespace dmi {
+
+template <int D> struct Particles {
+  std::vector<Vec<D>> x;          // position (m)
+  std::vector<Vec<D>> x0;         // initial position (m): displacement = x - x0
+  std::vector<Vec<D>> v;          // velocity (m/s)
+  std::vector<Vec<D>> half_size;  // GIMP half-length of the particle domain (m)
+  std::vector<Mat<D>> F;          // in-plane deformation gradient
+  std::vector<Mat<D>> L;          // velocity gradient of the last step (1/s)
+  std::vector<Mat<D>> C;          // APIC affine velocity matrix (1/s)
+  std::vector<Mat<D>> stress;     // Cauchy stress, in-plane part (Pa), tension positive
+  std::vector<double> stress_zz;  // out-of-plane normal stress in 2D (Pa); unused in 3D
+  std::vector<double> mass;       // kg
+  std::vector<double> vol0, vol;  // initial and current volume (m^3)
+  std::vector<int> body;          // body index
+
+  std::size_t size() const { return x.size(); }
+
+  // Appends one particle at rest state; fields that a material must set start as NaN-free zeros.
+  void push(const Vec<D>& pos, const Vec<D>& vel, const Vec<D>& half, double m, double volume, int b) {
+    x.push_back(pos);
+    x0.push_back(pos);
+    v.push_back(vel);
+    half_size.push_back(half);
+    F.push_back(Mat<D>::Identity());
+    L.push_back(Mat<D>::Zero());
+    C.push_back(Mat<D>::Zero());
+    stress.push_back(Mat<D>::Zero());
+    stress_zz.push_back(0.0);
+    mass.push_back(m);
+    vol0.push_back(volume);
+    vol.push_back(volume);
+    body.push_back(b);
+  }
+};
+
+// Full symmetric stress of particle p in Voigt order (xx, yy, zz, xy, yz, xz).
+template <int D> Voigt6 voigt_stress(const Particles<D>& p, std::size_t i) {
+  Voigt6 s = Voigt6::Zero();
+  const Mat<D>& t = p.stress[i];
+  if constexpr (D == 2) {
+    s << t(0, 0), t(1, 1), p.stress_zz[i], t(0, 1), 0.0, 0.0;
+  } else {
+    s << t(0, 0), t(1, 1), t(2, 2), t(0, 1), t(1, 2), t(0, 2);
+  }
+  return s;
+}
+
+// von Mises equivalent stress of a Voigt stress.
+inline double von_mises(const Voigt6& s) {
+  const double a = s[0] - s[1], b = s[1] - s[2], c = s[2] - s[0];
+  return std::sqrt(0.5 * (a * a + b * b + c * c) + 3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
+}
+
+}  // namespace dmi

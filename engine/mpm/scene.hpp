@@ -1,0 +1,69 @@
+// The low-level scene the MPM solver advances: particles, bodies, materials, grid, boundaries
+// and numerical options. Built from a Scenario by engine/sim/build_scene.
+#pragma once
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/materials/material.hpp"
+#include "engine/mpm/grid.hpp"
+#include "engine/mpm/particles.hpp"
+#include "engine/scenario/config.hpp"
+
+namespace dmi {
+
+struct Body {
+  std::string name;
+  int material = 0;     // index into Scene::materials
+  int field = 0;        // velocity field (multi-field contact) this body scatters to
+  Index begin = 0, end = 0;  // particle range
+};
+
+// Rigid, fixed wall: a half-space behind a plane (normal n points into the free side) or a box.
+// Nodes on or behind it are constrained; force is what the material exerts on the wall (N).
+template <int D> struct Wall {
+  std::string name;
+  bool box = false;
+  Vec<D> point = Vec<D>::Zero(), normal = Vec<D>::Zero(), lo = Vec<D>::Zero(), hi = Vec<D>::Zero();
+  WallCondition condition = WallCondition::slip;
+  double friction = 0.0;
+  // For a plane on a grid line with an axis normal: that axis and the line's node index, else -1.
+  // Bilateral walls (stick, roller) then mirror the velocity of free nodes onto the nodes behind the
+  // wall, so the interpolated velocity vanishes on the plane itself and not a fraction of a cell
+  // inside it (wide stencils: GIMP, B-splines). Keeps second-order convergence at fixed ends.
+  int mirror_axis = -1;
+  int mirror_index = 0;
+  Vec<D> force = Vec<D>::Zero();  // of the last step
+};
+
+// Grid nodes inside [lo, hi] move with the prescribed velocity during [start, end).
+template <int D> struct VelocityRegion {
+  std::string name;
+  Vec<D> lo, hi, velocity;
+  double start = 0.0, end = std::numeric_limits<double>::infinity();
+  Vec<D> force = Vec<D>::Zero();  // force the material exerts on the region (N), last step
+};
+
+struct SolverOptions {
+  ShapeKind shape = ShapeKind::bspline2;
+  TransferKind transfer = TransferKind::flip;
+  double flip_blend = 1.0;
+  StressUpdate update = StressUpdate::usl;
+  double cfl = 0.5;
+  double dt_max = 0.0;          // 0: no user bound
+  double contact_friction = 0.0;
+};
+
+template <int D> struct Scene {
+  Particles<D> particles;
+  std::vector<Body> bodies;
+  std::vector<std::unique_ptr<Material<D>>> materials;
+  std::unique_ptr<Grid<D>> grid;
+  std::vector<Wall<D>> walls;
+  std::vector<VelocityRegion<D>> regions;
+  Vec<D> gravity = Vec<D>::Zero();
+  SolverOptions options;
+};
+
+}  // namespace dmi

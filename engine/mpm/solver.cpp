@@ -1,0 +1,135 @@
+#include "engine/mpm/solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "engine/common/error.hpp"
+#include "engine/mpm/boundary.hpp"
+#include "engine/mpm/reduce.hpp"
+
+namespace dmi {
+
+template <int D> Solver<D>::Solver(Scene<D> scene) : scene_(std::move(scene)) {
+  kernels_ = make_transfer_kernels<D>(scene_.options.shape);
+  double mmin = std::numeric_limits<double>::infinity();
+  for (double m : scene_.particles.mass) mmin = std::min(mmin, m);
+  mass_eps_ = std::isfinite(mmin) ? 1e-12 * mmin : 0.0;
+}
+
+// The step as named phases (DESIGN.md "engine/"). Members (issue 3) enter between P2G and the grid update.
+template <int D> void Solver<D>::step(double dt) {
+  scene_.grid->bin(scene_.particles.x);      // tiles, active nodes, zeroed fields
+  particles_to_grid();                         // m_i, p_i, f_i = f_int + f_ext (eqs. 5-8)
+  grid_update(dt);                             // v^k, v^L = v^k + dt f/m, walls, regions, body contact
+  grid_to_particles(dt);                       // v_p, x_p, L_p, F_p (eqs. 13-14); MUSL remaps first
+  update_stress(dt);                           // per body, its material law
+  time_ += dt;
+  ++steps_;
+}
+
+template <int D> void Solver<D>::particles_to_grid() { kernels_->p2g(scene_, false); }
+
+template <int D> void Solver<D>::grid_update(double dt) {
+  Grid<D>& g = *scene_.grid;
+  const Index nn = g.nnodes();
+  const auto& active = g.active();
+  const Index na = static_cast<Index>(active.size());
+  const double eps = mass_eps_;
+#pragma omp parallel for schedule(static)
+  for (Index a = 0; a < na; ++a) {
+    for (int fld = 0; fld < g.nfields(); ++fld) {
+      const Index k = fld * nn + active[a];
+      if (g.m[k] > eps) {
+        g.v[k] = g.p[k] / g.m[k];
+        g.vL[k] = g.v[k] + dt * g.f[k] / g.m[k];  // eqs. (4), (9)
+      } else {
+        g.m[k] = 0;  // empty node: excluded from boundaries and contact
+      }
+    }
+  }
+  boundary_work_ += apply_boundaries(scene_, g.vL, dt, time_ + dt, true);
+  body_contact(scene_, g.vL);
+}
+
+template <int D> void Solver<D>::grid_to_particles(double dt) {
+  Grid<D>& g = *scene_.grid;
+  G2PResult r;
+  if (scene_.options.update == StressUpdate::usl) {
+    r = kernels_->g2p(scene_, dt, G2PMode::full);
+  } else {
+    // MUSL (Sulsky et al. 1995): update particle velocities, remap their momentum to the grid,
+    // and take the velocity gradient from the remapped nodal velocities.
+    r = kernels_->g2p(scene_, dt, G2PMode::velocity_only);
+    if (!r.ok) fail("non-finite particle velocity");
+    for (Index id : g.active())
+      for (int fld = 0; fld < g.nfields(); ++fld) g.p[fld * g.nnodes() + id].setZero();
+    kernels_->p2g(scene_, true);
+    for (Index id : g.active())
+      for (int fld = 0; fld < g.nfields(); ++fld) {
+        const Index k = fld * g.nnodes() + id;
+        g.v[k] = g.m[k] > 0 ? Vec<D>(g.p[k] / g.m[k]) : Vec<D>::Zero();
+      }
+    apply_boundaries(scene_, g.v, dt, time_ + dt, false);
+    body_contact(scene_, g.v);
+    r = kernels_->g2p(scene_, dt, G2PMode::kinematics);
+  }
+  if (!r.ok) fail("particle state");
+}
+
+template <int D> void Solver<D>::update_stress(double dt) {
+  for (const Body& b : scene_.bodies) scene_.materials[b.material]->update(scene_.particles, b.begin, b.end, dt);
+}
+
+template <int D> double Solver<D>::stable_time_step(double limit) const {
+  const auto& P = scene_.particles;
+  double dt = limit;
+  if (scene_.options.dt_max > 0) dt = std::min(dt, scene_.options.dt_max);
+  for (const Body& b : scene_.bodies) {
+    double vmax = 0;
+#pragma omp parallel for schedule(static) reduction(max : vmax)
+    for (Index i = b.begin; i < b.end; ++i) vmax = std::max(vmax, P.v[i].norm());
+    const double c = scene_.materials[b.material]->wave_speed();
+    dt = std::min(dt, scene_.options.cfl * scene_.grid->h() / (c + vmax));
+  }
+  return dt;
+}
+
+template <int D> Diagnostics<D> Solver<D>::diagnostics() const {
+  const auto& P = scene_.particles;
+  Diagnostics<D> d;
+  const Index np = static_cast<Index>(P.size());
+  d.kinetic = deterministic_sum(np, [&](Index i) { return 0.5 * P.mass[i] * P.v[i].squaredNorm(); });
+  d.gravity_work = deterministic_sum(np, [&](Index i) { return P.mass[i] * scene_.gravity.dot(P.x[i] - P.x0[i]); });
+  for (int c = 0; c < D; ++c) d.momentum[c] = deterministic_sum(np, [&](Index i) { return P.mass[i] * P.v[i][c]; });
+  for (const Body& b : scene_.bodies) d.strain += scene_.materials[b.material]->strain_energy(P, b.begin, b.end);
+  d.boundary_work = boundary_work_;
+  return d;
+}
+
+template <int D> void Solver<D>::fail(const std::string& what) const {
+  const auto& P = scene_.particles;
+  const Grid<D>& g = *scene_.grid;
+  for (const Body& b : scene_.bodies) {
+    for (Index i = b.begin; i < b.end; ++i) {
+      const bool finite = P.x[i].allFinite() && P.v[i].allFinite();
+      if (finite && g.interior(P.x[i])) continue;
+      std::ostringstream os;
+      os << "run stopped at step " << steps_ + 1 << ", t = " << time_ << " s: body '" << b.name << "', particle "
+         << i - b.begin << " (global " << i << ") ";
+      if (!finite) {
+        os << "has a non-finite " << (P.x[i].allFinite() ? "velocity" : "position")
+           << " (NaN/Inf): the time step may be too large or a material parameter unphysical";
+      } else {
+        os << "left the grid at x = (" << P.x[i].transpose() << "); enlarge grid.size/origin or add walls";
+      }
+      throw RunError(os.str());
+    }
+  }
+  throw RunError("run stopped at step " + std::to_string(steps_ + 1) + ": non-finite " + what);
+}
+
+template class Solver<2>;
+template class Solver<3>;
+
+}  // namespace dmi

@@ -1,0 +1,52 @@
+// Explicit MPM solver: advances a Scene by one step at a time (SEEDS.md A.1, USL or MUSL).
+// Output, checkpoints and progress stay outside; the driver calls step() and reads diagnostics.
+#pragma once
+#include <memory>
+#include <string>
+
+#include "engine/mpm/scene.hpp"
+#include "engine/mpm/transfer.hpp"
+
+namespace dmi {
+
+template <int D> struct Diagnostics {
+  double kinetic = 0, strain = 0;  // J
+  double gravity_work = 0;         // J, work of gravity since t = 0: sum m g.(x - x0)
+  double boundary_work = 0;        // J, work of walls and prescribed velocities since t = 0
+  Vec<D> momentum = Vec<D>::Zero();  // kg m/s
+  // Energy balance error: E_kin + E_strain - W_gravity - W_boundary - E_0 (J).
+  double balance(double e0) const { return kinetic + strain - gravity_work - boundary_work - e0; }
+};
+
+template <int D> class Solver {
+ public:
+  explicit Solver(Scene<D> scene);
+
+  // Stable step from the CFL condition over all bodies: dt = cfl h / max_b (c_b + |v|_max,b),
+  // bounded by the user dt_max and by `limit` (e.g. the time left to the end).
+  double stable_time_step(double limit) const;
+  // One explicit step of length dt; throws RunError on NaN/Inf or a particle leaving the grid.
+  void step(double dt);
+
+  Diagnostics<D> diagnostics() const;
+  double time() const { return time_; }
+  long steps() const { return steps_; }
+  const Scene<D>& scene() const { return scene_; }
+  Scene<D>& scene() { return scene_; }
+
+ private:
+  void particles_to_grid();
+  void grid_update(double dt);
+  void grid_to_particles(double dt);
+  void update_stress(double dt);
+  [[noreturn]] void fail(const std::string& what) const;
+
+  Scene<D> scene_;
+  std::unique_ptr<TransferKernels<D>> kernels_;
+  double time_ = 0.0;
+  long steps_ = 0;
+  double boundary_work_ = 0.0;
+  double mass_eps_ = 0.0;  // nodal masses below this are treated as empty
+};
+
+}  // namespace dmi

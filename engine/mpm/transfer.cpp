@@ -1,0 +1,136 @@
+#include "engine/mpm/transfer.hpp"
+
+#include <Eigen/LU>
+#include <cmath>
+
+#include "engine/mpm/shape.hpp"
+
+namespace dmi {
+namespace {
+
+template <int D, class Shape> class Kernels final : public TransferKernels<D> {
+  using St = Stencil<D, Shape>;
+
+ public:
+  void p2g(Scene<D>& s, bool momentum_only) const override {
+    Grid<D>& g = *s.grid;
+    const Particles<D>& P = s.particles;
+    const bool apic = s.options.transfer == TransferKind::apic;
+    const bool grad = g.nfields() > 1 && !momentum_only;
+    const Vec<D> grav = s.gravity;
+    const double h = g.h();
+    const Index nn = g.nnodes();
+    std::vector<int> field(s.bodies.size());
+    for (std::size_t b = 0; b < s.bodies.size(); ++b) field[b] = s.bodies[b].field;
+    const auto& start = g.tile_start();
+    const auto& order = g.tile_particles();
+    for (int c = 0; c < (1 << D); ++c) {
+      const auto& tiles = g.color_tiles(c);
+      const Index nt = static_cast<Index>(tiles.size());
+#pragma omp parallel for schedule(dynamic, 1)
+      for (Index k = 0; k < nt; ++k) {
+        St st;
+        const Index t = tiles[k];
+        for (Index q = start[t]; q < start[t + 1]; ++q) {
+          const Index i = order[q];
+          const Vec<D> xr = g.grid_coord(P.x[i]);
+          st.compute(xr, P.half_size[i] * g.inv_h(), g.inv_h());
+          const double mp = P.mass[i];
+          const Vec<D> mv = mp * P.v[i];
+          const Mat<D> mC = mp * P.C[i];
+          const Mat<D> vs = -P.vol[i] * P.stress[i];
+          const Vec<D> mg = mp * grav;
+          const Index off = field[P.body[i]] * nn;
+          for (int n = 0; n < St::NN; ++n) {
+            const IVec<D> ijk = st.base + st.offset[n];
+            const Index id = off + g.node_id(ijk);
+            const double N = st.N[n];
+            if (apic) {
+              const Vec<D> dx = (ijk.template cast<double>() - xr) * h;
+              g.p[id] += N * (mv + mC * dx);
+            } else {
+              g.p[id] += N * mv;
+            }
+            if (momentum_only) continue;
+            g.m[id] += N * mp;
+            g.f[id] += vs * st.dN[n] + N * mg;
+            if (grad) g.grad_m[id] += mp * st.dN[n];
+          }
+        }
+      }
+    }
+  }
+
+  G2PResult g2p(Scene<D>& s, double dt, G2PMode mode) const override {
+    Grid<D>& g = *s.grid;
+    Particles<D>& P = s.particles;
+    const bool apic = s.options.transfer == TransferKind::apic;
+    const double blend = s.options.flip_blend;
+    const double h = g.h();
+    const Index nn = g.nnodes();
+    const Index np = static_cast<Index>(P.size());
+    std::vector<int> field(s.bodies.size());
+    for (std::size_t b = 0; b < s.bodies.size(); ++b) field[b] = s.bodies[b].field;
+    int bad = 0;
+#pragma omp parallel for schedule(static) reduction(| : bad)
+    for (Index i = 0; i < np; ++i) {
+      St st;
+      const Vec<D> xr = g.grid_coord(P.x[i]);
+      st.compute(xr, P.half_size[i] * g.inv_h(), g.inv_h());
+      const Index off = field[P.body[i]] * nn;
+      Vec<D> vpic = Vec<D>::Zero(), dv = Vec<D>::Zero();
+      Mat<D> L = Mat<D>::Zero(), B = Mat<D>::Zero(), Dp = Mat<D>::Zero();
+      for (int n = 0; n < St::NN; ++n) {
+        const IVec<D> ijk = st.base + st.offset[n];
+        const Index id = off + g.node_id(ijk);
+        const double N = st.N[n];
+        const Vec<D>& vl = g.vL[id];
+        if (mode != G2PMode::kinematics) {
+          if (apic) {
+            const Vec<D> dx = (ijk.template cast<double>() - xr) * h;
+            B += N * vl * dx.transpose();
+            Dp += N * dx * dx.transpose();
+          } else {
+            dv += N * (vl - g.v[id]);
+          }
+        }
+        vpic += N * vl;
+        L += (mode == G2PMode::kinematics ? g.v[id] : vl) * st.dN[n].transpose();
+      }
+      if (mode != G2PMode::kinematics) {
+        if (apic) {
+          P.v[i] = vpic;
+          // D_p is singular for linear shapes at a node: fall back to C_p = grad v (Jiang 2015, sec. 5).
+          const double scale = h * h;
+          P.C[i] = std::abs(Dp.determinant()) > 1e-8 * std::pow(scale, D) ? Mat<D>(B * Dp.inverse()) : L;
+        } else {
+          P.v[i] = blend * (P.v[i] + dv) + (1 - blend) * vpic;
+        }
+      }
+      if (mode != G2PMode::velocity_only) {
+        P.x[i] += dt * vpic;
+        P.L[i] = L;
+        P.F[i] = (Mat<D>::Identity() + dt * L) * P.F[i];
+        if (!g.interior(P.x[i]) || !L.allFinite()) bad = 1;
+      }
+      if (!P.v[i].allFinite()) bad = 1;
+    }
+    return G2PResult{bad == 0};
+  }
+};
+
+}  // namespace
+
+template <int D> std::unique_ptr<TransferKernels<D>> make_transfer_kernels(ShapeKind shape) {
+  switch (shape) {
+    case ShapeKind::linear: return std::make_unique<Kernels<D, LinearShape>>();
+    case ShapeKind::gimp: return std::make_unique<Kernels<D, GimpShape>>();
+    case ShapeKind::bspline2: return std::make_unique<Kernels<D, BSpline2Shape>>();
+  }
+  return nullptr;
+}
+
+template std::unique_ptr<TransferKernels<2>> make_transfer_kernels<2>(ShapeKind);
+template std::unique_ptr<TransferKernels<3>> make_transfer_kernels<3>(ShapeKind);
+
+}  // namespace dmi

@@ -1,0 +1,36 @@
+// Particle <-> grid transfer kernels, one instance per (dimension, shape function), chosen once
+// when the solver is built; the transfer scheme (FLIP/PIC blend or APIC) is a flag per call.
+//   P2G (SEEDS.md A.1 eqs. 5-8): m_i = sum_p N_ip m_p,  p_i = sum_p N_ip m_p (v_p + C_p (x_i - x_p)),
+//        f_i = -sum_p V_p sigma_p grad N_ip + sum_p N_ip m_p g.   (C_p = 0 unless APIC)
+//   G2P (eqs. 13-14): FLIP v_p += sum N_ip (v^L_i - v^k_i), PIC v_p = sum N_ip v^L_i, blended;
+//        x_p += dt sum N_ip v^L_i;  L_p = sum v_i (x) grad N_ip;  F_p <- (I + dt L_p) F_p.
+//   APIC (Jiang et al. 2015): v_p = sum N v^L, C_p = B_p D_p^-1 with B_p = sum N v^L (x_i-x_p)^T,
+//        D_p = sum N (x_i-x_p)(x_i-x_p)^T (h^2/4 I for quadratic B-splines, computed generally).
+#pragma once
+#include <memory>
+
+#include "engine/mpm/scene.hpp"
+
+namespace dmi {
+
+enum class G2PMode {
+  full,           // USL: velocity, position, velocity gradient from v^L
+  velocity_only,  // MUSL pass 1: particle velocity (and APIC C) only
+  kinematics      // MUSL pass 2: position from v^L, velocity gradient from the remapped v
+};
+
+struct G2PResult {
+  bool ok = true;  // false: a particle became non-finite or left the grid interior
+};
+
+template <int D> class TransferKernels {
+ public:
+  virtual ~TransferKernels() = default;
+  // Scatter mass, momentum and (unless momentum_only) force and mass gradient. Grid was binned.
+  virtual void p2g(Scene<D>& s, bool momentum_only) const = 0;
+  virtual G2PResult g2p(Scene<D>& s, double dt, G2PMode mode) const = 0;
+};
+
+template <int D> std::unique_ptr<TransferKernels<D>> make_transfer_kernels(ShapeKind shape);
+
+}  // namespace dmi

@@ -1,0 +1,111 @@
+// Plain configuration structs: what a scenario says, after parsing and validation.
+// No JSON here; engine/ builds the scene from these. Every field is documented where it is
+// declared to the parser (engine/scenario/parse.cpp), which also generates docs/scenario.md.
+#pragma once
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace dmi {
+
+using DVec = std::vector<double>;  // length = analysis dimension
+
+enum class Plane { strain, stress, none };          // 2D kinematics; none in 3D
+enum class ShapeKind { linear, gimp, bspline2 };
+enum class TransferKind { flip, apic };             // flip with a PIC blend factor
+enum class StressUpdate { usl, musl };
+enum class ContactMethod { multi_field, single_field };
+enum class WallCondition { stick, roller, slip, friction };
+
+struct AnalysisConfig {
+  int dimension = 2;
+  Plane plane = Plane::strain;
+  double thickness = 1.0;                            // m, out-of-plane (2D)
+  double end_time = std::numeric_limits<double>::quiet_NaN();  // s, required
+  double dt_max = 0.0;                               // s, 0 = no user bound
+  double cfl = 0.5;                                  // fraction of the CFL limit
+  DVec gravity;                                      // m/s^2
+};
+
+struct MpmConfig {
+  ShapeKind shape = ShapeKind::bspline2;
+  TransferKind transfer = TransferKind::flip;
+  double flip_blend = 1.0;                           // 1 = pure FLIP, 0 = pure PIC
+  StressUpdate update = StressUpdate::usl;
+};
+
+struct GridConfig {
+  DVec origin, size;                                 // m
+  double cell_size = 0.0;                            // m
+};
+
+struct MaterialConfig {
+  std::string name, model;
+  double density = 0.0;                              // kg/m^3
+  double youngs_modulus = 0.0;                       // Pa
+  double poisson_ratio = 0.0;
+};
+
+struct ShapeConfig {
+  std::string type;                                  // box | ball
+  DVec min, max, center;                             // m
+  double radius = 0.0;                               // m
+};
+
+struct BodyConfig {
+  std::string name, material;
+  ShapeConfig shape;
+  int particles_per_cell = 2;                        // per direction
+  DVec velocity;                                     // m/s
+  // Optional sine mode added to velocity: v += amplitude sin(wavevector . (x - origin)).
+  DVec sine_amplitude, sine_wavevector, sine_origin;  // m/s, rad/m, m
+};
+
+struct ContactConfig {
+  ContactMethod method = ContactMethod::multi_field;
+  double friction = 0.0;                             // Coulomb coefficient between bodies
+};
+
+struct WallConfig {
+  std::string name, type;                            // plane | box
+  DVec point, normal, min, max;
+  WallCondition condition = WallCondition::slip;
+  double friction = 0.0;
+};
+
+struct PrescribedVelocityConfig {
+  std::string name;
+  DVec min, max, velocity;                           // region (m), velocity (m/s)
+  double start = 0.0, end = std::numeric_limits<double>::infinity();  // s
+};
+
+struct ProbeConfig {
+  std::string name, type, target;                    // type: particle | body | wall
+  DVec point;                                        // particle probes: nearest particle
+  std::vector<std::string> quantities;
+};
+
+struct OutputConfig {
+  double snapshot_interval = 0.0;                    // s; 0 = first and last state only
+  double history_interval = 0.0;                     // s; 0 = every step
+  bool vtk = true;
+  std::vector<ProbeConfig> probes;
+};
+
+struct Scenario {
+  int schema_version = 1;
+  std::string name, description;
+  AnalysisConfig analysis;
+  MpmConfig mpm;
+  GridConfig grid;
+  std::vector<MaterialConfig> materials;
+  std::vector<BodyConfig> bodies;
+  ContactConfig contact;
+  std::vector<WallConfig> walls;
+  std::vector<PrescribedVelocityConfig> prescribed_velocity;
+  OutputConfig output;
+  std::string source_file;   // where it came from, for messages
+  std::string source_text;   // the JSON as given, stored in results.h5
+};
+
+}  // namespace dmi

@@ -1,0 +1,26 @@
+// Scenario files (schema version 1): read once at the edge into config structs.
+#pragma once
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/scenario/config.hpp"
+
+namespace dmi {
+
+constexpr int kScenarioSchemaVersion = 1;
+
+// Parses and validates scenario JSON text; `file` names the source in messages. Throws InputError.
+Scenario parse_scenario(const std::string& text, const std::string& file);
+// Same from an already parsed JSON value (e.g. a validation case with overrides).
+Scenario parse_scenario(const nlohmann::json& j, const std::string& file);
+// Reads and parses a scenario file. Throws InputError (unreadable file, syntax error with line/column, ...).
+Scenario load_scenario(const std::string& path);
+// Markdown reference of every key (generated from the parser's declarations).
+std::string scenario_reference_markdown();
+
+// Probe quantities per probe type.
+const std::vector<std::string>& particle_probe_quantities();
+const std::vector<std::string>& body_probe_quantities();
+
+}  // namespace dmi

@@ -1,0 +1,205 @@
+#include "engine/scenario/schema.hpp"
+
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "engine/common/error.hpp"
+
+namespace dmi::schema {
+
+namespace {
+std::string num_text(double x) {
+  std::ostringstream os;
+  os << x;
+  return os.str();
+}
+}  // namespace
+
+std::string short_dump(const json& v) {
+  std::string s = v.dump();
+  if (s.size() > 60) s = s.substr(0, 57) + "...";
+  return s;
+}
+
+std::string range_text(const Spec& s) {
+  std::string r;
+  if (std::isfinite(s.min)) r += std::string(s.min_open ? "> " : ">= ") + num_text(s.min);
+  if (std::isfinite(s.max)) r += (r.empty() ? "" : " and ") + std::string(s.max_open ? "< " : "<= ") + num_text(s.max);
+  return r;
+}
+
+Obj::Obj(const json* j, std::string path, Context& ctx, std::string condition)
+    : j_(j), path_(std::move(path)), ctx_(ctx), condition_(condition), base_condition_(condition) {
+  if (j_ && !j_->is_object()) throw InputError(ctx_.file, path_.empty() ? "/" : path_, short_dump(*j_), "an object");
+}
+
+void Obj::fail(const std::string& key, const json* value, const std::string& expected) const {
+  throw InputError(ctx_.file, path_ + "/" + key, value ? short_dump(*value) : "", expected);
+}
+
+const json* Obj::get(const char* key, const Spec& s, const char* type, const std::string& def, const std::string& constraint) {
+  seen_.insert(key);
+  if (ctx_.doc) {
+    Row r;
+    r.path = child(key);
+    r.type = type;
+    r.unit = s.unit;
+    r.default_value = s.required ? "" : def;
+    r.doc = s.doc;
+    r.constraint = constraint;
+    r.condition = condition_;
+    r.required = s.required;
+    ctx_.doc->push_back(r);
+    return nullptr;
+  }
+  if (!j_ || !j_->contains(key)) {
+    if (s.required)
+      throw InputError(ctx_.file, child(key), "", std::string("the required key '") + key + "' (" + type +
+                                                      (s.unit.empty() ? "" : ", " + s.unit) + "): " + s.doc);
+    return nullptr;
+  }
+  return &j_->at(key);
+}
+
+void Obj::number(const char* key, double& out, const Spec& s) {
+  const std::string rt = range_text(s);
+  const json* v = get(key, s, "number", std::isnan(out) ? "" : num_text(out), rt);
+  if (!v) return;
+  const std::string expect = "a number" + (rt.empty() ? "" : " " + rt) + (s.unit.empty() ? "" : " (" + s.unit + ")");
+  if (!v->is_number()) fail(key, v, expect);
+  const double x = v->get<double>();
+  const bool lo = s.min_open ? x > s.min : x >= s.min;
+  const bool hi = s.max_open ? x < s.max : x <= s.max;
+  if (!std::isfinite(x) || !lo || !hi) fail(key, v, expect);
+  out = x;
+}
+
+void Obj::integer(const char* key, int& out, const Spec& s) {
+  const std::string rt = range_text(s);
+  const json* v = get(key, s, "integer", std::to_string(out), rt);
+  if (!v) return;
+  const std::string expect = "an integer" + (rt.empty() ? "" : " " + rt);
+  if (!v->is_number_integer()) fail(key, v, expect);
+  const auto x = v->get<long long>();
+  if ((s.min_open ? x <= s.min : x < s.min) || (s.max_open ? x >= s.max : x > s.max)) fail(key, v, expect);
+  out = static_cast<int>(x);
+}
+
+void Obj::boolean(const char* key, bool& out, const Spec& s) {
+  const json* v = get(key, s, "boolean", out ? "true" : "false", "");
+  if (!v) return;
+  if (!v->is_boolean()) fail(key, v, "true or false");
+  out = v->get<bool>();
+}
+
+void Obj::string(const char* key, std::string& out, const Spec& s) {
+  const json* v = get(key, s, "string", out.empty() ? "\"\"" : "\"" + out + "\"", s.required ? "non-empty" : "");
+  if (!v) return;
+  if (!v->is_string()) fail(key, v, "a string");
+  out = v->get<std::string>();
+  if (s.required && out.empty()) fail(key, v, "a non-empty string");
+}
+
+void Obj::vector(const char* key, DVec& out, const Spec& s) {
+  const std::string rt = range_text(s);
+  std::string def;
+  if (!out.empty()) {
+    def = "[";
+    for (std::size_t i = 0; i < out.size(); ++i) def += (i ? ", " : "") + num_text(out[i]);
+    def += "]";
+  }
+  const json* v = get(key, s, "vector", def, "length = dimension" + (rt.empty() ? "" : ", each " + rt));
+  if (!v) {
+    if (!documenting() && !out.empty() && static_cast<int>(out.size()) != ctx_.dim) out.resize(ctx_.dim, 0.0);
+    return;
+  }
+  const std::string expect = "an array of " + std::to_string(ctx_.dim) + " numbers" + (rt.empty() ? "" : " " + rt) +
+                             (s.unit.empty() ? "" : " (" + s.unit + ")");
+  if (!v->is_array() || static_cast<int>(v->size()) != ctx_.dim) fail(key, v, expect);
+  DVec r;
+  for (const auto& e : *v) {
+    if (!e.is_number()) fail(key, v, expect);
+    const double x = e.get<double>();
+    const bool lo = s.min_open ? x > s.min : x >= s.min;
+    const bool hi = s.max_open ? x < s.max : x <= s.max;
+    if (!std::isfinite(x) || !lo || !hi) fail(key, v, expect);
+    r.push_back(x);
+  }
+  out = r;
+}
+
+void Obj::strings(const char* key, std::vector<std::string>& out, const std::vector<std::string>& allowed, const Spec& s) {
+  std::string names;
+  for (const auto& a : allowed) names += (names.empty() ? "" : " | ") + a;
+  const json* v = get(key, s, "array of strings", "[]", "each one of " + names);
+  if (!v) return;
+  const std::string expect = "an array of strings, each one of " + names;
+  if (!v->is_array()) fail(key, v, expect);
+  out.clear();
+  for (const auto& e : *v) {
+    bool ok = e.is_string();
+    if (ok) {
+      ok = false;
+      for (const auto& a : allowed) ok = ok || e == a;
+    }
+    if (!ok) fail(key, &e, expect);
+    out.push_back(e.get<std::string>());
+  }
+}
+
+Obj Obj::object(const char* key, const std::string& doc) {
+  Spec s;
+  s.doc = doc;
+  const json* v = get(key, s, "object", "{}", "");
+  if (!documenting() && v && !v->is_object()) fail(key, v, "an object");
+  return Obj(v, child(key), ctx_, condition_);
+}
+
+bool Obj::when(const std::string& key, const std::string& value, const std::string& option) {
+  if (documenting()) {
+    condition_ = (base_condition_.empty() ? "" : base_condition_ + ", ") + key + " = " + option;
+    return true;
+  }
+  return value == option;
+}
+
+void Obj::finish() {
+  if (!j_ || documenting()) return;
+  for (auto it = j_->begin(); it != j_->end(); ++it) {
+    if (seen_.count(it.key())) continue;
+    std::string names;
+    for (const auto& k : seen_) names += (names.empty() ? "" : ", ") + k;
+    throw InputError(ctx_.file, child(it.key().c_str()), short_dump(it.value()),
+                     "no such key here (unknown key '" + it.key() + "'); known keys: " + names);
+  }
+}
+
+namespace {
+std::string cell(const std::string& s) {
+  std::string r;
+  for (char c : s) r += c == '|' ? std::string("\\|") : std::string(1, c);
+  return r;
+}
+}  // namespace
+
+std::string markdown(const std::vector<Row>& rows) {
+  std::ostringstream os;
+  std::string section = "#";
+  for (const Row& r : rows) {
+    const auto slash = r.path.find('/', 1);
+    const std::string top = slash == std::string::npos ? "(top level)" : r.path.substr(1, slash - 1);
+    if (top != section) {
+      section = top;
+      os << "\n### `" << top << "`\n\n| key | type | unit | default | allowed | description |\n|---|---|---|---|---|---|\n";
+    }
+    std::string doc = r.doc;
+    if (!r.condition.empty()) doc = "*(when " + r.condition + ")* " + doc;
+    os << "| `" << r.path << "` | " << r.type << " | " << (r.unit.empty() ? "–" : r.unit) << " | "
+       << (r.required ? "**required**" : (r.default_value.empty() ? "–" : "`" + r.default_value + "`")) << " | "
+       << (r.constraint.empty() ? "–" : cell(r.constraint)) << " | " << cell(doc) << " |\n";
+  }
+  return os.str();
+}
+
+}  // namespace dmi::schema

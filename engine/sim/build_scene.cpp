@@ -1,0 +1,131 @@
+#include "engine/sim/build_scene.hpp"
+
+#include <cmath>
+
+#include "engine/common/error.hpp"
+
+namespace dmi {
+namespace {
+
+template <int D> Vec<D> vec(const DVec& v) {
+  Vec<D> r;
+  for (int d = 0; d < D; ++d) r[d] = v[d];
+  return r;
+}
+
+template <int D> bool inside(const ShapeConfig& s, const Vec<D>& x) {
+  if (s.type == "ball") return (x - vec<D>(s.center)).norm() <= s.radius;
+  for (int d = 0; d < D; ++d)
+    if (x[d] < s.min[d] || x[d] > s.max[d]) return false;
+  return true;
+}
+
+// Seeds particles on the regular sub-grid of spacing h/ppc aligned with the cells: positions
+// origin + (c + (k + 1/2)/ppc) h, kept when inside the shape. Volume (h/ppc)^D (x thickness in 2D).
+template <int D> void seed_body(Scene<D>& sc, const Scenario& s, const BodyConfig& b, int body, double rho) {
+  const double h = s.grid.cell_size;
+  const int ppc = b.particles_per_cell;
+  const double dx = h / ppc;
+  const Vec<D> origin = vec<D>(s.grid.origin);
+  Vec<D> lo, hi;
+  for (int d = 0; d < D; ++d) {
+    lo[d] = b.shape.type == "box" ? b.shape.min[d] : b.shape.center[d] - b.shape.radius;
+    hi[d] = b.shape.type == "box" ? b.shape.max[d] : b.shape.center[d] + b.shape.radius;
+  }
+  IVec<D> first, count;
+  for (int d = 0; d < D; ++d) {
+    first[d] = static_cast<int>(std::floor((lo[d] - origin[d]) / dx));
+    count[d] = static_cast<int>(std::ceil((hi[d] - origin[d]) / dx)) - first[d] + 1;
+  }
+  double volume = std::pow(dx, D);
+  if (D == 2) volume *= s.analysis.thickness;
+  const Vec<D> half = Vec<D>::Constant(0.5 * dx);
+  const Vec<D> v0 = vec<D>(b.velocity);
+  const bool sine = !b.sine_amplitude.empty();
+  IVec<D> k = IVec<D>::Zero();
+  while (true) {
+    Vec<D> x;
+    for (int d = 0; d < D; ++d) x[d] = origin[d] + (first[d] + k[d] + 0.5) * dx;
+    Vec<D> v = v0;
+    if (sine) v += vec<D>(b.sine_amplitude) * std::sin(vec<D>(b.sine_wavevector).dot(x - vec<D>(b.sine_origin)));
+    if (inside<D>(b.shape, x)) sc.particles.push(x, v, half, rho * volume, volume, body);
+    int d = 0;
+    for (; d < D; ++d) {
+      if (++k[d] < count[d]) break;
+      k[d] = 0;
+    }
+    if (d == D) break;
+  }
+}
+
+}  // namespace
+
+template <int D> Scene<D> build_scene(const Scenario& s) {
+  Scene<D> sc;
+  const double h = s.grid.cell_size;
+  IVec<D> cells;
+  for (int d = 0; d < D; ++d) cells[d] = static_cast<int>(std::ceil(s.grid.size[d] / h - 1e-9));
+  const bool multi = s.contact.method == ContactMethod::multi_field && s.bodies.size() > 1;
+  sc.grid = std::make_unique<Grid<D>>(vec<D>(s.grid.origin), cells, h, multi ? static_cast<int>(s.bodies.size()) : 1);
+  sc.gravity = vec<D>(s.analysis.gravity);
+
+  MaterialRegistry<D> registry;
+  register_materials(registry);
+  for (const auto& m : s.materials) sc.materials.push_back(registry.make(m, s.analysis.plane));
+
+  for (std::size_t b = 0; b < s.bodies.size(); ++b) {
+    const BodyConfig& bc = s.bodies[b];
+    int mat = 0;
+    while (s.materials[mat].name != bc.material) ++mat;
+    Body body;
+    body.name = bc.name;
+    body.material = mat;
+    body.field = multi ? static_cast<int>(b) : 0;
+    body.begin = static_cast<Index>(sc.particles.size());
+    seed_body(sc, s, bc, static_cast<int>(b), s.materials[mat].density);
+    body.end = static_cast<Index>(sc.particles.size());
+    if (body.end == body.begin)
+      throw InputError(s.source_file, "/bodies/" + std::to_string(b) + "/shape", "",
+                       "a shape that contains at least one particle position (it is smaller than the particle spacing)");
+    sc.bodies.push_back(body);
+  }
+  for (const auto& w : s.walls) {
+    Wall<D> wall;
+    wall.name = w.name;
+    wall.box = w.type == "box";
+    if (wall.box) {
+      wall.lo = vec<D>(w.min);
+      wall.hi = vec<D>(w.max);
+    } else {
+      wall.point = vec<D>(w.point);
+      wall.normal = vec<D>(w.normal).normalized();
+      for (int d = 0; d < D; ++d) {
+        const double k = (wall.point[d] - s.grid.origin[d]) / h;
+        if (std::abs(std::abs(wall.normal[d]) - 1) < 1e-12 && std::abs(k - std::round(k)) < 1e-9) {
+          wall.mirror_axis = d;
+          wall.mirror_index = static_cast<int>(std::round(k));
+        }
+      }
+    }
+    wall.condition = w.condition;
+    wall.friction = w.friction;
+    sc.walls.push_back(wall);
+  }
+  for (const auto& r : s.prescribed_velocity) {
+    VelocityRegion<D> reg{r.name, vec<D>(r.min), vec<D>(r.max), vec<D>(r.velocity), r.start, r.end};
+    sc.regions.push_back(reg);
+  }
+  sc.options.shape = s.mpm.shape;
+  sc.options.transfer = s.mpm.transfer;
+  sc.options.flip_blend = s.mpm.flip_blend;
+  sc.options.update = s.mpm.update;
+  sc.options.cfl = s.analysis.cfl;
+  sc.options.dt_max = s.analysis.dt_max;
+  sc.options.contact_friction = s.contact.friction;
+  return sc;
+}
+
+template Scene<2> build_scene<2>(const Scenario&);
+template Scene<3> build_scene<3>(const Scenario&);
+
+}  // namespace dmi

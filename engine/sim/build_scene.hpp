@@ -1,0 +1,11 @@
+// Scenario (config structs) -> the low-level MPM scene: grid, seeded particles, materials, walls.
+#pragma once
+#include "engine/mpm/scene.hpp"
+#include "engine/scenario/config.hpp"
+
+namespace dmi {
+
+// Throws InputError (e.g. a body too small to hold a particle).
+template <int D> Scene<D> build_scene(const Scenario& s);
+
+}  // namespace dmi

@@ -1,0 +1,125 @@
+#include "engine/sim/run.hpp"
+
+#include <omp.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "engine/io/results_writer.hpp"
+#include "engine/io/vtu.hpp"
+#include "engine/mpm/solver.hpp"
+#include "engine/sim/build_scene.hpp"
+#include "engine/sim/recorder.hpp"
+
+namespace dmi {
+namespace {
+
+const char* name_of(ShapeKind k) { return k == ShapeKind::linear ? "linear" : k == ShapeKind::gimp ? "gimp" : "bspline2"; }
+
+RunInfo make_info(const Scenario& s, const RunOptions& o) {
+  RunInfo info;
+  info.scenario_name = s.name;
+  info.scenario_file = s.source_file;
+  info.scenario_json = s.source_text;
+  info.software_version = o.software_version;
+  info.dimension = s.analysis.dimension;
+  for (const auto& b : s.bodies) info.body_names.push_back(b.name);
+  for (const auto& m : s.materials) info.material_names.push_back(m.name);
+  info.numbers["cell_size"] = s.grid.cell_size;
+  info.numbers["end_time"] = s.analysis.end_time;
+  info.numbers["cfl"] = s.analysis.cfl;
+  info.strings["shape_function"] = name_of(s.mpm.shape);
+  info.strings["transfer"] = s.mpm.transfer == TransferKind::apic ? "apic" : "flip";
+  info.numbers["flip_blend"] = s.mpm.flip_blend;
+  info.strings["stress_update"] = s.mpm.update == StressUpdate::usl ? "usl" : "musl";
+  info.strings["plane"] = s.analysis.dimension == 3 ? "none" : s.analysis.plane == Plane::strain ? "strain" : "stress";
+  info.strings["contact"] = s.contact.method == ContactMethod::multi_field ? "multi_field" : "single_field";
+  return info;
+}
+
+template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
+  namespace fs = std::filesystem;
+  const auto t0 = std::chrono::steady_clock::now();
+  Solver<D> solver(build_scene<D>(s));
+  Recorder<D> rec(solver, s);
+  RunInfo info = make_info(s, o);
+  info.numbers["particles"] = static_cast<double>(solver.scene().particles.size());
+
+  std::unique_ptr<ResultsWriter> writer;
+  std::vector<std::pair<double, std::string>> vtk_files;
+  const bool files = !o.out_dir.empty();
+  std::string results_path;
+  if (files) {
+    fs::create_directories(o.out_dir);
+    if (s.output.vtk) fs::create_directories(fs::path(o.out_dir) / "fields");
+    results_path = (fs::path(o.out_dir) / "results.h5").string();
+    writer = std::make_unique<ResultsWriter>(results_path, info);
+  }
+  auto snapshot = [&]() {
+    if (!files) return;
+    const Snapshot snap = rec.snapshot(solver);
+    writer->write_snapshot(snap);
+    if (s.output.vtk) {
+      char name[64];
+      std::snprintf(name, sizeof name, "particles_%04zu.vtu", vtk_files.size());
+      write_vtu((fs::path(o.out_dir) / "fields" / name).string(), snap);
+      vtk_files.emplace_back(snap.time, name);
+    }
+  };
+
+  const double end = s.analysis.end_time;
+  const double eps = 1e-12 * end;
+  rec.sample(solver, 0.0);
+  snapshot();
+  double next_sample = s.output.history_interval, next_snap = s.output.snapshot_interval;
+  double dt_min = std::numeric_limits<double>::infinity(), dt_max = 0;
+  Progress progress(o.progress, end, s.name);
+  while (solver.time() < end - eps) {
+    const double dt = solver.stable_time_step(end - solver.time());
+    solver.step(dt);
+    dt_min = std::min(dt_min, dt);
+    dt_max = std::max(dt_max, dt);
+    const bool last = solver.time() >= end - eps;
+    if (last || s.output.history_interval <= 0 || solver.time() >= next_sample - eps) {
+      rec.sample(solver, dt);
+      while (s.output.history_interval > 0 && next_sample <= solver.time() + eps) next_sample += s.output.history_interval;
+    }
+    if (!last && s.output.snapshot_interval > 0 && solver.time() >= next_snap - eps) {
+      snapshot();
+      while (next_snap <= solver.time() + eps) next_snap += s.output.snapshot_interval;
+    }
+    progress.update(solver.time(), solver.steps(), dt);
+  }
+  snapshot();
+  progress.finish(solver.time(), solver.steps());
+
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  info.numbers["steps"] = static_cast<double>(solver.steps());
+  info.numbers["wall_seconds"] = wall;
+  info.numbers["dt_min"] = dt_min;
+  info.numbers["dt_max"] = dt_max;
+  info.numbers["threads"] = omp_get_max_threads();
+  info.strings["status"] = "complete";
+  RunOutput out;
+  out.results.info = info;
+  out.results.time = rec.time();
+  out.results.series = rec.series();
+  out.results.complete = true;
+  if (files) {
+    if (s.output.vtk) write_pvd((fs::path(o.out_dir) / "fields" / "particles.pvd").string(), vtk_files);
+    writer->finish(out.results.time, out.results.series, info);
+    out.results_path = results_path;
+  }
+  return out;
+}
+
+}  // namespace
+
+RunOutput run_scenario(const Scenario& s, const RunOptions& o) {
+  if (o.threads > 0) omp_set_num_threads(o.threads);
+  return s.analysis.dimension == 2 ? run<2>(s, o) : run<3>(s, o);
+}
+
+}  // namespace dmi

@@ -1,0 +1,28 @@
+// Runs a scenario: builds the scene, steps the solver to end_time, records histories, probes and
+// snapshots, and writes OUT/results.h5 (+ OUT/fields/*.vtu, particles.pvd).
+#pragma once
+#include <string>
+
+#include "engine/io/results.hpp"
+#include "engine/scenario/config.hpp"
+#include "engine/sim/progress.hpp"
+
+namespace dmi {
+
+struct RunOptions {
+  std::string out_dir;          // empty: nothing is written (validation runs)
+  ProgressMode progress = ProgressMode::automatic;
+  int threads = 0;              // 0: OpenMP default
+  std::string software_version;
+};
+
+struct RunOutput {
+  Results results;              // histories and run info, as written to results.h5 (no snapshots)
+  std::string results_path;     // empty when nothing was written
+};
+
+// Throws InputError for a scenario that cannot be built, RunError when the run fails, and
+// std::runtime_error for file errors.
+RunOutput run_scenario(const Scenario& s, const RunOptions& o);
+
+}  // namespace dmi

@@ -1,0 +1,53 @@
+// Verification suite: named cases, each a scenario from examples/ (compiled in) run against a
+// closed form. `damimpact validate` prints a table or a JSON array; exit 0 only when all pass.
+#pragma once
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/scenario/config.hpp"
+#include "engine/sim/run.hpp"
+
+namespace dmi {
+
+struct CaseResult {
+  std::string case_name, metric, unit;
+  double value = 0, reference = 0, error = 0, tolerance = 0;  // error: relative unless unit says otherwise
+  bool passed = false;
+  double wall_seconds = 0;
+};
+
+struct ValidationCase {
+  std::string name, description;
+  std::function<std::vector<CaseResult>()> run;
+};
+
+const std::map<std::string, std::string>& embedded_examples();  // file name -> JSON text
+// An embedded example with JSON-pointer overrides applied (e.g. {"/grid/cell_size", 0.25}).
+Scenario example_scenario(const std::string& file, const std::vector<std::pair<std::string, nlohmann::json>>& overrides = {});
+// Runs a scenario in memory (no files, quiet); returns histories.
+RunOutput run_quiet(const Scenario& s);
+
+const std::vector<ValidationCase>& validation_cases();
+
+// Bar vibration at one resolution (used by the case, tests and benchmarks).
+struct BarResult {
+  double period = 0, period_exact = 0, amplitude = 0, amplitude_exact = 0, wall = 0;
+};
+BarResult bar_vibration_run(double h, ShapeKind shape, TransferKind transfer);
+int validate_main(const std::vector<std::string>& cases, bool json, bool list, int threads);
+
+// Helpers for cases and tests.
+const Series& series(const Results& r, const std::string& path);
+double column_max(const Series& s, std::size_t comp, bool absolute = false);
+// Times at which component comp crosses zero (linear interpolation).
+std::vector<double> zero_crossings(const std::vector<double>& t, const Series& s, std::size_t comp);
+// Least-squares slope of comp against t over [t0, t1].
+double slope(const std::vector<double>& t, const Series& s, std::size_t comp, double t0, double t1);
+// Mean of comp over [t0, t1] (trapezoid in time).
+double time_mean(const std::vector<double>& t, const Series& s, std::size_t comp, double t0, double t1);
+
+}  // namespace dmi

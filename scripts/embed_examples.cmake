@@ -1,0 +1,10 @@
+# Writes a C++ source with every examples/*.json as a raw string: dmi::embedded_example(name).
+file(GLOB files ${DIR}/*.json)
+set(body "#include <map>\n#include <string>\nnamespace dmi {\nconst std::map<std::string, std::string>& embedded_examples() {\n  static const std::map<std::string, std::string> m = {\n")
+foreach(f ${files})
+  get_filename_component(name ${f} NAME)
+  file(READ ${f} text)
+  string(APPEND body "    {\"${name}\", R\"dmijson(${text})dmijson\"},\n")
+endforeach()
+string(APPEND body "  };\n  return m;\n}\n}  // namespace dmi\n")
+file(WRITE ${OUT} "${body}")

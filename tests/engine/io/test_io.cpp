@@ -1,0 +1,316 @@
+// Tests of the I/O layer: results.h5 round trip, .partial/rename protocol, robust reading of bad
+// files, and the VTK XML (.vtu/.pvd) writers.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+#include "engine/io/results.hpp"
+#include "engine/io/results_writer.hpp"
+#include "engine/io/vtu.hpp"
+
+namespace fs = std::filesystem;
+using namespace dmi;
+
+namespace {
+
+class IoTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::random_device rd;
+    dir_ = fs::temp_directory_path() / ("dmi_io_" + std::string(info->name()) + "_" +
+                                        std::to_string(rd()) + std::to_string(rd()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+  std::string file(const std::string& name) const { return (dir_ / name).string(); }
+  fs::path dir_;
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+void spit(const std::string& path, const std::string& bytes) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+// Expects read_results(path) to throw std::runtime_error starting with the path and containing
+// `what`.
+void expect_read_error(const std::string& path, const std::string& what) {
+  try {
+    read_results(path);
+    FAIL() << "no exception reading " << path;
+  } catch (const std::runtime_error& e) {
+    const std::string msg = e.what();
+    EXPECT_EQ(msg.rfind(path, 0), 0u) << msg;
+    EXPECT_NE(msg.find(what), std::string::npos) << msg;
+  }
+}
+
+RunInfo make_info(int dim) {
+  RunInfo info;
+  info.scenario_name = "drop";
+  info.scenario_file = "examples/drop.json";
+  info.scenario_json = "{\"name\": \"drop\", \"note\": \"B\xC3\xA9ton \\u00e9\"}\n";
+  info.software_version = "0.1.0";
+  info.dimension = dim;
+  info.body_names = {"block", "floor"};
+  info.material_names = {"steel"};
+  info.numbers = {{"cell_size", 0.01}, {"end_time", 1.0 / 3.0}, {"steps", 1234}};
+  info.strings = {{"shape_function", "quadratic"}, {"status", "running"}};
+  return info;
+}
+
+Snapshot make_snapshot(int dim, std::size_t count, double time, long step, double seed) {
+  Snapshot s;
+  s.time = time;
+  s.step = step;
+  s.dim = dim;
+  s.count = count;
+  const std::size_t n = count, d = static_cast<std::size_t>(dim);
+  for (std::size_t i = 0; i < n * d; ++i) {
+    s.position.push_back(seed + 0.1 * static_cast<double>(i) + 1e-17);
+    s.displacement.push_back(-seed / static_cast<double>(i + 3));
+    s.velocity.push_back(seed * 1e-300 * static_cast<double>(i));
+  }
+  for (std::size_t i = 0; i < n * 6; ++i)
+    s.stress.push_back(1e9 / static_cast<double>(i + 7) - seed);
+  for (std::size_t i = 0; i < n; ++i) {
+    s.von_mises.push_back(2.5e8 + static_cast<double>(i) / 3.0);
+    s.volume.push_back(1e-6 * (1.0 + static_cast<double>(i)));
+    s.body.push_back(static_cast<std::int32_t>(i % 2));
+    s.material.push_back(static_cast<std::int32_t>(-1 - static_cast<int>(i)));
+  }
+  return s;
+}
+
+// Writes a complete file: 5 history samples, a scalar and a 2-component series, given snapshots.
+Results write_sample(const std::string& path, int dim, const std::vector<Snapshot>& snaps) {
+  Results r;
+  r.info = make_info(dim);
+  r.complete = true;
+  r.time = {0.0, 0.1, 0.2, 0.30000000000000004, 0.4};
+  r.series.push_back({"energy/kinetic", "J", {"value"}, {0.0, 1.5, 2.25, 1.0 / 7.0, -0.0}});
+  r.series.push_back({"walls/floor/force", "N", {"x", "y"}, {0, 1, 2, 3, 4, 5, 6, 7, 8, 9.5}});
+  r.snapshots = snaps;
+  ResultsWriter w(path, make_info(dim));
+  for (const auto& s : snaps) w.write_snapshot(s);
+  r.info.strings["status"] = "finished";  // finish() replaces the run info written at start
+  r.info.numbers["wall_seconds"] = 12.5;
+  w.finish(r.time, r.series, r.info);
+  return r;
+}
+
+void expect_same(const Snapshot& a, const Snapshot& b) {
+  EXPECT_EQ(a.time, b.time);
+  EXPECT_EQ(a.step, b.step);
+  EXPECT_EQ(a.dim, b.dim);
+  EXPECT_EQ(a.count, b.count);
+  EXPECT_EQ(a.position, b.position);
+  EXPECT_EQ(a.displacement, b.displacement);
+  EXPECT_EQ(a.velocity, b.velocity);
+  EXPECT_EQ(a.stress, b.stress);
+  EXPECT_EQ(a.von_mises, b.von_mises);
+  EXPECT_EQ(a.volume, b.volume);
+  EXPECT_EQ(a.body, b.body);
+  EXPECT_EQ(a.material, b.material);
+}
+
+void expect_same(const Results& a, const Results& b, bool snapshots) {
+  EXPECT_EQ(a.complete, b.complete);
+  EXPECT_EQ(a.info.scenario_name, b.info.scenario_name);
+  EXPECT_EQ(a.info.scenario_file, b.info.scenario_file);
+  EXPECT_EQ(a.info.scenario_json, b.info.scenario_json);
+  EXPECT_EQ(a.info.software_version, b.info.software_version);
+  EXPECT_EQ(a.info.dimension, b.info.dimension);
+  EXPECT_EQ(a.info.body_names, b.info.body_names);
+  EXPECT_EQ(a.info.material_names, b.info.material_names);
+  EXPECT_EQ(a.info.numbers, b.info.numbers);
+  EXPECT_EQ(a.info.strings, b.info.strings);
+  EXPECT_EQ(a.time, b.time);
+  ASSERT_EQ(a.series.size(), b.series.size());
+  for (std::size_t i = 0; i < a.series.size(); ++i) {
+    EXPECT_EQ(a.series[i].path, b.series[i].path);
+    EXPECT_EQ(a.series[i].unit, b.series[i].unit);
+    EXPECT_EQ(a.series[i].components, b.series[i].components);
+    EXPECT_EQ(a.series[i].data, b.series[i].data);
+  }
+  if (!snapshots) return;
+  ASSERT_EQ(a.snapshots.size(), b.snapshots.size());
+  for (std::size_t i = 0; i < a.snapshots.size(); ++i) expect_same(a.snapshots[i], b.snapshots[i]);
+}
+
+}  // namespace
+
+TEST_F(IoTest, RoundTrip2D) {
+  const std::string path = file("results.h5");
+  const Results written = write_sample(
+      path, 2, {make_snapshot(2, 5, 0.0, 0, 1.0), make_snapshot(2, 3, 0.5, 1000, 2.0)});
+  const Results read = read_results(path);
+  expect_same(written, read, true);
+  ASSERT_NE(read.find("walls/floor/force"), nullptr);
+  EXPECT_EQ(read.find("walls/floor/force")->samples(), 5u);
+
+  const Results histories = read_results(path, false);
+  EXPECT_TRUE(histories.snapshots.empty());
+  expect_same(written, histories, false);
+}
+
+TEST_F(IoTest, RoundTrip3DAndEmptySnapshot) {
+  const std::string path = file("results3d.h5");
+  const Results written = write_sample(
+      path, 3, {make_snapshot(3, 7, 0.25, 42, 3.0), make_snapshot(3, 0, 0.5, 84, 0.0)});
+  const Results read = read_results(path);
+  expect_same(written, read, true);
+  ASSERT_EQ(read.snapshots.size(), 2u);
+  EXPECT_EQ(read.snapshots[1].count, 0u);
+  EXPECT_EQ(read.snapshots[1].dim, 3);
+}
+
+TEST_F(IoTest, PartialUntilFinish) {
+  const std::string path = file("results.h5");
+  ResultsWriter w(path, make_info(2));
+  w.write_snapshot(make_snapshot(2, 4, 0.0, 0, 1.0));
+  EXPECT_TRUE(fs::exists(path + ".partial"));
+  EXPECT_FALSE(fs::exists(path));
+  w.finish({0.0}, {{"dt", "s", {"value"}, {1e-5}}}, make_info(2));
+  EXPECT_TRUE(fs::exists(path));
+  EXPECT_FALSE(fs::exists(path + ".partial"));
+  EXPECT_TRUE(read_results(path).complete);
+  EXPECT_THROW(w.finish({}, {}, make_info(2)), std::runtime_error);
+}
+
+TEST_F(IoTest, DestructorWithoutFinishLeavesOnlyPartial) {
+  const std::string path = file("results.h5");
+  {
+    ResultsWriter w(path, make_info(2));
+    w.write_snapshot(make_snapshot(2, 4, 0.0, 0, 1.0));
+  }
+  EXPECT_FALSE(fs::exists(path));
+  ASSERT_TRUE(fs::exists(path + ".partial"));
+  const Results r = read_results(path + ".partial");  // still a readable, incomplete file
+  EXPECT_FALSE(r.complete);
+  EXPECT_TRUE(r.time.empty());
+  EXPECT_TRUE(r.series.empty());
+  ASSERT_EQ(r.snapshots.size(), 1u);
+  expect_same(make_snapshot(2, 4, 0.0, 0, 1.0), r.snapshots[0]);
+}
+
+TEST_F(IoTest, OlderCompleteFileReplacedOnlyAtFinish) {
+  const std::string path = file("results.h5");
+  write_sample(path, 2, {make_snapshot(2, 2, 0.0, 0, 1.0)});
+  ResultsWriter w(path, make_info(2));
+  EXPECT_EQ(read_results(path).snapshots.size(), 1u);  // old file untouched while running
+  w.finish({0.0, 1.0}, {}, make_info(2));
+  const Results r = read_results(path);
+  EXPECT_EQ(r.time.size(), 2u);
+  EXPECT_TRUE(r.snapshots.empty());
+}
+
+TEST_F(IoTest, WriterRejectsInconsistentInput) {
+  const std::string path = file("results.h5");
+  ResultsWriter w(path, make_info(2));
+  Snapshot bad = make_snapshot(2, 3, 0.0, 0, 1.0);
+  bad.velocity.pop_back();
+  EXPECT_THROW(w.write_snapshot(bad), std::runtime_error);
+  EXPECT_THROW(w.finish({0.0, 1.0}, {{"energy/kinetic", "J", {"value"}, {1.0}}}, make_info(2)),
+               std::runtime_error);
+  EXPECT_THROW(w.finish({0.0}, {{"../x", "J", {"value"}, {1.0}}}, make_info(2)),
+               std::runtime_error);
+}
+
+TEST_F(IoTest, MissingFileThrows) { expect_read_error(file("nope.h5"), "not found"); }
+
+TEST_F(IoTest, TruncatedFileThrows) {
+  const std::string good = file("results.h5"), cut = file("truncated.h5");
+  write_sample(good, 2, {make_snapshot(2, 200, 0.0, 0, 1.0)});
+  const std::string bytes = slurp(good);
+  spit(cut, bytes.substr(0, bytes.size() / 2));
+  expect_read_error(cut, "");
+}
+
+TEST_F(IoTest, TextFileThrows) {
+  const std::string path = file("notes.h5");
+  spit(path, "this is not an HDF5 file\n");
+  expect_read_error(path, "HDF5");
+}
+
+TEST_F(IoTest, WrongFormatAttributeThrows) {
+  // Patch the format string in place (same length, so the file stays valid HDF5).
+  const std::string path = file("results.h5");
+  write_sample(path, 2, {});
+  std::string bytes = slurp(path);
+  const std::size_t at = bytes.find("damimpact-results");
+  ASSERT_NE(at, std::string::npos);
+  ASSERT_EQ(bytes.find("damimpact-results", at + 1), std::string::npos);
+  bytes.replace(at, 17, "otherwise-results");
+  spit(path, bytes);
+  expect_read_error(path, "not a damimpact results file");
+}
+
+TEST_F(IoTest, VtuHeaderAndSize) {
+  for (int dim : {2, 3}) {
+    const std::string path = file("particles_" + std::to_string(dim) + ".vtu");
+    const std::size_t n = 5;
+    const Snapshot s = make_snapshot(dim, n, 0.125, 7, 1.0);
+    write_vtu(path, s);
+    EXPECT_FALSE(fs::exists(path + ".tmp"));
+    const std::string bytes = slurp(path);
+    EXPECT_NE(bytes.find("NumberOfPoints=\"5\""), std::string::npos);
+    EXPECT_NE(bytes.find("header_type=\"UInt64\""), std::string::npos);
+    // 11 arrays, each a UInt64 byte count + data: Points/displacement/velocity 3 x f64,
+    // stress 6 x f64, von_mises/volume f64, body/material i32, connectivity/offsets i64, types u8.
+    const std::size_t data = 11 * 8 + n * (3 * 24 + 48 + 2 * 8 + 2 * 4 + 2 * 8 + 1);
+    const std::string tail = "\n  </AppendedData>\n</VTKFile>\n";
+    const std::size_t underscore = bytes.find("<AppendedData encoding=\"raw\">");
+    ASSERT_NE(underscore, std::string::npos);
+    const std::size_t start = bytes.find('_', underscore) + 1;
+    EXPECT_EQ(bytes.size(), start + data + tail.size());
+    EXPECT_EQ(bytes.substr(bytes.size() - tail.size()), tail);
+    // Points: its offset= points at a byte count of n*24, then z = 0 in 2D.
+    const std::size_t pts = bytes.find("Name=\"Points\"");
+    const std::size_t off_at = bytes.find("offset=\"", pts) + 8;
+    const std::size_t off = std::stoul(bytes.substr(off_at));
+    std::uint64_t count = 0;
+    std::memcpy(&count, bytes.data() + start + off, 8);
+    EXPECT_EQ(count, n * 24);
+    double p[3];
+    std::memcpy(p, bytes.data() + start + off + 8 + 24, 24);  // second point
+    EXPECT_EQ(p[0], s.position[static_cast<std::size_t>(dim)]);
+    EXPECT_EQ(p[2], dim == 2 ? 0.0 : s.position[static_cast<std::size_t>(dim) + 2]);
+  }
+}
+
+TEST_F(IoTest, VtuEmptySnapshot) {
+  const std::string path = file("empty.vtu");
+  write_vtu(path, make_snapshot(2, 0, 0.0, 0, 0.0));
+  const std::string bytes = slurp(path);
+  EXPECT_NE(bytes.find("NumberOfPoints=\"0\""), std::string::npos);
+  Snapshot bad = make_snapshot(2, 2, 0.0, 0, 0.0);
+  bad.body.clear();
+  EXPECT_THROW(write_vtu(file("bad.vtu"), bad), std::runtime_error);
+}
+
+TEST_F(IoTest, PvdListsEntries) {
+  const std::string path = file("particles.pvd");
+  write_pvd(path, {{0.0, "particles_0000.vtu"}, {0.25, "particles_0001.vtu"}});
+  const std::string text = slurp(path);
+  EXPECT_NE(text.find("type=\"Collection\""), std::string::npos);
+  EXPECT_NE(text.find("timestep=\"0\""), std::string::npos);
+  EXPECT_NE(text.find("file=\"particles_0000.vtu\""), std::string::npos);
+  EXPECT_NE(text.find("timestep=\"0.25\""), std::string::npos);
+  EXPECT_NE(text.find("file=\"particles_0001.vtu\""), std::string::npos);
+  EXPECT_LT(text.find("particles_0000.vtu"), text.find("particles_0001.vtu"));
+}
