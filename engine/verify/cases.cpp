@@ -66,11 +66,30 @@ std::vector<CaseResult> bar_vibration() {
     fine = bar_vibration_run(h, ShapeKind::bspline2, TransferKind::flip);
     err.push_back(std::abs(fine.period - fine.period_exact) / fine.period_exact);
   }
-  const double order = std::log2(err[2] / err[3]);
   std::vector<CaseResult> r;
   r.push_back(metric("bar_vibration", "period (h = 1/8 m)", "s", fine.period, fine.period_exact, 2e-3));
   r.push_back(metric("bar_vibration", "amplitude (h = 1/8 m)", "m", fine.amplitude, fine.amplitude_exact, 5e-3));
-  r.push_back(metric("bar_vibration", "period convergence order", "-", order, 2.0, 0.5, false));
+  // The fixed end limits B-splines to first order (the support truncates the stencil); >= 0.8 required.
+  r.push_back(metric("bar_vibration", "period order, fixed end", "-", std::log2(err[2] / err[3]), 1.0, 0.2, false));
+  return stamp(r, timer.seconds());
+}
+
+// 1b. Free-free bar of length 2L in its first mode v0 cos(pi x / 2L): same period 4L/c; no support,
+//     so the interior order of the scheme shows: 2 for quadratic B-splines.
+std::vector<CaseResult> bar_free_free() {
+  Timer timer;
+  const double T = 10.0;
+  std::vector<double> err;
+  double period = 0;
+  for (double h : {1.0, 0.5, 0.25}) {
+    const RunOutput out = run_quiet(example_scenario("bar_free_free.json", {{"/grid/cell_size", h}}));
+    const auto z = zero_crossings(out.results.time, series(out.results, "probes/end/velocity"), 0);
+    period = z.size() >= 3 ? z[2] - z[0] : std::numeric_limits<double>::quiet_NaN();
+    err.push_back(std::abs(period - T) / T);
+  }
+  std::vector<CaseResult> r;
+  r.push_back(metric("bar_free_free", "period (h = 1/4 m)", "s", period, T, 2e-4));
+  r.push_back(metric("bar_free_free", "period convergence order", "-", std::log2(err[1] / err[2]), 2.0, 0.3, false));
   return stamp(r, timer.seconds());
 }
 
@@ -78,22 +97,26 @@ std::vector<CaseResult> bar_vibration() {
 //    round-off; the total energy drift (E_end - E_0)/E_0 is reported and bounded.
 std::vector<CaseResult> colliding_disks() {
   Timer timer;
-  const RunOutput out = run_quiet(example_scenario("colliding_disks.json"));
-  const auto& p = series(out.results, "momentum");
-  const auto& ke = series(out.results, "energy/kinetic");
-  const auto& se = series(out.results, "energy/strain");
-  // Momentum scale: sum m |v| of one disk at start = 2 * m * |v0| for both.
-  const double m_disk = 1000 * pi * 0.2 * 0.2 * 1.0;
-  const double scale = 2 * m_disk * 0.1 * std::sqrt(2.0);
-  const double pmax = std::max(column_max(p, 0, true), column_max(p, 1, true));
-  const std::size_t n = ke.samples();
-  const double e0 = ke.data[0] + se.data[0], e1 = ke.data[n - 1] + se.data[n - 1];
-  // Did they bounce? disk 1 must move back (negative x-velocity) at the end.
-  const auto& v1 = series(out.results, "probes/disk1/velocity");
+  struct Run { double momentum, drift, rebound; };
+  auto run = [](double h, const char* method) {
+    const RunOutput out = run_quiet(example_scenario("colliding_disks.json", {{"/grid/cell_size", h}, {"/contact/method", method}}));
+    const auto& p = series(out.results, "momentum");
+    const auto& ke = series(out.results, "energy/kinetic");
+    const auto& se = series(out.results, "energy/strain");
+    const auto& v1 = series(out.results, "probes/disk1/velocity");
+    const double m_disk = 1000 * pi * 0.2 * 0.2 * 1.0;
+    const double scale = 2 * m_disk * 0.1 * std::sqrt(2.0);  // sum m |v| at the start
+    const std::size_t n = ke.samples();
+    const double e0 = ke.data[0] + se.data[0], e1 = ke.data[n - 1] + se.data[n - 1];
+    return Run{std::max(column_max(p, 0, true), column_max(p, 1, true)) / scale, (e1 - e0) / e0, -v1.data[(n - 1) * 2] / 0.1};
+  };
+  const Run coarse = run(0.025, "multi_field"), fine = run(0.0125, "multi_field"), sulsky = run(0.0125, "single_field");
   std::vector<CaseResult> r;
-  r.push_back(metric("colliding_disks", "momentum / sum m|v|", "-", pmax / scale, 0.0, 1e-12, false));
-  r.push_back(metric("colliding_disks", "energy drift (E_end-E0)/E0", "-", (e1 - e0) / e0, 0.0, 0.05, false));
-  r.push_back(metric("colliding_disks", "rebound velocity ratio", "-", -v1.data[(v1.samples() - 1) * 2] / 0.1, 1.0, 0.25));
+  r.push_back(metric("colliding_disks", "momentum / sum m|v|", "-", std::max(fine.momentum, sulsky.momentum), 0.0, 1e-12, false));
+  r.push_back(metric("colliding_disks", "energy drift, multi-field h=1/80", "-", fine.drift, 0.0, 0.08, false));
+  r.push_back(metric("colliding_disks", "energy drift ratio h=1/40 : 1/80", "-", coarse.drift / fine.drift, 2.0, 1.0, false));
+  r.push_back(metric("colliding_disks", "energy drift, single-field h=1/80", "-", sulsky.drift, 0.0, 0.03, false));
+  r.push_back(metric("colliding_disks", "rebound speed / approach speed", "-", fine.rebound, 1.0, 0.15));
   return stamp(r, timer.seconds());
 }
 
@@ -153,22 +176,20 @@ std::vector<CaseResult> free_fall() {
 }
 
 // 5b. Block resting on a frictionless floor under gravity (nu = 0, 1D): the centroid settles by
-//     rho g H^2 / (3E); no horizontal drift; the motion dies out (no creep).
+//     rho g H^2 / (3E) (time mean over many periods of the start-up oscillation, which PIC damps);
+//     no horizontal drift; no creep: the mean does not move between the 2nd and 3rd second.
 std::vector<CaseResult> rest_on_wall() {
   Timer timer;
-  const double rho = 1000, g = 10, H = 1, E = 1e6;
+  const double rho = 1000, g = 10, H = 1, E = 1e6, settle_exact = rho * g * H * H / (3 * E);
   const RunOutput out = run_quiet(example_scenario("rest_on_wall.json"));
   const auto& t = out.results.time;
   const auto& u = series(out.results, "probes/block/displacement");
-  const auto& v = series(out.results, "probes/block/velocity");
-  const double settle = -time_mean(t, u, 1, 2.0, 3.0);
-  const double drift = column_max(u, 0, true);
-  const double creep = std::abs(slope(t, u, 1, 2.0, 3.0));
+  const double settle = -time_mean(t, u, 1, 1.0, 3.0);
+  const double creep = std::abs(time_mean(t, u, 1, 2.0, 3.0) - time_mean(t, u, 1, 1.0, 2.0)) / settle_exact;
   std::vector<CaseResult> r;
-  r.push_back(metric("rest_on_wall", "centroid settlement", "m", settle, rho * g * H * H / (3 * E), 0.03));
-  r.push_back(metric("rest_on_wall", "horizontal drift", "m", drift, 0.0, 1e-9, false));
-  r.push_back(metric("rest_on_wall", "creep rate (last second)", "m/s", creep, 0.0, 1e-5, false));
-  (void)v;
+  r.push_back(metric("rest_on_wall", "centroid settlement", "m", settle, settle_exact, 0.05));
+  r.push_back(metric("rest_on_wall", "horizontal drift", "m", column_max(u, 0, true), 0.0, 1e-9, false));
+  r.push_back(metric("rest_on_wall", "creep: mean shift 2nd->3rd s / settlement", "-", creep, 0.0, 0.01, false));
   return stamp(r, timer.seconds());
 }
 
@@ -177,6 +198,7 @@ std::vector<CaseResult> rest_on_wall() {
 const std::vector<ValidationCase>& validation_cases() {
   static const std::vector<ValidationCase> cases = {
       {"bar_vibration", "axial vibration of a fixed-free bar: period, amplitude, convergence order", bar_vibration},
+      {"bar_free_free", "axial vibration of a free-free bar: period and interior convergence order", bar_free_free},
       {"colliding_disks", "two elastic disks (Sulsky 1995): momentum, energy drift, rebound", colliding_disks},
       {"incline", "block on a 30 deg incline with Coulomb friction: sliding and sticking", incline},
       {"wall_impact", "elastic bar onto a rigid wall: contact stress rho c v and time 2L/c", wall_impact},
