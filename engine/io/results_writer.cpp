@@ -12,7 +12,8 @@
 //                     (count, dim), stress (count, 6), von_mises, volume (count) double;
 //                     body, material (count) int32
 // All strings are fixed-length UTF-8, NUL-padded (width = longest string in that attribute or
-// dataset, at least 1 byte). Datasets are uncompressed; snapshot arrays are chunked.
+// dataset, at least 1 byte). Datasets are uncompressed; snapshot arrays are chunked. File format:
+// HDF5 1.8 (libver bounds V18), whose metadata is checksummed.
 #include "engine/io/results_writer.hpp"
 
 #include <algorithm>
@@ -216,6 +217,10 @@ ResultsWriter::ResultsWriter(const std::string& path, const RunInfo& info)
   Handle fapl(check_id(H5Pcreate(H5P_FILE_ACCESS), f, "cannot create property list"), H5Pclose);
   // STRONG: closing the file also closes anything still open in it (destructor path).
   check_ok(H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG), f, "cannot create property list");
+  // HDF5 1.8 file format: readable by any HDF5 >= 1.8, and its metadata (superblock, object
+  // headers, attribute heaps) carries checksums, so corruption is reported instead of parsed.
+  check_ok(H5Pset_libver_bounds(fapl, H5F_LIBVER_V18, H5F_LIBVER_V18), f,
+           "cannot create property list");
   m.file = Handle(check_id(H5Fcreate(f.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), f,
                            "cannot create results file"),
                   H5Fclose);

@@ -5,13 +5,17 @@
 // little-endian values; each DataArray's offset= is the position of its byte count relative to
 // the first byte after "_". One VTK_VERTEX cell per particle (connectivity i, offsets i+1).
 // Vectors are always written with 3 components (zero-padded below 3D).
+// Sizes are known up front, so the header is written first and the arrays are streamed in blocks
+// (no second copy of the snapshot in memory).
 #include "engine/io/vtu.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <locale>
 #include <sstream>
@@ -23,6 +27,7 @@ namespace dmi {
 namespace {
 
 constexpr std::uint8_t kVtkVertex = 1;
+constexpr std::size_t kBlock = 4096;  // values per streamed block
 
 bool host_little_endian() {
   const std::uint16_t one = 1;
@@ -31,16 +36,19 @@ bool host_little_endian() {
   return b == 1;
 }
 
-// Appends n values of T to out as little-endian bytes.
-template <class T> void put_le(std::string& out, const T* v, std::size_t n) {
-  const std::size_t start = out.size();
-  out.resize(start + n * sizeof(T));
+// Writes n values of T to out as little-endian bytes.
+template <class T> void put_le(std::ostream& out, const T* v, std::size_t n) {
   if (n == 0) return;
-  std::memcpy(&out[start], v, n * sizeof(T));
-  if (!host_little_endian())
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t a = 0, b = sizeof(T) - 1; a < b; ++a, --b)
-        std::swap(out[start + i * sizeof(T) + a], out[start + i * sizeof(T) + b]);
+  if (host_little_endian()) {
+    out.write(reinterpret_cast<const char*>(v), static_cast<std::streamsize>(n * sizeof(T)));
+    return;
+  }
+  char buf[sizeof(T)];
+  for (std::size_t i = 0; i < n; ++i) {
+    std::memcpy(buf, &v[i], sizeof(T));
+    std::reverse(buf, buf + sizeof(T));
+    out.write(buf, sizeof(T));
+  }
 }
 
 std::string xml_escape(const std::string& s) {
@@ -65,20 +73,17 @@ std::string fmt_double(double v) {
   return os.str();
 }
 
-// Writes text to path + ".tmp", then renames it over path.
-void write_atomically(const std::string& path, const std::string& head, const std::string& body,
-                      const std::string& tail) {
+// Writes path + ".tmp" through `body`, then renames it over path.
+void write_atomically(const std::string& path, const std::function<void(std::ostream&)>& body) {
   const std::string tmp = path + ".tmp";
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     if (!out) throw std::runtime_error(path + ": cannot create " + tmp);
-    out.write(head.data(), static_cast<std::streamsize>(head.size()));
-    out.write(body.data(), static_cast<std::streamsize>(body.size()));
-    out.write(tail.data(), static_cast<std::streamsize>(tail.size()));
+    body(out);
     out.close();
     if (!out) {
       std::remove(tmp.c_str());
-      throw std::runtime_error(path + ": write failed (disk full?)");
+      throw std::runtime_error(path + ": cannot write " + tmp + " (disk full?)");
     }
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
@@ -88,24 +93,48 @@ void write_atomically(const std::string& path, const std::string& head, const st
   }
 }
 
-// Collects the appended-data block and the matching DataArray header lines.
-class Appended {
- public:
-  template <class T> std::string array(const char* vtk_type, const std::string& name, int ncomp,
-                                       const std::vector<T>& v, const std::string& extra = "") {
-    std::string line = "<DataArray type=\"" + std::string(vtk_type) + "\" Name=\"" + name +
-                       "\" NumberOfComponents=\"" + std::to_string(ncomp) + "\"" + extra +
-                       " format=\"appended\" offset=\"" + std::to_string(data_.size()) + "\"/>\n";
-    const std::uint64_t bytes = v.size() * sizeof(T);
-    put_le(data_, &bytes, 1);
-    put_le(data_, v.data(), v.size());
-    return line;
-  }
-  const std::string& data() const { return data_; }
-
- private:
-  std::string data_;
+// One appended DataArray: its header attributes, byte size and a function streaming its values.
+struct Array {
+  std::string type, name;
+  int ncomp;
+  std::string extra;  // further XML attributes
+  std::uint64_t bytes;
+  std::function<void(std::ostream&)> write;
 };
+
+template <class T> Array plain(const char* type, const char* name, int ncomp,
+                               const std::vector<T>& v, std::string extra = "") {
+  return {type, name, ncomp, std::move(extra), v.size() * sizeof(T), [&v](std::ostream& out) {
+            put_le(out, v.data(), v.size());
+          }};
+}
+
+// n points of d components (row-major) written as 3 components, zero-padded.
+Array padded(const char* name, const std::vector<double>& v, std::size_t n, std::size_t d) {
+  return {"Float64", name, 3, "", 3 * n * sizeof(double), [&v, n, d](std::ostream& out) {
+            std::vector<double> buf;
+            for (std::size_t i0 = 0; i0 < n; i0 += kBlock) {
+              const std::size_t m = std::min(kBlock, n - i0);
+              buf.assign(3 * m, 0.0);
+              for (std::size_t i = 0; i < m; ++i)
+                for (std::size_t k = 0; k < d; ++k) buf[3 * i + k] = v[d * (i0 + i) + k];
+              put_le(out, buf.data(), buf.size());
+            }
+          }};
+}
+
+// n generated values gen(i) of type T (cell connectivity, offsets, types).
+template <class T, class Gen>
+Array generated(const char* type, const char* name, std::size_t n, Gen gen) {
+  return {type, name, 1, "", n * sizeof(T), [n, gen](std::ostream& out) {
+            std::vector<T> buf;
+            for (std::size_t i0 = 0; i0 < n; i0 += kBlock) {
+              buf.clear();
+              for (std::size_t i = i0; i < std::min(n, i0 + kBlock); ++i) buf.push_back(gen(i));
+              put_le(out, buf.data(), buf.size());
+            }
+          }};
+}
 
 void check(const std::string& path, const char* what, std::size_t got, std::size_t want) {
   if (got != want)
@@ -129,37 +158,23 @@ void write_vtu(const std::string& path, const Snapshot& s) {
   check(path, "body", s.body.size(), n);
   check(path, "material", s.material.size(), n);
 
-  auto pad3 = [&](const std::vector<double>& v) {
-    std::vector<double> o(3 * n, 0.0);
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t k = 0; k < d; ++k) o[3 * i + k] = v[d * i + k];
-    return o;
-  };
-  std::vector<std::int64_t> conn(n), offsets(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    conn[i] = static_cast<std::int64_t>(i);
-    offsets[i] = static_cast<std::int64_t>(i + 1);
-  }
-  const std::vector<std::uint8_t> types(n, kVtkVertex);
   const std::string stress_names =
       " ComponentName0=\"xx\" ComponentName1=\"yy\" ComponentName2=\"zz\""
       " ComponentName3=\"xy\" ComponentName4=\"yz\" ComponentName5=\"xz\"";
-
-  // Arrays are appended in the order their header lines appear below.
-  Appended app;
-  const std::string pd = "        ";
-  std::string point_data;
-  point_data += pd + app.array("Float64", "displacement", 3, pad3(s.displacement));
-  point_data += pd + app.array("Float64", "velocity", 3, pad3(s.velocity));
-  point_data += pd + app.array("Float64", "stress", 6, s.stress, stress_names);
-  point_data += pd + app.array("Float64", "von_mises", 1, s.von_mises);
-  point_data += pd + app.array("Float64", "volume", 1, s.volume);
-  point_data += pd + app.array("Int32", "body", 1, s.body);
-  point_data += pd + app.array("Int32", "material", 1, s.material);
-  const std::string points = pd + app.array("Float64", "Points", 3, pad3(s.position));
-  std::string cells = pd + app.array("Int64", "connectivity", 1, conn);
-  cells += pd + app.array("Int64", "offsets", 1, offsets);
-  cells += pd + app.array("UInt8", "types", 1, types);
+  // Sections of the Piece, in file order; the appended data follows the same order.
+  const std::vector<std::pair<std::string, std::vector<Array>>> sections = {
+      {"PointData Scalars=\"von_mises\" Vectors=\"velocity\"",
+       {padded("displacement", s.displacement, n, d), padded("velocity", s.velocity, n, d),
+        plain("Float64", "stress", 6, s.stress, stress_names),
+        plain("Float64", "von_mises", 1, s.von_mises), plain("Float64", "volume", 1, s.volume),
+        plain("Int32", "body", 1, s.body), plain("Int32", "material", 1, s.material)}},
+      {"Points", {padded("Points", s.position, n, d)}},
+      {"Cells",
+       {generated<std::int64_t>("Int64", "connectivity", n,
+                                [](std::size_t i) { return static_cast<std::int64_t>(i); }),
+        generated<std::int64_t>("Int64", "offsets", n,
+                                [](std::size_t i) { return static_cast<std::int64_t>(i + 1); }),
+        generated<std::uint8_t>("UInt8", "types", n, [](std::size_t) { return kVtkVertex; })}}};
 
   const std::string np = std::to_string(n);
   std::string head;
@@ -170,37 +185,50 @@ void write_vtu(const std::string& path, const Snapshot& s) {
   head += "  <UnstructuredGrid>\n";
   // TimeValue/CycleIndex field data: ParaView shows the time even when a .vtu is opened alone.
   head += "    <FieldData>\n";
-  head +=
-      "      <DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" "
-      "format=\"ascii\">" +
-      fmt_double(s.time) + "</DataArray>\n";
-  head +=
-      "      <DataArray type=\"Int64\" Name=\"CycleIndex\" NumberOfTuples=\"1\" format=\"ascii\">" +
-      std::to_string(s.step) + "</DataArray>\n";
+  head += "      <DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\"";
+  head += " format=\"ascii\">" + fmt_double(s.time) + "</DataArray>\n";
+  head += "      <DataArray type=\"Int64\" Name=\"CycleIndex\" NumberOfTuples=\"1\"";
+  head += " format=\"ascii\">" + std::to_string(s.step) + "</DataArray>\n";
   head += "    </FieldData>\n";
   head += "    <Piece NumberOfPoints=\"" + np + "\" NumberOfCells=\"" + np + "\">\n";
-  head += "      <PointData Scalars=\"von_mises\" Vectors=\"velocity\">\n" + point_data;
-  head += "      </PointData>\n";
-  head += "      <Points>\n" + points + "      </Points>\n";
-  head += "      <Cells>\n" + cells + "      </Cells>\n";
+  std::uint64_t offset = 0;
+  for (const auto& [tag, arrays] : sections) {
+    head += "      <" + tag + ">\n";
+    for (const Array& a : arrays) {
+      head += "        <DataArray type=\"" + a.type + "\" Name=\"" + a.name +
+              "\" NumberOfComponents=\"" + std::to_string(a.ncomp) + "\"" + a.extra +
+              " format=\"appended\" offset=\"" + std::to_string(offset) + "\"/>\n";
+      offset += sizeof(std::uint64_t) + a.bytes;
+    }
+    head += "      </" + tag.substr(0, tag.find(' ')) + ">\n";
+  }
   head += "    </Piece>\n";
   head += "  </UnstructuredGrid>\n";
   head += "  <AppendedData encoding=\"raw\">\n   _";
-  write_atomically(path, head, app.data(), "\n  </AppendedData>\n</VTKFile>\n");
+
+  write_atomically(path, [&](std::ostream& out) {
+    out.write(head.data(), static_cast<std::streamsize>(head.size()));
+    for (const auto& section : sections)
+      for (const Array& a : section.second) {
+        put_le(out, &a.bytes, 1);
+        a.write(out);
+      }
+    out << "\n  </AppendedData>\n</VTKFile>\n";
+  });
 }
 
 void write_pvd(const std::string& path,
                const std::vector<std::pair<double, std::string>>& entries) {
-  std::string body;
-  body += "<?xml version=\"1.0\"?>\n";
-  body += "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n";
-  body += "  <Collection>\n";
+  std::string text;
+  text += "<?xml version=\"1.0\"?>\n";
+  text += "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n";
+  text += "  <Collection>\n";
   for (const auto& [time, file] : entries)
-    body += "    <DataSet timestep=\"" + fmt_double(time) + "\" group=\"\" part=\"0\" file=\"" +
+    text += "    <DataSet timestep=\"" + fmt_double(time) + "\" group=\"\" part=\"0\" file=\"" +
             xml_escape(file) + "\"/>\n";
-  body += "  </Collection>\n";
-  body += "</VTKFile>\n";
-  write_atomically(path, body, "", "");
+  text += "  </Collection>\n";
+  text += "</VTKFile>\n";
+  write_atomically(path, [&](std::ostream& out) { out << text; });
 }
 
 }  // namespace dmi

@@ -99,34 +99,40 @@ template <int D> double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, 
   return work;
 }
 
+// Bodies touch at a node when their particle volumes there, sum_b sum_p V_p N_ip, fill its support:
+// without a gap the sum is the full cell volume (partition of unity) wherever the interface lies.
+constexpr double kContactFill = 0.99;
+
 template <int D> void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel) {
   Grid<D>& g = *s.grid;
   const int nf = g.nfields();
   if (nf < 2) return;
   const Index nn = g.nnodes();
   const double mu = s.options.contact_friction;
+  const double fill = kContactFill * s.options.cell_volume;
   const auto& active = g.active();
   const Index na = static_cast<Index>(active.size());
 #pragma omp parallel for schedule(static)
   for (Index a = 0; a < na; ++a) {
     const Index id = active[a];
     int present = 0;
-    double mt = 0;
+    double mt = 0, vt = 0;
     Vec<D> pt = Vec<D>::Zero(), gt = Vec<D>::Zero();
     for (int b = 0; b < nf; ++b) {
       const Index k = b * nn + id;
       if (g.m[k] <= 0) continue;
       ++present;
       mt += g.m[k];
+      vt += g.vol[k];
       pt += g.m[k] * vel[k];
       gt += g.grad_m[k];
     }
-    if (present < 2) continue;
+    if (present < 2 || vt < fill) continue;  // supports overlap, the bodies do not touch
     const Vec<D> vcm = pt / mt;
     for (int b = 0; b < nf; ++b) {
       const Index k = b * nn + id;
       if (g.m[k] <= 0) continue;
-      Vec<D> n = 2.0 * g.grad_m[k] - gt;
+      Vec<D> n = 2.0 * g.grad_m[k] - gt;  // g_b - sum_{c != b} g_c
       const double len = n.norm();
       if (!(len > 0)) continue;
       n /= len;

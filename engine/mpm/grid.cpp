@@ -22,7 +22,10 @@ Grid<D>::Grid(const Vec<D>& origin, const IVec<D>& cells, double h, int nfields)
   f.assign(n, Vec<D>::Zero());
   v.assign(n, Vec<D>::Zero());
   vL.assign(n, Vec<D>::Zero());
-  if (nfields > 1) grad_m.assign(n, Vec<D>::Zero());
+  if (nfields > 1) {
+    grad_m.assign(n, Vec<D>::Zero());
+    vol.assign(n, 0.0);
+  }
   flag_.assign(static_cast<std::size_t>(nnodes_), 0);
   tile_start_.assign(static_cast<std::size_t>(ntiles_ + 1), 0);
 }
@@ -94,7 +97,10 @@ template <int D> void Grid<D>::bin(const std::vector<Vec<D>>& x) {
       f[k].setZero();
       v[k].setZero();
       vL[k].setZero();
-      if (grad) grad_m[k].setZero();
+      if (grad) {
+        grad_m[k].setZero();
+        vol[k] = 0;
+      }
     }
   }
 }

@@ -66,6 +66,7 @@ template <int D> class Grid {
   std::vector<Vec<D>> f;        // total force (N)
   std::vector<Vec<D>> v;        // velocity at the start of the step v^k (m/s)
   std::vector<Vec<D>> vL;       // updated velocity v^L (m/s)
+  std::vector<double> vol;      // sum_p V_p N_ip, for the contact overlap test (m^3)
   std::vector<Vec<D>> grad_m;   // sum_p m_p grad N_i(x_p): outward from a body, for contact normals (kg/m)
 
  private:

@@ -53,6 +53,7 @@ struct SolverOptions {
   double cfl = 0.5;
   double dt_max = 0.0;          // 0: no user bound
   double contact_friction = 0.0;
+  double cell_volume = 0.0;     // h^D, times the thickness in 2D (m^3)
 };
 
 template <int D> struct Scene {

@@ -70,8 +70,10 @@ template <int D> void Solver<D>::grid_to_particles(double dt) {
         const Index k = fld * g.nnodes() + id;
         g.v[k] = g.m[k] > 0 ? Vec<D>(g.p[k] / g.m[k]) : Vec<D>::Zero();
       }
+    // Walls act on the remap as on v^L. Body contact does not: the particles already carry its
+    // correction, and re-deciding "approaching" on the remapped field (which can disagree with v^L)
+    // feeds strain rates inconsistent with the motion and gained ~12 % energy in the disk test.
     apply_boundaries(scene_, g.v, dt, time_ + dt, false);
-    body_contact(scene_, g.v);
     r = kernels_->g2p(scene_, dt, G2PMode::kinematics);
   }
   if (!r.ok) fail("particle state");

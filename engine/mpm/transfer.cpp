@@ -2,6 +2,7 @@
 
 #include <Eigen/LU>
 #include <cmath>
+#include <type_traits>
 
 #include "engine/mpm/shape.hpp"
 
@@ -54,7 +55,10 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
             if (momentum_only) continue;
             g.m[id] += N * mp;
             g.f[id] += vs * st.dN[n] + N * mg;
-            if (grad) g.grad_m[id] += mp * st.dN[n];
+            if (grad) {
+              g.grad_m[id] += mp * st.dN[n];
+              g.vol[id] += N * P.vol[i];
+            }
           }
         }
       }
@@ -100,9 +104,13 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
       if (mode != G2PMode::kinematics) {
         if (apic) {
           P.v[i] = vpic;
-          // D_p is singular for linear shapes at a node: fall back to C_p = grad v (Jiang 2015, sec. 5).
-          const double scale = h * h;
-          P.C[i] = std::abs(Dp.determinant()) > 1e-8 * std::pow(scale, D) ? Mat<D>(B * Dp.inverse()) : L;
+          // Linear weights: D_p = diag(f(1-f) h^2) vanishes at nodes, so use the equivalent gradient
+          // form C_p = sum v_i grad N_ip^T (Jiang et al. 2015, sec. 5).
+          if constexpr (std::is_same_v<Shape, LinearShape>) {
+            P.C[i] = L;
+          } else {
+            P.C[i] = B * Dp.inverse();
+          }
         } else {
           P.v[i] = blend * (P.v[i] + dv) + (1 - blend) * vpic;
         }
@@ -111,6 +119,10 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
         P.x[i] += dt * vpic;
         P.L[i] = L;
         P.F[i] = (Mat<D>::Identity() + dt * L) * P.F[i];
+        // MUSL: the remapped gradient is the bounded one (v^L is large at nearly empty nodes).
+        if constexpr (std::is_same_v<Shape, LinearShape>) {
+          if (apic && mode == G2PMode::kinematics) P.C[i] = L;
+        }
         if (!g.interior(P.x[i]) || !L.allFinite()) bad = 1;
       }
       if (!P.v[i].allFinite()) bad = 1;

@@ -1,5 +1,6 @@
 // The scenario schema, version 1: every key declared once here (default, unit, doc, validation).
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -53,6 +54,8 @@ void read_mpm(Obj o, MpmConfig& m) {
   o.choice<StressUpdate>("stress_update", m.update, {{"usl", StressUpdate::usl}, {"musl", StressUpdate::musl}},
                          Spec{.doc = "update stress last (USL, SEEDS.md A.1) or modified USL with a momentum remap (MUSL); "
                                      "default usl, but musl for linear shape functions (USL with linear shapes is unstable at nearly empty nodes)"});
+  if (!o.documenting() && m.shape == ShapeKind::linear && m.transfer == TransferKind::apic)
+    o.fail("transfer", nullptr, "flip with shape_function linear (APIC with linear shape functions is unstable at nearly empty nodes; use gimp or bspline2 for APIC)");
   o.finish();
 }
 
@@ -184,15 +187,23 @@ void read_scenario(Obj& o, Scenario& s) {
   o.finish();
 }
 
+std::string value_text(const DVec& v) { return json(v).dump(); }
+std::string value_text(double x) { return json(x).dump(); }
+
 // Cross-references and geometry: what a single key cannot check.
 void check_semantics(const Scenario& s, const std::string& file) {
   const int dim = s.analysis.dimension;
+  if (s.bodies.empty()) throw InputError(file, "/bodies", "[]", "at least one body");
   std::set<std::string> mats, bodies, walls;
   auto dup = [&](std::set<std::string>& set, const std::string& name, const std::string& path) {
     if (!set.insert(name).second) throw InputError(file, path, "\"" + name + "\"", "a name not used before in this list");
   };
   for (std::size_t i = 0; i < s.materials.size(); ++i) dup(mats, s.materials[i].name, "/materials/" + std::to_string(i) + "/name");
   const double h = s.grid.cell_size;
+  for (int d = 0; d < dim; ++d)
+    if (!(s.grid.size[d] > h))
+      throw InputError(file, "/grid/cell_size", value_text(h), "a cell size smaller than the grid size along every axis (grid size " +
+                                                                 value_text(s.grid.size) + ")");
   double est = 0;
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {
     const BodyConfig& b = s.bodies[i];
@@ -204,7 +215,7 @@ void check_semantics(const Scenario& s, const std::string& file) {
       lo[d] = b.shape.type == "box" ? b.shape.min[d] : b.shape.center[d] - b.shape.radius;
       hi[d] = b.shape.type == "box" ? b.shape.max[d] : b.shape.center[d] + b.shape.radius;
       if (b.shape.type == "box" && !(hi[d] > lo[d]))
-        throw InputError(file, p + "/shape/max", std::to_string(hi[d]), "max > min along every axis");
+        throw InputError(file, p + "/shape/max", value_text(b.shape.max), "max > min along every axis (min = " + value_text(b.shape.min) + ")");
       // Every particle must lie at least half a cell inside the grid (shape function support).
       const double glo = s.grid.origin[d] + 0.5 * h, ghi = s.grid.origin[d] + s.grid.size[d] - 0.5 * h;
       if (lo[d] < glo - 1e-12 || hi[d] > ghi + 1e-12) {
@@ -223,7 +234,7 @@ void check_semantics(const Scenario& s, const std::string& file) {
                                               std::to_string(static_cast<long long>(est)) + "); use larger cells");
   double cells = 1;
   for (int d = 0; d < dim; ++d) cells *= std::ceil(s.grid.size[d] / h);
-  if (cells > 4e8) throw InputError(file, "/grid/cell_size", std::to_string(h), "a cell size giving at most 4e8 cells");
+  if (cells > 4e8) throw InputError(file, "/grid/cell_size", value_text(h), "a cell size giving at most 4e8 cells");
   for (std::size_t i = 0; i < s.walls.size(); ++i) {
     const WallConfig& w = s.walls[i];
     const std::string p = "/walls/" + std::to_string(i);
@@ -231,16 +242,21 @@ void check_semantics(const Scenario& s, const std::string& file) {
     if (w.type == "plane") {
       double n2 = 0;
       for (double x : w.normal) n2 += x * x;
-      if (!(n2 > 0)) throw InputError(file, p + "/normal", "", "a non-zero normal vector");
+      if (!(n2 > 0)) throw InputError(file, p + "/normal", value_text(w.normal), "a non-zero normal vector");
     } else {
       for (int d = 0; d < dim; ++d)
-        if (!(w.max[d] > w.min[d])) throw InputError(file, p + "/max", std::to_string(w.max[d]), "max > min along every axis");
+        if (!(w.max[d] > w.min[d]))
+          throw InputError(file, p + "/max", value_text(w.max), "max > min along every axis (min = " + value_text(w.min) + ")");
     }
   }
   for (std::size_t i = 0; i < s.prescribed_velocity.size(); ++i) {
     const auto& r = s.prescribed_velocity[i];
-    dup(walls, r.name, "/prescribed_velocity/" + std::to_string(i) + "/name");
-    if (r.end <= r.start) throw InputError(file, "/prescribed_velocity/" + std::to_string(i) + "/end", std::to_string(r.end), "end > start");
+    const std::string p = "/prescribed_velocity/" + std::to_string(i);
+    dup(walls, r.name, p + "/name");
+    for (int d = 0; d < dim; ++d)
+      if (!(r.max[d] > r.min[d]))
+        throw InputError(file, p + "/max", value_text(r.max), "max > min along every axis (min = " + value_text(r.min) + ")");
+    if (r.end <= r.start) throw InputError(file, p + "/end", value_text(r.end), "end > start (start = " + value_text(r.start) + ")");
   }
   std::set<std::string> probes;
   for (std::size_t i = 0; i < s.output.probes.size(); ++i) {
@@ -277,6 +293,12 @@ Scenario parse_scenario(const std::string& text, const std::string& file) {
   json j;
   try {
     j = json::parse(text);
+  } catch (const json::out_of_range& e) {
+    // e.g. a number too large for a double; the JSON library gives no position for it.
+    std::string what = e.what();
+    const auto k = what.find("] ");
+    throw InputError(file + ": invalid JSON (" + (k == std::string::npos ? what : what.substr(k + 2)) +
+                     "; numbers must fit a double)");
   } catch (const json::parse_error& e) {
     // Turn the byte offset into line:column.
     std::size_t line = 1, col = 1;
@@ -294,6 +316,8 @@ Scenario parse_scenario(const std::string& text, const std::string& file) {
 }
 
 Scenario load_scenario(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, not a scenario file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open the scenario file (does it exist and is it readable?)");
   std::stringstream ss;

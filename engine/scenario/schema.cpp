@@ -187,8 +187,12 @@ std::string markdown(const std::vector<Row>& rows) {
   std::ostringstream os;
   std::string section = "#";
   for (const Row& r : rows) {
+    // A section per top-level object or array, headed by its own row; scalar top-level keys
+    // form "(top level)".
     const auto slash = r.path.find('/', 1);
-    const std::string top = slash == std::string::npos ? "(top level)" : r.path.substr(1, slash - 1);
+    const bool nested = slash != std::string::npos || r.type == "object" || r.type == "array of objects";
+    std::string top = nested ? r.path.substr(1, slash == std::string::npos ? std::string::npos : slash - 1) : "(top level)";
+    if (top.size() > 2 && top.compare(top.size() - 2, 2, "[]") == 0) top.resize(top.size() - 2);
     if (top != section) {
       section = top;
       os << "\n### `" << top << "`\n\n| key | type | unit | default | allowed | description |\n|---|---|---|---|---|---|\n";

@@ -247,17 +247,73 @@ TEST_F(IoTest, TextFileThrows) {
   expect_read_error(path, "HDF5");
 }
 
+// Tiny HDF5 files (HDF5 1.8 format, as the writer uses) made with the HDF5 C API, stored as hex
+// so the test needs no HDF5 headers: root attributes only.
+//   kOtherFormat: format = "other-results", format_version = 1
+//   kVersion2:    format = "damimpact-results", format_version = 2
+//   kNoScenario:  all root attributes of a valid file (complete = 1), no datasets or groups
+const char* const kOtherFormat =
+    "894844460d0a1a0a020808000000000000000000ffffffffffffffffda0000000000000030000000"
+    "00000000bc277cdb4f48445202202645026b2645026b2645026b2645026b8f021200000000ffffff"
+    "ffffffffffffffffffffffffff0a0200010000151200040000ffffffffffffffffffffffffffffff"
+    "ff0c290000030007000800040000666f726d617400130100000d000000020000006f746865722d72"
+    "6573756c74730c2c000003000f000c00040000666f726d61745f76657273696f6e00100800000400"
+    "00000000200002000000010000005c142827";
+const char* const kVersion2 =
+    "894844460d0a1a0a020808000000000000000000ffffffffffffffffde0000000000000030000000"
+    "00000000e4ac32924f48445202202645026b2645026b2645026b2645026b93021200000000ffffff"
+    "ffffffffffffffffffffffffff0a0200010000151200040000ffffffffffffffffffffffffffffff"
+    "ff0c2d0000030007000800040000666f726d61740013010000110000000200000064616d696d7061"
+    "63742d726573756c74730c2c000003000f000c00040000666f726d61745f76657273696f6e001008"
+    "00000400000000002000020000000200000001ddbad8";
+const char* const kNoScenario =
+    "894844460d0a1a0a020808000000000000000000ffffffffffffffffaf0100000000000030000000"
+    "00000000e283ed434f48445202212645026b2645026b2645026b2645026b6301021200000000ffff"
+    "ffffffffffffffffffffffffffff0a0200010000151200040000ffffffffffffffffffffffffffff"
+    "ffff0c2d0000030007000800040000666f726d61740013010000110000000200000064616d696d70"
+    "6163742d726573756c74730c2c000003000f000c00040000666f726d61745f76657273696f6e0010"
+    "080000040000000000200002000000010000000c260000030009000c00040000636f6d706c657465"
+    "0010080000040000000000200002000000010000000c27000003000a000c0004000064696d656e73"
+    "696f6e0010080000040000000000200002000000020000000c270000030011000800040000736f66"
+    "74776172655f76657273696f6e00130100000100000002000000780c24000003000e000800040000"
+    "7363656e6172696f5f6e616d6500130100000100000002000000780c24000003000e000800040000"
+    "7363656e6172696f5f66696c65001301000001000000020000007836ddb670";
+
+std::string from_hex(const std::string& hex) {
+  std::string bytes;
+  for (std::size_t i = 0; i + 1 < hex.size(); i += 2)
+    bytes.push_back(static_cast<char>(std::stoi(hex.substr(i, 2), nullptr, 16)));
+  return bytes;
+}
+
 TEST_F(IoTest, WrongFormatAttributeThrows) {
-  // Patch the format string in place (same length, so the file stays valid HDF5).
-  const std::string path = file("results.h5");
-  write_sample(path, 2, {});
-  std::string bytes = slurp(path);
-  const std::size_t at = bytes.find("damimpact-results");
-  ASSERT_NE(at, std::string::npos);
-  ASSERT_EQ(bytes.find("damimpact-results", at + 1), std::string::npos);
-  bytes.replace(at, 17, "otherwise-results");
-  spit(path, bytes);
+  const std::string path = file("other.h5");
+  spit(path, from_hex(kOtherFormat));
   expect_read_error(path, "not a damimpact results file");
+}
+
+TEST_F(IoTest, UnsupportedVersionThrows) {
+  const std::string path = file("v2.h5");
+  spit(path, from_hex(kVersion2));
+  expect_read_error(path, "unsupported format_version 2");
+}
+
+TEST_F(IoTest, MissingDatasetThrows) {
+  const std::string path = file("noscenario.h5");
+  spit(path, from_hex(kNoScenario));
+  expect_read_error(path, "missing dataset /scenario");
+}
+
+TEST_F(IoTest, CorruptMetadataThrows) {
+  // One changed byte in the root group's object header: caught by the HDF5 1.8 format checksums.
+  const std::string path = file("results.h5");
+  write_sample(path, 2, {make_snapshot(2, 3, 0.0, 0, 1.0)});
+  std::string bytes = slurp(path);
+  const std::size_t at = bytes.find("OHDR");
+  ASSERT_NE(at, std::string::npos);
+  bytes[at + 6] = static_cast<char>(bytes[at + 6] ^ 0x5a);
+  spit(path, bytes);
+  expect_read_error(path, "");
 }
 
 TEST_F(IoTest, VtuHeaderAndSize) {

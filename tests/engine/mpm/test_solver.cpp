@@ -1,0 +1,186 @@
+// Solver physics: conservation, transfer/shape/update variants, determinism across thread counts,
+// 3D, body-body friction, failure reporting, time step, active-node tracking.
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "engine/common/error.hpp"
+#include "engine/mpm/solver.hpp"
+#include "engine/scenario/scenario.hpp"
+#include "engine/sim/build_scene.hpp"
+#include "engine/verify/validate.hpp"
+
+namespace dmi {
+namespace {
+
+using json = nlohmann::json;
+
+json disks(const std::string& shape, const std::string& transfer, const std::string& update, const std::string& method) {
+  json j = json::parse(embedded_examples().at("colliding_disks.json"));
+  j["mpm"] = {{"shape_function", shape}, {"transfer", transfer}, {"stress_update", update}};
+  j["contact"]["method"] = method;
+  j["grid"]["cell_size"] = 0.025;
+  j["analysis"]["end_time"] = 2.0;
+  return j;
+}
+
+template <int D> Solver<D> solver_for(const json& j) { return Solver<D>(build_scene<D>(parse_scenario(j, "test.json"))); }
+
+template <int D> void run_to(Solver<D>& s, double end) {
+  while (s.time() < end - 1e-12) s.step(s.stable_time_step(end - s.time()));
+}
+
+// Without gravity and walls every transfer conserves linear momentum to round-off, through contact.
+TEST(Solver, MomentumConservedForEveryVariant) {
+  for (std::string shape : {"linear", "gimp", "bspline2"})
+    for (std::string transfer : {"flip", "apic"})
+      for (std::string update : {"usl", "musl"})
+        for (std::string method : {"multi_field", "single_field"}) {
+          if (shape == "linear" && (update == "usl" || transfer == "apic")) continue;  // unstable; refused or not default
+          SCOPED_TRACE(shape + " " + transfer + " " + update + " " + method);
+          Solver<2> s = solver_for<2>(disks(shape, transfer, update, method));
+          const auto d0 = s.diagnostics();
+          ASSERT_NO_THROW(run_to(s, 2.0));
+          const auto d = s.diagnostics();
+          const double scale = 2 * 1000 * M_PI * 0.04 * 0.1 * std::sqrt(2.0);
+          EXPECT_LT(d.momentum.norm() / scale, 1e-12) << shape << " " << transfer << " " << update << " " << method;
+          // The disks met (strain energy was stored) and energy stays bounded. (MUSL with multi-field
+          // contact gains up to ~5 % at this resolution during separation; docs/verification.md.)
+          EXPECT_GT(d.strain, 1e-3 * d0.kinetic) << shape << " " << transfer << " " << update << " " << method;
+          EXPECT_LT(d.kinetic + d.strain, 1.05 * d0.kinetic) << shape << " " << transfer << " " << update << " " << method;
+        }
+}
+
+// Bit-identical results for 1 and 2 threads (coloured lock-free scatter, ordered reductions).
+TEST(Solver, DeterministicAcrossThreadCounts) {
+  const json j = disks("bspline2", "apic", "usl", "multi_field");
+  std::vector<Vec<2>> x[2];
+  double ke[2];
+  for (int t = 1; t <= 2; ++t) {
+    omp_set_num_threads(t);
+    Solver<2> s = solver_for<2>(j);
+    run_to(s, 1.5);
+    x[t - 1] = s.scene().particles.x;
+    ke[t - 1] = s.diagnostics().kinetic;
+  }
+  omp_set_num_threads(2);
+  ASSERT_EQ(x[0].size(), x[1].size());
+  for (std::size_t i = 0; i < x[0].size(); ++i) ASSERT_EQ(x[0][i], x[1][i]) << "particle " << i;
+  EXPECT_EQ(ke[0], ke[1]);
+}
+
+// 3D: a bar (nu = 0) hitting a rigid wall: contact stress rho c v and contact time 2L/c.
+TEST(Solver, WallImpact3D) {
+  json j = json::parse(embedded_examples().at("wall_impact.json"));
+  j["analysis"] = {{"dimension", 3}, {"end_time", 0.03}, {"gravity", {0, 0, 0}}};
+  j["grid"] = {{"origin", {-0.1, -0.05, -0.05}}, {"size", {1.3, 0.2, 0.2}}, {"cell_size", 0.025}};
+  j["bodies"][0]["shape"] = {{"type", "box"}, {"min", {0, 0, 0}}, {"max", {1, 0.1, 0.1}}};
+  j["bodies"][0]["velocity"] = {-1, 0, 0};
+  j["walls"][0]["point"] = {0, 0, 0};
+  j["walls"][0]["normal"] = {1, 0, 0};
+  j["output"]["probes"] = json::array();
+  const Scenario s = parse_scenario(j, "wall3d.json");
+  const RunOutput out = run_quiet(s);
+  const auto& f = series(out.results, "walls/wall/force");
+  const double rho = 1000, c = 100, A = 0.01, T = 0.02;
+  const double stress = -time_mean(out.results.time, f, 0, 0.2 * T, 0.8 * T) / A;
+  EXPECT_NEAR(stress / (rho * c * 1.0), 1.0, 0.03);
+  EXPECT_EQ(f.components.size(), 3u);
+}
+
+// Block sliding on a fixed slab (a second body held by a stick wall) through multi-field contact
+// with Coulomb friction: a = g (sin theta - mu cos theta).
+TEST(Solver, BodyContactFrictionOnIncline) {
+  json j = json::parse(embedded_examples().at("incline_sliding.json"));
+  j["grid"]["origin"] = {0, -0.6};
+  j["grid"]["size"] = {4, 1.6};
+  j["materials"].push_back({{"name", "base"}, {"density", 2000}, {"youngs_modulus", 1e8}, {"poisson_ratio", 0.3}});
+  j["bodies"].push_back({{"name", "slab"}, {"material", "base"}, {"shape", {{"type", "box"}, {"min", {0.1, -0.4}}, {"max", {3.9, 0}}}}});
+  j["walls"] = json::array({{{"name", "bed"}, {"type", "plane"}, {"point", {0, -0.4}}, {"normal", {0, 1}}, {"condition", "stick"}}});
+  j["contact"] = {{"method", "multi_field"}, {"friction", 0.3}};
+  const RunOutput out = run_quiet(parse_scenario(j, "slab.json"));
+  const double a = slope(out.results.time, series(out.results, "probes/block/velocity"), 0, 0.2, 1.0);
+  const double exact = 9.81 * (0.5 - 0.3 * std::sqrt(3.0) / 2);
+  EXPECT_NEAR(a / exact, 1.0, 0.05);
+  // Frictionless: a = g sin theta.
+  j["contact"]["friction"] = 0.0;
+  const RunOutput free = run_quiet(parse_scenario(j, "slab.json"));
+  EXPECT_NEAR(slope(free.results.time, series(free.results, "probes/block/velocity"), 0, 0.2, 1.0) / (9.81 * 0.5), 1.0, 0.05);
+}
+
+// Multi-field bodies separate after an elastic collision; a single shared field also conserves momentum.
+TEST(Solver, MultiFieldBodiesSeparate) {
+  Solver<2> s = solver_for<2>(disks("bspline2", "flip", "usl", "multi_field"));
+  run_to(s, 3.0);
+  const auto& P = s.scene().particles;
+  const Body& b = s.scene().bodies[0];
+  double m = 0;
+  Vec<2> mv = Vec<2>::Zero();
+  for (Index i = b.begin; i < b.end; ++i) { m += P.mass[i]; mv += P.mass[i] * P.v[i]; }
+  EXPECT_LT(mv[0] / m, -0.05);  // disk 1 moves back
+}
+
+TEST(Solver, TimeStepFromCflAndUserBound) {
+  json j = json::parse(embedded_examples().at("wall_impact.json"));
+  Solver<2> s = solver_for<2>(j);
+  const double c = 100, h = 0.02, v = 1;
+  EXPECT_NEAR(s.stable_time_step(1.0), 0.5 * h / (c + v), 1e-15);
+  EXPECT_DOUBLE_EQ(s.stable_time_step(1e-6), 1e-6);
+  j["analysis"]["dt_max"] = 2e-5;
+  EXPECT_DOUBLE_EQ(solver_for<2>(j).stable_time_step(1.0), 2e-5);
+}
+
+TEST(Solver, ParticleLeavingTheGridStopsWithBodyAndParticle) {
+  json j = json::parse(embedded_examples().at("wall_impact.json"));
+  j["walls"] = json::array();
+  j["bodies"][0]["velocity"] = {-5, 0};
+  Solver<2> s = solver_for<2>(j);
+  try {
+    run_to(s, 0.03);
+    FAIL() << "expected RunError";
+  } catch (const RunError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("body 'bar'"), std::string::npos) << m;
+    EXPECT_NE(m.find("left the grid"), std::string::npos) << m;
+    EXPECT_NE(m.find("step"), std::string::npos) << m;
+  }
+}
+
+TEST(Solver, NonFiniteStateStopsTheRun) {
+  Solver<2> s = solver_for<2>(json::parse(embedded_examples().at("wall_impact.json")));
+  s.scene().particles.v[7] = Vec<2>(std::nan(""), 0);
+  try {
+    s.step(1e-5);
+    FAIL() << "expected RunError";
+  } catch (const RunError& e) {
+    EXPECT_NE(std::string(e.what()).find("non-finite"), std::string::npos) << e.what();
+  }
+}
+
+// Active nodes follow the occupied cells: a 10x larger empty domain activates the same nodes.
+TEST(Solver, ActiveNodesIndependentOfDomainSize) {
+  json j = json::parse(embedded_examples().at("free_fall.json"));
+  Solver<2> small = solver_for<2>(j);
+  small.step(1e-4);
+  j["grid"]["size"] = {10, 30};
+  j["grid"]["origin"] = {-4.6, -20};  // shifted by whole tiles (4 cells)
+  Solver<2> big = solver_for<2>(j);
+  big.step(1e-4);
+  EXPECT_EQ(small.scene().grid->active().size(), big.scene().grid->active().size());
+  EXPECT_GT(big.scene().grid->nnodes(), 50 * small.scene().grid->active().size());
+}
+
+// FLIP on a free-free bar: total energy is conserved (no external work) within a small drift.
+TEST(Solver, FlipConservesEnergyOfVibratingBar) {
+  Solver<2> s = solver_for<2>(json::parse(embedded_examples().at("bar_free_free.json")));
+  const auto d0 = s.diagnostics();
+  run_to(s, 20.0);
+  const auto d1 = s.diagnostics();
+  EXPECT_NEAR((d1.kinetic + d1.strain) / (d0.kinetic + d0.strain), 1.0, 0.01);
+  EXPECT_GT(d0.kinetic, 0);
+}
+
+}  // namespace
+}  // namespace dmi
