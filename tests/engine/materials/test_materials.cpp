@@ -1,0 +1,109 @@
+// Material laws against closed forms: uniaxial strain increments, plane stress / plane strain,
+// objectivity under rigid rotation, strain energy, Neo-Hookean plane stress.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "engine/materials/material.hpp"
+
+namespace dmi {
+namespace {
+
+MaterialConfig elastic(const std::string& model, double E, double nu) {
+  MaterialConfig c;
+  c.name = "m";
+  c.model = model;
+  c.density = 1000;
+  c.youngs_modulus = E;
+  c.poisson_ratio = nu;
+  return c;
+}
+
+template <int D> Particles<D> one_particle() {
+  Particles<D> p;
+  p.push(Vec<D>::Zero(), Vec<D>::Zero(), Vec<D>::Constant(0.1), 1.0, 1e-3, 0);
+  return p;
+}
+
+template <int D> std::unique_ptr<Material<D>> make(const MaterialConfig& c, Plane plane) {
+  MaterialRegistry<D> r;
+  register_materials(r);
+  return r.make(c, plane);
+}
+
+// Uniaxial strain eps_xx (all others zero): sigma_xx = (lambda + 2 mu) eps, sigma_yy = sigma_zz = lambda eps.
+TEST(LinearElastic, UniaxialStrainPlaneStrainAnd3D) {
+  const double E = 2e9, nu = 0.3, eps = 1e-4;
+  const double lam = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+  auto m2 = make<2>(elastic("linear_elastic", E, nu), Plane::strain);
+  auto p2 = one_particle<2>();
+  p2.L[0](0, 0) = eps / 1e-3;  // applied over dt = 1e-3 s
+  m2->update(p2, 0, 1, 1e-3);
+  EXPECT_NEAR(p2.stress[0](0, 0), (lam + 2 * mu) * eps, 1e-6 * E * eps);
+  EXPECT_NEAR(p2.stress[0](1, 1), lam * eps, 1e-6 * E * eps);
+  EXPECT_NEAR(p2.stress_zz[0], lam * eps, 1e-6 * E * eps);
+  auto m3 = make<3>(elastic("linear_elastic", E, nu), Plane::none);
+  auto p3 = one_particle<3>();
+  p3.L[0](0, 0) = eps / 1e-3;
+  m3->update(p3, 0, 1, 1e-3);
+  EXPECT_NEAR(p3.stress[0](2, 2), lam * eps, 1e-6 * E * eps);
+  // Strain energy of the uniaxial strain state: (lambda + 2 mu) eps^2 / 2 per volume.
+  EXPECT_NEAR(m3->strain_energy(p3, 0, 1) / p3.vol[0], 0.5 * (lam + 2 * mu) * eps * eps, 1e-6 * E * eps * eps);
+}
+
+// Plane stress, strain (eps, -nu eps): sigma_xx = E eps, sigma_yy = 0, sigma_zz = 0.
+TEST(LinearElastic, PlaneStressUniaxialStress) {
+  const double E = 30e9, nu = 0.2, eps = 1e-5;
+  auto m = make<2>(elastic("linear_elastic", E, nu), Plane::stress);
+  auto p = one_particle<2>();
+  p.L[0](0, 0) = eps;
+  p.L[0](1, 1) = -nu * eps;
+  m->update(p, 0, 1, 1.0);
+  EXPECT_NEAR(p.stress[0](0, 0), E * eps, 1e-9 * E * eps);
+  EXPECT_NEAR(p.stress[0](1, 1), 0.0, 1e-9 * E * eps);
+  EXPECT_EQ(p.stress_zz[0], 0.0);
+  EXPECT_NEAR(m->wave_speed(), std::sqrt(E / (1000 * (1 - nu * nu))), 1e-9);
+}
+
+// A rigid spin W rotates the stress (Jaumann rate): its invariants stay put over a quarter turn.
+TEST(LinearElastic, JaumannRateIsObjective) {
+  auto m = make<2>(elastic("linear_elastic", 1e9, 0.25), Plane::strain);
+  auto p = one_particle<2>();
+  p.stress[0] << 3e6, 1e6, 1e6, -2e6;
+  const double tr0 = p.stress[0].trace(), det0 = p.stress[0].determinant();
+  const int n = 20000;
+  const double omega = 1.0, dt = (M_PI / 2) / omega / n;
+  p.L[0] << 0, -omega, omega, 0;
+  for (int i = 0; i < n; ++i) m->update(p, 0, 1, dt);
+  EXPECT_NEAR(p.stress[0].trace(), tr0, 1e-9 * 3e6);
+  EXPECT_NEAR(p.stress[0].determinant() / det0, 1.0, 1e-3);
+  // A quarter turn swaps the normal stresses.
+  EXPECT_NEAR(p.stress[0](0, 0), -2e6, 2e3);
+  EXPECT_NEAR(p.stress[0](1, 1), 3e6, 2e3);
+}
+
+// Neo-Hookean reduces to linear elasticity for small strain, and plane stress has sigma_zz = 0.
+TEST(NeoHookean, SmallStrainLimitAndPlaneStress) {
+  const double E = 5e6, nu = 0.45, eps = 1e-6;
+  auto m = make<2>(elastic("neo_hookean", E, nu), Plane::stress);
+  auto p = one_particle<2>();
+  p.F[0](0, 0) = 1 + eps;
+  p.F[0](1, 1) = 1 - nu * eps;
+  m->update(p, 0, 1, 0.0);
+  EXPECT_NEAR(p.stress[0](0, 0) / (E * eps), 1.0, 1e-4);
+  EXPECT_NEAR(p.stress[0](1, 1) / (E * eps), 0.0, 1e-4);
+  EXPECT_NEAR(p.stress_zz[0], 0.0, 1e-9 * E);
+  // Large stretch in plane strain: sigma = mu/J (B - I) + lambda ln J / J I.
+  auto ms = make<2>(elastic("neo_hookean", E, nu), Plane::strain);
+  auto q = one_particle<2>();
+  q.F[0] << 1.5, 0, 0, 1;
+  ms->update(q, 0, 1, 0.0);
+  const double lam = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu)), J = 1.5;
+  EXPECT_NEAR(q.stress[0](0, 0), mu / J * (J * J - 1) + lam * std::log(J) / J, 1e-9 * E);
+  EXPECT_NEAR(q.stress_zz[0], lam * std::log(J) / J, 1e-9 * E);
+  EXPECT_NEAR(q.vol[0], 1.5e-3, 1e-15);
+  EXPECT_GT(ms->strain_energy(q, 0, 1), 0.0);
+}
+
+}  // namespace
+}  // namespace dmi

@@ -1,0 +1,47 @@
+// Box walls and prescribed-velocity regions.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/scenario/scenario.hpp"
+#include "engine/verify/validate.hpp"
+
+namespace dmi {
+namespace {
+
+using json = nlohmann::json;
+
+// A bar thrown at a rigid box obstacle bounces off it like off a plane wall: stress rho c v, time 2L/c.
+TEST(Boundaries, BoxWallActsLikeAPlaneWall) {
+  json j = json::parse(embedded_examples().at("wall_impact.json"));
+  j["walls"] = json::array({{{"name", "wall"}, {"type", "box"}, {"min", {-0.1, -0.1}}, {"max", {0, 0.3}}, {"condition", "slip"}}});
+  const RunOutput out = run_quiet(parse_scenario(j, "box.json"));
+  const auto& f = series(out.results, "walls/wall/force");
+  const double stress = -time_mean(out.results.time, f, 0, 0.004, 0.016) / 0.2;
+  EXPECT_NEAR(stress / 1e5, 1.0, 0.03);
+}
+
+// Nodes in a prescribed-velocity region move with the given velocity while it is active; a body in
+// the region is carried along and keeps that speed after the window closes. The region reports the
+// force it needed: its time integral is the momentum given, 200 kg x 0.5 m/s.
+TEST(Boundaries, PrescribedVelocityRegionDrivesTheBody) {
+  json j = json::parse(embedded_examples().at("wall_impact.json"));
+  j["walls"] = json::array();
+  j["bodies"][0]["velocity"] = {0, 0};
+  j["prescribed_velocity"] = json::array(
+      {{{"name", "carrier"}, {"min", {-0.1, -0.1}}, {"max", {1.2, 0.3}}, {"velocity", {0.5, 0}}, {"start", 0.0}, {"end", 0.02}}});
+  j["analysis"]["end_time"] = 0.04;
+  j["output"]["snapshot_interval"] = 0;
+  const RunOutput out = run_quiet(parse_scenario(j, "carrier.json"));
+  const auto& t = out.results.time;
+  const auto& v = series(out.results, "probes/bar/velocity");
+  EXPECT_NEAR(time_mean(t, v, 0, 0.005, 0.02), 0.5, 1e-6);
+  EXPECT_NEAR(time_mean(t, v, 0, 0.025, 0.04), 0.5, 1e-3);  // free flight afterwards
+  const auto& f = series(out.results, "regions/carrier/force");
+  double impulse = 0;
+  const auto& dt = series(out.results, "dt");
+  for (std::size_t i = 0; i < f.samples(); ++i) impulse += f.data[2 * i] * dt.data[i];
+  EXPECT_NEAR(-impulse, 0.5 * 200, 1e-6 * 100);
+}
+}  // namespace
+}  // namespace dmi
