@@ -142,6 +142,21 @@ std::vector<CaseResult> incline() {
   return stamp(r, timer.seconds());
 }
 
+// 3b. The same block on a second elastic body (multi-field contact, Bardenhagen 2000) instead of a
+//     wall: a = g (sin theta - mu cos theta) with mu = 0.3, and g sin theta without friction.
+std::vector<CaseResult> slab_friction() {
+  Timer timer;
+  const double g = 9.81, th = pi / 6;
+  std::vector<CaseResult> r;
+  for (double mu : {0.3, 0.0}) {
+    const RunOutput out = run_quiet(example_scenario("block_on_slab.json", {{"/contact/friction", mu}}));
+    const double a = slope(out.results.time, series(out.results, "probes/block/velocity"), 0, 0.2, 1.0);
+    r.push_back(metric("slab_friction", mu > 0 ? "sliding acceleration mu=0.3" : "sliding acceleration mu=0", "m/s^2", a,
+                       g * (std::sin(th) - mu * std::cos(th)), 0.05));
+  }
+  return stamp(r, timer.seconds());
+}
+
 // 4. Elastic bar onto a rigid frictionless wall (1D wave, nu = 0): contact stress rho c v,
 //    contact time 2L/c.
 std::vector<CaseResult> wall_impact() {
@@ -201,6 +216,7 @@ const std::vector<ValidationCase>& validation_cases() {
       {"bar_free_free", "axial vibration of a free-free bar: period and interior convergence order", bar_free_free},
       {"colliding_disks", "two elastic disks (Sulsky 1995): momentum, energy drift, rebound", colliding_disks},
       {"incline", "block on a 30 deg incline with Coulomb friction: sliding and sticking", incline},
+      {"slab_friction", "block sliding on a second body: multi-field contact with and without friction", slab_friction},
       {"wall_impact", "elastic bar onto a rigid wall: contact stress rho c v and time 2L/c", wall_impact},
       {"free_fall", "free fall: drop g t^2/2, no stress", free_fall},
       {"rest_on_wall", "block at rest on a wall: settlement rho g H^2/3E, no drift or creep", rest_on_wall},

@@ -90,26 +90,6 @@ TEST(Solver, WallImpact3D) {
   EXPECT_EQ(f.components.size(), 3u);
 }
 
-// Block sliding on a fixed slab (a second body held by a stick wall) through multi-field contact
-// with Coulomb friction: a = g (sin theta - mu cos theta).
-TEST(Solver, BodyContactFrictionOnIncline) {
-  json j = json::parse(embedded_examples().at("incline_sliding.json"));
-  j["grid"]["origin"] = {0, -0.6};
-  j["grid"]["size"] = {4, 1.6};
-  j["materials"].push_back({{"name", "base"}, {"density", 2000}, {"youngs_modulus", 1e8}, {"poisson_ratio", 0.3}});
-  j["bodies"].push_back({{"name", "slab"}, {"material", "base"}, {"shape", {{"type", "box"}, {"min", {0.1, -0.4}}, {"max", {3.9, 0}}}}});
-  j["walls"] = json::array({{{"name", "bed"}, {"type", "plane"}, {"point", {0, -0.4}}, {"normal", {0, 1}}, {"condition", "stick"}}});
-  j["contact"] = {{"method", "multi_field"}, {"friction", 0.3}};
-  const RunOutput out = run_quiet(parse_scenario(j, "slab.json"));
-  const double a = slope(out.results.time, series(out.results, "probes/block/velocity"), 0, 0.2, 1.0);
-  const double exact = 9.81 * (0.5 - 0.3 * std::sqrt(3.0) / 2);
-  EXPECT_NEAR(a / exact, 1.0, 0.05);
-  // Frictionless: a = g sin theta.
-  j["contact"]["friction"] = 0.0;
-  const RunOutput free = run_quiet(parse_scenario(j, "slab.json"));
-  EXPECT_NEAR(slope(free.results.time, series(free.results, "probes/block/velocity"), 0, 0.2, 1.0) / (9.81 * 0.5), 1.0, 0.05);
-}
-
 // Multi-field bodies separate after an elastic collision; a single shared field also conserves momentum.
 TEST(Solver, MultiFieldBodiesSeparate) {
   Solver<2> s = solver_for<2>(disks("bspline2", "flip", "usl", "multi_field"));
