@@ -22,7 +22,7 @@ template <int D> class LinearElastic final : public Material<D> {
   void update(Particles<D>& p, Index begin, Index end, double dt) const override {
     const double lam = lambda_in_, mu = el_.mu, lam3 = el_.lambda;
     const bool strain2d = D == 2 && plane_ == Plane::strain;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (end - begin > kParallelMin)
     for (Index i = begin; i < end; ++i) {
       const Mat<D>& L = p.L[i];
       const Mat<D> Dm = 0.5 * (L + L.transpose());

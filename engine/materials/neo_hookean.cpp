@@ -32,7 +32,7 @@ template <int D> class NeoHookean final : public Material<D> {
 
   void update(Particles<D>& p, Index begin, Index end, double /*dt*/) const override {
     const double mu = el_.mu, lam = el_.lambda;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (end - begin > kParallelMin)
     for (Index i = begin; i < end; ++i) {
       const Mat<D>& F = p.F[i];
       const double J2 = F.determinant();

@@ -112,7 +112,7 @@ template <int D> void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel) {
   const double fill = kContactFill * s.options.cell_volume;
   const auto& active = g.active();
   const Index na = static_cast<Index>(active.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (na > kParallelMin)
   for (Index a = 0; a < na; ++a) {
     const Index id = active[a];
     int present = 0;

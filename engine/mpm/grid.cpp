@@ -86,7 +86,7 @@ template <int D> void Grid<D>::bin(const std::vector<Vec<D>>& x) {
   std::sort(active_.begin(), active_.end());
   const bool grad = nfields_ > 1;
   const Index na = static_cast<Index>(active_.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (na > kParallelMin)
   for (Index a = 0; a < na; ++a) {
     const Index id = active_[a];
     flag_[id] = 0;

@@ -11,7 +11,7 @@ template <class F> double deterministic_sum(Index n, F&& term) {
   constexpr Index chunk = 4096;
   const Index nc = (n + chunk - 1) / chunk;
   std::vector<double> part(static_cast<std::size_t>(nc), 0.0);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > kParallelMin)
   for (Index c = 0; c < nc; ++c) {
     double s = 0;
     const Index end = std::min(n, (c + 1) * chunk);

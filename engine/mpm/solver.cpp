@@ -36,7 +36,7 @@ template <int D> void Solver<D>::grid_update(double dt) {
   const auto& active = g.active();
   const Index na = static_cast<Index>(active.size());
   const double eps = mass_eps_;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (na > kParallelMin)
   for (Index a = 0; a < na; ++a) {
     for (int fld = 0; fld < g.nfields(); ++fld) {
       const Index k = fld * nn + active[a];
@@ -89,7 +89,7 @@ template <int D> double Solver<D>::stable_time_step(double limit) const {
   if (scene_.options.dt_max > 0) dt = std::min(dt, scene_.options.dt_max);
   for (const Body& b : scene_.bodies) {
     double vmax = 0;
-#pragma omp parallel for schedule(static) reduction(max : vmax)
+#pragma omp parallel for schedule(static) reduction(max : vmax) if (b.end - b.begin > kParallelMin)
     for (Index i = b.begin; i < b.end; ++i) vmax = std::max(vmax, P.v[i].norm());
     const double c = scene_.materials[b.material]->wave_speed();
     dt = std::min(dt, scene_.options.cfl * scene_.grid->h() / (c + vmax));

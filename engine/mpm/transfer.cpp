@@ -25,10 +25,11 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
     for (std::size_t b = 0; b < s.bodies.size(); ++b) field[b] = s.bodies[b].field;
     const auto& start = g.tile_start();
     const auto& order = g.tile_particles();
+    const bool parallel = static_cast<Index>(P.size()) > kParallelMin;
     for (int c = 0; c < (1 << D); ++c) {
       const auto& tiles = g.color_tiles(c);
       const Index nt = static_cast<Index>(tiles.size());
-#pragma omp parallel for schedule(dynamic, 1)
+#pragma omp parallel for schedule(dynamic, 1) if (parallel)
       for (Index k = 0; k < nt; ++k) {
         St st;
         const Index t = tiles[k];
@@ -76,7 +77,7 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
     std::vector<int> field(s.bodies.size());
     for (std::size_t b = 0; b < s.bodies.size(); ++b) field[b] = s.bodies[b].field;
     int bad = 0;
-#pragma omp parallel for schedule(static) reduction(| : bad)
+#pragma omp parallel for schedule(static) reduction(| : bad) if (np > kParallelMin)
     for (Index i = 0; i < np; ++i) {
       St st;
       const Vec<D> xr = g.grid_coord(P.x[i]);

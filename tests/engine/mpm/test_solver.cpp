@@ -46,21 +46,22 @@ TEST(Solver, MomentumConservedForEveryVariant) {
           const auto d = s.diagnostics();
           const double scale = 2 * 1000 * M_PI * 0.04 * 0.1 * std::sqrt(2.0);
           EXPECT_LT(d.momentum.norm() / scale, 1e-12) << shape << " " << transfer << " " << update << " " << method;
-          // The disks met (strain energy was stored) and energy stays bounded. (MUSL with multi-field
-          // contact gains up to ~5 % at this resolution during separation; docs/verification.md.)
+          // The disks met (strain energy was stored) and energy does not grow (docs/verification.md).
           EXPECT_GT(d.strain, 1e-3 * d0.kinetic) << shape << " " << transfer << " " << update << " " << method;
-          EXPECT_LT(d.kinetic + d.strain, 1.05 * d0.kinetic) << shape << " " << transfer << " " << update << " " << method;
+          EXPECT_LT(d.kinetic + d.strain, 1.01 * d0.kinetic) << shape << " " << transfer << " " << update << " " << method;
         }
 }
 
 // Bit-identical results for 1 and 2 threads (coloured lock-free scatter, ordered reductions).
 TEST(Solver, DeterministicAcrossThreadCounts) {
-  const json j = disks("bspline2", "apic", "usl", "multi_field");
+  json j = disks("bspline2", "apic", "usl", "multi_field");
+  j["grid"]["cell_size"] = 0.0125;  // ~6,500 particles: above kParallelMin, so 2 threads really run
   std::vector<Vec<2>> x[2];
   double ke[2];
   for (int t = 1; t <= 2; ++t) {
     omp_set_num_threads(t);
     Solver<2> s = solver_for<2>(j);
+    ASSERT_GT(static_cast<Index>(s.scene().particles.size()), kParallelMin);
     run_to(s, 1.5);
     x[t - 1] = s.scene().particles.x;
     ke[t - 1] = s.diagnostics().kinetic;
