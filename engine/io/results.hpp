@@ -35,6 +35,10 @@ struct Snapshot {
   std::vector<std::int32_t> material;  // count, material index
 };
 
+// Throws std::runtime_error("<where>: snapshot <array> has N values, expected M") unless every
+// array of s matches s.count and s.dim.
+void check_snapshot(const Snapshot& s, const std::string& where);
+
 struct RunInfo {
   std::string scenario_name;
   std::string scenario_file;

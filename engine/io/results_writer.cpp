@@ -246,17 +246,8 @@ void ResultsWriter::write_snapshot(const Snapshot& s) {
   const std::string& f = m.partial;
   if (m.finished || !m.file.valid())
     throw std::runtime_error(f + ": write_snapshot after finish()");
-  if (s.dim < 1 || s.dim > 3)
-    throw std::runtime_error(f + ": snapshot dimension " + std::to_string(s.dim) + " not in 1..3");
+  check_snapshot(s, f);
   const std::size_t n = s.count, d = static_cast<std::size_t>(s.dim);
-  check_size(f, "snapshot position", s.position.size(), n * d);
-  check_size(f, "snapshot displacement", s.displacement.size(), n * d);
-  check_size(f, "snapshot velocity", s.velocity.size(), n * d);
-  check_size(f, "snapshot stress", s.stress.size(), n * 6);
-  check_size(f, "snapshot von_mises", s.von_mises.size(), n);
-  check_size(f, "snapshot volume", s.volume.size(), n);
-  check_size(f, "snapshot body", s.body.size(), n);
-  check_size(f, "snapshot material", s.material.size(), n);
 
   char name[32];
   std::snprintf(name, sizeof name, "%04zu", m.next_snapshot);

@@ -144,19 +144,23 @@ void check(const std::string& path, const char* what, std::size_t got, std::size
 
 }  // namespace
 
-void write_vtu(const std::string& path, const Snapshot& s) {
+void check_snapshot(const Snapshot& s, const std::string& where) {
   if (s.dim < 1 || s.dim > 3)
-    throw std::runtime_error(path + ": snapshot dimension " + std::to_string(s.dim) +
-                             " not in 1..3");
+    throw std::runtime_error(where + ": snapshot dimension " + std::to_string(s.dim) + " not in 1..3");
   const std::size_t n = s.count, d = static_cast<std::size_t>(s.dim);
-  check(path, "position", s.position.size(), n * d);
-  check(path, "displacement", s.displacement.size(), n * d);
-  check(path, "velocity", s.velocity.size(), n * d);
-  check(path, "stress", s.stress.size(), n * 6);
-  check(path, "von_mises", s.von_mises.size(), n);
-  check(path, "volume", s.volume.size(), n);
-  check(path, "body", s.body.size(), n);
-  check(path, "material", s.material.size(), n);
+  check(where, "position", s.position.size(), n * d);
+  check(where, "displacement", s.displacement.size(), n * d);
+  check(where, "velocity", s.velocity.size(), n * d);
+  check(where, "stress", s.stress.size(), n * 6);
+  check(where, "von_mises", s.von_mises.size(), n);
+  check(where, "volume", s.volume.size(), n);
+  check(where, "body", s.body.size(), n);
+  check(where, "material", s.material.size(), n);
+}
+
+void write_vtu(const std::string& path, const Snapshot& s) {
+  check_snapshot(s, path);
+  const std::size_t n = s.count, d = static_cast<std::size_t>(s.dim);
 
   const std::string stress_names =
       " ComponentName0=\"xx\" ComponentName1=\"yy\" ComponentName2=\"zz\""
