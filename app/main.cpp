@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
   int threads = 0;
   bool quiet = false, dry_run = false, json = false, list = false, markdown = false;
   auto add_run_options = [&](CLI::App* c) {
-    c->add_option("scenario", file, "scenario JSON file (docs/scenario.md)")->required()->check(CLI::ExistingFile);
+    c->add_option("scenario", file, "scenario JSON file (docs/scenario.md)")->required();
     c->add_option("-o,--out", out, "output folder (results.h5, fields/)")->capture_default_str();
     c->add_option("-t,--threads", threads, "OpenMP threads (0 = all cores)")->capture_default_str();
     c->add_flag("-q,--quiet", quiet, "no progress output");

@@ -12,6 +12,7 @@ template <int D> bool wall_normal(const Wall<D>& w, const Vec<D>& x, double tol,
     return (x - w.point).dot(w.normal) <= tol;
   }
   double best = std::numeric_limits<double>::infinity();
+  n.setZero();
   for (int d = 0; d < D; ++d) {
     if (x[d] < w.lo[d] - tol || x[d] > w.hi[d] + tol) return false;
   }

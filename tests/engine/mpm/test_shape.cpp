@@ -32,8 +32,9 @@ template <class Shape> void check_shape(double lp) {
       const double e = 1e-7;
       Stencil<2, Shape> sp;
       sp.compute(xr + Vec<2>(e, 0), Vec<2>::Constant(lp), inv_h);
-      if (sp.base == st.base)
+      if (sp.base == st.base) {
         for (int n = 0; n < st.NN; ++n) EXPECT_NEAR((sp.N[n] - st.N[n]) / (e * h), st.dN[n][0], 1e-5);
+      }
     }
   }
 }

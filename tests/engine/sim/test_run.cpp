@@ -1,0 +1,93 @@
+// The run driver end to end through the CLI: files written, readable and consistent; a failed run
+// exits 2 with one message and leaves no complete-looking results.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "engine/io/results_writer.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Cli {
+  int status;
+  std::string err;
+};
+
+Cli run_cli(const std::string& args) {
+  const fs::path err = fs::temp_directory_path() / ("dmi_run_err_" + std::to_string(::getpid()));
+  const std::string cmd = std::string(DMI_BINARY) + " " + args + " > /dev/null 2> " + err.string();
+  const int rc = std::system(cmd.c_str());
+  std::ifstream in(err);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  fs::remove(err);
+  return {WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, text};
+}
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("dmi_run_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(d);
+  return d;
+}
+
+TEST(RunCli, WritesResultsSnapshotsAndParaViewFiles) {
+  const fs::path out = fresh_dir("ok");
+  const Cli r = run_cli("simulate " + std::string(DMI_SOURCE_DIR) + "/examples/wall_impact.json -o " + out.string() + " -q");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;  // --quiet
+  EXPECT_FALSE(fs::exists(out / "results.h5.partial"));
+  const dmi::Results res = dmi::read_results((out / "results.h5").string());
+  EXPECT_TRUE(res.complete);
+  // wall_impact: end 0.03 s, snapshots every 0.005 s -> initial + 5 + final = 7 (the one at 0.03 is the final).
+  EXPECT_GE(res.snapshots.size(), 6u);
+  EXPECT_LE(res.snapshots.size(), 7u);
+  EXPECT_EQ(res.snapshots.front().count, 2000u);
+  EXPECT_DOUBLE_EQ(res.snapshots.front().time, 0.0);
+  EXPECT_NEAR(res.snapshots.back().time, 0.03, 1e-12);
+  EXPECT_NEAR(res.time.back(), 0.03, 1e-12);
+  // One history row per step (history_interval 0) plus the initial state.
+  EXPECT_EQ(res.time.size(), static_cast<std::size_t>(res.info.numbers.at("steps")) + 1);
+  for (const auto& s : res.series) EXPECT_EQ(s.samples(), res.time.size()) << s.path;
+  EXPECT_EQ(nlohmann::json::parse(res.info.scenario_json)["name"], "Elastic bar hitting a rigid wall");
+  for (std::size_t i = 0; i < res.snapshots.size(); ++i) {
+    char name[64];
+    std::snprintf(name, sizeof name, "particles_%04zu.vtu", i);
+    EXPECT_TRUE(fs::exists(out / "fields" / name)) << name;
+  }
+  std::ifstream pvd(out / "fields" / "particles.pvd");
+  std::string text((std::istreambuf_iterator<char>(pvd)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("particles_0000.vtu"), std::string::npos);
+  fs::remove_all(out);
+}
+
+TEST(RunCli, FailedRunExitsTwoAndLeavesNoCompleteResults) {
+  const fs::path out = fresh_dir("fail");
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(std::string(DMI_SOURCE_DIR) + "/examples/wall_impact.json"));
+  j["walls"] = nlohmann::json::array();
+  j["bodies"][0]["velocity"] = {-50, 0};  // flies off the grid within a few steps
+  fs::create_directories(out);
+  std::ofstream(out / "flyaway.json") << j.dump(2);
+  const Cli r = run_cli("run " + (out / "flyaway.json").string() + " -o " + out.string() + " -q");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err.rfind("damimpact: run failed: run stopped at step", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("body 'bar'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("left the grid"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(out / "results.h5"));
+  fs::remove_all(out);
+}
+
+TEST(RunCli, MissingScenarioFileIsOneClearError) {
+  const Cli r = run_cli("simulate /nonexistent/dam.json -o /tmp/never");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err.rfind("damimpact: error: /nonexistent/dam.json: cannot open", 0), 0u) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+}  // namespace
