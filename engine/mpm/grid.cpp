@@ -46,8 +46,8 @@ template <int D> void Grid<D>::bin(const std::vector<Vec<D>>& x) {
     ++tile_start_[t + 1];
   }
   for (Index t = 0; t < ntiles_; ++t) tile_start_[t + 1] += tile_start_[t];
-  std::vector<Index> fill(tile_start_.begin(), tile_start_.end() - 1);
-  for (Index i = 0; i < np; ++i) tile_particles_[fill[tile_of_[i]]++] = i;
+  fill_.assign(tile_start_.begin(), tile_start_.end() - 1);
+  for (Index i = 0; i < np; ++i) tile_particles_[fill_[tile_of_[i]]++] = i;
 
   for (auto& c : color_tiles_) c.clear();
   active_.clear();

@@ -77,7 +77,7 @@ template <int D> class Grid {
   int nfields_;
   std::vector<Index> active_;
   std::vector<unsigned char> flag_;
-  std::vector<Index> tile_of_, tile_start_, tile_particles_;
+  std::vector<Index> tile_of_, tile_start_, tile_particles_, fill_;
   std::array<std::vector<Index>, (1 << D)> color_tiles_;
 };
 

@@ -21,8 +21,6 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
     const Vec<D> grav = s.gravity;
     const double h = g.h();
     const Index nn = g.nnodes();
-    std::vector<int> field(s.bodies.size());
-    for (std::size_t b = 0; b < s.bodies.size(); ++b) field[b] = s.bodies[b].field;
     const auto& start = g.tile_start();
     const auto& order = g.tile_particles();
     const bool parallel = static_cast<Index>(P.size()) > kParallelMin;
@@ -42,7 +40,7 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
           const Mat<D> mC = mp * P.C[i];
           const Mat<D> vs = -P.vol[i] * P.stress[i];
           const Vec<D> mg = mp * grav;
-          const Index off = field[P.body[i]] * nn;
+          const Index off = s.bodies[P.body[i]].field * nn;
           for (int n = 0; n < St::NN; ++n) {
             const IVec<D> ijk = st.base + st.offset[n];
             const Index id = off + g.node_id(ijk);
@@ -74,15 +72,13 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
     const double h = g.h();
     const Index nn = g.nnodes();
     const Index np = static_cast<Index>(P.size());
-    std::vector<int> field(s.bodies.size());
-    for (std::size_t b = 0; b < s.bodies.size(); ++b) field[b] = s.bodies[b].field;
     int bad = 0;
 #pragma omp parallel for schedule(static) reduction(| : bad) if (np > kParallelMin)
     for (Index i = 0; i < np; ++i) {
       St st;
       const Vec<D> xr = g.grid_coord(P.x[i]);
       st.compute(xr, P.half_size[i] * g.inv_h(), g.inv_h());
-      const Index off = field[P.body[i]] * nn;
+      const Index off = s.bodies[P.body[i]].field * nn;
       Vec<D> vpic = Vec<D>::Zero(), dv = Vec<D>::Zero();
       Mat<D> L = Mat<D>::Zero(), B = Mat<D>::Zero(), Dp = Mat<D>::Zero();
       for (int n = 0; n < St::NN; ++n) {
