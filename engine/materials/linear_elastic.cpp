@@ -19,7 +19,7 @@ template <int D> class LinearElastic final : public Material<D> {
   double density() const override { return rho_; }
   double wave_speed() const override { return el_.wave_speed(rho_, plane_); }
 
-  void update(Particles<D>& p, Index begin, Index end, double dt) const override {
+  void update(Particles<D>& p, Index begin, Index end, double dt) override {
     const double lam = lambda_in_, mu = el_.mu, lam3 = el_.lambda;
     const bool strain2d = D == 2 && plane_ == Plane::strain;
 #pragma omp parallel for schedule(static) if (end - begin > kParallelMin)

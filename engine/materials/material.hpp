@@ -1,6 +1,8 @@
 // Material interface: one call per body (a contiguous particle range), never per particle
 // inside the transfer kernels. Laws read the velocity gradient L and deformation gradient F
 // (already advanced by the solver) and write stress, out-of-plane stress and current volume.
+// History-dependent laws (viscoelastic rubber, Drucker-Prager, Bingham) keep their internal
+// variables in arrays of their own, sized in attach() and indexed by particle index.
 #pragma once
 #include <functional>
 #include <map>
@@ -17,8 +19,10 @@ template <int D> class Material {
   virtual ~Material() = default;
   virtual double density() const = 0;      // kg/m^3
   virtual double wave_speed() const = 0;   // fastest elastic wave speed (m/s), for the CFL step
+  // Called once per body using this material, before the first step: size internal variables.
+  virtual void attach(const Particles<D>& /*p*/, Index /*begin*/, Index /*end*/) {}
   // Stress update over particles [begin, end) for a step of length dt (s).
-  virtual void update(Particles<D>& p, Index begin, Index end, double dt) const = 0;
+  virtual void update(Particles<D>& p, Index begin, Index end, double dt) = 0;
   // Stored (recoverable) strain energy of particles [begin, end) (J).
   virtual double strain_energy(const Particles<D>& p, Index begin, Index end) const = 0;
 };

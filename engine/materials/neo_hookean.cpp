@@ -30,7 +30,7 @@ template <int D> class NeoHookean final : public Material<D> {
     return s;
   }
 
-  void update(Particles<D>& p, Index begin, Index end, double /*dt*/) const override {
+  void update(Particles<D>& p, Index begin, Index end, double /*dt*/) override {
     const double mu = el_.mu, lam = el_.lambda;
 #pragma omp parallel for schedule(static) if (end - begin > kParallelMin)
     for (Index i = begin; i < end; ++i) {

@@ -15,6 +15,7 @@ template <int D> Solver<D>::Solver(Scene<D> scene) : scene_(std::move(scene)) {
   double mmin = std::numeric_limits<double>::infinity();
   for (double m : scene_.particles.mass) mmin = std::min(mmin, m);
   mass_eps_ = std::isfinite(mmin) ? 1e-12 * mmin : 0.0;
+  for (const Body& b : scene_.bodies) scene_.materials[b.material]->attach(scene_.particles, b.begin, b.end);
 }
 
 // The step as named phases (DESIGN.md "engine/"). Members (issue 3) enter between P2G and the grid update.
