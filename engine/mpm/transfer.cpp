@@ -14,10 +14,22 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
 
  public:
   void p2g(Scene<D>& s, bool momentum_only) const override {
+    // The options are fixed per call: dispatch once to a kernel without run-time branches inside.
+    const bool apic = s.options.transfer == TransferKind::apic;
+    const bool grad = s.grid->nfields() > 1;
+    if (momentum_only) {
+      apic ? scatter<true, false, true>(s) : scatter<false, false, true>(s);
+    } else if (grad) {
+      apic ? scatter<true, true, false>(s) : scatter<false, true, false>(s);
+    } else {
+      apic ? scatter<true, false, false>(s) : scatter<false, false, false>(s);
+    }
+  }
+
+  // APIC: affine momentum; GRAD: mass gradient and volume per field (contact); MOMENTUM: MUSL remap only.
+  template <bool APIC, bool GRAD, bool MOMENTUM> void scatter(Scene<D>& s) const {
     Grid<D>& g = *s.grid;
     const Particles<D>& P = s.particles;
-    const bool apic = s.options.transfer == TransferKind::apic;
-    const bool grad = g.nfields() > 1 && !momentum_only;
     const Vec<D> grav = s.gravity;
     const double h = g.h();
     const Index nn = g.nnodes();
@@ -37,24 +49,29 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
           st.compute(xr, P.half_size[i] * g.inv_h(), g.inv_h());
           const double mp = P.mass[i];
           const Vec<D> mv = mp * P.v[i];
-          const Mat<D> mC = mp * P.C[i];
-          const Mat<D> vs = -P.vol[i] * P.stress[i];
-          const Vec<D> mg = mp * grav;
           const Index off = s.bodies[P.body[i]].field * nn;
+          [[maybe_unused]] Mat<D> mC, vs;
+          [[maybe_unused]] Vec<D> mg;
+          if constexpr (APIC) mC = mp * P.C[i];
+          if constexpr (!MOMENTUM) {
+            vs = -P.vol[i] * P.stress[i];
+            mg = mp * grav;
+          }
           for (int n = 0; n < St::NN; ++n) {
             const IVec<D> ijk = st.base + st.offset[n];
             const Index id = off + g.node_id(ijk);
             const double N = st.N[n];
-            if (apic) {
+            if constexpr (APIC) {
               const Vec<D> dx = (ijk.template cast<double>() - xr) * h;
               g.p[id] += N * (mv + mC * dx);
             } else {
               g.p[id] += N * mv;
             }
-            if (momentum_only) continue;
-            g.m[id] += N * mp;
-            g.f[id] += vs * st.dN[n] + N * mg;
-            if (grad) {
+            if constexpr (!MOMENTUM) {
+              g.m[id] += N * mp;
+              g.f[id] += vs * st.dN[n] + N * mg;
+            }
+            if constexpr (GRAD) {
               g.grad_m[id] += mp * st.dN[n];
               g.vol[id] += N * P.vol[i];
             }
