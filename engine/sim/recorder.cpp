@@ -45,7 +45,17 @@ template <int D> Recorder<D>::Recorder(const Solver<D>& solver, const Scenario& 
     }
     probes_.push_back(p);
   }
-  e0_ = solver.diagnostics().kinetic + solver.diagnostics().strain;
+  impulse_.assign(sc.walls.size() + sc.regions.size(), Vec<D>::Zero());
+  const auto d0 = solver.diagnostics();
+  e0_ = d0.kinetic + d0.strain;
+}
+
+template <int D> void Recorder<D>::accumulate(const Solver<D>& solver, double dt) {
+  const Scene<D>& sc = solver.scene();
+  std::size_t b = 0;
+  for (const auto& w : sc.walls) impulse_[b++] += w.force * dt;
+  for (const auto& r : sc.regions) impulse_[b++] += r.force * dt;
+  elapsed_ += dt;
 }
 
 template <int D> void Recorder<D>::sample(const Solver<D>& solver, double dt) {
@@ -57,8 +67,11 @@ template <int D> void Recorder<D>::sample(const Solver<D>& solver, double dt) {
   push<D>(series_[k++], d.momentum);
   series_[k++].data.push_back(dt);
   series_[k++].data.push_back(static_cast<double>(solver.steps()));
-  for (const auto& w : sc.walls) push<D>(series_[k++], w.force);
-  for (const auto& r : sc.regions) push<D>(series_[k++], r.force);
+  std::size_t b = 0;
+  for (const auto& w : sc.walls) push<D>(series_[k++], elapsed_ > 0 ? Vec<D>(impulse_[b++] / elapsed_) : w.force);
+  for (const auto& r : sc.regions) push<D>(series_[k++], elapsed_ > 0 ? Vec<D>(impulse_[b++] / elapsed_) : r.force);
+  for (auto& i : impulse_) i.setZero();
+  elapsed_ = 0;
   const auto& P = sc.particles;
   for (const auto& p : probes_) {
     const Body& b = sc.bodies[p.body];

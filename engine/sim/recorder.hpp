@@ -12,7 +12,12 @@ namespace dmi {
 template <int D> class Recorder {
  public:
   Recorder(const Solver<D>& solver, const Scenario& s);
-  void sample(const Solver<D>& solver, double dt);  // appends one row to every series
+  // Adds the boundary forces of the step just taken (length dt) to the interval impulse.
+  void accumulate(const Solver<D>& solver, double dt);
+  // Appends one row to every series. Wall and region forces are the mean over the steps since the
+  // last sample (impulse / elapsed time), so a sparse history keeps the impulse; every-step
+  // histories hold each step's force.
+  void sample(const Solver<D>& solver, double dt);
   Snapshot snapshot(const Solver<D>& solver) const;
   const std::vector<double>& time() const { return time_; }
   std::vector<Series>& series() { return series_; }
@@ -30,6 +35,8 @@ template <int D> class Recorder {
   std::vector<double> time_;
   std::vector<Series> series_;
   std::vector<Probe> probes_;
+  std::vector<Vec<D>> impulse_;  // per wall, then per region, since the last sample (N s)
+  double elapsed_ = 0;           // s since the last sample
   double e0_ = 0;
 };
 

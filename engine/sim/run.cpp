@@ -79,6 +79,7 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   while (solver.time() < end - eps) {
     const double dt = solver.stable_time_step(end - solver.time());
     solver.step(dt);
+    rec.accumulate(solver, dt);
     dt_min = std::min(dt_min, dt);
     dt_max = std::max(dt_max, dt);
     const bool last = solver.time() >= end - eps;

@@ -43,5 +43,24 @@ TEST(Boundaries, PrescribedVelocityRegionDrivesTheBody) {
   for (std::size_t i = 0; i < f.samples(); ++i) impulse += f.data[2 * i] * dt.data[i];
   EXPECT_NEAR(-impulse, 0.5 * 200, 1e-6 * 100);
 }
+// Sparse histories keep the impulse: wall forces are interval means, so sum F_i (t_i - t_{i-1}) is the
+// same as with a sample every step, and equals the momentum the wall took: ~2 m v for an elastic rebound.
+TEST(Boundaries, SparseHistoryKeepsWallImpulse) {
+  auto impulse = [](double interval) {
+    json j = json::parse(embedded_examples().at("wall_impact.json"));
+    j["output"]["history_interval"] = interval;
+    const RunOutput out = run_quiet(parse_scenario(j, "impulse.json"));
+    const auto& t = out.results.time;
+    const auto& f = series(out.results, "walls/wall/force");
+    double I = 0;
+    for (std::size_t i = 1; i < t.size(); ++i) I += f.data[2 * i] * (t[i] - t[i - 1]);
+    return std::make_pair(I, t.size());
+  };
+  const auto every = impulse(0.0), sparse = impulse(0.002);
+  EXPECT_LT(sparse.second, every.second / 5);
+  EXPECT_NEAR(sparse.first / every.first, 1.0, 1e-9);
+  EXPECT_NEAR(-every.first / (2 * 200 * 1.0), 1.0, 0.05);  // m = 200 kg, v = 1 m/s, nearly elastic
+}
+
 }  // namespace
 }  // namespace dmi
