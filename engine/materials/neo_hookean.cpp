@@ -1,7 +1,7 @@
 // Compressible Neo-Hookean (Simo & Pister form), for rubber and large elastic strain:
 //   W = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2,   sigma = mu/J (B - I) + lambda ln J / J I,
 // B = F F^T, J = det F. Plane strain: F_zz = 1. Plane stress: F_zz = s solves sigma_zz = 0,
-//   g(s) = mu (s^2 - 1) + lambda ln(J2 s) = 0   (Newton; g is monotone for s > 0).
+//   g(s) = mu (s^2 - 1) + lambda ln(J2 s) = 0   (Newton from s = 1, step-limited; g'(1) = lambda + 2 mu > 0).
 #include <cmath>
 #include <memory>
 

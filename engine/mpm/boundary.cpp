@@ -64,6 +64,7 @@ template <int D> double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, 
         const Vec<D> before = vel[k];
         vel[k] = constrain(before, n, w.condition, w.friction);
         const bool bilateral = w.condition == WallCondition::stick || w.condition == WallCondition::roller;
+        bool mirrored = false;
         if (bilateral && w.mirror_axis >= 0) {
           IVec<D> ijk = g.node_ijk(id);
           const int a = w.mirror_axis;
@@ -74,6 +75,7 @@ template <int D> double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, 
               if (g.m[km] > 0) {  // odd reflection of the free node's velocity (normal part only for a roller)
                 const Vec<D> vm = vel[km];
                 vel[k] = w.condition == WallCondition::stick ? Vec<D>(-vm) : Vec<D>(vm - 2 * vm.dot(n) * n);
+                mirrored = true;
               }
             }
           }
@@ -81,7 +83,8 @@ template <int D> double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, 
         if (record) {
           const Vec<D> dp = m * (vel[k] - before);
           w.force -= dp / dt;
-          work += dp.dot(vel[k]);
+          // A fixed wall does no work; a mirrored node's velocity is an image, not wall motion.
+          if (!mirrored) work += dp.dot(vel[k]);
         }
       }
       for (auto& r : s.regions) {

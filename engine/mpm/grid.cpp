@@ -27,14 +27,36 @@ Grid<D>::Grid(const Vec<D>& origin, const IVec<D>& cells, double h, int nfields)
     vol.assign(n, 0.0);
   }
   flag_.assign(static_cast<std::size_t>(nnodes_), 0);
-  tile_start_.assign(static_cast<std::size_t>(ntiles_ + 1), 0);
+  tile_count_.assign(static_cast<std::size_t>(ntiles_), 0);
 }
 
+template <int D> void Grid<D>::zero_node(Index id) {
+  for (int fld = 0; fld < nfields_; ++fld) {
+    const Index k = fld * nnodes_ + id;
+    m[k] = 0;
+    p[k].setZero();
+    f[k].setZero();
+    v[k].setZero();
+    vL[k].setZero();
+    if (nfields_ > 1) {
+      grad_m[k].setZero();
+      vol[k] = 0;
+    }
+  }
+}
+
+// Cost O(particles + occupied tiles), never O(box): tiles are counted in a persistent array that
+// is reset only where it was touched.
 template <int D> void Grid<D>::bin(const std::vector<Vec<D>>& x) {
+  // Zero the nodes of the previous step, so every node outside the active set is zero.
+  const Index nold = static_cast<Index>(active_.size());
+#pragma omp parallel for schedule(static) if (nold > kParallelMin)
+  for (Index a = 0; a < nold; ++a) zero_node(active_[a]);
+
   const Index np = static_cast<Index>(x.size());
   tile_of_.resize(x.size());
   tile_particles_.resize(x.size());
-  std::fill(tile_start_.begin(), tile_start_.end(), 0);
+  occupied_.clear();
   for (Index i = 0; i < np; ++i) {
     const Vec<D> xr = grid_coord(x[i]);
     Index t = 0;
@@ -43,17 +65,24 @@ template <int D> void Grid<D>::bin(const std::vector<Vec<D>>& x) {
       t = t * tiles_[d] + c / T;
     }
     tile_of_[i] = t;
-    ++tile_start_[t + 1];
+    if (tile_count_[t]++ == 0) occupied_.push_back(t);
   }
-  for (Index t = 0; t < ntiles_; ++t) tile_start_[t + 1] += tile_start_[t];
-  fill_.assign(tile_start_.begin(), tile_start_.end() - 1);
-  for (Index i = 0; i < np; ++i) tile_particles_[fill_[tile_of_[i]]++] = i;
+  std::sort(occupied_.begin(), occupied_.end());
+  const Index nocc = static_cast<Index>(occupied_.size());
+  tile_start_.resize(static_cast<std::size_t>(nocc + 1));
+  tile_start_[0] = 0;
+  for (Index k = 0; k < nocc; ++k) {
+    const Index t = occupied_[k];
+    tile_start_[k + 1] = tile_start_[k] + tile_count_[t];
+    tile_count_[t] = tile_start_[k];  // now the fill position of tile t
+  }
+  for (Index i = 0; i < np; ++i) tile_particles_[tile_count_[tile_of_[i]]++] = i;  // stable
+  for (Index t : occupied_) tile_count_[t] = 0;
 
   for (auto& c : color_tiles_) c.clear();
   active_.clear();
-  for (Index t = 0; t < ntiles_; ++t) {
-    if (tile_start_[t + 1] == tile_start_[t]) continue;
-    Index rest = t;
+  for (Index k = 0; k < nocc; ++k) {
+    Index rest = occupied_[k];
     IVec<D> ti;
     int color = 0;
     for (int d = 0; d < D; ++d) {
@@ -61,7 +90,7 @@ template <int D> void Grid<D>::bin(const std::vector<Vec<D>>& x) {
       rest /= tiles_[d];
       color |= (ti[d] & 1) << d;
     }
-    color_tiles_[color].push_back(t);
+    color_tiles_[color].push_back(k);
     // Nodes a particle of this tile can touch: cells [tT, tT+T-1] -> nodes [tT-1, tT+T+1].
     IVec<D> lo, hi;
     for (int d = 0; d < D; ++d) {
@@ -84,25 +113,7 @@ template <int D> void Grid<D>::bin(const std::vector<Vec<D>>& x) {
     }
   }
   std::sort(active_.begin(), active_.end());
-  const bool grad = nfields_ > 1;
-  const Index na = static_cast<Index>(active_.size());
-#pragma omp parallel for schedule(static) if (na > kParallelMin)
-  for (Index a = 0; a < na; ++a) {
-    const Index id = active_[a];
-    flag_[id] = 0;
-    for (int fld = 0; fld < nfields_; ++fld) {
-      const Index k = fld * nnodes_ + id;
-      m[k] = 0;
-      p[k].setZero();
-      f[k].setZero();
-      v[k].setZero();
-      vL[k].setZero();
-      if (grad) {
-        grad_m[k].setZero();
-        vol[k] = 0;
-      }
-    }
-  }
+  for (Index id : active_) flag_[id] = 0;
 }
 
 template class Grid<2>;

@@ -43,8 +43,9 @@ template <int D> class Grid {
     return true;
   }
 
-  // Bins particle positions into tiles (stable counting sort), rebuilds the active-node list and
-  // zeroes every field at the active nodes.
+  // Bins particle positions into the occupied tiles (stable counting sort) and rebuilds the
+  // active-node list. Every field is zero at every node when it returns (the previous step's
+  // active nodes are cleared), so nodes outside the active set never hold stale values.
   void bin(const std::vector<Vec<D>>& x);
 
   double h() const { return h_; }
@@ -55,8 +56,9 @@ template <int D> class Grid {
   Index nnodes() const { return nnodes_; }
   int nfields() const { return nfields_; }
   const std::vector<Index>& active() const { return active_; }
+  // Occupied tiles of colour c, as indices k into the occupied-tile list.
   const std::vector<Index>& color_tiles(int c) const { return color_tiles_[c]; }
-  // Particles of tile t: tile_particles()[tile_start()[t] .. tile_start()[t+1]).
+  // Particles of occupied tile k: tile_particles()[tile_start()[k] .. tile_start()[k+1]).
   const std::vector<Index>& tile_start() const { return tile_start_; }
   const std::vector<Index>& tile_particles() const { return tile_particles_; }
 
@@ -77,7 +79,8 @@ template <int D> class Grid {
   int nfields_;
   std::vector<Index> active_;
   std::vector<unsigned char> flag_;
-  std::vector<Index> tile_of_, tile_start_, tile_particles_, fill_;
+  void zero_node(Index id);
+  std::vector<Index> tile_of_, tile_start_, tile_particles_, tile_count_, occupied_;
   std::array<std::vector<Index>, (1 << D)> color_tiles_;
 };
 

@@ -53,6 +53,10 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
           [[maybe_unused]] Mat<D> mC, vs;
           [[maybe_unused]] Vec<D> mg;
           if constexpr (APIC) mC = mp * P.C[i];
+          // In-plane volume for the contact fill test: plane-stress thinning (F_zz) must not switch
+          // contact off, since the cell volume it is compared with has the initial thickness.
+          [[maybe_unused]] double vol_in_plane = 0;
+          if constexpr (GRAD) vol_in_plane = P.vol0[i] * P.F[i].determinant();
           if constexpr (!MOMENTUM) {
             vs = -P.vol[i] * P.stress[i];
             mg = mp * grav;
@@ -73,7 +77,7 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
             }
             if constexpr (GRAD) {
               g.grad_m[id] += mp * st.dN[n];
-              g.vol[id] += N * P.vol[i];
+              g.vol[id] += N * vol_in_plane;
             }
           }
         }

@@ -1,6 +1,7 @@
 #include "engine/sim/build_scene.hpp"
 
 #include <cmath>
+#include <sstream>
 
 #include "engine/common/error.hpp"
 
@@ -84,6 +85,13 @@ template <int D> Scene<D> build_scene(const Scenario& s) {
     body.begin = static_cast<Index>(sc.particles.size());
     seed_body(sc, s, bc, static_cast<int>(b), s.materials[mat].density);
     body.end = static_cast<Index>(sc.particles.size());
+    for (Index i = body.begin; i < body.end; ++i) {
+      if (sc.grid->interior(sc.particles.x[i])) continue;
+      std::ostringstream os;
+      os << "a body whose particles lie at least half a cell inside the grid; particle " << i - body.begin << " at ("
+         << sc.particles.x[i].transpose() << ") does not";
+      throw InputError(s.source_file, "/bodies/" + std::to_string(b) + "/shape", "", os.str());
+    }
     if (body.end == body.begin)
       throw InputError(s.source_file, "/bodies/" + std::to_string(b) + "/shape", "",
                        "a shape that contains at least one particle position (it is smaller than the particle spacing)");

@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -71,6 +72,8 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
 
   const double end = s.analysis.end_time;
   const double eps = 1e-12 * end;
+  // The first multiple of `interval` after t (one division, whatever dt / interval is).
+  auto next_after = [eps](double t, double interval) { return interval * (std::floor((t + eps) / interval) + 1); };
   rec.sample(solver, 0.0);
   snapshot();
   double next_sample = s.output.history_interval, next_snap = s.output.snapshot_interval;
@@ -85,11 +88,11 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
     const bool last = solver.time() >= end - eps;
     if (last || s.output.history_interval <= 0 || solver.time() >= next_sample - eps) {
       rec.sample(solver, dt);
-      while (s.output.history_interval > 0 && next_sample <= solver.time() + eps) next_sample += s.output.history_interval;
+      if (s.output.history_interval > 0) next_sample = next_after(solver.time(), s.output.history_interval);
     }
     if (!last && s.output.snapshot_interval > 0 && solver.time() >= next_snap - eps) {
       snapshot();
-      while (next_snap <= solver.time() + eps) next_snap += s.output.snapshot_interval;
+      next_snap = next_after(solver.time(), s.output.snapshot_interval);
     }
     progress.update(solver.time(), solver.steps(), dt);
   }

@@ -165,3 +165,35 @@ TEST(Solver, FlipConservesEnergyOfVibratingBar) {
 
 }  // namespace
 }  // namespace dmi
+
+namespace dmi {
+namespace {
+
+// A body whose edge sits on the parser's half-cell bound can still seed a particle a rounding error
+// outside the grid interior; it must be refused as input, never reach the kernels.
+TEST(Solver, BodyOnTheInteriorBoundIsRefusedAtBuild) {
+  json j = json::parse(embedded_examples().at("wall_impact.json"));
+  j["grid"] = {{"origin", {2.4, 2.4}}, {"size", {1.5, 0.5}}, {"cell_size", 0.05}};
+  j["bodies"][0]["shape"] = {{"type", "box"}, {"min", {2.425, 2.425}}, {"max", {3.0, 2.6}}};
+  j["bodies"][0]["particles_per_cell"] = 1;
+  j["walls"] = json::array();
+  try {
+    Solver<2> s(build_scene<2>(parse_scenario(j, "edge.json")));
+    for (Index i = 0; i < static_cast<Index>(s.scene().particles.size()); ++i) EXPECT_TRUE(s.scene().grid->interior(s.scene().particles.x[i]));
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/bodies/0/shape"), std::string::npos) << e.what();
+  }
+}
+
+// A snapshot interval far below the time step must not stall the run (one division per step).
+TEST(Solver, TinyOutputIntervalsDoNotStall) {
+  json j = json::parse(embedded_examples().at("wall_impact.json"));
+  j["output"]["snapshot_interval"] = 1e-13;
+  j["output"]["history_interval"] = 1e-13;
+  j["analysis"]["end_time"] = 1e-3;
+  const RunOutput out = run_quiet(parse_scenario(j, "tiny.json"));
+  EXPECT_EQ(out.results.time.size(), static_cast<std::size_t>(out.results.info.numbers.at("steps")) + 1);
+}
+
+}  // namespace
+}  // namespace dmi
