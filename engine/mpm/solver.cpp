@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "engine/common/error.hpp"
 #include "engine/mpm/boundary.hpp"
@@ -11,6 +12,10 @@
 namespace dmi {
 
 template <int D> Solver<D>::Solver(Scene<D> scene) : scene_(std::move(scene)) {
+  // With linear weights D_p = diag(f(1-f) h^2) vanishes at nodes and APIC blew up in every variant
+  // tried; the parser refuses the pair with a message, this guards programmatic scenes.
+  if (scene_.options.shape == ShapeKind::linear && scene_.options.transfer == TransferKind::apic)
+    throw std::invalid_argument("APIC transfer needs gimp or bspline2 shape functions, not linear");
   kernels_ = make_transfer_kernels<D>(scene_.options.shape);
   double mmin = std::numeric_limits<double>::infinity();
   for (double m : scene_.particles.mass) mmin = std::min(mmin, m);

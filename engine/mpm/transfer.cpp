@@ -2,7 +2,6 @@
 
 #include <Eigen/LU>
 #include <cmath>
-#include <type_traits>
 
 #include "engine/mpm/shape.hpp"
 
@@ -122,13 +121,7 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
       if (mode != G2PMode::kinematics) {
         if (apic) {
           P.v[i] = vpic;
-          // Linear weights: D_p = diag(f(1-f) h^2) vanishes at nodes, so use the equivalent gradient
-          // form C_p = sum v_i grad N_ip^T (Jiang et al. 2015, sec. 5).
-          if constexpr (std::is_same_v<Shape, LinearShape>) {
-            P.C[i] = L;
-          } else {
-            P.C[i] = B * Dp.inverse();
-          }
+          P.C[i] = B * Dp.inverse();  // D_p > 0 for GIMP and B-splines; linear APIC is refused (Solver)
         } else {
           P.v[i] = blend * (P.v[i] + dv) + (1 - blend) * vpic;
         }
@@ -137,10 +130,6 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
         P.x[i] += dt * vpic;
         P.L[i] = L;
         P.F[i] = (Mat<D>::Identity() + dt * L) * P.F[i];
-        // MUSL: the remapped gradient is the bounded one (v^L is large at nearly empty nodes).
-        if constexpr (std::is_same_v<Shape, LinearShape>) {
-          if (apic && mode == G2PMode::kinematics) P.C[i] = L;
-        }
         if (!g.interior(P.x[i]) || !L.allFinite()) bad = 1;
       }
       if (!P.v[i].allFinite()) bad = 1;

@@ -67,9 +67,9 @@ template <int D> void Recorder<D>::sample(const Solver<D>& solver, double dt) {
   push<D>(series_[k++], d.momentum);
   series_[k++].data.push_back(dt);
   series_[k++].data.push_back(static_cast<double>(solver.steps()));
-  std::size_t b = 0;
-  for (const auto& w : sc.walls) push<D>(series_[k++], elapsed_ > 0 ? Vec<D>(impulse_[b++] / elapsed_) : w.force);
-  for (const auto& r : sc.regions) push<D>(series_[k++], elapsed_ > 0 ? Vec<D>(impulse_[b++] / elapsed_) : r.force);
+  std::size_t j = 0;  // index into impulse_: walls, then regions
+  for (const auto& w : sc.walls) push<D>(series_[k++], elapsed_ > 0 ? Vec<D>(impulse_[j++] / elapsed_) : w.force);
+  for (const auto& r : sc.regions) push<D>(series_[k++], elapsed_ > 0 ? Vec<D>(impulse_[j++] / elapsed_) : r.force);
   for (auto& i : impulse_) i.setZero();
   elapsed_ = 0;
   const auto& P = sc.particles;
