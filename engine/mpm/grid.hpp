@@ -58,6 +58,17 @@ template <int D> class Grid {
   const std::vector<Index>& active() const { return active_; }
   // Occupied tiles of colour c, as indices k into the occupied-tile list.
   const std::vector<Index>& color_tiles(int c) const { return color_tiles_[c]; }
+  // Occupied tiles (tile ids, ascending); index k into this list is the "occupied-tile index".
+  const std::vector<Index>& occupied() const { return occupied_; }
+  // Tile coordinates of tile id t: cells [T t, T t + T - 1] along each axis.
+  IVec<D> tile_coord(Index t) const {
+    IVec<D> ti;
+    for (int d = 0; d < D; ++d) {
+      ti[d] = static_cast<int>(t % tiles_[d]);
+      t /= tiles_[d];
+    }
+    return ti;
+  }
   // Particles of occupied tile k: tile_particles()[tile_start()[k] .. tile_start()[k+1]).
   const std::vector<Index>& tile_start() const { return tile_start_; }
   const std::vector<Index>& tile_particles() const { return tile_particles_; }

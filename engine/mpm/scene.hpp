@@ -10,6 +10,7 @@
 #include "engine/mpm/grid.hpp"
 #include "engine/mpm/particles.hpp"
 #include "engine/scenario/config.hpp"
+#include "engine/structure/frame.hpp"
 
 namespace dmi {
 
@@ -56,6 +57,16 @@ struct SolverOptions {
   double cell_volume = 0.0;     // h^D, times the thickness in 2D (m^3)
 };
 
+// How beam-column members act on the grid (engine/contact/member_contact.hpp).
+struct MemberCoupling {
+  MemberContactMode mode = MemberContactMode::separable;
+  double friction = 0.0;
+  DecayKind decay = DecayKind::linear;
+  double decay_scale = 1.0;
+  DistanceKind distance = DistanceKind::material;
+  std::vector<int> fields;   // velocity fields the members act on
+};
+
 template <int D> struct Scene {
   Particles<D> particles;
   std::vector<Body> bodies;
@@ -65,6 +76,8 @@ template <int D> struct Scene {
   std::vector<VelocityRegion<D>> regions;
   Vec<D> gravity = Vec<D>::Zero();
   SolverOptions options;
+  std::unique_ptr<Frame> frame;   // beam-column members (2D only), or none
+  MemberCoupling coupling;
 };
 
 }  // namespace dmi

@@ -21,20 +21,36 @@ template <int D> Solver<D>::Solver(Scene<D> scene) : scene_(std::move(scene)) {
   for (double m : scene_.particles.mass) mmin = std::min(mmin, m);
   mass_eps_ = std::isfinite(mmin) ? 1e-12 * mmin : 0.0;
   for (const Body& b : scene_.bodies) scene_.materials[b.material]->attach(scene_.particles, b.begin, b.end);
+  if (scene_.frame) members_ = std::make_unique<MemberContact<D>>(*scene_.grid);
 }
 
-// The step as named phases (DESIGN.md "engine/"). Members (issue 3) enter between P2G and the grid update.
+// The step as named phases (DESIGN.md "engine/").
 template <int D> void Solver<D>::step(double dt) {
   scene_.grid->bin(scene_.particles.x);      // tiles, active nodes, zeroed fields
   particles_to_grid();                         // m_i, p_i, f_i = f_int + f_ext (eqs. 5-8)
+  member_boundary_forces(dt);                  // stage 1: members as velocity boundaries, reactions on the frame
   grid_update(dt);                             // v^k, v^L = v^k + dt f/m, walls, regions, body contact
   grid_to_particles(dt);                       // v_p, x_p, L_p, F_p (eqs. 13-14); MUSL remaps first
   update_stress(dt);                           // per body, its material law
+  advance_members(dt);                         // stage 2: the frame under the reactions (eqs. 27-29 or Newmark)
   time_ += dt;
   ++steps_;
 }
 
 template <int D> void Solver<D>::particles_to_grid() { kernels_->p2g(scene_, false); }
+
+template <int D> void Solver<D>::member_boundary_forces(double dt) {
+  if (members_) members_->apply(scene_, *kernels_, dt);
+}
+
+template <int D> void Solver<D>::advance_members(double dt) {
+  if (!scene_.frame) return;
+  scene_.frame->advance(dt);
+  const Eigen::VectorXd& d = scene_.frame->displacement();
+  if (!d.allFinite() || !scene_.frame->velocity().allFinite())
+    throw RunError("run stopped at step " + std::to_string(steps_ + 1) + ", t = " + std::to_string(time_) +
+                   " s: the beam-column frame has a non-finite displacement or velocity (time step above its stability limit?)");
+}
 
 template <int D> void Solver<D>::grid_update(double dt) {
   Grid<D>& g = *scene_.grid;
@@ -100,6 +116,8 @@ template <int D> double Solver<D>::stable_time_step(double limit) const {
     const double c = scene_.materials[b.material]->wave_speed();
     dt = std::min(dt, scene_.options.cfl * scene_.grid->h() / (c + vmax));
   }
+  // An explicit frame limits the step (2 / omega_max, scaled by the same fraction); Newmark does not.
+  if (scene_.frame) dt = std::min(dt, scene_.options.cfl * scene_.frame->stable_time_step());
   return dt;
 }
 
@@ -112,6 +130,13 @@ template <int D> Diagnostics<D> Solver<D>::diagnostics() const {
   for (int c = 0; c < D; ++c) d.momentum[c] = deterministic_sum(np, [&](Index i) { return P.mass[i] * P.v[i][c]; });
   for (const Body& b : scene_.bodies) d.strain += scene_.materials[b.material]->strain_energy(P, b.begin, b.end);
   d.boundary_work = boundary_work_;
+  if (const Frame* f = scene_.frame.get()) {
+    d.frame_kinetic = f->kinetic_energy();
+    d.frame_strain = f->strain_energy();
+    d.frame_external_work = f->external_work();
+    d.frame_damping = f->damping_work();
+    d.member_work = members_->work();
+  }
   return d;
 }
 

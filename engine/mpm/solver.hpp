@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 
+#include "engine/contact/member_contact.hpp"
 #include "engine/mpm/scene.hpp"
 #include "engine/mpm/transfer.hpp"
 
@@ -13,9 +14,17 @@ template <int D> struct Diagnostics {
   double kinetic = 0, strain = 0;  // J
   double gravity_work = 0;         // J, work of gravity since t = 0: sum m g.(x - x0)
   double boundary_work = 0;        // J, work of walls and prescribed velocities since t = 0
-  Vec<D> momentum = Vec<D>::Zero();  // kg m/s
-  // Energy balance error: E_kin + E_strain - W_gravity - W_boundary - E_0 (J).
-  double balance(double e0) const { return kinetic + strain - gravity_work - boundary_work - e0; }
+  Vec<D> momentum = Vec<D>::Zero();  // kg m/s (continua only)
+  double frame_kinetic = 0, frame_strain = 0;  // J, beam-column members
+  double frame_external_work = 0;  // J, work of the loads on the frame (contact reactions, self-weight)
+  double member_work = 0;          // J, work of the members' boundary forces on the material
+  double frame_damping = 0;        // J, dissipated by the frame's Rayleigh damping
+  // Energy balance error (J): everything stored minus all work done, minus E_0. Contact between
+  // members and material dissipates: member_work + the reactions' share of frame_external_work < 0.
+  double balance(double e0) const {
+    return kinetic + strain + frame_kinetic + frame_strain + frame_damping - gravity_work - boundary_work - member_work -
+           frame_external_work - e0;
+  }
 };
 
 template <int D> class Solver {
@@ -32,10 +41,13 @@ template <int D> class Solver {
   double time() const { return time_; }
   long steps() const { return steps_; }
   const Scene<D>& scene() const { return scene_; }
+  const MemberContact<D>* member_contact() const { return members_.get(); }
   Scene<D>& scene() { return scene_; }
 
  private:
   void particles_to_grid();
+  void member_boundary_forces(double dt);
+  void advance_members(double dt);
   void grid_update(double dt);
   void grid_to_particles(double dt);
   void update_stress(double dt);
@@ -43,6 +55,7 @@ template <int D> class Solver {
 
   Scene<D> scene_;
   std::unique_ptr<TransferKernels<D>> kernels_;
+  std::unique_ptr<MemberContact<D>> members_;  // when the scene has a frame
   double time_ = 0.0;
   long steps_ = 0;
   double boundary_work_ = 0.0;

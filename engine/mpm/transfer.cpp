@@ -84,6 +84,22 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
     }
   }
 
+  void scatter_mass_position(const Scene<D>& s, const std::vector<Index>& tiles, std::vector<Vec<D>>& mx) const override {
+    const Grid<D>& g = *s.grid;
+    const Particles<D>& P = s.particles;
+    const Index nn = g.nnodes();
+    St st;
+    for (Index t : tiles) {
+      for (Index q = g.tile_start()[t]; q < g.tile_start()[t + 1]; ++q) {
+        const Index i = g.tile_particles()[q];
+        st.compute(g.grid_coord(P.x[i]), P.half_size[i] * g.inv_h(), g.inv_h());
+        const Vec<D> mxp = P.mass[i] * P.x[i];
+        const Index off = s.bodies[P.body[i]].field * nn;
+        for (int n = 0; n < St::NN; ++n) mx[off + g.node_id(st.base + st.offset[n])] += st.N[n] * mxp;
+      }
+    }
+  }
+
   G2PResult g2p(Scene<D>& s, double dt, G2PMode mode) const override {
     Grid<D>& g = *s.grid;
     Particles<D>& P = s.particles;

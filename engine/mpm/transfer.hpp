@@ -29,6 +29,10 @@ template <int D> class TransferKernels {
   // Scatter mass, momentum and (unless momentum_only) force and mass gradient. Grid was binned.
   virtual void p2g(Scene<D>& s, bool momentum_only) const = 0;
   virtual G2PResult g2p(Scene<D>& s, double dt, G2PMode mode) const = 0;
+  // mx_i += sum_p m_p N_ip x_p over the particles of the given occupied tiles (indices into
+  // Grid::occupied()), serially: the mass-weighted particle position a node sees (SEEDS.md A.3
+  // eq. 25) where members need it. mx has the grid's field layout.
+  virtual void scatter_mass_position(const Scene<D>& s, const std::vector<Index>& tiles, std::vector<Vec<D>>& mx) const = 0;
 };
 
 template <int D> std::unique_ptr<TransferKernels<D>> make_transfer_kernels(ShapeKind shape);

@@ -80,9 +80,74 @@ struct PrescribedVelocityConfig {
 };
 
 struct ProbeConfig {
-  std::string name, type, target;                    // type: particle | body | wall
+  std::string name, type, target;                    // type: particle | body | member
   DVec point;                                        // particle probes: nearest particle
+  double position = 0.5;                             // member probes: fraction of the member length from its start
   std::vector<std::string> quantities;
+};
+
+// --- Beam-column frame (2D; SEEDS.md A.3) -------------------------------------------------------
+enum class BeamTheoryKind { euler_bernoulli, timoshenko };
+enum class FrameTransformKind { linear, corotational };
+enum class FrameMassKind { lumped, consistent };
+enum class FrameIntegratorKind { explicit_euler, newmark };
+
+struct SectionConfig {
+  std::string type;                                  // rectangle | pipe | tapered_rectangle
+  double width = 0, depth = 0;                       // m (rectangle; tapered: width)
+  double depth_start = 0, depth_end = 0;             // m (tapered_rectangle)
+  double diameter = 0, wall_thickness = 0;           // m (pipe)
+};
+
+struct FrameNodeConfig {
+  std::string name;
+  DVec position;                                     // m
+};
+
+struct MemberConfig {
+  std::string name, start, end, material;            // start/end: node names
+  SectionConfig section;
+  int elements = 1;                                  // beam-column elements along the member
+  bool release_start = false, release_end = false;   // moment hinges at the member ends
+};
+
+struct SupportConfig {
+  std::string node, type;                            // fixed | pinned | roller | spring
+  std::string restrained = "y";                      // roller: the restrained translation, x or y
+  DVec stiffness;                                    // spring: kx (N/m), ky (N/m), kr (N m/rad)
+};
+
+struct NodalMassConfig {
+  std::string node;
+  double mass = 0, rotary_inertia = 0;               // kg, kg m^2
+};
+
+struct StructureConfig {
+  bool present = false;
+  BeamTheoryKind theory = BeamTheoryKind::euler_bernoulli;
+  FrameTransformKind transformation = FrameTransformKind::linear;
+  FrameMassKind mass = FrameMassKind::lumped;
+  FrameIntegratorKind integrator = FrameIntegratorKind::explicit_euler;
+  bool self_weight = true;                           // gravity on the members' own mass
+  double rayleigh_mass = 0, rayleigh_stiffness = 0;  // C = alpha M + beta K: alpha (1/s), beta (s)
+  std::vector<FrameNodeConfig> nodes;
+  std::vector<MemberConfig> members;
+  std::vector<SupportConfig> supports;
+  std::vector<NodalMassConfig> masses;
+};
+
+// --- Members as MPM velocity boundaries (Yang 2016; SEEDS.md A.2-A.3) ---------------------------
+enum class MemberContactMode { stick, separable, friction };
+enum class DecayKind { linear, cosine };
+enum class DistanceKind { node, material };
+
+struct MemberContactConfig {
+  MemberContactMode mode = MemberContactMode::separable;
+  double friction = 0.0;                             // Coulomb coefficient (mode friction)
+  DecayKind decay = DecayKind::linear;               // q_n of eq. (16)
+  double decay_scale = 1.0;                          // multiplies l_n of eq. (18)
+  DistanceKind distance = DistanceKind::material;    // where r of eq. (23) is measured from
+  std::vector<std::string> bodies;                   // bodies the members act on; empty = all
 };
 
 struct OutputConfig {
@@ -103,6 +168,8 @@ struct Scenario {
   ContactConfig contact;
   std::vector<WallConfig> walls;
   std::vector<PrescribedVelocityConfig> prescribed_velocity;
+  StructureConfig structure;
+  MemberContactConfig member_contact;
   OutputConfig output;
   std::string source_file;   // where it came from, for messages
   std::string source_text;   // the JSON as given, stored in results.h5

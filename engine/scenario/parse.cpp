@@ -1,7 +1,9 @@
 // The scenario schema, version 1: every key declared once here (default, unit, doc, validation).
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -147,20 +149,172 @@ void read_region(Obj& o, PrescribedVelocityConfig& r) {
   o.number("end", r.end, Spec{.unit = "s", .doc = "active until this time (default: always)", .min = 0});
 }
 
+// when() for several options: true in read mode when value is one of them; in document mode the
+// rows declared until end_when() are tagged "when <key> = a or b".
+bool when_any(Obj& o, const std::string& key, const std::string& value, const std::vector<std::string>& options) {
+  std::string label;
+  for (const auto& option : options) label += (label.empty() ? "" : " or ") + option;
+  o.when(key, value, label);
+  return o.documenting() || std::find(options.begin(), options.end(), value) != options.end();
+}
+
 void read_probe(Obj& o, ProbeConfig& p) {
   o.string("name", p.name, Spec{.doc = "probe name; series are stored as probes/<name>/<quantity>", .required = true});
-  o.string("type", p.type, Spec{.doc = "particle (the particle nearest to point) | body (centroid and mean values of a body)", .required = true});
-  o.string("body", p.target, Spec{.doc = "body the probe looks at", .required = true});
+  o.string("type", p.type, Spec{.doc = "particle (the particle nearest to point) | body (centroid and mean values of a body) | "
+                                       "member (a point of a structure member)", .required = true});
+  const bool particle = p.type == "particle", member = p.type == "member";
+  if (!o.documenting() && !particle && !member && p.type != "body")
+    o.fail("type", nullptr, "particle, body or member (got '" + p.type + "')");
+  if (when_any(o, "type", p.type, {"particle", "body"})) o.string("body", p.target, Spec{.doc = "body the probe looks at", .required = true});
+  o.end_when();
   if (o.when("type", p.type, "particle")) o.vector("point", p.point, any("m", "initial position; the nearest particle of the body is tracked", true));
   o.end_when();
-  const bool particle = p.type == "particle";
-  if (!o.documenting() && !particle && p.type != "body") o.fail("type", nullptr, "particle or body (got '" + p.type + "')");
-  std::vector<std::string> all = particle_probe_quantities();
-  if (o.documenting() || !particle) for (const auto& q : body_probe_quantities()) if (std::find(all.begin(), all.end(), q) == all.end()) all.push_back(q);
-  const auto& allowed = o.documenting() ? all : (particle ? particle_probe_quantities() : body_probe_quantities());
+  if (o.when("type", p.type, "member")) {
+    o.string("member", p.target, Spec{.doc = "structure member the probe looks at", .required = true});
+    o.number("position", p.position, Spec{.doc = "point of the member as a fraction of its length from its start node", .min = 0, .max = 1});
+  }
+  o.end_when();
+  std::vector<std::string> all;
+  for (const auto* list : {&particle_probe_quantities(), &body_probe_quantities(), &member_probe_quantities()})
+    for (const auto& q : *list) if (std::find(all.begin(), all.end(), q) == all.end()) all.push_back(q);
+  const auto& allowed = o.documenting() ? all
+                        : particle      ? particle_probe_quantities()
+                        : member        ? member_probe_quantities()
+                                        : body_probe_quantities();
   o.strings("quantities", p.quantities, allowed,
-            Spec{.doc = "quantities to record (default: all); particle: displacement position velocity stress von_mises; body: position displacement velocity kinetic_energy"});
+            Spec{.doc = "quantities to record (default: all); particle: displacement position velocity stress von_mises; "
+                        "body: position displacement velocity kinetic_energy; member: displacement (centre line, x y), "
+                        "top_displacement (the point on the top surface, the +e2 side, e2 = the start-to-end axis e1 turned "
+                        "90 degrees counter-clockwise), rotation, section_forces (N V M), fibre_stress (sigma_top sigma_bottom "
+                        "tau_max von_mises_top von_mises_bottom von_mises_max)"});
   if (p.quantities.empty()) p.quantities = allowed;
+}
+
+// --- Beam-column frame (2D; SEEDS.md A.3) -----------------------------------------------------
+
+void read_section(Obj o, SectionConfig& c) {
+  o.string("type", c.type, Spec{.doc = "rectangle (solid, width x depth) | pipe (circular hollow section) | "
+                                       "tapered_rectangle (solid, depth linear from the start to the end node)", .required = true});
+  if (!o.documenting() && c.type != "rectangle" && c.type != "pipe" && c.type != "tapered_rectangle")
+    o.fail("type", nullptr, "rectangle, pipe or tapered_rectangle (got '" + c.type + "')");
+  if (o.when("type", c.type, "rectangle")) {
+    o.number("width", c.width, positive("m", "out-of-plane width b", true));
+    o.number("depth", c.depth, positive("m", "in-plane depth h; the member surfaces are h/2 from the centre line (SEEDS.md A.3 eq. 23)", true));
+  }
+  o.end_when();
+  if (o.when("type", c.type, "pipe")) {
+    o.number("diameter", c.diameter, positive("m", "outer diameter D", true));
+    o.number("wall_thickness", c.wall_thickness, positive("m", "wall thickness t, at most D/2 (t = D/2: a solid circle)", true));
+  }
+  o.end_when();
+  if (o.when("type", c.type, "tapered_rectangle")) {
+    o.number("width", c.width, positive("m", "out-of-plane width b (constant)", true));
+    o.number("depth_start", c.depth_start, positive("m", "in-plane depth at the start node", true));
+    o.number("depth_end", c.depth_end, positive("m", "in-plane depth at the end node", true));
+  }
+  o.end_when();
+  o.finish();
+}
+
+void read_frame_node(Obj& o, FrameNodeConfig& n) {
+  o.string("name", n.name, Spec{.doc = "node name that members, supports and masses refer to", .required = true});
+  o.vector("position", n.position, any("m", "position, inside the grid", true), 2);
+}
+
+void read_member(Obj& o, MemberConfig& m) {
+  o.string("name", m.name, Spec{.doc = "member name, used by probes and in results; unique, and not the name of a body", .required = true});
+  o.string("start", m.start, Spec{.doc = "start node; the member axis e1 points from start to end, e2 is e1 turned 90 degrees "
+                                         "counter-clockwise (the top side)", .required = true});
+  o.string("end", m.end, Spec{.doc = "end node", .required = true});
+  o.string("material", m.material, Spec{.doc = "name of an entry in materials, of model linear_elastic", .required = true});
+  read_section(o.object("section", "cross-section; its type is required"), m.section);
+  o.integer("elements", m.elements, Spec{.doc = "beam-column elements along the member", .min = 1, .max = 10000});
+  o.boolean("release_start", m.release_start, Spec{.doc = "moment release (hinge) at the start: the member carries no moment there"});
+  o.boolean("release_end", m.release_end, Spec{.doc = "moment release (hinge) at the end"});
+}
+
+void read_support(Obj& o, SupportConfig& s) {
+  o.string("node", s.node, Spec{.doc = "supported node", .required = true});
+  o.string("type", s.type, Spec{.doc = "fixed (x, y and rotation restrained) | pinned (x and y) | roller (one translation) | "
+                                       "spring (elastic in x, y and rotation)", .required = true});
+  if (!o.documenting() && s.type != "fixed" && s.type != "pinned" && s.type != "roller" && s.type != "spring")
+    o.fail("type", nullptr, "fixed, pinned, roller or spring (got '" + s.type + "')");
+  if (o.when("type", s.type, "roller"))
+    o.choice<std::string>("restrained", s.restrained, {{"x", "x"}, {"y", "y"}},
+                          Spec{.doc = "the restrained translation (global axis); the other one and the rotation are free"});
+  o.end_when();
+  if (o.when("type", s.type, "spring"))
+    o.vector("stiffness", s.stiffness,
+             Spec{.unit = "N/m, N/m, N m/rad", .doc = "[kx, ky, kr]: stiffness along x, along y and in rotation; 0 = free; at least one > 0",
+                  .min = 0, .required = true},
+             3);
+  o.end_when();
+}
+
+void read_nodal_mass(Obj& o, NodalMassConfig& m) {
+  o.string("node", m.node, Spec{.doc = "node carrying the mass", .required = true});
+  o.number("mass", m.mass, Spec{.unit = "kg", .doc = "point mass added to both translations", .min = 0});
+  o.number("rotary_inertia", m.rotary_inertia, Spec{.unit = "kg m^2", .doc = "rotary inertia added to the rotation", .min = 0});
+}
+
+void read_structure(Obj o, StructureConfig& st) {
+  if (!o.present()) return;
+  const int dim = o.context().dim;
+  if (!o.documenting() && dim != 2)
+    throw InputError(o.context().file, o.path(), "", "no structure in a " + std::to_string(dim) + "D analysis (analysis.dimension = " +
+                                                         std::to_string(dim) + "): beam-column frames are 2D only for now");
+  st.present = true;
+  o.choice<BeamTheoryKind>("theory", st.theory, {{"euler_bernoulli", BeamTheoryKind::euler_bernoulli}, {"timoshenko", BeamTheoryKind::timoshenko}},
+                           Spec{.doc = "beam theory: euler_bernoulli (no shear deformation) or timoshenko (shear deformation; deep members)"});
+  o.choice<FrameTransformKind>("transformation", st.transformation,
+                               {{"linear", FrameTransformKind::linear}, {"corotational", FrameTransformKind::corotational}},
+                               Spec{.doc = "geometric transformation: linear (small displacement, M and K formed once) or corotational "
+                                           "(large displacement and rotation, re-formed every step; SEEDS.md A.3)"});
+  o.choice<FrameMassKind>("mass", st.mass, {{"lumped", FrameMassKind::lumped}, {"consistent", FrameMassKind::consistent}},
+                          Spec{.doc = "element mass matrix: lumped (diagonal) or consistent"});
+  o.choice<FrameIntegratorKind>("integrator", st.integrator,
+                                {{"explicit", FrameIntegratorKind::explicit_euler}, {"newmark", FrameIntegratorKind::newmark}},
+                                Spec{.doc = "frame time integration: explicit (SEEDS.md A.3 eqs. 27-29; its stable step limits the global "
+                                            "time step) or newmark (implicit average acceleration; does not limit the step)"});
+  o.boolean("self_weight", st.self_weight, Spec{.doc = "apply analysis.gravity to the members' own mass"});
+  Obj r = o.object("rayleigh_damping", "Rayleigh damping of the frame, C = alpha M + beta K; absent: undamped");
+  r.number("mass", st.rayleigh_mass, Spec{.unit = "1/s", .doc = "mass-proportional coefficient alpha", .min = 0});
+  r.number("stiffness", st.rayleigh_stiffness, Spec{.unit = "s", .doc = "stiffness-proportional coefficient beta", .min = 0});
+  r.finish();
+  o.array<FrameNodeConfig>("nodes", st.nodes, Spec{.doc = "frame nodes (at least 2), inside the grid", .required = true}, read_frame_node);
+  o.array<MemberConfig>("members", st.members, Spec{.doc = "members (at least 1), each a straight beam-column between two nodes", .required = true},
+                        read_member);
+  o.array<SupportConfig>("supports", st.supports, Spec{.doc = "supports (at least 1, at most one per node)", .required = true}, read_support);
+  o.array<NodalMassConfig>("masses", st.masses, Spec{.doc = "point masses and rotary inertias added at nodes"}, read_nodal_mass);
+  o.finish();
+}
+
+// Members as velocity boundaries of the continua (Yang 2016; SEEDS.md A.2-A.3).
+void read_member_contact(Obj o, MemberContactConfig& c, bool structure) {
+  if (!o.documenting() && o.present() && !structure)
+    throw InputError(o.context().file, o.path(), "", "a \"structure\" section as well (member_contact says how the structure's members "
+                                                     "act on the bodies, and there is no structure)");
+  o.choice<MemberContactMode>("mode", c.mode,
+                              {{"stick", MemberContactMode::stick},
+                               {"separable", MemberContactMode::separable},
+                               {"friction", MemberContactMode::friction}},
+                              Spec{.doc = "stick: prescribed member velocity (SEEDS.md A.2 eq. 20), the material sticks; separable: "
+                                          "smooth boundary applied only while a node approaches the member (eq. 21); friction: "
+                                          "separable plus Coulomb friction"});
+  if (o.when("mode", c.mode == MemberContactMode::friction ? "friction" : "", "friction"))
+    o.number("friction", c.friction, Spec{.doc = "Coulomb friction coefficient between members and bodies", .min = 0});
+  o.end_when();
+  o.choice<DecayKind>("decay", c.decay, {{"linear", DecayKind::linear}, {"cosine", DecayKind::cosine}},
+                      Spec{.doc = "decay of the boundary force across the decay layer, q_n(s) with s = r / l_n (SEEDS.md A.2 eq. 16): "
+                                  "linear 1 - s or cosine (1 + cos(pi s)) / 2"});
+  o.number("decay_scale", c.decay_scale, positive("", "multiplies the decay-layer thickness l_n of SEEDS.md A.2 eq. (18)"));
+  o.choice<DistanceKind>("distance", c.distance, {{"node", DistanceKind::node}, {"material", DistanceKind::material}},
+                         Spec{.doc = "signed distance r that sets q: material (default) = from the mass-weighted particle position the "
+                                     "node sees (SEEDS.md A.3 eq. 25), so the field engages when the material, not its grid support, "
+                                     "reaches the member; node = from the grid node itself (eq. 23, the paper), which acts up to a "
+                                     "cell early (docs/verification.md)"});
+  o.strings("bodies", c.bodies, {}, Spec{.doc = "names of the bodies the members act on; empty: all bodies"});
+  o.finish();
 }
 
 void read_output(Obj o, OutputConfig& out) {
@@ -183,12 +337,94 @@ void read_scenario(Obj& o, Scenario& s) {
   read_contact(o.object("contact", "contact between bodies"), s.contact);
   o.array<WallConfig>("walls", s.walls, Spec{.doc = "rigid fixed walls acting on grid nodes"}, read_wall);
   o.array<PrescribedVelocityConfig>("prescribed_velocity", s.prescribed_velocity, Spec{.doc = "regions of grid nodes moving with a given velocity"}, read_region);
+  read_structure(o.object("structure", "2D beam-column frame whose members act on the bodies (SEEDS.md A.3); absent: no frame"), s.structure);
+  read_member_contact(o.object("member_contact", "how the structure's members act on the bodies (SEEDS.md A.2); only with a structure"),
+                      s.member_contact, s.structure.present);
   read_output(o.object("output", "what is recorded"), s.output);
   o.finish();
 }
 
 std::string value_text(const DVec& v) { return json(v).dump(); }
 std::string value_text(double x) { return json(x).dump(); }
+
+std::string quoted(const std::string& name) { return json(name).dump(); }
+
+// The frame's cross-references and geometry (SEEDS.md A.3); returns the member names.
+std::set<std::string> check_structure(const Scenario& s, const std::string& file, const std::set<std::string>& bodies) {
+  const StructureConfig& st = s.structure;
+  const std::string base = "/structure";
+  if (st.nodes.size() < 2)
+    throw InputError(file, base + "/nodes", "", "at least two nodes (got " + std::to_string(st.nodes.size()) + ")");
+  if (st.members.empty()) throw InputError(file, base + "/members", "[]", "at least one member");
+  if (st.supports.empty()) throw InputError(file, base + "/supports", "[]", "at least one support (an unsupported frame is a mechanism)");
+  std::map<std::string, std::size_t> nodes;  // name -> index
+  const auto& g = s.grid;
+  for (std::size_t i = 0; i < st.nodes.size(); ++i) {
+    const FrameNodeConfig& n = st.nodes[i];
+    const std::string p = base + "/nodes/" + std::to_string(i);
+    if (!nodes.emplace(n.name, i).second) throw InputError(file, p + "/name", quoted(n.name), "a name not used before in this list");
+    // The members act on the grid nodes around them (SEEDS.md A.2), so the frame must lie on the grid.
+    for (std::size_t d = 0; d < n.position.size(); ++d)
+      if (n.position[d] < g.origin[d] - 1e-12 || n.position[d] > g.origin[d] + g.size[d] + 1e-12) {
+        std::ostringstream os;
+        os << "a position inside the grid [" << g.origin[0] << ", " << g.origin[0] + g.size[0] << "] x [" << g.origin[1] << ", "
+           << g.origin[1] + g.size[1] << "] m (the frame acts on the grid; node '" << n.name << "' is outside along axis " << d << ")";
+        throw InputError(file, p + "/position", value_text(n.position), os.str());
+      }
+  }
+  std::map<std::string, std::string> models;  // material name -> model
+  for (const auto& m : s.materials) models[m.name] = m.model;
+  auto node_ref = [&](const std::string& name, const std::string& path) {
+    const auto it = nodes.find(name);
+    if (it == nodes.end()) throw InputError(file, path, quoted(name), "the name of one of the structure's nodes");
+    return it->second;
+  };
+  std::set<std::string> members;
+  std::vector<bool> connected(st.nodes.size(), false);
+  for (std::size_t i = 0; i < st.members.size(); ++i) {
+    const MemberConfig& m = st.members[i];
+    const std::string p = base + "/members/" + std::to_string(i);
+    if (!members.insert(m.name).second) throw InputError(file, p + "/name", quoted(m.name), "a name not used before in this list");
+    if (bodies.count(m.name))
+      throw InputError(file, p + "/name", quoted(m.name), "a name that no body has (probes refer to bodies and members by name)");
+    const std::size_t a = node_ref(m.start, p + "/start"), b = node_ref(m.end, p + "/end");
+    if (a == b) throw InputError(file, p + "/end", quoted(m.end), "a node other than the start node");
+    const DVec &xa = st.nodes[a].position, &xb = st.nodes[b].position;
+    double l2 = 0;
+    for (std::size_t d = 0; d < xa.size(); ++d) l2 += (xb[d] - xa[d]) * (xb[d] - xa[d]);
+    if (!(l2 > 0))
+      throw InputError(file, p + "/end", quoted(m.end), "an end node away from the start node '" + m.start + "' (both are at " +
+                                                             value_text(xa) + ": a zero-length member)");
+    connected[a] = connected[b] = true;
+    const auto mat = models.find(m.material);
+    if (mat == models.end()) throw InputError(file, p + "/material", quoted(m.material), "the name of one of the materials");
+    if (mat->second != "linear_elastic")
+      throw InputError(file, p + "/material", quoted(m.material), "a linear_elastic material (beam-column members are linear elastic; '" +
+                                                                      m.material + "' is " + mat->second + ")");
+    const SectionConfig& c = m.section;
+    if (c.type == "pipe" && c.wall_thickness > 0.5 * c.diameter)
+      throw InputError(file, p + "/section/wall_thickness", value_text(c.wall_thickness),
+                       "a wall thickness <= diameter / 2 = " + value_text(0.5 * c.diameter) + " m");
+  }
+  for (std::size_t i = 0; i < st.nodes.size(); ++i)
+    if (!connected[i])
+      throw InputError(file, base + "/nodes/" + std::to_string(i) + "/name", quoted(st.nodes[i].name),
+                       "a node used by a member (node '" + st.nodes[i].name + "' is not connected to any member)");
+  std::map<std::size_t, std::size_t> supported;  // node index -> support index
+  for (std::size_t i = 0; i < st.supports.size(); ++i) {
+    const SupportConfig& sp = st.supports[i];
+    const std::string p = base + "/supports/" + std::to_string(i);
+    const std::size_t n = node_ref(sp.node, p + "/node");
+    if (const auto [it, fresh] = supported.emplace(n, i); !fresh)
+      throw InputError(file, p + "/node", quoted(sp.node), "a node without another support (supports/" + std::to_string(it->second) +
+                                                               " is already on '" + sp.node + "')");
+    if (sp.type == "spring" && std::none_of(sp.stiffness.begin(), sp.stiffness.end(), [](double k) { return k > 0; }))
+      throw InputError(file, p + "/stiffness", value_text(sp.stiffness), "at least one stiffness > 0 (a spring support with kx = ky = kr = 0 "
+                                                                         "supports nothing)");
+  }
+  for (std::size_t i = 0; i < st.masses.size(); ++i) node_ref(st.masses[i].node, base + "/masses/" + std::to_string(i) + "/node");
+  return members;
+}
 
 // Cross-references and geometry: what a single key cannot check.
 void check_semantics(const Scenario& s, const std::string& file) {
@@ -258,12 +494,23 @@ void check_semantics(const Scenario& s, const std::string& file) {
         throw InputError(file, p + "/max", value_text(r.max), "max > min along every axis (min = " + value_text(r.min) + ")");
     if (r.end <= r.start) throw InputError(file, p + "/end", value_text(r.end), "end > start (start = " + value_text(r.start) + ")");
   }
+  std::set<std::string> members;
+  if (s.structure.present) members = check_structure(s, file, bodies);
+  for (std::size_t i = 0; i < s.member_contact.bodies.size(); ++i)
+    if (!bodies.count(s.member_contact.bodies[i]))
+      throw InputError(file, "/member_contact/bodies/" + std::to_string(i), quoted(s.member_contact.bodies[i]), "the name of one of the bodies");
   std::set<std::string> probes;
   for (std::size_t i = 0; i < s.output.probes.size(); ++i) {
     const auto& pr = s.output.probes[i];
     const std::string p = "/output/probes/" + std::to_string(i);
     dup(probes, pr.name, p + "/name");
-    if (!bodies.count(pr.target)) throw InputError(file, p + "/body", "\"" + pr.target + "\"", "the name of one of the bodies");
+    if (pr.type == "member") {
+      if (!members.count(pr.target))
+        throw InputError(file, p + "/member", quoted(pr.target),
+                         s.structure.present ? "the name of one of the structure's members" : "a structure member (there is no structure)");
+    } else if (!bodies.count(pr.target)) {
+      throw InputError(file, p + "/body", quoted(pr.target), "the name of one of the bodies");
+    }
   }
 }
 
@@ -275,6 +522,10 @@ const std::vector<std::string>& particle_probe_quantities() {
 }
 const std::vector<std::string>& body_probe_quantities() {
   static const std::vector<std::string> q = {"position", "displacement", "velocity", "kinetic_energy"};
+  return q;
+}
+const std::vector<std::string>& member_probe_quantities() {
+  static const std::vector<std::string> q = {"displacement", "top_displacement", "rotation", "section_forces", "fibre_stress"};
   return q;
 }
 

@@ -22,5 +22,6 @@ std::string scenario_reference_markdown();
 // Probe quantities per probe type.
 const std::vector<std::string>& particle_probe_quantities();
 const std::vector<std::string>& body_probe_quantities();
+const std::vector<std::string>& member_probe_quantities();
 
 }  // namespace dmi

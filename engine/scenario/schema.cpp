@@ -101,22 +101,24 @@ void Obj::string(const char* key, std::string& out, const Spec& s) {
   if (s.required && out.empty()) fail(key, v, "a non-empty string");
 }
 
-void Obj::vector(const char* key, DVec& out, const Spec& s) {
+void Obj::vector(const char* key, DVec& out, const Spec& s, int length) {
   const std::string rt = range_text(s);
+  const int n = length > 0 ? length : ctx_.dim;
   std::string def;
   if (!out.empty()) {
     def = "[";
     for (std::size_t i = 0; i < out.size(); ++i) def += (i ? ", " : "") + num_text(out[i]);
     def += "]";
   }
-  const json* v = get(key, s, "vector", def, "length = dimension" + (rt.empty() ? "" : ", each " + rt));
+  const std::string len = length > 0 ? "length = " + std::to_string(length) : "length = dimension";
+  const json* v = get(key, s, "vector", def, len + (rt.empty() ? "" : ", each " + rt));
   if (!v) {
-    if (!documenting() && !out.empty() && static_cast<int>(out.size()) != ctx_.dim) out.resize(ctx_.dim, 0.0);
+    if (!documenting() && !out.empty() && static_cast<int>(out.size()) != n) out.resize(n, 0.0);
     return;
   }
-  const std::string expect = "an array of " + std::to_string(ctx_.dim) + " numbers" + (rt.empty() ? "" : " " + rt) +
+  const std::string expect = "an array of " + std::to_string(n) + " numbers" + (rt.empty() ? "" : " " + rt) +
                              (s.unit.empty() ? "" : " (" + s.unit + ")");
-  if (!v->is_array() || static_cast<int>(v->size()) != ctx_.dim) fail(key, v, expect);
+  if (!v->is_array() || static_cast<int>(v->size()) != n) fail(key, v, expect);
   DVec r;
   for (const auto& e : *v) {
     if (!e.is_number()) fail(key, v, expect);
@@ -132,14 +134,14 @@ void Obj::vector(const char* key, DVec& out, const Spec& s) {
 void Obj::strings(const char* key, std::vector<std::string>& out, const std::vector<std::string>& allowed, const Spec& s) {
   std::string names;
   for (const auto& a : allowed) names += (names.empty() ? "" : " | ") + a;
-  const json* v = get(key, s, "array of strings", "[]", "each one of " + names);
+  const json* v = get(key, s, "array of strings", "[]", allowed.empty() ? "" : "each one of " + names);
   if (!v) return;
-  const std::string expect = "an array of strings, each one of " + names;
+  const std::string expect = allowed.empty() ? "an array of strings" : "an array of strings, each one of " + names;
   if (!v->is_array()) fail(key, v, expect);
   out.clear();
   for (const auto& e : *v) {
     bool ok = e.is_string();
-    if (ok) {
+    if (ok && !allowed.empty()) {
       ok = false;
       for (const auto& a : allowed) ok = ok || e == a;
     }

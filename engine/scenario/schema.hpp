@@ -48,7 +48,9 @@ class Obj {
   void integer(const char* key, int& out, const Spec& s);
   void boolean(const char* key, bool& out, const Spec& s);
   void string(const char* key, std::string& out, const Spec& s);
-  void vector(const char* key, DVec& out, const Spec& s);  // length = ctx.dim
+  // length = ctx.dim, or `length` when > 0 (e.g. the three spring stiffnesses of a frame support).
+  void vector(const char* key, DVec& out, const Spec& s, int length = 0);
+  // Each element one of allowed; an empty allowed list accepts any string (checked elsewhere).
   void strings(const char* key, std::vector<std::string>& out, const std::vector<std::string>& allowed, const Spec& s);
   // An enumerated string mapped to a value.
   template <class E> void choice(const char* key, E& out, const std::vector<std::pair<std::string, E>>& map, const Spec& s);

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "engine/common/error.hpp"
+#include "engine/sim/build_frame.hpp"
 
 namespace dmi {
 namespace {
@@ -131,6 +132,14 @@ template <int D> Scene<D> build_scene(const Scenario& s) {
   sc.options.dt_max = s.analysis.dt_max;
   sc.options.contact_friction = s.contact.friction;
   sc.options.cell_volume = std::pow(h, D) * (D == 2 ? s.analysis.thickness : 1.0);
+  if (s.structure.present) {
+    try {
+      sc.frame = std::make_unique<Frame>(build_frame_model(s));
+    } catch (const std::invalid_argument& e) {  // e.g. a mechanism: the parser cannot see it
+      throw InputError(s.source_file, "/structure", "", std::string("a stable frame (") + e.what() + ")");
+    }
+    sc.coupling = build_coupling(s, sc);
+  }
   return sc;
 }
 

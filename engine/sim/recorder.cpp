@@ -1,5 +1,7 @@
 #include "engine/sim/recorder.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace dmi {
@@ -21,12 +23,31 @@ template <int D> Recorder<D>::Recorder(const Solver<D>& solver, const Scenario& 
   add("step", "-", {"value"});
   for (const auto& w : sc.walls) add("walls/" + w.name + "/force", "N", axes<D>());
   for (const auto& r : sc.regions) add("regions/" + r.name + "/force", "N", axes<D>());
+  if (sc.frame) add_frame_series(*sc.frame, s);
   const auto& P = sc.particles;
   for (const auto& pc : s.output.probes) {
     Probe p;
     p.name = pc.name;
     p.particle = pc.type == "particle";
+    p.member = pc.type == "member";
     p.quantities = pc.quantities;
+    if (p.member) {
+      const auto& ms = sc.frame->model().members;
+      const auto it = std::find_if(ms.begin(), ms.end(), [&](const FrameMemberDef& m) { return m.name == pc.target; });
+      const double u = pc.position * it->elements;
+      const int k = std::min(static_cast<int>(u), it->elements - 1);
+      p.element = it->first_element + k;
+      p.xi = u - k;
+      const std::string base = "probes/" + p.name + "/";
+      for (const auto& q : p.quantities) {
+        if (q == "section_forces") add(base + q, "N, N, N m", {"N", "V", "M"});
+        else if (q == "fibre_stress") add(base + q, "Pa", {"sigma_top", "sigma_bottom", "tau_max", "von_mises_top", "von_mises_bottom", "von_mises_max"});
+        else if (q == "rotation") add(base + q, "rad", {"value"});
+        else add(base + q, "m", axes<D>());
+      }
+      probes_.push_back(p);
+      continue;
+    }
     while (sc.bodies[p.body].name != pc.target) ++p.body;
     const Body& b = sc.bodies[p.body];
     if (p.particle) {
@@ -47,7 +68,7 @@ template <int D> Recorder<D>::Recorder(const Solver<D>& solver, const Scenario& 
   }
   impulse_.assign(sc.walls.size() + sc.regions.size(), Vec<D>::Zero());
   const auto d0 = solver.diagnostics();
-  e0_ = d0.kinetic + d0.strain;
+  e0_ = d0.kinetic + d0.strain + d0.frame_kinetic + d0.frame_strain;
 }
 
 template <int D> void Recorder<D>::accumulate(const Solver<D>& solver, double dt) {
@@ -55,6 +76,7 @@ template <int D> void Recorder<D>::accumulate(const Solver<D>& solver, double dt
   std::size_t b = 0;
   for (const auto& w : sc.walls) impulse_[b++] += w.force * dt;
   for (const auto& r : sc.regions) impulse_[b++] += r.force * dt;
+  if (const auto* mc = solver.member_contact()) member_impulse_ += mc->force() * dt;
   elapsed_ += dt;
 }
 
@@ -71,9 +93,14 @@ template <int D> void Recorder<D>::sample(const Solver<D>& solver, double dt) {
   for (const auto& w : sc.walls) push<D>(series_[k++], elapsed_ > 0 ? Vec<D>(impulse_[j++] / elapsed_) : w.force);
   for (const auto& r : sc.regions) push<D>(series_[k++], elapsed_ > 0 ? Vec<D>(impulse_[j++] / elapsed_) : r.force);
   for (auto& i : impulse_) i.setZero();
+  if (sc.frame) sample_frame(*sc.frame, *solver.member_contact(), k);
   elapsed_ = 0;
   const auto& P = sc.particles;
   for (const auto& p : probes_) {
+    if (p.member) {
+      for (const auto& q : p.quantities) sample_member_probe(*sc.frame, p, q, series_[k++]);
+      continue;
+    }
     const Body& b = sc.bodies[p.body];
     double m = 0, ke = 0;
     Vec<D> mx = Vec<D>::Zero(), mu = Vec<D>::Zero(), mv = Vec<D>::Zero();
@@ -99,6 +126,69 @@ template <int D> void Recorder<D>::sample(const Solver<D>& solver, double dt) {
         for (std::size_t c = 0; c < s.components.size(); ++c) s.data.push_back(v[c]);
       }
     }
+  }
+}
+
+// Frame histories: energies, all nodal DOFs, section forces at element ends, support reactions.
+template <int D> void Recorder<D>::add_frame_series(const Frame& f, const Scenario& s) {
+  for (const char* e : {"frame_kinetic", "frame_strain", "frame_external_work", "frame_damping", "member_work"})
+    add(std::string("energy/") + e, "J", {"value"});
+  std::vector<std::string> dofs, ends;
+  for (int n = 0; n < f.nnodes(); ++n)
+    for (const char* c : {"ux", "uy", "rz"}) dofs.push_back("n" + std::to_string(n) + "_" + c);
+  for (int e = 0; e < f.nelements(); ++e)
+    for (const char* c : {"N_i", "V_i", "M_i", "N_j", "V_j", "M_j"}) ends.push_back("e" + std::to_string(e) + "_" + c);
+  add("frame/displacement", "m, m, rad", dofs);
+  add("frame/end_forces", "N, N, N m", ends);
+  add("frame/contact_force", "N", {"x", "y"});  // force of the material on the members, interval mean
+  for (const auto& sup : s.structure.supports) add("supports/" + sup.node + "/reaction", "N, N, N m", {"Fx", "Fy", "M"});
+}
+
+template <int D> void Recorder<D>::sample_frame(const Frame& f, const MemberContact<D>& mc, std::size_t& k) {
+  for (double e : {f.kinetic_energy(), f.strain_energy(), f.external_work(), f.damping_work(), mc.work()})
+    series_[k++].data.push_back(e);
+  const auto& d = f.displacement();
+  Series& disp = series_[k++];
+  disp.data.insert(disp.data.end(), d.data(), d.data() + d.size());
+  Series& ends = series_[k++];
+  for (int e = 0; e < f.nelements(); ++e)
+    for (double xi : {0.0, 1.0}) {
+      const SectionForces sf = f.forces_at(e, xi);
+      ends.data.insert(ends.data.end(), {sf.N, sf.V, sf.M});
+    }
+  Series& cf = series_[k++];
+  const Vec2 mean = elapsed_ > 0 ? Vec2(member_impulse_ / elapsed_) : mc.force();
+  cf.data.insert(cf.data.end(), {mean.x(), mean.y()});
+  member_impulse_.setZero();
+  for (int r = 0; r < static_cast<int>(f.model().supports.size()); ++r) {
+    const Vec3 rf = f.reaction(r);
+    Series& rs = series_[k++];
+    rs.data.insert(rs.data.end(), {rf[0], rf[1], rf[2]});
+  }
+}
+
+// Member probe at (element, xi): centre-line and top-surface displacement, rotation of the
+// tangent, section forces and fibre stresses (conventions of engine/structure/frame.hpp).
+template <int D> void Recorder<D>::sample_member_probe(const Frame& f, const Probe& p, const std::string& q, Series& s) const {
+  const FrameElementDef& el = f.model().elements[p.element];
+  const Vec2 X0 = f.model().nodes[el.i] + p.xi * (f.model().nodes[el.j] - f.model().nodes[el.i]);
+  const Vec2 t0 = (f.model().nodes[el.j] - f.model().nodes[el.i]).normalized();
+  const ElementCurve c = f.curve(p.element);
+  const Vec2 x = c.point(p.xi), t = c.d1(p.xi).normalized();
+  const double hc = f.half_depth(p.element, p.xi);
+  if (q == "displacement") {
+    s.data.insert(s.data.end(), {x.x() - X0.x(), x.y() - X0.y()});
+  } else if (q == "top_displacement") {
+    const Vec2 u = (x + hc * Vec2(-t.y(), t.x())) - (X0 + hc * Vec2(-t0.y(), t0.x()));
+    s.data.insert(s.data.end(), {u.x(), u.y()});
+  } else if (q == "rotation") {
+    s.data.push_back(std::atan2(t0.x() * t.y() - t0.y() * t.x(), t0.dot(t)));
+  } else if (q == "section_forces") {
+    const SectionForces sf = f.forces_at(p.element, p.xi);
+    s.data.insert(s.data.end(), {sf.N, sf.V, sf.M});
+  } else if (q == "fibre_stress") {
+    const FibreStresses fs = f.stresses_at(p.element, p.xi);
+    s.data.insert(s.data.end(), {fs.sigma_top, fs.sigma_bottom, fs.tau_max, fs.von_mises_top, fs.von_mises_bottom, fs.von_mises_max});
   }
 }
 

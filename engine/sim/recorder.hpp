@@ -27,15 +27,22 @@ template <int D> class Recorder {
   struct Probe {
     std::string name;
     bool particle = false;
+    bool member = false;
+    int element = 0;      // member probes: element and local coordinate
+    double xi = 0;
     Index index = 0;      // tracked particle
     int body = 0;
     std::vector<std::string> quantities;
   };
   Series& add(const std::string& path, const std::string& unit, std::vector<std::string> comps);
+  void add_frame_series(const Frame& f, const Scenario& s);
+  void sample_frame(const Frame& f, const MemberContact<D>& mc, std::size_t& k);
+  void sample_member_probe(const Frame& f, const Probe& p, const std::string& q, Series& s) const;
   std::vector<double> time_;
   std::vector<Series> series_;
   std::vector<Probe> probes_;
   std::vector<Vec<D>> impulse_;  // per wall, then per region, since the last sample (N s)
+  Vec2 member_impulse_ = Vec2::Zero();  // of the material on the members since the last sample (N s)
   double elapsed_ = 0;           // s since the last sample
   double e0_ = 0;
 };

@@ -105,6 +105,13 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   info.numbers["dt_min"] = dt_min;
   info.numbers["dt_max"] = dt_max;
   info.numbers["threads"] = omp_get_max_threads();
+  if (const auto* mc = solver.member_contact()) {
+    const MemberContactStats& st = mc->stats();
+    info.numbers["member_contact_candidates"] = static_cast<double>(st.candidates);
+    info.numbers["member_contact_loaded"] = static_cast<double>(st.loaded);
+    info.numbers["projection_iterations_mean"] = st.candidates > 0 ? double(st.projection_iterations) / st.candidates : 0.0;
+    info.numbers["projection_iterations_max"] = st.max_projection_iterations;
+  }
   info.strings["status"] = "complete";
   RunOutput out;
   out.results.info = info;

@@ -9,29 +9,7 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
-CaseResult metric(const std::string& c, const std::string& m, const std::string& unit, double value, double ref, double tol,
-                  bool relative = true) {
-  CaseResult r;
-  r.case_name = c;
-  r.metric = m;
-  r.unit = unit;
-  r.value = value;
-  r.reference = ref;
-  r.error = relative ? std::abs(value - ref) / std::abs(ref) : std::abs(value - ref);
-  r.tolerance = tol;
-  r.passed = std::isfinite(r.error) && r.error <= tol;
-  return r;
-}
-
-struct Timer {
-  std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
-  double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); }
-};
-
-std::vector<CaseResult> stamp(std::vector<CaseResult> r, double wall) {
-  for (auto& x : r) x.wall_seconds = wall;
-  return r;
-}
+using Timer = CaseTimer;
 
 }  // namespace
 
@@ -211,7 +189,8 @@ std::vector<CaseResult> rest_on_wall() {
 }  // namespace
 
 const std::vector<ValidationCase>& validation_cases() {
-  static const std::vector<ValidationCase> cases = {
+  static const std::vector<ValidationCase> cases = [] {
+    std::vector<ValidationCase> c = {
       {"bar_vibration", "axial vibration of a fixed-free bar: period, amplitude, convergence order", bar_vibration},
       {"bar_free_free", "axial vibration of a free-free bar: period and interior convergence order", bar_free_free},
       {"colliding_disks", "two elastic disks (Sulsky 1995): momentum, energy drift, rebound", colliding_disks},
@@ -220,7 +199,10 @@ const std::vector<ValidationCase>& validation_cases() {
       {"wall_impact", "elastic bar onto a rigid wall: contact stress rho c v and time 2L/c", wall_impact},
       {"free_fall", "free fall: drop g t^2/2, no stress", free_fall},
       {"rest_on_wall", "block at rest on a wall: settlement rho g H^2/3E, no drift or creep", rest_on_wall},
-  };
+    };
+    for (auto& m : member_validation_cases()) c.push_back(std::move(m));
+    return c;
+  }();
   return cases;
 }
 

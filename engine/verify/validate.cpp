@@ -12,6 +12,26 @@
 
 namespace dmi {
 
+CaseResult metric(const std::string& c, const std::string& m, const std::string& unit, double value, double ref, double tol,
+                  bool relative) {
+  CaseResult r;
+  r.case_name = c;
+  r.metric = m;
+  r.unit = unit;
+  r.value = value;
+  r.reference = ref;
+  r.error = relative ? std::abs(value - ref) / std::abs(ref) : std::abs(value - ref);
+  r.tolerance = tol;
+  r.passed = std::isfinite(r.error) && r.error <= tol;
+  return r;
+}
+
+std::vector<CaseResult> stamp(std::vector<CaseResult> r, double wall) {
+  for (auto& x : r) x.wall_seconds = wall;
+  return r;
+}
+
+
 Scenario example_scenario(const std::string& file, const std::vector<std::pair<std::string, nlohmann::json>>& overrides) {
   const auto& ex = embedded_examples();
   auto it = ex.find(file);

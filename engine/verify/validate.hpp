@@ -1,6 +1,7 @@
 // Verification suite: named cases, each a scenario from examples/ (compiled in) run against a
 // closed form. `damimpact validate` prints a table or a JSON array; exit 0 only when all pass.
 #pragma once
+#include <chrono>
 #include <functional>
 #include <map>
 #include <string>
@@ -31,7 +32,18 @@ Scenario example_scenario(const std::string& file, const std::vector<std::pair<s
 // Runs a scenario in memory (no files, quiet); returns histories.
 RunOutput run_quiet(const Scenario& s);
 
+// One metric: error relative to |ref| (absolute if !relative); passes when finite and <= tol.
+CaseResult metric(const std::string& case_name, const std::string& metric, const std::string& unit, double value, double ref,
+                  double tol, bool relative = true);
+struct CaseTimer {
+  std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
+  double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); }
+};
+// Sets every result's wall time to `wall` (s).
+std::vector<CaseResult> stamp(std::vector<CaseResult> r, double wall);
+
 const std::vector<ValidationCase>& validation_cases();
+std::vector<ValidationCase> member_validation_cases();  // cases_members.cpp (SEEDS.md A.3-A.6)
 
 // Bar vibration at one resolution (used by the case, tests and benchmarks).
 struct BarResult {

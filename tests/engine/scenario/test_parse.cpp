@@ -122,11 +122,15 @@ TEST(ScenarioDocs, ReferenceCoversEveryKey) {
   for (const char* key : {"`/schema_version`", "`/analysis/end_time`", "`/analysis/gravity`", "`/mpm/stress_update`",
                           "`/grid/cell_size`", "`/materials[]/poisson_ratio`", "`/bodies[]/shape/radius`",
                           "`/bodies[]/velocity_sine/wavevector`", "`/contact/friction`", "`/walls[]/normal`",
-                          "`/walls[]/condition`", "`/prescribed_velocity[]/end`", "`/output/probes[]/quantities`"})
+                          "`/walls[]/condition`", "`/prescribed_velocity[]/end`", "`/output/probes[]/quantities`",
+                          "`/structure/integrator`", "`/structure/rayleigh_damping/stiffness`", "`/structure/members[]/section/depth_end`",
+                          "`/structure/supports[]/stiffness`", "`/structure/masses[]/rotary_inertia`", "`/member_contact/decay_scale`",
+                          "`/output/probes[]/member`", "`/output/probes[]/position`"})
     EXPECT_NE(md.find(key), std::string::npos) << key;
   // One section per top-level object or array, each headed once.
   for (const char* section : {"### `(top level)`", "### `analysis`", "### `mpm`", "### `grid`", "### `materials`", "### `bodies`",
-                              "### `contact`", "### `walls`", "### `prescribed_velocity`", "### `output`"}) {
+                              "### `contact`", "### `walls`", "### `prescribed_velocity`", "### `structure`", "### `member_contact`",
+                              "### `output`"}) {
     const auto at = md.find(section);
     EXPECT_NE(at, std::string::npos) << section;
     if (at != std::string::npos) {
@@ -143,6 +147,20 @@ TEST(ScenarioDocs, ExampleInTheDocsParses) {
   ASSERT_NE(e, std::string::npos);
   const Scenario s = parse_scenario(text.substr(b + 8, e - (b + 8)), "docs/scenario.md");
   EXPECT_EQ(s.bodies.size(), 1u);
+}
+
+// The second ```json block of docs/scenario.md: the frame example of its "Structures" section.
+TEST(ScenarioDocs, StructureExampleInTheDocsParses) {
+  const std::string text = read_text(fs::path(DMI_SOURCE_DIR) / "docs" / "scenario.md");
+  const auto first = text.find("```json\n");
+  ASSERT_NE(first, std::string::npos);
+  const auto b = text.find("```json\n", first + 8);
+  ASSERT_NE(b, std::string::npos) << "docs/scenario.md has no second ```json example (the frame)";
+  const auto e = text.find("```", b + 8);
+  ASSERT_NE(e, std::string::npos);
+  const Scenario s = parse_scenario(text.substr(b + 8, e - (b + 8)), "docs/scenario.md");
+  EXPECT_TRUE(s.structure.present);
+  EXPECT_FALSE(s.structure.members.empty());
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -236,6 +254,194 @@ TEST(ScenarioDefaults, GivenValuesOverrideDefaults) {
   EXPECT_EQ(s.analysis.gravity, (DVec{0.0, 0.0}));
   EXPECT_EQ(s.mpm.shape, ShapeKind::gimp);
   EXPECT_EQ(s.mpm.transfer, TransferKind::apic);
+}
+
+// ---------------------------------------------------------------------------------------------
+// (c2) beam-column frames (SEEDS.md A.3), member contact (A.2) and member probes
+
+// minimal_2d() plus a steel beam under the block, pinned at A and on a roller at B, with only the
+// required keys.
+json frame_2d() {
+  json j = minimal_2d();
+  j["materials"].push_back({{"name", "steel"}, {"density", 7850}, {"youngs_modulus", 2e11}, {"poisson_ratio", 0.3}});
+  j["structure"] = json::parse(R"({
+    "nodes": [{"name": "A", "position": [0.2, 0.1]}, {"name": "B", "position": [1.8, 0.1]}],
+    "members": [{"name": "beam", "start": "A", "end": "B", "material": "steel", "section": {"type": "rectangle", "width": 0.05, "depth": 0.1}}],
+    "supports": [{"node": "A", "type": "pinned"}, {"node": "B", "type": "roller"}]
+  })");
+  return j;
+}
+
+TEST(ScenarioStructure, AbsentMeansNoFrame) {
+  const Scenario s = parse(minimal_2d());
+  EXPECT_FALSE(s.structure.present);
+  EXPECT_TRUE(s.structure.nodes.empty());
+  EXPECT_TRUE(s.structure.members.empty());
+  EXPECT_EQ(s.member_contact.mode, MemberContactMode::separable);
+  EXPECT_TRUE(s.member_contact.bodies.empty());
+}
+
+TEST(ScenarioStructure, Defaults) {
+  json j = frame_2d();
+  j["member_contact"] = json::object();
+  j["output"]["probes"] = json::array({{{"name", "mid"}, {"type", "member"}, {"member", "beam"}}});
+  const Scenario s = parse(j);
+  const StructureConfig& st = s.structure;
+  EXPECT_TRUE(st.present);
+  EXPECT_EQ(st.theory, BeamTheoryKind::euler_bernoulli);
+  EXPECT_EQ(st.transformation, FrameTransformKind::linear);
+  EXPECT_EQ(st.mass, FrameMassKind::lumped);
+  EXPECT_EQ(st.integrator, FrameIntegratorKind::explicit_euler);
+  EXPECT_TRUE(st.self_weight);
+  EXPECT_DOUBLE_EQ(st.rayleigh_mass, 0.0);
+  EXPECT_DOUBLE_EQ(st.rayleigh_stiffness, 0.0);
+  ASSERT_EQ(st.nodes.size(), 2u);
+  EXPECT_EQ(st.nodes[1].name, "B");
+  EXPECT_EQ(st.nodes[1].position, (DVec{1.8, 0.1}));
+  ASSERT_EQ(st.members.size(), 1u);
+  const MemberConfig& m = st.members[0];
+  EXPECT_EQ(m.name, "beam");
+  EXPECT_EQ(m.start, "A");
+  EXPECT_EQ(m.end, "B");
+  EXPECT_EQ(m.material, "steel");
+  EXPECT_EQ(m.section.type, "rectangle");
+  EXPECT_DOUBLE_EQ(m.section.width, 0.05);
+  EXPECT_DOUBLE_EQ(m.section.depth, 0.1);
+  EXPECT_EQ(m.elements, 1);
+  EXPECT_FALSE(m.release_start);
+  EXPECT_FALSE(m.release_end);
+  ASSERT_EQ(st.supports.size(), 2u);
+  EXPECT_EQ(st.supports[0].type, "pinned");
+  EXPECT_EQ(st.supports[1].type, "roller");
+  EXPECT_EQ(st.supports[1].restrained, "y");
+  EXPECT_TRUE(st.supports[1].stiffness.empty());
+  EXPECT_TRUE(st.masses.empty());
+  const MemberContactConfig& mc = s.member_contact;
+  EXPECT_EQ(mc.mode, MemberContactMode::separable);
+  EXPECT_DOUBLE_EQ(mc.friction, 0.0);
+  EXPECT_EQ(mc.decay, DecayKind::linear);
+  EXPECT_DOUBLE_EQ(mc.decay_scale, 1.0);
+  EXPECT_TRUE(mc.bodies.empty());
+  ASSERT_EQ(s.output.probes.size(), 1u);
+  EXPECT_EQ(s.output.probes[0].type, "member");
+  EXPECT_EQ(s.output.probes[0].target, "beam");
+  EXPECT_DOUBLE_EQ(s.output.probes[0].position, 0.5);
+  EXPECT_EQ(s.output.probes[0].quantities, member_probe_quantities());
+  EXPECT_EQ(member_probe_quantities(),
+            (std::vector<std::string>{"displacement", "top_displacement", "rotation", "section_forces", "fibre_stress"}));
+}
+
+TEST(ScenarioStructure, FullFrameParses) {
+  // A portal over the block: two columns fixed at the base and a girder on top, every key given.
+  json j = minimal_2d();
+  j["grid"]["size"] = {2, 2};
+  j["bodies"].push_back({{"name", "boulder"}, {"material", "rock"}, {"shape", {{"type", "ball"}, {"center", {1.0, 1.2}}, {"radius", 0.2}}}});
+  j["materials"].push_back({{"name", "concrete"}, {"density", 2400}, {"youngs_modulus", 3e10}, {"poisson_ratio", 0.2}});
+  j["structure"] = json::parse(R"({
+    "theory": "timoshenko",
+    "transformation": "corotational",
+    "mass": "consistent",
+    "integrator": "newmark",
+    "self_weight": false,
+    "rayleigh_damping": {"mass": 0.5, "stiffness": 1e-4},
+    "nodes": [{"name": "base_left", "position": [0.2, 0.1]}, {"name": "top_left", "position": [0.2, 1.6]},
+              {"name": "top_right", "position": [1.8, 1.6]}, {"name": "base_right", "position": [1.8, 0.1]}],
+    "members": [
+      {"name": "left", "start": "base_left", "end": "top_left", "material": "concrete",
+       "section": {"type": "tapered_rectangle", "width": 1.0, "depth_start": 0.3, "depth_end": 0.2}, "elements": 6},
+      {"name": "girder", "start": "top_left", "end": "top_right", "material": "concrete",
+       "section": {"type": "rectangle", "width": 1.0, "depth": 0.25}, "elements": 8, "release_start": true, "release_end": true},
+      {"name": "right", "start": "base_right", "end": "top_right", "material": "concrete",
+       "section": {"type": "pipe", "diameter": 0.3, "wall_thickness": 0.15}}
+    ],
+    "supports": [{"node": "base_left", "type": "fixed"},
+                 {"node": "base_right", "type": "spring", "stiffness": [1e9, 2e9, 0]},
+                 {"node": "top_right", "type": "roller", "restrained": "x"}],
+    "masses": [{"node": "top_left", "mass": 120, "rotary_inertia": 3.5}, {"node": "top_right", "mass": 80}]
+  })");
+  j["member_contact"] = {{"mode", "friction"}, {"friction", 0.4}, {"decay", "cosine"}, {"decay_scale", 1.5}, {"bodies", {"boulder"}}};
+  j["output"]["probes"] = json::array({{{"name", "girder_mid"}, {"type", "member"}, {"member", "girder"}, {"position", 0.25},
+                                        {"quantities", {"fibre_stress", "section_forces"}}},
+                                       {{"name", "b"}, {"type", "body"}, {"body", "boulder"}}});
+  const Scenario s = parse(j);
+  const StructureConfig& st = s.structure;
+  EXPECT_TRUE(st.present);
+  EXPECT_EQ(st.theory, BeamTheoryKind::timoshenko);
+  EXPECT_EQ(st.transformation, FrameTransformKind::corotational);
+  EXPECT_EQ(st.mass, FrameMassKind::consistent);
+  EXPECT_EQ(st.integrator, FrameIntegratorKind::newmark);
+  EXPECT_FALSE(st.self_weight);
+  EXPECT_DOUBLE_EQ(st.rayleigh_mass, 0.5);
+  EXPECT_DOUBLE_EQ(st.rayleigh_stiffness, 1e-4);
+  ASSERT_EQ(st.nodes.size(), 4u);
+  EXPECT_EQ(st.nodes[2].name, "top_right");
+  EXPECT_EQ(st.nodes[2].position, (DVec{1.8, 1.6}));
+  ASSERT_EQ(st.members.size(), 3u);
+  const SectionConfig& tapered = st.members[0].section;
+  EXPECT_EQ(tapered.type, "tapered_rectangle");
+  EXPECT_DOUBLE_EQ(tapered.width, 1.0);
+  EXPECT_DOUBLE_EQ(tapered.depth_start, 0.3);
+  EXPECT_DOUBLE_EQ(tapered.depth_end, 0.2);
+  EXPECT_EQ(st.members[0].elements, 6);
+  EXPECT_FALSE(st.members[0].release_start);
+  const MemberConfig& girder = st.members[1];
+  EXPECT_EQ(girder.name, "girder");
+  EXPECT_EQ(girder.start, "top_left");
+  EXPECT_EQ(girder.end, "top_right");
+  EXPECT_EQ(girder.material, "concrete");
+  EXPECT_EQ(girder.section.type, "rectangle");
+  EXPECT_DOUBLE_EQ(girder.section.depth, 0.25);
+  EXPECT_EQ(girder.elements, 8);
+  EXPECT_TRUE(girder.release_start);
+  EXPECT_TRUE(girder.release_end);
+  const SectionConfig& pipe = st.members[2].section;
+  EXPECT_EQ(pipe.type, "pipe");
+  EXPECT_DOUBLE_EQ(pipe.diameter, 0.3);
+  EXPECT_DOUBLE_EQ(pipe.wall_thickness, 0.15);  // = D/2: a solid circle is allowed
+  EXPECT_EQ(st.members[2].elements, 1);
+  ASSERT_EQ(st.supports.size(), 3u);
+  EXPECT_EQ(st.supports[0].node, "base_left");
+  EXPECT_EQ(st.supports[0].type, "fixed");
+  EXPECT_EQ(st.supports[1].type, "spring");
+  EXPECT_EQ(st.supports[1].stiffness, (DVec{1e9, 2e9, 0}));
+  EXPECT_EQ(st.supports[2].type, "roller");
+  EXPECT_EQ(st.supports[2].restrained, "x");
+  ASSERT_EQ(st.masses.size(), 2u);
+  EXPECT_EQ(st.masses[0].node, "top_left");
+  EXPECT_DOUBLE_EQ(st.masses[0].mass, 120);
+  EXPECT_DOUBLE_EQ(st.masses[0].rotary_inertia, 3.5);
+  EXPECT_DOUBLE_EQ(st.masses[1].mass, 80);
+  EXPECT_DOUBLE_EQ(st.masses[1].rotary_inertia, 0.0);
+  const MemberContactConfig& mc = s.member_contact;
+  EXPECT_EQ(mc.mode, MemberContactMode::friction);
+  EXPECT_DOUBLE_EQ(mc.friction, 0.4);
+  EXPECT_EQ(mc.decay, DecayKind::cosine);
+  EXPECT_DOUBLE_EQ(mc.decay_scale, 1.5);
+  EXPECT_EQ(mc.bodies, (std::vector<std::string>{"boulder"}));
+  ASSERT_EQ(s.output.probes.size(), 2u);
+  const ProbeConfig& p = s.output.probes[0];
+  EXPECT_EQ(p.name, "girder_mid");
+  EXPECT_EQ(p.type, "member");
+  EXPECT_EQ(p.target, "girder");
+  EXPECT_DOUBLE_EQ(p.position, 0.25);
+  EXPECT_EQ(p.quantities, (std::vector<std::string>{"fibre_stress", "section_forces"}));
+  EXPECT_EQ(s.output.probes[1].target, "boulder");
+  EXPECT_EQ(s.output.probes[1].quantities, body_probe_quantities());
+}
+
+TEST(ScenarioStructure, MemberContactModesAndProbeEnds) {
+  json j = frame_2d();
+  j["member_contact"] = {{"mode", "stick"}};
+  j["output"]["probes"] = json::array({{{"name", "s"}, {"type", "member"}, {"member", "beam"}, {"position", 0}},
+                                       {{"name", "e"}, {"type", "member"}, {"member", "beam"}, {"position", 1}}});
+  const Scenario s = parse(j);
+  EXPECT_EQ(s.member_contact.mode, MemberContactMode::stick);
+  EXPECT_DOUBLE_EQ(s.output.probes[0].position, 0.0);
+  EXPECT_DOUBLE_EQ(s.output.probes[1].position, 1.0);
+  // Frame nodes on the grid boundary are inside.
+  j["structure"]["nodes"][0]["position"] = {0, 0};
+  j["structure"]["nodes"][1]["position"] = {2, 1};
+  EXPECT_NO_THROW(parse(j));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -452,6 +658,176 @@ TEST(ScenarioErrors, GridTooLargeOrCellsTooBig) {
 
 TEST(ScenarioErrors, NoBodies) {
   expect_error(with([](json& j) { j["bodies"] = json::array(); }), "/bodies", {"= []", "at least one body"});
+}
+
+// frame_2d() with one change.
+json frame_with(const std::function<void(json&)>& change) { return with(change, frame_2d()); }
+
+TEST(ScenarioStructureErrors, OnlyIn2D) {
+  json j = minimal_3d();
+  j["structure"] = frame_2d()["structure"];
+  j["materials"] = frame_2d()["materials"];
+  expect_error(j, "/structure", {"no structure in a 3D analysis", "analysis.dimension = 3", "2D only"});
+}
+
+TEST(ScenarioStructureErrors, UnknownAndMisplacedKeys) {
+  expect_error(frame_with([](json& j) { j["structure"]["members"][0]["element"] = 4; }), "/structure/members/0/element",
+               {"= 4", "unknown key 'element'", "elements"});
+  expect_error(frame_with([](json& j) { j["structure"]["theroy"] = "timoshenko"; }), "/structure/theroy", {"unknown key 'theroy'", "theory"});
+  expect_error(frame_with([](json& j) { j["structure"]["rayleigh_damping"]["alpha"] = 1; }), "/structure/rayleigh_damping/alpha",
+               {"unknown key 'alpha'", "mass, stiffness"});
+  // Keys of another variant: a rectangle has no diameter, a pinned support no stiffness, friction needs mode friction.
+  expect_error(frame_with([](json& j) { j["structure"]["members"][0]["section"]["diameter"] = 0.1; }),
+               "/structure/members/0/section/diameter", {"unknown key 'diameter'"});
+  expect_error(frame_with([](json& j) { j["structure"]["supports"][0]["stiffness"] = {1, 1, 1}; }), "/structure/supports/0/stiffness",
+               {"unknown key 'stiffness'"});
+  expect_error(frame_with([](json& j) { j["structure"]["supports"][0]["restrained"] = "x"; }), "/structure/supports/0/restrained",
+               {"unknown key 'restrained'"});
+  expect_error(frame_with([](json& j) { j["member_contact"] = {{"friction", 0.3}}; }), "/member_contact/friction", {"unknown key 'friction'"});
+  // A member probe names a member, not a body; a body probe still needs its body.
+  expect_error(frame_with([](json& j) {
+                 j["output"]["probes"] = json::array({{{"name", "m"}, {"type", "member"}, {"member", "beam"}, {"body", "block"}}});
+               }),
+               "/output/probes/0/body", {"unknown key 'body'"});
+  expect_error(frame_with([](json& j) { j["output"]["probes"] = json::array({{{"name", "m"}, {"type", "member"}}}); }),
+               "/output/probes/0/member", {"the required key 'member'"});
+  expect_error(frame_with([](json& j) { j["output"]["probes"] = json::array({{{"name", "b"}, {"type", "body"}, {"member", "beam"}}}); }),
+               "/output/probes/0/body", {"the required key 'body'"});
+  expect_error(frame_with([](json& j) { j["output"]["probes"] = json::array({{{"name", "b"}, {"type", "body"}, {"position", 0.5}}}); }),
+               "/output/probes/0/body", {"the required key 'body'"});
+  expect_error(frame_with([](json& j) { j["output"]["probes"] = json::array({{{"name", "b"}, {"type", "beam"}, {"member", "beam"}}}); }),
+               "/output/probes/0/type", {"particle, body or member", "beam"});
+}
+
+TEST(ScenarioStructureErrors, MissingRequiredKeys) {
+  expect_error(frame_with([](json& j) { j["structure"].erase("nodes"); }), "/structure/nodes", {"the required key 'nodes'"});
+  expect_error(frame_with([](json& j) { j["structure"].erase("members"); }), "/structure/members", {"the required key 'members'"});
+  expect_error(frame_with([](json& j) { j["structure"].erase("supports"); }), "/structure/supports", {"the required key 'supports'"});
+  expect_error(frame_with([](json& j) { j["structure"]["members"][0].erase("section"); }), "/structure/members/0/section/type",
+               {"the required key 'type'"});
+  expect_error(frame_with([](json& j) { j["structure"]["members"][0]["section"].erase("depth"); }), "/structure/members/0/section/depth",
+               {"the required key 'depth'", "(number, m)"});
+  expect_error(frame_with([](json& j) { j["structure"]["members"][0]["section"] = {{"type", "pipe"}, {"diameter", 0.2}}; }),
+               "/structure/members/0/section/wall_thickness", {"the required key 'wall_thickness'"});
+  expect_error(frame_with([](json& j) { j["structure"]["supports"][0] = {{"node", "A"}, {"type", "spring"}}; }),
+               "/structure/supports/0/stiffness", {"the required key 'stiffness'"});
+  expect_error(frame_with([](json& j) { j["structure"]["nodes"][0].erase("position"); }), "/structure/nodes/0/position",
+               {"the required key 'position'"});
+}
+
+TEST(ScenarioStructureErrors, OutOfRangeAndWrongType) {
+  expect_error(frame_with([](json& j) { j["structure"]["members"][0]["section"]["depth"] = -0.1; }), "/structure/members/0/section/depth",
+               {"= -0.1", "a number > 0 (m)"});
+  expect_error(frame_with([](json& j) { j["structure"]["members"][0]["elements"] = 0; }), "/structure/members/0/elements",
+               {"= 0", ">= 1 and <= 10000"});
+  expect_error(frame_with([](json& j) { j["structure"]["members"][0]["elements"] = 10001; }), "/structure/members/0/elements",
+               {"<= 10000"});
+  expect_error(frame_with([](json& j) { j["structure"]["members"][0]["section"]["type"] = "i_beam"; }), "/structure/members/0/section/type",
+               {"rectangle, pipe or tapered_rectangle", "i_beam"});
+  expect_error(frame_with([](json& j) { j["structure"]["supports"][0]["type"] = "clamped"; }), "/structure/supports/0/type",
+               {"fixed, pinned, roller or spring", "clamped"});
+  expect_error(frame_with([](json& j) { j["structure"]["supports"][1]["restrained"] = "z"; }), "/structure/supports/1/restrained",
+               {"= \"z\"", "one of x | y"});
+  expect_error(frame_with([](json& j) { j["structure"]["supports"][0] = {{"node", "A"}, {"type", "spring"}, {"stiffness", {1e6, 1e6}}}; }),
+               "/structure/supports/0/stiffness", {"an array of 3 numbers >= 0"});
+  expect_error(frame_with([](json& j) { j["structure"]["supports"][0] = {{"node", "A"}, {"type", "spring"}, {"stiffness", {1e6, -1, 0}}}; }),
+               "/structure/supports/0/stiffness", {"an array of 3 numbers >= 0"});
+  expect_error(frame_with([](json& j) { j["structure"]["nodes"][0]["position"] = {0.2, 0.1, 0}; }), "/structure/nodes/0/position",
+               {"an array of 2 numbers"});
+  expect_error(frame_with([](json& j) { j["structure"]["theory"] = "bernoulli"; }), "/structure/theory", {"one of euler_bernoulli | timoshenko"});
+  expect_error(frame_with([](json& j) { j["structure"]["integrator"] = "central_difference"; }), "/structure/integrator",
+               {"one of explicit | newmark"});
+  expect_error(frame_with([](json& j) { j["structure"]["rayleigh_damping"] = {{"mass", -0.1}}; }), "/structure/rayleigh_damping/mass",
+               {"a number >= 0 (1/s)"});
+  expect_error(frame_with([](json& j) { j["structure"]["masses"] = json::array({{{"node", "A"}, {"mass", -1}}}); }),
+               "/structure/masses/0/mass", {"a number >= 0 (kg)"});
+  expect_error(frame_with([](json& j) { j["structure"]["self_weight"] = 1; }), "/structure/self_weight", {"true or false"});
+  expect_error(frame_with([](json& j) { j["member_contact"] = {{"decay_scale", 0}}; }), "/member_contact/decay_scale", {"a number > 0"});
+  expect_error(frame_with([](json& j) { j["member_contact"] = {{"mode", "glue"}}; }), "/member_contact/mode",
+               {"one of stick | separable | friction"});
+  expect_error(frame_with([](json& j) { j["member_contact"] = {{"mode", "friction"}, {"friction", -0.2}}; }), "/member_contact/friction",
+               {"a number >= 0"});
+  expect_error(frame_with([](json& j) { j["member_contact"] = {{"bodies", "block"}}; }), "/member_contact/bodies", {"an array of strings"});
+  expect_error(frame_with([](json& j) {
+                 j["output"]["probes"] = json::array({{{"name", "m"}, {"type", "member"}, {"member", "beam"}, {"position", 1.5}}});
+               }),
+               "/output/probes/0/position", {"= 1.5", ">= 0 and <= 1"});
+  expect_error(frame_with([](json& j) {
+                 j["output"]["probes"] = json::array({{{"name", "m"}, {"type", "member"}, {"member", "beam"}, {"quantities", {"velocity"}}}});
+               }),
+               "/output/probes/0/quantities", {"\"velocity\"", "section_forces"});
+}
+
+TEST(ScenarioStructureErrors, NodesAndMembers) {
+  expect_error(frame_with([](json& j) {
+                 j["structure"]["nodes"][1]["name"] = "A";
+                 j["structure"]["members"][0]["end"] = "A";
+               }),
+               "/structure/nodes/1/name", {"= \"A\"", "a name not used before"});
+  expect_error(frame_with([](json& j) { j["structure"]["members"][0]["end"] = "C"; }), "/structure/members/0/end",
+               {"= \"C\"", "the name of one of the structure's nodes"});
+  expect_error(frame_with([](json& j) { j["structure"]["members"][0]["start"] = "a"; }), "/structure/members/0/start",
+               {"= \"a\"", "the name of one of the structure's nodes"});
+  expect_error(frame_with([](json& j) { j["structure"]["members"][0]["end"] = "A"; }), "/structure/members/0/end",
+               {"= \"A\"", "a node other than the start node"});
+  expect_error(frame_with([](json& j) { j["structure"]["nodes"][1]["position"] = {0.2, 0.1}; }), "/structure/members/0/end",
+               {"= \"B\"", "zero-length member", "[0.2,0.1]"});
+  expect_error(frame_with([](json& j) { j["structure"]["nodes"].push_back({{"name", "C"}, {"position", {1, 0.8}}}); }),
+               "/structure/nodes/2/name", {"= \"C\"", "node 'C' is not connected to any member"});
+  expect_error(frame_with([](json& j) { j["structure"]["nodes"] = json::array({j["structure"]["nodes"][0]}); }), "/structure/nodes",
+               {"at least two nodes (got 1)"});
+  expect_error(frame_with([](json& j) { j["structure"]["members"] = json::array(); }), "/structure/members", {"at least one member"});
+  expect_error(frame_with([](json& j) { j["structure"]["members"].push_back(j["structure"]["members"][0]); }), "/structure/members/1/name",
+               {"= \"beam\"", "a name not used before"});
+  expect_error(frame_with([](json& j) { j["structure"]["members"][0]["name"] = "block"; }), "/structure/members/0/name",
+               {"= \"block\"", "a name that no body has"});
+  // The frame acts on the grid: its nodes lie in [0, 2] x [0, 1].
+  expect_error(frame_with([](json& j) { j["structure"]["nodes"][1]["position"] = {2.5, 0.1}; }), "/structure/nodes/1/position",
+               {"= [2.5,0.1]", "a position inside the grid [0, 2] x [0, 1] m", "along axis 0"});
+  expect_error(frame_with([](json& j) { j["structure"]["nodes"][0]["position"] = {0.2, -0.05}; }), "/structure/nodes/0/position",
+               {"along axis 1"});
+}
+
+TEST(ScenarioStructureErrors, MaterialsAndSections) {
+  expect_error(frame_with([](json& j) { j["structure"]["members"][0]["material"] = "timber"; }), "/structure/members/0/material",
+               {"= \"timber\"", "the name of one of the materials"});
+  expect_error(frame_with([](json& j) {
+                 j["materials"][1]["model"] = "neo_hookean";
+               }),
+               "/structure/members/0/material", {"= \"steel\"", "a linear_elastic material", "'steel' is neo_hookean"});
+  expect_error(frame_with([](json& j) {
+                 j["structure"]["members"][0]["section"] = {{"type", "pipe"}, {"diameter", 0.2}, {"wall_thickness", 0.11}};
+               }),
+               "/structure/members/0/section/wall_thickness", {"= 0.11", "a wall thickness <= diameter / 2 = 0.1 m"});
+}
+
+TEST(ScenarioStructureErrors, SupportsAndMasses) {
+  expect_error(frame_with([](json& j) { j["structure"]["supports"] = json::array(); }), "/structure/supports", {"at least one support"});
+  expect_error(frame_with([](json& j) { j["structure"]["supports"][1]["node"] = "Z"; }), "/structure/supports/1/node",
+               {"= \"Z\"", "the name of one of the structure's nodes"});
+  expect_error(frame_with([](json& j) { j["structure"]["supports"][1]["node"] = "A"; }), "/structure/supports/1/node",
+               {"= \"A\"", "a node without another support", "supports/0"});
+  expect_error(frame_with([](json& j) { j["structure"]["supports"][0] = {{"node", "A"}, {"type", "spring"}, {"stiffness", {0, 0, 0}}}; }),
+               "/structure/supports/0/stiffness", {"= [0.0,0.0,0.0]", "at least one stiffness > 0"});
+  expect_error(frame_with([](json& j) { j["structure"]["masses"] = json::array({{{"node", "M"}, {"mass", 10}}}); }),
+               "/structure/masses/0/node", {"= \"M\"", "the name of one of the structure's nodes"});
+}
+
+TEST(ScenarioStructureErrors, MemberContactAndProbes) {
+  expect_error(with([](json& j) { j["member_contact"] = {{"mode", "stick"}}; }), "/member_contact",
+               {"a \"structure\" section", "there is no structure"});
+  expect_error(with([](json& j) { j["member_contact"] = json::object(); }), "/member_contact", {"a \"structure\" section"});
+  expect_error(frame_with([](json& j) { j["member_contact"] = {{"bodies", {"block", "boulder"}}}; }), "/member_contact/bodies/1",
+               {"= \"boulder\"", "the name of one of the bodies"});
+  expect_error(frame_with([](json& j) { j["output"]["probes"] = json::array({{{"name", "m"}, {"type", "member"}, {"member", "girder"}}}); }),
+               "/output/probes/0/member", {"= \"girder\"", "the name of one of the structure's members"});
+  expect_error(with([](json& j) { j["output"]["probes"] = json::array({{{"name", "m"}, {"type", "member"}, {"member", "beam"}}}); }),
+               "/output/probes/0/member", {"= \"beam\"", "there is no structure"});
+  // A member probe cannot look at a body, nor a body probe at a member.
+  expect_error(frame_with([](json& j) { j["output"]["probes"] = json::array({{{"name", "m"}, {"type", "member"}, {"member", "block"}}}); }),
+               "/output/probes/0/member", {"= \"block\""});
+  expect_error(frame_with([](json& j) { j["output"]["probes"] = json::array({{{"name", "b"}, {"type", "body"}, {"body", "beam"}}}); }),
+               "/output/probes/0/body", {"= \"beam\"", "the name of one of the bodies"});
 }
 
 TEST(ScenarioErrors, LoadScenarioFileProblems) {

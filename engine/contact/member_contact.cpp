@@ -1,0 +1,166 @@
+#include "engine/contact/member_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "engine/contact/projection.hpp"
+
+namespace dmi {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Decay function q_n(s), s = r / l_n in (0, 1) (SEEDS.md A.2 eq. 16; the paper leaves q_n open).
+double decay(DecayKind k, double s) { return k == DecayKind::linear ? 1 - s : 0.5 * (1 + std::cos(kPi * s)); }
+
+// Axis-aligned box of an element's deformed centre-line: the cubic lies in the convex hull of its
+// Bezier control points x(0), x(0) + x'(0)/3, x(1) - x'(1)/3, x(1).
+void curve_box(const ElementCurve& c, Vec2& lo, Vec2& hi) {
+  const Vec2 p0 = c.point(0), p3 = c.point(1);
+  const Vec2 p1 = p0 + c.d1(0) / 3, p2 = p3 - c.d1(1) / 3;
+  lo = p0.cwiseMin(p1).cwiseMin(p2).cwiseMin(p3);
+  hi = p0.cwiseMax(p1).cwiseMax(p2).cwiseMax(p3);
+}
+
+}  // namespace
+
+template <int D> MemberContact<D>::MemberContact(const Grid<D>& g) {
+  slot_.assign(static_cast<std::size_t>(g.nnodes()), -1);
+  mx_.assign(static_cast<std::size_t>(g.nnodes() * g.nfields()), Vec<D>::Zero());
+}
+
+// Every active node within reach (half depth + decay layer) of an element, with its nearest element.
+template <int D> void MemberContact<D>::find_candidates(const Scene<D>& s) {
+  if constexpr (D == 2) {
+    const Grid<2>& g = *s.grid;
+    const Frame& fr = *s.frame;
+    // With the material distance, x-bar may lie up to a stencil half-width (1.5 h) nearer the member.
+    const double ln = s.coupling.decay_scale * g.h() + (s.coupling.distance == DistanceKind::material ? 1.5 * g.h() : 0.0);
+    for (const Candidate& c : cand_) slot_[c.node] = -1;
+    cand_.clear();
+    for (int e = 0; e < fr.nelements(); ++e) {
+      const ElementCurve c = fr.curve(e);
+      Vec2 lo, hi;
+      curve_box(c, lo, hi);
+      const double reach = std::max(fr.half_depth(e, 0), fr.half_depth(e, 1)) + ln + 1e-9 * g.h();
+      IVec<2> a, b;
+      for (int d = 0; d < 2; ++d) {
+        a[d] = std::max(0, static_cast<int>(std::ceil((lo[d] - reach - g.origin()[d]) * g.inv_h())));
+        b[d] = std::min(g.nodes()[d] - 1, static_cast<int>(std::floor((hi[d] + reach - g.origin()[d]) * g.inv_h())));
+      }
+      for (int j = a[1]; j <= b[1]; ++j)
+        for (int i = a[0]; i <= b[0]; ++i) {
+          const Index id = g.node_id(IVec<2>(i, j));
+          bool has_mass = false;
+          for (int f : s.coupling.fields) has_mass = has_mass || g.m[f * g.nnodes() + id] > 0;
+          if (!has_mass) continue;
+          const Vec2 x = g.node_pos(id);
+          const Projection pr = project_on_curve(c, x);
+          ++stats_.candidates;
+          stats_.projection_iterations += pr.iterations;
+          stats_.max_projection_iterations = std::max(stats_.max_projection_iterations, pr.iterations);
+          const double r = std::sqrt(pr.dist2) - fr.half_depth(e, pr.xi);
+          if (r >= ln) continue;  // free zone whichever side the material is on (node distance)
+          int& k = slot_[id];
+          if (k < 0) {
+            k = static_cast<int>(cand_.size());
+            cand_.push_back(Candidate{id, e, pr.xi, pr.dist2, c.point(pr.xi)});
+          } else if (pr.dist2 < cand_[k].dist2) {
+            cand_[k] = Candidate{id, e, pr.xi, pr.dist2, c.point(pr.xi)};
+          }
+        }
+    }
+  }
+}
+
+// mx_i = sum_p m_p N_ip x_p at the candidate nodes, from the particles of the tiles that reach them.
+template <int D> void MemberContact<D>::mass_positions(const Scene<D>& s, const TransferKernels<D>& kernels) {
+  const Grid<D>& g = *s.grid;
+  IVec<D> lo = g.nodes(), hi = IVec<D>::Constant(-1);
+  for (const Candidate& c : cand_) {
+    const IVec<D> ijk = g.node_ijk(c.node);
+    lo = lo.cwiseMin(ijk);
+    hi = hi.cwiseMax(ijk);
+  }
+  tiles_.clear();
+  const auto& occ = g.occupied();
+  for (Index k = 0; k < static_cast<Index>(occ.size()); ++k) {
+    const IVec<D> t = g.tile_coord(occ[k]);
+    bool overlap = true;  // the tile's particles touch nodes [T t - 1, T t + T + 1]
+    for (int d = 0; d < D; ++d) overlap = overlap && t[d] * Grid<D>::T - 1 <= hi[d] && t[d] * Grid<D>::T + Grid<D>::T + 1 >= lo[d];
+    if (overlap) tiles_.push_back(k);
+  }
+  for (const Candidate& c : cand_)
+    for (int f = 0; f < g.nfields(); ++f) mx_[f * g.nnodes() + c.node].setZero();
+  kernels.scatter_mass_position(s, tiles_, mx_);
+}
+
+template <int D> void MemberContact<D>::apply(Scene<D>& s, const TransferKernels<D>& kernels, double dt) {
+  if constexpr (D != 2) {
+    throw std::logic_error("beam-column members are 2D only");
+  } else {
+    Frame& fr = *s.frame;
+    fr.clear_loads();
+    force_.setZero();
+    find_candidates(s);
+    if (cand_.empty()) return;
+    mass_positions(s, kernels);
+    Grid<2>& g = *s.grid;
+    const MemberCoupling& opt = s.coupling;
+    const double ln = opt.decay_scale * g.h();
+    const Index nn = g.nnodes();
+    for (const Candidate& c : cand_) {
+      const Vec2 x = g.node_pos(c.node);
+      const ElementCurve curve = fr.curve(c.element);
+      const double hm = fr.half_depth(c.element, c.xi);
+      const Vec2 vstar = fr.velocity_at(c.element, c.xi);
+      const double dist = std::sqrt(c.dist2);
+      Vec2 n0;  // unit normal from the centre-line towards the node, eq. (A.9); on the curve (A.7)
+      if (dist > 1e-12 * g.h()) {
+        n0 = (x - c.xm) / dist;
+      } else {
+        const Vec2 t = curve.d1(c.xi).normalized();
+        n0 = Vec2(-t.y(), t.x());
+      }
+      for (int f : opt.fields) {
+        const Index k = f * nn + c.node;
+        const double m = g.m[k];
+        if (!(m > 0)) continue;
+        // Orientation by the mass-weighted particle position the node sees, eqs. (24)-(25).
+        const Vec2 xbar = mx_[k] / m;
+        const Vec2 n = (xbar - c.xm).dot(n0) >= 0 ? n0 : Vec2(-n0);
+        const double r = ((opt.distance == DistanceKind::node ? x : xbar) - c.xm).dot(n) - hm;  // eq. (23)
+        const double q = r <= 0 ? 1.0 : (r < ln ? decay(opt.decay, r / ln) : 0.0);
+        if (q == 0) continue;
+        Vec2 fv = -g.f[k] + (m * vstar - g.p[k]) / dt;  // eq. (20)
+        if (opt.mode != MemberContactMode::stick) {
+          const double fn = fv.dot(n);
+          if (fn <= 0) continue;  // separating: no force, eq. (21)
+          Vec2 ft = fv - fn * n;
+          if (opt.mode == MemberContactMode::friction) {
+            const double lim = opt.friction * fn, t = ft.norm();
+            if (t > lim) ft *= lim / t;
+          } else {
+            ft.setZero();
+          }
+          fv = fn * n + ft;
+        }
+        const Vec2 fbc = q * fv;  // eq. (19)
+        const Vec2 v0 = g.p[k] / m, v1 = v0 + dt * (g.f[k] + fbc) / m;
+        work_ += fbc.dot(0.5 * (v0 + v1)) * dt;
+        g.f[k] += fbc;
+        // Reaction on the member at the surface point x^M + c n: force plus the moment of the offset.
+        const Vec2 arm = hm * n, F = -fbc;
+        fr.add_point_load(c.element, c.xi, F, arm.x() * F.y() - arm.y() * F.x());
+        force_ += F;
+        ++stats_.loaded;
+      }
+    }
+  }
+}
+
+template class MemberContact<2>;
+template class MemberContact<3>;
+
+}  // namespace dmi

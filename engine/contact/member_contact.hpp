@@ -1,0 +1,64 @@
+// Stage 1 of Lin & Yang's two-stage contact (SEEDS.md A.2-A.3): beam-column members act on the MPM
+// grid as velocity boundaries through Yang's (2016) equivalent specific-force field, and the
+// reactions load the frame. Per step, after P2G and before the grid update:
+//   r   = (y - x^M) . n - c(xi)                      signed distance to the member surface, eq. (23), with
+//         y = x_i (the paper, distance "node") or y = xbar_i (distance "material", the default: the field
+//         engages when the material a node carries reaches the member, not a cell earlier; docs/verification.md)
+//   n   oriented towards the material a node sees:   (xbar_i - x^M) . n > 0, eqs. (24)-(25)
+//   q   = 1 (r <= 0), q_n(r / l_n) (0 < r < l_n), 0   eq. (16); l_n = decay_scale |(h n_x, h n_y)| = decay_scale h (18)
+//   f_v = -f_tot + (m v* - p) / dt                    stick / prescribed velocity, eq. (20)
+//         normal part only, and only while it pushes the material away (f_v . n > 0): separable, eq. (21)
+//         plus a tangential part limited by mu f_v . n: friction (Coulomb)
+//   f_bc = q f_v added to the node; -f_bc acts on the member at the surface point x^M + c n, i.e. a
+//   force at x^M plus the moment of the offset, turned into consistent end forces by Frame::add_point_load.
+// v* is the member centre-line velocity at the projection point (frame state at t_n).
+// Deviation from the paper: separable contact tests the sign of the normal force (equivalently the
+// trial velocity v^k + dt f_tot/m approaching the member) rather than v^k alone, so the field never
+// pulls material towards a member in the step it starts to separate.
+#pragma once
+#include <vector>
+
+#include "engine/mpm/scene.hpp"
+#include "engine/mpm/transfer.hpp"
+
+namespace dmi {
+
+struct MemberContactStats {
+  long candidates = 0;       // node-element pairs tested (all steps)
+  long loaded = 0;           // node-field pairs that received a force (all steps)
+  long projection_iterations = 0;
+  int max_projection_iterations = 0;
+};
+
+template <int D> class MemberContact {
+ public:
+  explicit MemberContact(const Grid<D>& g);
+  // Adds f_bc to grid.f of the member-contact fields, loads the frame with the reactions (after
+  // clearing its loads). Frame state at t_n, grid after P2G. Returns false if nothing was touched.
+  void apply(Scene<D>& s, const TransferKernels<D>& kernels, double dt);
+  // Work done by the members on the material since t = 0 (J), with the node velocity taken as the
+  // mean of v^k and the velocity after f_bc.
+  double work() const { return work_; }
+  const MemberContactStats& stats() const { return stats_; }
+  // Total force the material exerts on the members in the last step (N): sum of -f_bc.
+  const Vec2& force() const { return force_; }
+
+ private:
+  struct Candidate {
+    Index node;
+    int element;
+    double xi, dist2;
+    Vec<D> xm;  // projection point on the centre-line
+  };
+  void find_candidates(const Scene<D>& s);
+  void mass_positions(const Scene<D>& s, const TransferKernels<D>& kernels);
+  std::vector<Candidate> cand_;
+  std::vector<int> slot_;          // per node: index into cand_, -1 if none
+  std::vector<Vec<D>> mx_;         // sum m_p N_ip x_p, field layout; nonzero only at candidate nodes
+  std::vector<Index> tiles_;
+  double work_ = 0.0;
+  Vec2 force_ = Vec2::Zero();
+  MemberContactStats stats_;
+};
+
+}  // namespace dmi

@@ -1,0 +1,95 @@
+#include "engine/sim/build_frame.hpp"
+
+#include <algorithm>
+#include <map>
+
+namespace dmi {
+namespace {
+
+Section make_section(const SectionConfig& c) {
+  if (c.type == "pipe") return Section::pipe(c.diameter, c.wall_thickness);
+  if (c.type == "tapered_rectangle") return Section::tapered(c.width, c.depth_start, c.depth_end);
+  return Section::rectangle(c.width, c.depth);
+}
+
+}  // namespace
+
+FrameModel build_frame_model(const Scenario& s) {
+  const StructureConfig& st = s.structure;
+  FrameModel fm;
+  std::map<std::string, int> node;
+  for (const auto& n : st.nodes) {
+    node[n.name] = static_cast<int>(fm.nodes.size());
+    fm.nodes.emplace_back(n.position[0], n.position[1]);
+  }
+  for (const auto& mc : st.members) {
+    const MaterialConfig& mat = *std::find_if(s.materials.begin(), s.materials.end(),
+                                              [&](const MaterialConfig& m) { return m.name == mc.material; });
+    const Section sec = make_section(mc.section);
+    FrameMemberDef md{mc.name, static_cast<int>(fm.elements.size()), mc.elements};
+    const int a = node.at(mc.start), b = node.at(mc.end);
+    const Vec2 xa = fm.nodes[a], xb = fm.nodes[b];
+    int prev = a;
+    for (int k = 0; k < mc.elements; ++k) {  // interior nodes evenly spaced along the member
+      int next = b;
+      if (k + 1 < mc.elements) {
+        next = static_cast<int>(fm.nodes.size());
+        fm.nodes.push_back(xa + (xb - xa) * (double(k + 1) / mc.elements));
+      }
+      FrameElementDef e;
+      e.i = prev;
+      e.j = next;
+      e.section = sec;
+      e.s0 = double(k) / mc.elements;
+      e.s1 = double(k + 1) / mc.elements;
+      e.E = mat.youngs_modulus;
+      e.nu = mat.poisson_ratio;
+      e.rho = mat.density;
+      e.release_i = k == 0 && mc.release_start;
+      e.release_j = k + 1 == mc.elements && mc.release_end;
+      e.member = static_cast<int>(fm.members.size());
+      fm.elements.push_back(e);
+      prev = next;
+    }
+    fm.members.push_back(md);
+  }
+  for (const auto& sc : st.supports) {
+    FrameSupportDef d;
+    d.node = node.at(sc.node);
+    if (sc.type == "fixed") {
+      d.fixed[0] = d.fixed[1] = d.fixed[2] = true;
+    } else if (sc.type == "pinned") {
+      d.fixed[0] = d.fixed[1] = true;
+    } else if (sc.type == "roller") {
+      d.fixed[sc.restrained == "x" ? 0 : 1] = true;
+    } else {
+      for (int k = 0; k < 3; ++k) d.spring[k] = sc.stiffness[k];
+    }
+    fm.supports.push_back(d);
+  }
+  for (const auto& m : st.masses) fm.masses.push_back(FrameMassDef{node.at(m.node), m.mass, m.rotary_inertia});
+  fm.theory = st.theory == BeamTheoryKind::timoshenko ? BeamTheory::timoshenko : BeamTheory::euler_bernoulli;
+  fm.transform = st.transformation == FrameTransformKind::corotational ? FrameTransform::corotational : FrameTransform::linear;
+  fm.mass = st.mass == FrameMassKind::consistent ? MassMatrix::consistent : MassMatrix::lumped;
+  fm.integrator = st.integrator == FrameIntegratorKind::newmark ? FrameIntegrator::newmark : FrameIntegrator::explicit_euler;
+  if (st.self_weight) fm.gravity = Vec2(s.analysis.gravity[0], s.analysis.gravity[1]);
+  fm.rayleigh_mass = st.rayleigh_mass;
+  fm.rayleigh_stiffness = st.rayleigh_stiffness;
+  return fm;
+}
+
+template <int D> MemberCoupling build_coupling(const Scenario& s, const Scene<D>& scene) {
+  const MemberContactConfig& mc = s.member_contact;
+  MemberCoupling c{mc.mode, mc.friction, mc.decay, mc.decay_scale, mc.distance, {}};
+  for (const Body& b : scene.bodies) {
+    const bool listed = mc.bodies.empty() || std::find(mc.bodies.begin(), mc.bodies.end(), b.name) != mc.bodies.end();
+    if (listed && std::find(c.fields.begin(), c.fields.end(), b.field) == c.fields.end()) c.fields.push_back(b.field);
+  }
+  std::sort(c.fields.begin(), c.fields.end());
+  return c;
+}
+
+template MemberCoupling build_coupling<2>(const Scenario&, const Scene<2>&);
+template MemberCoupling build_coupling<3>(const Scenario&, const Scene<3>&);
+
+}  // namespace dmi

@@ -1,0 +1,14 @@
+// Turns a scenario's "structure" section into a FrameModel (members subdivided into elements,
+// sections, supports, nodal masses) and its "member_contact" section into the coupling options.
+#pragma once
+#include "engine/mpm/scene.hpp"
+#include "engine/scenario/config.hpp"
+#include "engine/structure/frame.hpp"
+
+namespace dmi {
+
+FrameModel build_frame_model(const Scenario& s);
+// Fields the members act on: those of the listed bodies (all bodies if none are listed).
+template <int D> MemberCoupling build_coupling(const Scenario& s, const Scene<D>& scene);
+
+}  // namespace dmi

@@ -1,0 +1,251 @@
+// Frame: the public face of FrameSystem (assembled operators) and a FrameTimeIntegrator, plus results.
+// Loads: nodal and point loads are stored as global nodal forces (point loads converted when added, in
+// the element axes of that moment); uniform element loads are kept per element in local axes and, with
+// the self-weight, turned into equivalent nodal loads in the current axes at the start of each step.
+// Section forces (forces_at): q = kb v + q0, with q0 the fixed-end forces of the element's uniform load and
+// self-weight (intensity rho A(x) g, per metre of initial length), plus that load's particular solution
+// (element.hpp), so N, V, M inside an element are exact for those loads; point loads act through the end
+// nodes only (the jump under a point load inside an element is not represented).
+// Energies are those of the discrete model: strain 0.5 q^T f q with q = kb v (= 0.5 d^T K d, linear), so
+// kinetic + strain + damping work - external work is conserved by Newmark for a linear frame.
+#include "engine/structure/frame.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "engine/structure/integrator.hpp"
+
+namespace dmi {
+
+struct Frame::Impl {
+  explicit Impl(FrameModel m) : sys(std::move(m)), integrator(make_integrator(sys, sys.model().integrator)) {
+    const int n = sys.ndof();
+    for (Eigen::VectorXd* x : {&state.d, &state.v, &state.a, &nodal, &f, &d_prev, &v_prev, &cv}) x->setZero(n);
+    w.assign(sys.nelements(), Vec2::Zero());
+  }
+  void update_loads() {  // f = nodal + element loads at the current state
+    if (f_current && sys.linear()) return;
+    f = nodal;
+    sys.add_element_loads(w, state.d, f);
+    f_current = true;
+  }
+  void check_element(int e, double xi) const {
+    if (e < 0 || e >= sys.nelements())
+      throw std::invalid_argument("Frame: element index " + std::to_string(e) + " outside [0, " +
+                                  std::to_string(sys.nelements()) + ")");
+    if (!(xi >= 0 && xi <= 1))
+      throw std::invalid_argument("Frame: element " + std::to_string(e) + ": xi = " + std::to_string(xi) +
+                                  " outside [0, 1]");
+  }
+  void check_node(int n) const {
+    if (n < 0 || 3 * n >= sys.ndof())
+      throw std::invalid_argument("Frame: node index " + std::to_string(n) + " outside [0, " +
+                                  std::to_string(sys.ndof() / 3) + ")");
+  }
+
+  FrameSystem sys;
+  std::unique_ptr<FrameTimeIntegrator> integrator;
+  FrameState state;
+  Eigen::VectorXd nodal, f, d_prev, v_prev, cv;  // loads (global), step scratch
+  std::vector<Vec2> w;                           // uniform element loads, local axes (N/m)
+  bool f_current = false;
+  double work_ext = 0, work_damp = 0;
+};
+
+Frame::Frame(FrameModel model) : impl_(std::make_unique<Impl>(std::move(model))) {}
+Frame::~Frame() = default;
+Frame::Frame(Frame&&) noexcept = default;
+Frame& Frame::operator=(Frame&&) noexcept = default;
+
+const FrameModel& Frame::model() const { return impl_->sys.model(); }
+int Frame::nnodes() const { return impl_->sys.ndof() / 3; }
+int Frame::nelements() const { return impl_->sys.nelements(); }
+const Eigen::VectorXd& Frame::displacement() const { return impl_->state.d; }
+const Eigen::VectorXd& Frame::velocity() const { return impl_->state.v; }
+const Eigen::VectorXd& Frame::acceleration() const { return impl_->state.a; }
+double Frame::time() const { return impl_->state.t; }
+
+Vec2 Frame::node_position(int n) const {
+  impl_->check_node(n);
+  return model().nodes[n] + impl_->state.d.segment<2>(3 * n);
+}
+
+void Frame::clear_loads() {
+  impl_->nodal.setZero();
+  for (Vec2& w : impl_->w) w.setZero();
+  impl_->f_current = false;
+}
+
+void Frame::add_nodal_load(int node, const Vec3& f) {
+  impl_->check_node(node);
+  if (!f.allFinite()) throw std::invalid_argument("Frame: non-finite load at node " + std::to_string(node));
+  impl_->nodal.segment<3>(3 * node) += f;
+  impl_->f_current = false;
+}
+
+void Frame::add_point_load(int e, double xi, const Vec2& F, double m) {
+  impl_->check_element(e, xi);
+  if (!F.allFinite() || !std::isfinite(m))
+    throw std::invalid_argument("Frame: non-finite point load on element " + std::to_string(e));
+  const ElementCurve c = curve(e);
+  const BeamShape sh = beam_shape(xi, c.L);
+  const double fa = F.dot(c.e1), ft = F.dot(c.e2);
+  const FrameElementDef& el = model().elements[e];
+  const int node[2] = {el.i, el.j};
+  for (int k = 0; k < 2; ++k) {
+    const double fw = sh.hermite[2 * k] * ft + sh.slope[2 * k] * m;
+    impl_->nodal.segment<2>(3 * node[k]) += sh.axial[k] * fa * c.e1 + fw * c.e2;
+    impl_->nodal(3 * node[k] + 2) += sh.hermite[2 * k + 1] * ft + sh.slope[2 * k + 1] * m;
+  }
+  impl_->f_current = false;
+}
+
+void Frame::add_distributed_load(int e, const Vec2& w_local) {
+  impl_->check_element(e, 0);
+  if (!w_local.allFinite()) throw std::invalid_argument("Frame: non-finite load on element " + std::to_string(e));
+  impl_->w[e] += w_local;
+  impl_->f_current = false;
+}
+
+double Frame::stable_time_step() const { return impl_->integrator->stable_time_step(); }
+
+void Frame::advance(double dt) {
+  if (!(dt > 0) || !std::isfinite(dt)) throw std::invalid_argument("Frame::advance: dt must be positive");
+  Impl& m = *impl_;
+  m.update_loads();
+  m.d_prev = m.state.d;
+  m.v_prev = m.state.v;
+  m.integrator->step(m.state, m.f, dt);
+  m.d_prev = m.state.d - m.d_prev;
+  m.work_ext += m.f.dot(m.d_prev);                     // loads constant over the step
+  if (m.sys.damped()) {
+    m.v_prev = 0.5 * (m.v_prev + m.state.v);           // midpoint velocity
+    m.sys.damping_force(m.v_prev, m.cv);
+    m.work_damp += dt * m.v_prev.dot(m.cv);
+  }
+  if (!m.state.d.allFinite() || !m.state.v.allFinite())
+    throw std::runtime_error("Frame: non-finite state at t = " + std::to_string(m.state.t) +
+                             " s (time step above the stable limit " + std::to_string(stable_time_step()) + " s?)");
+}
+
+void Frame::solve_static() {
+  Impl& m = *impl_;
+  m.state.d.setZero();
+  m.f_current = false;
+  m.update_loads();
+  Eigen::SimplicialLDLT<SpMat> ldlt(m.sys.constrained(m.sys.stiffness()));
+  if (ldlt.info() != Eigen::Success) throw std::runtime_error("Frame: static stiffness factorisation failed");
+  m.state.d = ldlt.solve(Eigen::VectorXd(m.f.cwiseProduct(m.sys.free())));
+  m.state.v.setZero();
+  m.state.a.setZero();
+  m.state.a_current = false;
+  m.f_current = false;
+}
+
+std::vector<double> Frame::natural_frequencies(int n) const {
+  const Eigen::VectorXd w2 = impl_->sys.eigenvalues();
+  if (n < 1 || n > w2.size())
+    throw std::invalid_argument("Frame: natural_frequencies(" + std::to_string(n) + "): the frame has " +
+                                std::to_string(w2.size()) + " free DOFs");
+  std::vector<double> w(n);
+  for (int k = 0; k < n; ++k) w[k] = std::sqrt(w2(k));
+  return w;
+}
+
+ElementCurve Frame::curve(int e) const {
+  impl_->check_element(e, 0);
+  return impl_->sys.transform().curve(impl_->sys.chord(e), impl_->sys.element_dofs(e, impl_->state.d));
+}
+
+Vec2 Frame::velocity_at(int e, double xi) const {
+  impl_->check_element(e, xi);
+  const ElementCurve c = curve(e);
+  const BeamShape sh = beam_shape(xi, c.L);
+  const Vec6 ve = impl_->sys.element_dofs(e, impl_->state.v);
+  const double ua = sh.axial[0] * ve.head<2>().dot(c.e1) + sh.axial[1] * ve.segment<2>(3).dot(c.e1);
+  const double wt = sh.hermite[0] * ve.head<2>().dot(c.e2) + sh.hermite[1] * ve(2) +
+                    sh.hermite[2] * ve.segment<2>(3).dot(c.e2) + sh.hermite[3] * ve(5);
+  return ua * c.e1 + wt * c.e2;
+}
+
+double Frame::half_depth(int e, double xi) const {
+  impl_->check_element(e, xi);
+  const FrameElementDef& el = model().elements[e];
+  return el.section.half_depth(el.s0 + xi * (el.s1 - el.s0));
+}
+
+SectionForces Frame::forces_at(int e, double xi) const {
+  impl_->check_element(e, xi);
+  const FrameSystem& sys = impl_->sys;
+  const ChordState s = sys.transform().state(sys.chord(e), sys.element_dofs(e, impl_->state.d));
+  return sys.element(e).section_forces(s.v, s.L, sys.element_load(e, impl_->w[e], impl_->state.d), xi);
+}
+
+// sigma(y) = N/A - M y/I (frame.hpp); tau(y) = tau_max (1 - (y/c)^2) for a rectangle, tau_max sqrt(1 - (y/c)^2)
+// for a thin pipe (shear flow ~ cos of the polar angle); von Mises sqrt(sigma^2 + 3 tau^2) on 21 fibres.
+FibreStresses Frame::stresses_at(int e, double xi) const {
+  const SectionForces sf = forces_at(e, xi);
+  const FrameElementDef& el = model().elements[e];
+  const double s = el.s0 + xi * (el.s1 - el.s0), A = el.section.area(s), I = el.section.inertia(s);
+  const double c = el.section.half_depth(s);
+  const bool pipe = el.section.kind() == SectionKind::pipe;
+  FibreStresses r;
+  r.sigma_top = sf.N / A - sf.M * c / I;
+  r.sigma_bottom = sf.N / A + sf.M * c / I;
+  r.tau_max = el.section.shear_stress_factor() * std::abs(sf.V) / A;
+  r.von_mises_top = std::abs(r.sigma_top);
+  r.von_mises_bottom = std::abs(r.sigma_bottom);
+  constexpr int kFibres = 21;
+  for (int k = 0; k < kFibres; ++k) {
+    const double eta = -1 + 2.0 * k / (kFibres - 1), sigma = sf.N / A - sf.M * eta * c / I;
+    const double shape = pipe ? std::sqrt(std::max(0.0, 1 - eta * eta)) : 1 - eta * eta;
+    const double tau = r.tau_max * shape;
+    r.von_mises_max = std::max(r.von_mises_max, std::sqrt(sigma * sigma + 3 * tau * tau));
+  }
+  return r;
+}
+
+// Restrained DOF: r = f_int + M a + C v - f_ext (the rows of the full matrices couple the free DOFs);
+// spring on a free DOF: r = -k u. A fixed DOF ignores its spring. After an explicit step a is the acceleration
+// the step used (t_n); it enters only through consistent-mass coupling (lumped: M a = 0 on restrained DOFs).
+Vec3 Frame::reaction(int support) const {
+  const FrameModel& fm = model();
+  if (support < 0 || support >= static_cast<int>(fm.supports.size()))
+    throw std::invalid_argument("Frame: support index " + std::to_string(support) + " out of range");
+  const FrameSystem& sys = impl_->sys;
+  const FrameState& st = impl_->state;
+  Eigen::VectorXd fint(sys.ndof()), cv(sys.ndof());
+  sys.internal_force(st.d, fint);
+  sys.damping_force(st.v, cv);
+  Eigen::VectorXd f = impl_->nodal;
+  sys.add_element_loads(impl_->w, st.d, f);
+  const Eigen::VectorXd r = fint + sys.mass() * st.a + cv - f;
+  const FrameSupportDef& s = fm.supports[support];
+  Vec3 out;
+  for (int c = 0; c < 3; ++c) {
+    const int i = 3 * s.node + c;
+    out(c) = s.fixed[c] ? r(i) : -sys.springs()(i) * st.d(i);
+  }
+  return out;
+}
+
+double Frame::kinetic_energy() const {
+  const Eigen::VectorXd& v = impl_->state.v;
+  return 0.5 * v.dot(impl_->sys.mass() * v);
+}
+
+double Frame::strain_energy() const {
+  const FrameSystem& sys = impl_->sys;
+  const Eigen::VectorXd& d = impl_->state.d;
+  double u = 0.5 * d.dot(sys.springs().cwiseProduct(d));
+  for (int e = 0; e < sys.nelements(); ++e)
+    u += sys.element(e).strain_energy(sys.transform().state(sys.chord(e), sys.element_dofs(e, d)).v);
+  return u;
+}
+
+double Frame::external_work() const { return impl_->work_ext; }
+double Frame::damping_work() const { return impl_->work_damp; }
+
+}  // namespace dmi

@@ -1,0 +1,35 @@
+// Cross-sections of 2D frame members. Properties are computed from dimensions, never typed in.
+// Local axes: x' along the member, y' in the analysis plane (depth direction), z' out of plane
+// (width). Depth-wise quantities (I about z', half depth c) describe in-plane bending.
+#pragma once
+
+namespace dmi {
+
+enum class SectionKind { rectangle, pipe, tapered_rectangle };
+
+class Section {
+ public:
+  static Section rectangle(double width, double depth);               // b x h (m)
+  static Section pipe(double diameter, double wall_thickness);         // circular hollow D x t (m)
+  // Rectangle whose depth varies linearly from depth_start (s = 0) to depth_end (s = 1) along the
+  // member; the centre-line runs through mid-depth (a symmetric taper).
+  static Section tapered(double width, double depth_start, double depth_end);
+
+  SectionKind kind() const { return kind_; }
+  // Properties at the fraction s in [0, 1] of the member length.
+  double depth(double s) const;        // m, extreme-fibre to extreme-fibre in-plane
+  double half_depth(double s) const { return 0.5 * depth(s); }  // c (m): centroid to each surface
+  double width(double s) const;        // m, out of plane (pipe: D)
+  double area(double s) const;         // A (m^2)
+  double inertia(double s) const;      // I about the out-of-plane axis (m^4)
+  // Shear coefficient kappa: A_s = kappa A (Timoshenko). Rectangle 5/6; thin pipe 1/2 (Cowper 1966 limits).
+  double shear_coefficient() const;
+  // Peak shear stress over the section = factor * V / A: rectangle 3/2, pipe 2 (thin wall, V Q / (I t)).
+  double shear_stress_factor() const;
+
+ private:
+  SectionKind kind_ = SectionKind::rectangle;
+  double b_ = 0, h0_ = 0, h1_ = 0;  // width, depth at s = 0 and 1 (pipe: D = h0_, t = b_)
+};
+
+}  // namespace dmi

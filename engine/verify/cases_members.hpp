@@ -1,0 +1,50 @@
+// Runs and closed forms for the beam-column verification cases (SEEDS.md A.5-A.6), shared by
+// `damimpact validate`, the tests and the benchmarks.
+#pragma once
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "engine/verify/validate.hpp"
+
+namespace dmi {
+
+// Mid-span deflection (m, downwards negative) of eq. (30), t from the instant of impact (s).
+double paper_a5_eq30(double t);
+
+// Independent reference for eq. (30) without its one-mode truncation: the beam as `elements`
+// Euler-Bernoulli elements (consistent mass), the block as a 3 kg point mass at mid-span that
+// sticks at t = 0 with the free-fall speed sqrt(2 g d) (plastic impact as a one-step impulse) and
+// its weight. Returns mid-span deflection sampled every `sample` s from the impact to t_end.
+void paper_a5_point_mass_reference(int elements, double dt, double t_end, double sample, std::vector<double>& t,
+                                   std::vector<double>& u);
+
+struct A5Run {
+  std::vector<double> time, midspan;  // s, m (vertical displacement of the centre-line)
+  double t_impact = 0;                // first sample with a contact force on the beam (s)
+  double wall = 0;                    // s
+};
+A5Run paper_a5_run(int elements, const std::vector<std::pair<std::string, nlohmann::json>>& overrides = {});
+
+// Paper A.6 at beam depth h (m): the beam as 4 beam-column elements or as particles.
+struct A6Run {
+  std::vector<double> time, top_uy, von_mises;  // top-surface mid-span: vertical displacement (m), von Mises (Pa)
+  double peak_displacement = 0;                 // max downward top-surface displacement (m)
+  double peak_von_mises = 0;                    // Pa
+  double min_gap = 0;                           // min over time of disc-centroid gap to the beam top minus r (m)
+  double disc_final_vy = 0;                     // disc centroid vertical velocity at the end (m/s, + up)
+  double projection_iterations_max = 0, projection_iterations_mean = 0;
+  double wall = 0;                              // s
+  long steps = 0;
+};
+A6Run paper_a6_run(double depth, bool beam_column, const std::vector<std::pair<std::string, nlohmann::json>>& overrides = {});
+
+struct ErrorPair {
+  double nrms = 0;  // RMS(u - ref) / max |ref|
+  double peak = 0;  // (max |u| - max |ref|) / max |ref|
+};
+ErrorPair compare_history(const std::vector<double>& t, const std::vector<double>& u, double t0,
+                          const std::function<double(double)>& ref);
+
+}  // namespace dmi

@@ -1,0 +1,73 @@
+// Section properties against hand formulas (Gere & Goodno App. E) and the thin-wall identities of a pipe.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "engine/structure/section.hpp"
+
+namespace dmi {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+TEST(Section, RectangleAreaInertiaAndShearFactors) {
+  const Section s = Section::rectangle(0.1, 0.2);
+  EXPECT_EQ(s.kind(), SectionKind::rectangle);
+  for (double x : {0.0, 0.3, 1.0}) {
+    EXPECT_DOUBLE_EQ(s.area(x), 0.02);
+    EXPECT_NEAR(s.inertia(x), 0.1 * 0.008 / 12, 1e-18);
+    EXPECT_DOUBLE_EQ(s.depth(x), 0.2);
+    EXPECT_DOUBLE_EQ(s.half_depth(x), 0.1);
+    EXPECT_DOUBLE_EQ(s.width(x), 0.1);
+  }
+  EXPECT_DOUBLE_EQ(s.shear_coefficient(), 5.0 / 6.0);
+  EXPECT_DOUBLE_EQ(s.shear_stress_factor(), 1.5);
+}
+
+TEST(Section, PipeMatchesExactThinWallIdentities) {
+  // A = pi D_m t and I = pi R_m t (R_m^2 + t^2 / 4) hold exactly for a circular hollow section.
+  const double D = 0.3, t = 0.01, Rm = 0.5 * (D - t);
+  const Section s = Section::pipe(D, t);
+  EXPECT_EQ(s.kind(), SectionKind::pipe);
+  EXPECT_NEAR(s.area(0.5), kPi * 2 * Rm * t, 1e-15);
+  EXPECT_NEAR(s.inertia(0.5), kPi * Rm * t * (Rm * Rm + t * t / 4), 1e-17);
+  EXPECT_NEAR(s.area(0), 0.25 * kPi * (D * D - 0.28 * 0.28), 1e-15);
+  EXPECT_DOUBLE_EQ(s.depth(1), D);
+  EXPECT_DOUBLE_EQ(s.width(1), D);
+  EXPECT_DOUBLE_EQ(s.shear_coefficient(), 0.5);
+  EXPECT_DOUBLE_EQ(s.shear_stress_factor(), 2.0);
+  // t = D/2 is a solid disc: A = pi D^2 / 4, I = pi D^4 / 64.
+  const Section disc = Section::pipe(D, D / 2);
+  EXPECT_NEAR(disc.area(0), kPi * D * D / 4, 1e-15);
+  EXPECT_NEAR(disc.inertia(0), kPi * std::pow(D, 4) / 64, 1e-17);
+}
+
+TEST(Section, TaperedDepthVariesLinearlyAndInertiaCubically) {
+  const double b = 0.2, h0 = 0.4, h1 = 0.2;
+  const Section s = Section::tapered(b, h0, h1);
+  EXPECT_EQ(s.kind(), SectionKind::tapered_rectangle);
+  for (double x : {0.0, 0.5, 1.0}) {
+    const double h = h0 + x * (h1 - h0);
+    EXPECT_NEAR(s.depth(x), h, 1e-15);
+    EXPECT_NEAR(s.area(x), b * h, 1e-15);
+    EXPECT_NEAR(s.inertia(x), b * h * h * h / 12, 1e-17);
+    EXPECT_DOUBLE_EQ(s.width(x), b);
+  }
+  EXPECT_NEAR(s.inertia(0) / s.inertia(1), 8.0, 1e-12);
+  EXPECT_NEAR(s.inertia(0.5), b * 0.027 / 12, 1e-17);
+}
+
+TEST(Section, RejectsNonPositiveDimensionsAndThickWalls) {
+  EXPECT_THROW(Section::rectangle(0, 0.2), std::invalid_argument);
+  EXPECT_THROW(Section::rectangle(0.1, -1), std::invalid_argument);
+  EXPECT_THROW(Section::pipe(0.3, 0.16), std::invalid_argument);  // wall thicker than the radius
+  EXPECT_THROW(Section::pipe(0.3, 0), std::invalid_argument);
+  EXPECT_THROW(Section::tapered(0.1, 0.2, 0), std::invalid_argument);
+  EXPECT_THROW(Section::tapered(0.1, 0.2, 0.1).depth(1.5), std::invalid_argument);
+  EXPECT_THROW(Section::rectangle(0.1, std::nan("")), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace dmi
