@@ -45,8 +45,9 @@ void a5() {
 void a6() {
   std::printf("\n| h/L | model | peak deflection (m) | paper (m) | peak von Mises top (MPa) | disc final v_y (m/s) | min centroid gap (m) | steps | wall (s) |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|\n");
-  const double depth[] = {0.5, 0.25, 0.125, 0.0625};
-  const double paper_p[] = {0.075, 0.18, 0.29, 0.28}, paper_bc[] = {0.056, 0.19, 0.58, NAN};
+  const double* depth = kPaperA6Depth;
+  const double* paper_p = kPaperA6PeakParticles;
+  const double paper_bc[] = {kPaperA6PeakBeamColumn[0], kPaperA6PeakBeamColumn[1], kPaperA6PeakBeamColumn[2], NAN};
   for (int k = 0; k < 4; ++k) {
     struct V { const char* name; bool bc; std::vector<std::pair<std::string, nlohmann::json>> ov; double paper; };
     std::vector<V> vs = {{"particles", false, {}, paper_p[k]},
