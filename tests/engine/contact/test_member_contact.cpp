@@ -6,7 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/mpm/solver.hpp"
 #include "engine/scenario/scenario.hpp"
+#include "engine/sim/build_scene.hpp"
 #include "engine/verify/validate.hpp"
 
 namespace dmi {
@@ -77,6 +79,19 @@ TEST(MemberContact, MaterialBelowAMemberIsPushedBackAndNeverPulled) {
   EXPECT_GT(up, 100.0);
   EXPECT_EQ(down, 0.0);
   EXPECT_LT(series(out.results, "probes/block/velocity").data.back(), -0.1);
+}
+
+// An explicit frame's stability limit enters the global step (scaled by the CFL fraction); an
+// implicit (Newmark) frame does not limit it. The stiff steel beam (c = 5 km/s) governs here.
+TEST(MemberContact, ExplicitFrameLimitsTheTimeStepNewmarkDoesNot) {
+  J j = scene({{"mode", "separable"}}, {0, 0}, false, 0.1);
+  const Solver<2> implicit(build_scene<2>(parse_scenario(j.dump(), "test")));
+  j["structure"]["integrator"] = "explicit";
+  const Solver<2> expl(build_scene<2>(parse_scenario(j.dump(), "test")));
+  const double mpm = implicit.stable_time_step(1.0), frame = expl.scene().frame->stable_time_step();
+  EXPECT_TRUE(std::isinf(implicit.scene().frame->stable_time_step()));
+  EXPECT_LT(0.5 * frame, mpm);
+  EXPECT_DOUBLE_EQ(expl.stable_time_step(1.0), 0.5 * frame);
 }
 
 }  // namespace
