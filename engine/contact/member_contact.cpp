@@ -103,6 +103,7 @@ template <int D> void MemberContact<D>::apply(Scene<D>& s, const TransferKernels
     Frame& fr = *s.frame;
     fr.clear_loads();
     force_.setZero();
+    loaded_.clear();
     find_candidates(s);
     if (cand_.empty()) return;
     mass_positions(s, kernels);
@@ -133,6 +134,7 @@ template <int D> void MemberContact<D>::apply(Scene<D>& s, const TransferKernels
         const double r = ((opt.distance == DistanceKind::node ? x : xbar) - c.xm).dot(n) - hm;  // eq. (23)
         const double q = r <= 0 ? 1.0 : (r < ln ? decay(opt.decay, r / ln) : 0.0);
         if (q == 0) continue;
+        loaded_.push_back(Loaded{k, n, vstar, q});
         Vec2 fv = -g.f[k] + (m * vstar - g.p[k]) / dt;  // eq. (20)
         if (opt.mode != MemberContactMode::stick) {
           const double fn = fv.dot(n);
@@ -147,8 +149,6 @@ template <int D> void MemberContact<D>::apply(Scene<D>& s, const TransferKernels
           fv = fn * n + ft;
         }
         const Vec2 fbc = q * fv;  // eq. (19)
-        const Vec2 v0 = g.p[k] / m, v1 = v0 + dt * (g.f[k] + fbc) / m;
-        work_ += fbc.dot(0.5 * (v0 + v1)) * dt;
         g.f[k] += fbc;
         // Reaction on the member at the surface point x^M + c n: force plus the moment of the offset.
         const Vec2 arm = hm * n, F = -fbc;
@@ -157,6 +157,27 @@ template <int D> void MemberContact<D>::apply(Scene<D>& s, const TransferKernels
         ++stats_.loaded;
       }
     }
+  }
+}
+
+template <int D> void MemberContact<D>::constrain_remap(const Scene<D>& s, std::vector<Vec<D>>& vel) const {
+  const MemberCoupling& opt = s.coupling;
+  for (const Loaded& l : loaded_) {
+    Vec<D>& v = vel[l.k];
+    if (opt.mode == MemberContactMode::stick) {
+      v += l.q * (l.vstar - v);
+      continue;
+    }
+    const Vec<D> rel = v - l.vstar;
+    const double vn = rel.dot(l.n);
+    if (vn >= 0) continue;  // separating
+    Vec<D> dv = -l.q * vn * l.n;
+    if (opt.mode == MemberContactMode::friction) {
+      const Vec<D> vt = rel - vn * l.n;
+      const double t = vt.norm(), cut = std::min(t, opt.friction * l.q * -vn);
+      if (t > 0) dv -= cut / t * vt;
+    }
+    v += dv;
   }
 }
 

@@ -36,9 +36,10 @@ template <int D> class MemberContact {
   // Adds f_bc to grid.f of the member-contact fields, loads the frame with the reactions (after
   // clearing its loads). Frame state at t_n, grid after P2G. Returns false if nothing was touched.
   void apply(Scene<D>& s, const TransferKernels<D>& kernels, double dt);
-  // Work done by the members on the material since t = 0 (J), with the node velocity taken as the
-  // mean of v^k and the velocity after f_bc.
-  double work() const { return work_; }
+  // MUSL: the same boundary on the remapped nodal velocities (field layout), with the normals,
+  // weights q and member velocities of this step's apply(): stick v += q (v* - v); separable removes
+  // q times an approaching normal relative velocity; friction also limits the tangential one.
+  void constrain_remap(const Scene<D>& s, std::vector<Vec<D>>& vel) const;
   const MemberContactStats& stats() const { return stats_; }
   // Total force the material exerts on the members in the last step (N): sum of -f_bc.
   const Vec2& force() const { return force_; }
@@ -52,11 +53,16 @@ template <int D> class MemberContact {
   };
   void find_candidates(const Scene<D>& s);
   void mass_positions(const Scene<D>& s, const TransferKernels<D>& kernels);
+  struct Loaded {  // a node-field pair that received a boundary force this step
+    Index k;        // field * nnodes + node
+    Vec<D> n, vstar;
+    double q;
+  };
   std::vector<Candidate> cand_;
+  std::vector<Loaded> loaded_;
   std::vector<int> slot_;          // per node: index into cand_, -1 if none
   std::vector<Vec<D>> mx_;         // sum m_p N_ip x_p, field layout; nonzero only at candidate nodes
   std::vector<Index> tiles_;
-  double work_ = 0.0;
   Vec2 force_ = Vec2::Zero();
   MemberContactStats stats_;
 };

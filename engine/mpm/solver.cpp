@@ -96,6 +96,7 @@ template <int D> void Solver<D>::grid_to_particles(double dt) {
     // correction, and re-deciding "approaching" on the remapped field (which can disagree with v^L)
     // feeds strain rates inconsistent with the motion and gained ~12 % energy in the disk test.
     apply_boundaries(scene_, g.v, dt, time_ + dt, false);
+    if (members_) members_->constrain_remap(scene_, g.v);  // members are walls too (unlike body contact)
     r = kernels_->g2p(scene_, dt, G2PMode::kinematics);
   }
   if (!r.ok) fail("particle state");
@@ -133,9 +134,9 @@ template <int D> Diagnostics<D> Solver<D>::diagnostics() const {
   if (const Frame* f = scene_.frame.get()) {
     d.frame_kinetic = f->kinetic_energy();
     d.frame_strain = f->strain_energy();
-    d.frame_external_work = f->external_work();
+    d.frame_gravity_work = f->external_work() - f->applied_work();
+    d.contact_work = f->applied_work();
     d.frame_damping = f->damping_work();
-    d.member_work = members_->work();
   }
   return d;
 }

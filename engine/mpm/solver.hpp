@@ -16,14 +16,14 @@ template <int D> struct Diagnostics {
   double boundary_work = 0;        // J, work of walls and prescribed velocities since t = 0
   Vec<D> momentum = Vec<D>::Zero();  // kg m/s (continua only)
   double frame_kinetic = 0, frame_strain = 0;  // J, beam-column members
-  double frame_external_work = 0;  // J, work of the loads on the frame (contact reactions, self-weight)
-  double member_work = 0;          // J, work of the members' boundary forces on the material
+  double frame_gravity_work = 0;   // J, work of the members' self-weight
+  double contact_work = 0;         // J, work of the material on the members (contact reactions)
   double frame_damping = 0;        // J, dissipated by the frame's Rayleigh damping
-  // Energy balance error (J): everything stored minus all work done, minus E_0. Contact between
-  // members and material dissipates: member_work + the reactions' share of frame_external_work < 0.
+  // Energy balance error (J) of the whole system, continua and frame: stored energy minus the work of
+  // gravity and walls, minus E_0. Member contact is internal to the system, so its losses (and any
+  // numerical loss or gain) show here: negative = dissipated.
   double balance(double e0) const {
-    return kinetic + strain + frame_kinetic + frame_strain + frame_damping - gravity_work - boundary_work - member_work -
-           frame_external_work - e0;
+    return kinetic + strain + frame_kinetic + frame_strain + frame_damping - gravity_work - boundary_work - frame_gravity_work - e0;
   }
 };
 

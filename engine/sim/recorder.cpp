@@ -131,7 +131,7 @@ template <int D> void Recorder<D>::sample(const Solver<D>& solver, double dt) {
 
 // Frame histories: energies, all nodal DOFs, section forces at element ends, support reactions.
 template <int D> void Recorder<D>::add_frame_series(const Frame& f, const Scenario& s) {
-  for (const char* e : {"frame_kinetic", "frame_strain", "frame_external_work", "frame_damping", "member_work"})
+  for (const char* e : {"frame_kinetic", "frame_strain", "frame_gravity_work", "frame_damping", "contact_work"})
     add(std::string("energy/") + e, "J", {"value"});
   std::vector<std::string> dofs, ends;
   for (int n = 0; n < f.nnodes(); ++n)
@@ -145,7 +145,7 @@ template <int D> void Recorder<D>::add_frame_series(const Frame& f, const Scenar
 }
 
 template <int D> void Recorder<D>::sample_frame(const Frame& f, const MemberContact<D>& mc, std::size_t& k) {
-  for (double e : {f.kinetic_energy(), f.strain_energy(), f.external_work(), f.damping_work(), mc.work()})
+  for (double e : {f.kinetic_energy(), f.strain_energy(), f.external_work() - f.applied_work(), f.damping_work(), f.applied_work()})
     series_[k++].data.push_back(e);
   const auto& d = f.displacement();
   Series& disp = series_[k++];

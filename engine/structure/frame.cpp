@@ -51,7 +51,7 @@ struct Frame::Impl {
   Eigen::VectorXd nodal, f, d_prev, v_prev, cv;  // loads (global), step scratch
   std::vector<Vec2> w;                           // uniform element loads, local axes (N/m)
   bool f_current = false;
-  double work_ext = 0, work_damp = 0;
+  double work_ext = 0, work_damp = 0, work_applied = 0;
 };
 
 Frame::Frame(FrameModel model) : impl_(std::make_unique<Impl>(std::move(model))) {}
@@ -120,6 +120,7 @@ void Frame::advance(double dt) {
   m.integrator->step(m.state, m.f, dt);
   m.d_prev = m.state.d - m.d_prev;
   m.work_ext += m.f.dot(m.d_prev);                     // loads constant over the step
+  m.work_applied += m.nodal.dot(m.d_prev);
   if (m.sys.damped()) {
     m.v_prev = 0.5 * (m.v_prev + m.state.v);           // midpoint velocity
     m.sys.damping_force(m.v_prev, m.cv);
@@ -246,6 +247,7 @@ double Frame::strain_energy() const {
 }
 
 double Frame::external_work() const { return impl_->work_ext; }
+double Frame::applied_work() const { return impl_->work_applied; }
 double Frame::damping_work() const { return impl_->work_damp; }
 
 }  // namespace dmi

@@ -157,6 +157,9 @@ class Frame {
   double strain_energy() const;    // J
   // Work done on the frame by the external loads since t = 0 (J), including self-weight, accumulated by advance().
   double external_work() const;
+  // The part of external_work() done by the loads given through add_nodal_load / add_point_load (J):
+  // in a coupled run, the work of the material on the members.
+  double applied_work() const;
   // Energy dissipated by Rayleigh damping since t = 0 (J), accumulated by advance().
   double damping_work() const;
 
