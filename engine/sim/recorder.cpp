@@ -192,6 +192,31 @@ template <int D> void Recorder<D>::sample_member_probe(const Frame& f, const Pro
   }
 }
 
+template <int D> LineSnapshot Recorder<D>::member_snapshot(const Frame& f) {
+  LineSnapshot s;
+  const char* names[] = {"N (N)", "V (N)", "M (N m)", "sigma_top (Pa)", "sigma_bottom (Pa)", "von_mises_max (Pa)"};
+  for (const char* n : names) s.point_scalars.push_back({n, {}});
+  constexpr int kSamples = 9;
+  for (int e = 0; e < f.nelements(); ++e) {
+    const FrameElementDef& el = f.model().elements[e];
+    const Vec2 Xi = f.model().nodes[el.i], Xj = f.model().nodes[el.j];
+    const ElementCurve c = f.curve(e);
+    for (int k = 0; k < kSamples; ++k) {
+      const double xi = double(k) / (kSamples - 1);
+      const Vec2 x = c.point(xi), u = x - (Xi + xi * (Xj - Xi));
+      s.points.insert(s.points.end(), {x.x(), x.y()});
+      s.displacement.insert(s.displacement.end(), {u.x(), u.y()});
+      const SectionForces sf = f.forces_at(e, xi);
+      const FibreStresses fs = f.stresses_at(e, xi);
+      const double v[] = {sf.N, sf.V, sf.M, fs.sigma_top, fs.sigma_bottom, fs.von_mises_max};
+      for (int q = 0; q < 6; ++q) s.point_scalars[q].second.push_back(v[q]);
+    }
+    s.ends.push_back(s.points.size() / 2);
+    s.member.push_back(el.member);
+  }
+  return s;
+}
+
 template <int D> Snapshot Recorder<D>::snapshot(const Solver<D>& solver) const {
   const Scene<D>& sc = solver.scene();
   const auto& P = sc.particles;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "engine/io/results.hpp"
+#include "engine/io/vtu.hpp"
 #include "engine/mpm/solver.hpp"
 
 namespace dmi {
@@ -19,6 +20,9 @@ template <int D> class Recorder {
   // histories hold each step's force.
   void sample(const Solver<D>& solver, double dt);
   Snapshot snapshot(const Solver<D>& solver) const;
+  // Members sampled along their deformed centre-lines (9 points per element) with section forces and
+  // fibre stresses, for ParaView.
+  static LineSnapshot member_snapshot(const Frame& f);
   const std::vector<double>& time() const { return time_; }
   std::vector<Series>& series() { return series_; }
   double initial_energy() const { return e0_; }

@@ -49,7 +49,7 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   info.numbers["particles"] = static_cast<double>(solver.scene().particles.size());
 
   std::unique_ptr<ResultsWriter> writer;
-  std::vector<std::pair<double, std::string>> vtk_files;
+  std::vector<std::pair<double, std::string>> vtk_files, member_files;
   const bool files = !o.out_dir.empty();
   std::string results_path;
   if (files) {
@@ -67,6 +67,11 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
       std::snprintf(name, sizeof name, "particles_%04zu.vtu", vtk_files.size());
       write_vtu((fs::path(o.out_dir) / "fields" / name).string(), snap);
       vtk_files.emplace_back(snap.time, name);
+      if (const Frame* f = solver.scene().frame.get()) {
+        std::snprintf(name, sizeof name, "members_%04zu.vtu", member_files.size());
+        write_lines_vtu((fs::path(o.out_dir) / "fields" / name).string(), Recorder<D>::member_snapshot(*f));
+        member_files.emplace_back(snap.time, name);
+      }
     }
   };
 
@@ -120,6 +125,7 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   out.results.complete = true;
   if (files) {
     if (s.output.vtk) write_pvd((fs::path(o.out_dir) / "fields" / "particles.pvd").string(), vtk_files);
+    if (s.output.vtk && !member_files.empty()) write_pvd((fs::path(o.out_dir) / "fields" / "members.pvd").string(), member_files);
     writer->finish(out.results.time, out.results.series, info);
     out.results_path = results_path;
   }

@@ -370,3 +370,32 @@ TEST_F(IoTest, PvdListsEntries) {
   EXPECT_NE(text.find("file=\"particles_0001.vtu\""), std::string::npos);
   EXPECT_LT(text.find("particles_0000.vtu"), text.find("particles_0001.vtu"));
 }
+
+namespace dmi {
+namespace {
+
+// Members as polylines: one VTK_POLY_LINE per element, point coordinates and fields as given.
+TEST(MemberVtu, WritesOnePolylinePerElementWithItsFields) {
+  LineSnapshot s;
+  s.points = {0, 0, 0.5, 0.1, 1, 0, 1, 0, 1.5, -0.1, 2, 0};
+  s.displacement.assign(12, 0.0);
+  s.ends = {3, 6};
+  s.member = {0, 0};
+  s.point_scalars = {{"M (N m)", {1, 2, 3, 4, 5, 6}}};
+  const std::string path = (std::filesystem::temp_directory_path() / ("dmi_members_" + std::to_string(::getpid()) + ".vtu")).string();
+  write_lines_vtu(path, s);
+  std::ifstream in(path);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::filesystem::remove(path);
+  EXPECT_NE(text.find("NumberOfPoints=\"6\" NumberOfCells=\"2\""), std::string::npos);
+  EXPECT_NE(text.find("Name=\"offsets\" format=\"ascii\">\n3\n6\n"), std::string::npos);
+  EXPECT_NE(text.find("Name=\"types\" format=\"ascii\">\n4\n4\n"), std::string::npos);
+  EXPECT_NE(text.find("1.5 -0.10000000000000001 0"), std::string::npos);
+  EXPECT_NE(text.find("Name=\"M (N m)\" format=\"ascii\">\n1\n2\n3\n4\n5\n6\n"), std::string::npos);
+  s.ends = {3, 5};  // does not cover the points: refused, nothing written
+  EXPECT_THROW(write_lines_vtu(path, s), std::runtime_error);
+  EXPECT_FALSE(std::filesystem::exists(path));
+}
+
+}  // namespace
+}  // namespace dmi
