@@ -115,7 +115,8 @@ template <int D> void MemberContact<D>::apply(Scene<D>& s, const TransferKernels
       const Vec2 x = g.node_pos(c.node);
       const ElementCurve curve = fr.curve(c.element);
       const double hm = fr.half_depth(c.element, c.xi);
-      const Vec2 vstar = fr.velocity_at(c.element, c.xi);
+      const Vec2 vc = fr.velocity_at(c.element, c.xi);
+      const double omega = fr.angular_velocity_at(c.element, c.xi);
       const double dist = std::sqrt(c.dist2);
       Vec2 n0;  // unit normal from the centre-line towards the node, eq. (A.9); on the curve (A.7)
       if (dist > 1e-12 * g.h()) {
@@ -132,6 +133,9 @@ template <int D> void MemberContact<D>::apply(Scene<D>& s, const TransferKernels
         const Vec2 xbar = mx_[k] / m;
         const Vec2 n = (xbar - c.xm).dot(n0) >= 0 ? n0 : Vec2(-n0);
         const double r = ((opt.distance == DistanceKind::node ? x : xbar) - c.xm).dot(n) - hm;  // eq. (23)
+        // Velocity of the member's surface point x^M + c n: centre-line velocity plus omega x (c n), so the
+        // material is held where the reaction acts (its power then matches the frame's, moment included).
+        const Vec2 vstar = vc + omega * hm * Vec2(-n.y(), n.x());
         const double q = r <= 0 ? 1.0 : (r < ln ? decay(opt.decay, r / ln) : 0.0);
         if (q == 0) continue;
         loaded_.push_back(Loaded{k, n, vstar, q});
@@ -153,6 +157,9 @@ template <int D> void MemberContact<D>::apply(Scene<D>& s, const TransferKernels
         // Reaction on the member at the surface point x^M + c n: force plus the moment of the offset.
         const Vec2 arm = hm * n, F = -fbc;
         fr.add_point_load(c.element, c.xi, F, arm.x() * F.y() - arm.y() * F.x());
+        // The held material moves with the member: its mass joins the frame's inertia for the step
+        // (all directions when stuck, the normal one when sliding).
+        fr.add_point_mass(c.element, c.xi, q * m * (opt.mode == MemberContactMode::stick ? Mat<2>(Mat<2>::Identity()) : Mat<2>(n * n.transpose())));
         force_ += F;
         ++stats_.loaded;
       }

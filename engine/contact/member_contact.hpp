@@ -11,7 +11,11 @@
 //         plus a tangential part limited by mu f_v . n: friction (Coulomb)
 //   f_bc = q f_v added to the node; -f_bc acts on the member at the surface point x^M + c n, i.e. a
 //   force at x^M plus the moment of the offset, turned into consistent end forces by Frame::add_point_load.
-// v* is the member centre-line velocity at the projection point (frame state at t_n).
+//   The held nodal mass q m (q m n n^T when sliding) is attached to the frame for the step
+//   (Frame::add_point_mass): the staggered scheme computes the reaction from v*_n, and without the
+//   added mass a heavy mass on a light member rang up (energy x 300 in a debris-on-pipe test).
+// v* is the velocity of the member's surface point: centre-line velocity plus omega x (c n) (frame
+// state at t_n).
 // Deviation from the paper: separable contact tests the sign of the normal force (equivalently the
 // trial velocity v^k + dt f_tot/m approaching the member) rather than v^k alone, so the field never
 // pulls material towards a member in the step it starts to separate.

@@ -45,11 +45,12 @@ template <int D> void Solver<D>::member_boundary_forces(double dt) {
 
 template <int D> void Solver<D>::advance_members(double dt) {
   if (!scene_.frame) return;
-  scene_.frame->advance(dt);
-  const Eigen::VectorXd& d = scene_.frame->displacement();
-  if (!d.allFinite() || !scene_.frame->velocity().allFinite())
+  try {
+    scene_.frame->advance(dt);
+  } catch (const std::runtime_error& e) {  // non-finite state, Newton failure
     throw RunError("run stopped at step " + std::to_string(steps_ + 1) + ", t = " + std::to_string(time_) +
-                   " s: the beam-column frame has a non-finite displacement or velocity (time step above its stability limit?)");
+                   " s: beam-column frame: " + e.what());
+  }
 }
 
 template <int D> void Solver<D>::grid_update(double dt) {

@@ -130,6 +130,7 @@ struct StructureConfig {
   FrameIntegratorKind integrator = FrameIntegratorKind::explicit_euler;
   bool self_weight = true;                           // gravity on the members' own mass
   double rayleigh_mass = 0, rayleigh_stiffness = 0;  // C = alpha M + beta K: alpha (1/s), beta (s)
+  double hht_alpha = -0.1;                           // newmark: HHT alpha in [-1/3, 0]
   std::vector<FrameNodeConfig> nodes;
   std::vector<MemberConfig> members;
   std::vector<SupportConfig> supports;

@@ -275,7 +275,13 @@ void read_structure(Obj o, StructureConfig& st) {
   o.choice<FrameIntegratorKind>("integrator", st.integrator,
                                 {{"explicit", FrameIntegratorKind::explicit_euler}, {"newmark", FrameIntegratorKind::newmark}},
                                 Spec{.doc = "frame time integration: explicit (SEEDS.md A.3 eqs. 27-29; its stable step limits the global "
-                                            "time step) or newmark (implicit average acceleration; does not limit the step)"});
+                                            "time step) or newmark (implicit, HHT-alpha form; does not limit the step)"});
+  if (o.when("integrator", st.integrator == FrameIntegratorKind::newmark ? "newmark" : "", "newmark"))
+    o.number("hht_alpha", st.hht_alpha,
+             Spec{.doc = "HHT alpha of the newmark integrator, in [-1/3, 0]: 0 = average acceleration (no numerical damping); "
+                         "the default -0.1 damps frame modes far above the time step's resolution, which stick contact "
+                         "otherwise pumps (docs/verification.md)", .min = -1.0 / 3, .max = 0});
+  o.end_when();
   o.boolean("self_weight", st.self_weight, Spec{.doc = "apply analysis.gravity to the members' own mass"});
   Obj r = o.object("rayleigh_damping", "Rayleigh damping of the frame, C = alpha M + beta K; absent: undamped");
   r.number("mass", st.rayleigh_mass, Spec{.unit = "1/s", .doc = "mass-proportional coefficient alpha", .min = 0});
@@ -427,6 +433,12 @@ std::set<std::string> check_structure(const Scenario& s, const std::string& file
 }
 
 // Cross-references and geometry: what a single key cannot check.
+std::string value_text_names(const std::vector<std::string>& v) {
+  std::string t = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) t += (i ? ", \"" : "\"") + v[i] + "\"";
+  return t + "]";
+}
+
 void check_semantics(const Scenario& s, const std::string& file) {
   const int dim = s.analysis.dimension;
   if (s.bodies.empty()) throw InputError(file, "/bodies", "[]", "at least one body");
@@ -499,6 +511,12 @@ void check_semantics(const Scenario& s, const std::string& file) {
   for (std::size_t i = 0; i < s.member_contact.bodies.size(); ++i)
     if (!bodies.count(s.member_contact.bodies[i]))
       throw InputError(file, "/member_contact/bodies/" + std::to_string(i), quoted(s.member_contact.bodies[i]), "the name of one of the bodies");
+  // With one velocity field for all bodies the members cannot act on only some of them.
+  const std::set<std::string> listed(s.member_contact.bodies.begin(), s.member_contact.bodies.end());
+  if (!listed.empty() && listed.size() < s.bodies.size() && s.contact.method == ContactMethod::single_field)
+    throw InputError(file, "/member_contact/bodies", value_text_names(s.member_contact.bodies),
+                     "all bodies (or none listed) with contact.method single_field: the bodies share one velocity field, so "
+                     "members act on all of them; use multi_field to exempt some");
   std::set<std::string> probes;
   for (std::size_t i = 0; i < s.output.probes.size(); ++i) {
     const auto& pr = s.output.probes[i];

@@ -75,6 +75,7 @@ FrameModel build_frame_model(const Scenario& s) {
   if (st.self_weight) fm.gravity = Vec2(s.analysis.gravity[0], s.analysis.gravity[1]);
   fm.rayleigh_mass = st.rayleigh_mass;
   fm.rayleigh_stiffness = st.rayleigh_stiffness;
+  fm.hht_alpha = st.hht_alpha;
   return fm;
 }
 

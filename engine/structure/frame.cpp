@@ -50,6 +50,7 @@ struct Frame::Impl {
   FrameState state;
   Eigen::VectorXd nodal, f, d_prev, v_prev, cv;  // loads (global), step scratch
   std::vector<Vec2> w;                           // uniform element loads, local axes (N/m)
+  std::vector<Eigen::Triplet<double>> added;     // attached mass of the next step (kg)
   bool f_current = false;
   double work_ext = 0, work_damp = 0, work_applied = 0;
 };
@@ -74,8 +75,22 @@ Vec2 Frame::node_position(int n) const {
 
 void Frame::clear_loads() {
   impl_->nodal.setZero();
+  impl_->added.clear();
   for (Vec2& w : impl_->w) w.setZero();
   impl_->f_current = false;
+}
+
+void Frame::add_point_mass(int e, double xi, const Eigen::Matrix2d& m) {
+  impl_->check_element(e, xi);
+  if (!m.allFinite()) throw std::invalid_argument("Frame: non-finite attached mass on element " + std::to_string(e));
+  const FrameElementDef& el = model().elements[e];
+  for (int k = 0; k < 2; ++k) {
+    const int n = k == 0 ? el.i : el.j;
+    const double w = k == 0 ? 1 - xi : xi;
+    for (int a = 0; a < 2; ++a)
+      for (int b = 0; b < 2; ++b)
+        if (w * m(a, b) != 0) impl_->added.emplace_back(3 * n + a, 3 * n + b, w * m(a, b));
+  }
 }
 
 void Frame::add_nodal_load(int node, const Vec3& f) {
@@ -117,7 +132,13 @@ void Frame::advance(double dt) {
   m.update_loads();
   m.d_prev = m.state.d;
   m.v_prev = m.state.v;
-  m.integrator->step(m.state, m.f, dt);
+  if (m.added.empty()) {
+    m.integrator->step(m.state, m.f, dt, nullptr);
+  } else {
+    SpMat Ma(ndof(), ndof());
+    Ma.setFromTriplets(m.added.begin(), m.added.end());
+    m.integrator->step(m.state, m.f, dt, &Ma);
+  }
   m.d_prev = m.state.d - m.d_prev;
   m.work_ext += m.f.dot(m.d_prev);                     // loads constant over the step
   m.work_applied += m.nodal.dot(m.d_prev);
@@ -169,6 +190,15 @@ Vec2 Frame::velocity_at(int e, double xi) const {
   const double wt = sh.hermite[0] * ve.head<2>().dot(c.e2) + sh.hermite[1] * ve(2) +
                     sh.hermite[2] * ve.segment<2>(3).dot(c.e2) + sh.hermite[3] * ve(5);
   return ua * c.e1 + wt * c.e2;
+}
+
+double Frame::angular_velocity_at(int e, double xi) const {
+  impl_->check_element(e, xi);
+  const ElementCurve c = curve(e);
+  const BeamShape sh = beam_shape(xi, c.L);
+  const Vec6 ve = impl_->sys.element_dofs(e, impl_->state.v);
+  return sh.slope[0] * ve.head<2>().dot(c.e2) + sh.slope[1] * ve(2) + sh.slope[2] * ve.segment<2>(3).dot(c.e2) +
+         sh.slope[3] * ve(5);
 }
 
 double Frame::half_depth(int e, double xi) const {

@@ -66,6 +66,7 @@ struct FrameModel {
   Vec2 gravity = Vec2::Zero();            // m/s^2 acting on the members' own mass (zero: no self-weight)
   double rayleigh_mass = 0.0;             // alpha (1/s): C = alpha M + beta K
   double rayleigh_stiffness = 0.0;        // beta (s)
+  double hht_alpha = 0.0;                 // Newmark integrator: HHT alpha in [-1/3, 0]; 0 = average acceleration
 };
 
 // Deformed centre-line of one element, xi in [0, 1]:
@@ -124,7 +125,7 @@ class Frame {
   double time() const;
   Vec2 node_position(int n) const;   // current (X + u)
 
-  // External loads held over the next advance(); cleared by clear_loads(). Self-weight (model
+  // External loads (and attached masses) held over the next advance(); cleared by clear_loads(). Self-weight (model
   // gravity) is added internally and need not be applied.
   void clear_loads();
   void add_nodal_load(int node, const Vec3& f);                  // Fx, Fy (N), Mz (N m)
@@ -132,6 +133,10 @@ class Frame {
   // end forces with the element's interpolation (axial linear, transverse cubic Hermite; moment
   // through the Hermite slopes), in the element's current axes (initial axes for linear transf).
   void add_point_load(int e, double xi, const Vec2& F, double m = 0.0);
+  // Mass m (kg, a 2x2 translational block in global axes) attached at xi of element e for the next
+  // advance() only: material that member contact holds to the member moves with it, so it adds to the
+  // inertia of the step (implicit added mass). Lumped to the end nodes with weights 1 - xi, xi.
+  void add_point_mass(int e, double xi, const Eigen::Matrix2d& m);
   // Uniform load per unit length (N/m) in the element's local axes (along e1, along e2).
   void add_distributed_load(int e, const Vec2& w_local);
 
@@ -148,6 +153,8 @@ class Frame {
   // Results at the current state.
   ElementCurve curve(int e) const;
   Vec2 velocity_at(int e, double xi) const;       // centre-line velocity (m/s), interpolated as add_point_load
+  // Rate of rotation of the centre-line's tangent at xi (rad/s), dual to the moment of add_point_load.
+  double angular_velocity_at(int e, double xi) const;
   double half_depth(int e, double xi) const;      // c at xi (m), from the member's section
   SectionForces forces_at(int e, double xi) const;
   FibreStresses stresses_at(int e, double xi) const;

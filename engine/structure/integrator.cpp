@@ -21,14 +21,21 @@ ExplicitEuler::ExplicitEuler(const FrameSystem& sys) : sys_(sys) {
   r_.setZero(n);
 }
 
-void ExplicitEuler::step(FrameState& s, const Eigen::VectorXd& f, double dt) {
+void ExplicitEuler::step(FrameState& s, const Eigen::VectorXd& f, double dt, const SpMat* Ma) {
   sys_.internal_force(s.d, fint_);                     // f_int(d_n)
   r_ = f - fint_;
   if (sys_.damped()) {
     sys_.damping_force(s.v, cv_);
     r_ -= cv_;
   }
-  sys_.solve_mass(r_, s.a);                            // eq. (27)
+  if (Ma) {                                             // eq. (27) with the attached mass
+    added_solver_.compute(sys_.constrained(sys_.mass() + *Ma));
+    if (added_solver_.info() != Eigen::Success) throw std::runtime_error("Frame: mass with attached material is singular");
+    r_.array() *= sys_.free().array();
+    s.a = added_solver_.solve(r_);
+  } else {
+    sys_.solve_mass(r_, s.a);                          // eq. (27)
+  }
   s.v += dt * s.a;                                     // eq. (28)
   s.d += dt * s.v;                                     // eq. (29)
   s.t += dt;
@@ -36,8 +43,14 @@ void ExplicitEuler::step(FrameState& s, const Eigen::VectorXd& f, double dt) {
 }
 
 Newmark::Newmark(const FrameSystem& sys) : sys_(sys) {
+  const double a = sys.model().hht_alpha;
+  if (!(a >= -1.0 / 3 && a <= 0)) throw std::invalid_argument("Frame: HHT alpha must lie in [-1/3, 0]");
+  alpha_ = a;
+  gamma_ = 0.5 - a;
+  beta_ = 0.25 * (1 - a) * (1 - a);
   const int n = sys.ndof();
   fint_.setZero(n);
+  fint0_.setZero(n);
   tmp_.setZero(n);
   rhs_.setZero(n);
   dd_.setZero(n);
@@ -45,10 +58,10 @@ Newmark::Newmark(const FrameSystem& sys) : sys_(sys) {
 
 double Newmark::stable_time_step() const { return std::numeric_limits<double>::infinity(); }
 
-void Newmark::step(FrameState& s, const Eigen::VectorXd& f, double dt) {
+void Newmark::step(FrameState& s, const Eigen::VectorXd& f, double dt, const SpMat* Ma) {
   if (!s.a_current) initial_acceleration(s, f);
-  if (sys_.linear()) step_linear(s, f, dt);
-  else step_newton(s, f, dt);
+  if (sys_.linear()) step_linear(s, f, dt, Ma);
+  else step_newton(s, f, dt, Ma);
   s.t += dt;
   s.a_current = true;
 }
@@ -60,59 +73,80 @@ void Newmark::initial_acceleration(FrameState& s, const Eigen::VectorXd& f) {
   sys_.solve_mass(rhs_, s.a);
 }
 
-void Newmark::step_linear(FrameState& s, const Eigen::VectorXd& f, double dt) {
-  const double alpha = sys_.model().rayleigh_mass, beta = sys_.model().rayleigh_stiffness;
-  if (dt != dt_factored_) {
-    const SpMat K = (1 + 2 * beta / dt) * sys_.stiffness() + (2 * alpha / dt + 4 / (dt * dt)) * sys_.mass();
+// Increment D = d_{n+1} - d_n gives a_{n+1} = c0 (D - dt v_n) - (1/(2 beta) - 1) a_n and
+// v_{n+1} = c1 D + (1 - gamma/beta) v_n + dt (1 - gamma/(2 beta)) a_n, c0 = 1/(beta dt^2), c1 = gamma/(beta dt).
+void Newmark::kinematics(const FrameState& n, const Eigen::VectorXd& D, double dt, FrameState& s) const {
+  const double c0 = 1 / (beta_ * dt * dt), c1 = gamma_ / (beta_ * dt);
+  s.d = n.d + D;
+  s.a = c0 * (D - dt * n.v) - (0.5 / beta_ - 1) * n.a;
+  s.v = c1 * D + (1 - gamma_ / beta_) * n.v + dt * (1 - 0.5 * gamma_ / beta_) * n.a;
+}
+
+void Newmark::step_linear(FrameState& s, const Eigen::VectorXd& f, double dt, const SpMat* Ma) {
+  const double c0 = 1 / (beta_ * dt * dt), c1 = gamma_ / (beta_ * dt);
+  const double ar = sys_.model().rayleigh_mass, br = sys_.model().rayleigh_stiffness;
+  if (Ma || dt != dt_factored_) {  // refactorised while mass is attached, else only when dt changes
+    // c0 (M + Ma) + (1 + alpha)(K0 + c1 C), C = ar M + br K0
+    SpMat K = (1 + alpha_) * (1 + c1 * br) * sys_.stiffness() + (c0 + (1 + alpha_) * c1 * ar) * sys_.mass();
+    if (Ma) K += c0 * *Ma;
     solver_.compute(sys_.constrained(K));
     if (solver_.info() != Eigen::Success)
       throw std::runtime_error("Frame: Newmark effective matrix factorisation failed");
-    dt_factored_ = dt;
+    dt_factored_ = Ma ? 0.0 : dt;
   }
-  // rhs = f - K0 (d - beta v) + M ((4/dt + alpha) v + a), C = alpha M + beta K0.
-  tmp_ = s.d - beta * s.v;
-  rhs_.noalias() = f - sys_.stiffness() * tmp_;
-  tmp_ = (4 / dt + alpha) * s.v + s.a;
+  // rhs = f - K0 d_n + (M + Ma)(c0 dt v_n + (1/(2 beta) - 1) a_n)
+  //       - (1 + alpha) C ((1 - gamma/beta) v_n + dt (1 - gamma/(2 beta)) a_n) + alpha C v_n
+  tmp_ = c0 * dt * s.v + (0.5 / beta_ - 1) * s.a;
+  rhs_.noalias() = f - sys_.stiffness() * s.d;
   rhs_.noalias() += sys_.mass() * tmp_;
+  if (Ma) rhs_.noalias() += *Ma * tmp_;
+  if (sys_.damped()) {
+    tmp_ = (1 + alpha_) * ((1 - gamma_ / beta_) * s.v + dt * (1 - 0.5 * gamma_ / beta_) * s.a) - alpha_ * s.v;
+    sys_.damping_force(tmp_, fint_);
+    rhs_ -= fint_;
+  }
   rhs_.array() *= sys_.free().array();
   dd_ = solver_.solve(rhs_);
-  s.a = 4 / (dt * dt) * dd_ - 4 / dt * s.v - s.a;
-  s.v = 2 / dt * dd_ - s.v;
-  s.d += dd_;
+  const FrameState n = s;
+  kinematics(n, dd_, dt, s);
 }
 
-void Newmark::step_newton(FrameState& s, const Eigen::VectorXd& f, double dt) {
+// Corotational: Newton-Raphson on R(D) = f - (M + Ma) a_{n+1} - (1 + alpha)(f_int(d_{n+1}) + C v_{n+1})
+// + alpha (f_int(d_n) + C v_n), Jacobian c0 (M + Ma) + (1 + alpha)(K_t + c1 C).
+void Newmark::step_newton(FrameState& s, const Eigen::VectorXd& f, double dt, const SpMat* Ma) {
   constexpr int kMaxIterations = 20;
   constexpr double kResidualTol = 1e-8, kIncrementTol = 1e-8;
-  const double alpha = sys_.model().rayleigh_mass, beta = sys_.model().rayleigh_stiffness;
-  const Eigen::VectorXd d0 = s.d, v0 = s.v, a0 = s.a, fm = f.cwiseProduct(sys_.free());
-  Eigen::VectorXd D = dt * v0, delta = Eigen::VectorXd::Zero(sys_.ndof());
+  const double c0 = 1 / (beta_ * dt * dt), c1 = gamma_ / (beta_ * dt);
+  const double ar = sys_.model().rayleigh_mass, br = sys_.model().rayleigh_stiffness;
+  const FrameState n = s;
+  sys_.internal_force(n.d, fint0_);
+  sys_.damping_force(n.v, tmp_);
+  fint0_ += tmp_;  // f_int(d_n) + C v_n
+  const Eigen::VectorXd fm = f.cwiseProduct(sys_.free());
+  Eigen::VectorXd D = dt * n.v, delta = Eigen::VectorXd::Zero(sys_.ndof());
   double ref = 0, res = 0;
   for (int it = 0; it <= kMaxIterations; ++it) {
-    s.d = d0 + D;
-    s.v = 2 / dt * D - v0;
-    s.a = 4 / (dt * dt) * D - 4 / dt * v0 - a0;
+    kinematics(n, D, dt, s);
     sys_.internal_force(s.d, fint_);
     sys_.damping_force(s.v, tmp_);
-    const Eigen::VectorXd inertia = sys_.mass() * s.a;
-    rhs_ = (f - fint_ - inertia - tmp_).cwiseProduct(sys_.free());
+    Eigen::VectorXd inertia = sys_.mass() * s.a;
+    if (Ma) inertia += *Ma * s.a;
+    rhs_ = (f - inertia - (1 + alpha_) * (fint_ + tmp_) + alpha_ * fint0_).cwiseProduct(sys_.free());
     if (it == 0)
       ref = std::max({fm.norm(), fint_.cwiseProduct(sys_.free()).norm(), inertia.cwiseProduct(sys_.free()).norm(),
                       std::numeric_limits<double>::min()});
     res = rhs_.norm();
     if (it > 0 && res <= kResidualTol * ref && delta.norm() <= kIncrementTol * std::max(D.norm(), s.d.norm())) return;
     if (it == kMaxIterations) break;
-    const SpMat J = sys_.tangent(s.d) + (2 * beta / dt) * sys_.stiffness() +
-                    (2 * alpha / dt + 4 / (dt * dt)) * sys_.mass();
+    SpMat J = (1 + alpha_) * (sys_.tangent(s.d) + c1 * br * sys_.stiffness()) + (c0 + (1 + alpha_) * c1 * ar) * sys_.mass();
+    if (Ma) J += c0 * *Ma;
     solver_.compute(sys_.constrained(J));
     if (solver_.info() != Eigen::Success) break;
     delta = solver_.solve(rhs_);
     D += delta;
   }
-  s.d = d0;  // leave the state at t_n
-  s.v = v0;
-  s.a = a0;
-  throw std::runtime_error("Frame: Newmark Newton iterations did not converge at t = " + std::to_string(s.t + dt) +
+  s = n;  // leave the state at t_n
+  throw std::runtime_error("Frame: Newmark Newton iterations did not converge at t = " + std::to_string(n.t + dt) +
                            " s, residual " + std::to_string(res) + " N (relative " + std::to_string(res / ref) + ")");
 }
 

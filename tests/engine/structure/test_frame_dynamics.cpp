@@ -137,10 +137,11 @@ TEST(FrameDynamics, ExplicitStabilityLimitIsTwoOverOmegaMax) {
 
 // Orders in dt on a single-DOF oscillator with an exact solution: one lumped-mass bar element, fixed at node 0,
 // released from a static axial tip load; the tip moves as u0 cos(omega t), omega^2 = (EA/L) / (m/2).
-double bar_error(FrameIntegrator integ, int steps, double t_over_T) {
+double bar_error(FrameIntegrator integ, int steps, double t_over_T, double hht_alpha = 0.0) {
   const Beam b;
   FrameModel m = straight(b, 1);
   m.integrator = integ;
+  m.hht_alpha = hht_alpha;
   support(m, 0, true, true, true);
   Frame f(m);
   f.add_nodal_load(1, Vec3(1e5, 0, 0));
@@ -164,6 +165,23 @@ TEST(FrameDynamics, NewmarkIsSecondOrderAndTheExplicitSchemeFirstOrder) {
       EXPECT_NEAR(order, newmark ? 2.0 : 1.0, 0.1);
     }
   }
+}
+
+// HHT-alpha (alpha = -0.1) keeps second order, and damps a mode resolved by far too few steps
+// (omega dt = 10: spectral radius -> (1 + alpha)/(1 - alpha) = 0.82 per step), which average
+// acceleration (alpha = 0) keeps at full amplitude.
+TEST(FrameDynamics, HhtIsSecondOrderAndDampsUnresolvedModes) {
+  std::vector<double> err;
+  for (int n : {40, 80, 160}) err.push_back(bar_error(FrameIntegrator::newmark, n, 1.3, -0.1));
+  for (int k = 0; k + 1 < 3; ++k) EXPECT_NEAR(std::log2(err[k] / err[k + 1]), 2.0, 0.15);
+  const Beam b;
+  const double w = std::sqrt(2 * b.EA() / (b.rhoA() * b.L * b.L)), T = 2 * kPi / w;
+  const int steps = 60;
+  const double t_over_T = steps * 10 / w / T;  // omega dt = 10
+  const double exact = std::abs(std::cos(w * t_over_T * T));  // error = |u - u0 cos(w t)| / u0 = |cos| when u -> 0
+  EXPECT_NEAR(bar_error(FrameIntegrator::newmark, steps, t_over_T, -0.1), exact, 1e-3);
+  // alpha = 0: no decay (energy conserved), the computed motion keeps amplitude u0 with a wrong phase.
+  EXPECT_GT(std::abs(bar_error(FrameIntegrator::newmark, steps, t_over_T, 0.0) - exact), 0.05);
 }
 
 TEST(FrameDynamics, RayleighDampingMatchesLogarithmicDecrement) {
@@ -287,6 +305,7 @@ TEST(FrameDynamics, PointLoadPowerEqualsNodalPower) {
     const double rate = cubic_slope([&](double s) { return f.velocity_at(1, s).dot(c.e2); }, xi) / c.L;
     const double power = F.dot(f.velocity_at(1, xi)) + moment * rate;
     EXPECT_NEAR((f.external_work() - w0) / dt, power, 1e-9 * std::abs(power)) << xi;
+    EXPECT_NEAR(f.angular_velocity_at(1, xi), rate, 1e-9 * std::abs(rate) + 1e-12) << xi;  // the moment's dual
   }
 }
 
