@@ -108,11 +108,15 @@ void FrameSystem::assemble() {
     chords_.push_back(c);
     elements_.emplace_back(el, c.L0, model_.theory);
     const BeamElement& be = elements_.back();
-    scatter(tk, el.i, el.j, transform_->tangent(transform_->state(c, Vec6::Zero()), be.stiffness(), Vec3::Zero()));
+    const Mat6 Ke = transform_->tangent(transform_->state(c, Vec6::Zero()), be.stiffness(), Vec3::Zero());
+    scatter(tk, el.i, el.j, Ke);
     const Mat6 R = global_to_local(c.e1);
-    scatter(tm, el.i, el.j,
-            model_.mass == MassMatrix::lumped ? Mat6(be.lumped_mass().asDiagonal())
-                                              : Mat6(R.transpose() * be.consistent_mass() * R));
+    const Mat6 Me = model_.mass == MassMatrix::lumped ? Mat6(be.lumped_mass().asDiagonal())
+                                                      : Mat6(R.transpose() * be.consistent_mass() * R);
+    scatter(tm, el.i, el.j, Me);
+    // Irons (1970): the largest eigenvalue of an assembly is at most the largest of its elements'.
+    Eigen::GeneralizedSelfAdjointEigenSolver<Mat6> es(Ke, Me, Eigen::EigenvaluesOnly);
+    element_bound_ = std::max(element_bound_, es.eigenvalues().maxCoeff());
   }
   free_ = Eigen::VectorXd::Ones(n);
   springs_ = Eigen::VectorXd::Zero(n);
@@ -130,6 +134,18 @@ void FrameSystem::assemble() {
   }
   K0_ = from_triplets(n, tk);
   M_ = from_triplets(n, tm);
+  double spring_bound = 0;  // lambda_max(K + S, M) <= lambda_max(K, M) + max s_i / M_ii (S diagonal)
+  for (int i = 0; i < n; ++i)
+    if (springs_(i) > 0) spring_bound = std::max(spring_bound, springs_(i) / M_.coeff(i, i));
+  element_bound_ += spring_bound;
+}
+
+double FrameSystem::max_eigenvalue() const {
+  int nf = 0;
+  for (int i = 0; i < ndof(); ++i) nf += free_(i) > 0;
+  // Exact (dense) for small frames; above ~200 elements the O(n^3) solve costs seconds, so the
+  // element bound (conservative: a smaller stable step) is used.
+  return nf <= kDenseEigenMax ? eigenvalues().maxCoeff() : element_bound_;
 }
 
 void FrameSystem::factorise_mass() {
@@ -165,6 +181,8 @@ void FrameSystem::check_mechanism() const {
     for (int i = 0; i < ndof(); ++i) singular = singular || !(D(perm(i)) > 1e-12 * diag(i));
   }
   if (!singular) return;
+  if (ndof() > 3 * kDenseEigenMax)
+    fail("the frame is a mechanism: its stiffness matrix is singular (add supports, or release only one side of a hinge)");
   const Eigen::VectorXd s = diag.cwiseSqrt().cwiseInverse();
   const Eigen::MatrixXd scaled = s.asDiagonal() * Eigen::MatrixXd(K) * s.asDiagonal();
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(scaled);

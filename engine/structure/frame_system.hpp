@@ -58,8 +58,11 @@ class FrameSystem {
   // f += equivalent nodal loads of all element loads (w per element, self-weight) in the axes at d.
   void add_element_loads(const std::vector<Vec2>& w, const Eigen::VectorXd& d, Eigen::VectorXd& f) const;
 
-  // Generalised eigenvalues omega^2 of (K0, M) on the free DOFs, ascending.
+  // Generalised eigenvalues omega^2 of (K0, M) on the free DOFs, ascending (dense: small frames only).
   Eigen::VectorXd eigenvalues() const;
+  // omega_max^2: exact up to kDenseEigenMax free DOFs, else the element (Irons) bound plus springs.
+  double max_eigenvalue() const;
+  static constexpr int kDenseEigenMax = 600;
 
  private:
   void validate() const;
@@ -73,6 +76,7 @@ class FrameSystem {
   std::unique_ptr<CoordTransform> transform_;
   Eigen::VectorXd free_, springs_, inv_lumped_;
   SpMat M_, K0_;
+  double element_bound_ = 0;  // max over elements of lambda_max(K_e, M_e), plus the springs' share
   Eigen::SimplicialLDLT<SpMat> mass_solver_;  // consistent mass only
 };
 

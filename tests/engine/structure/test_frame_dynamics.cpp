@@ -135,6 +135,22 @@ TEST(FrameDynamics, ExplicitStabilityLimitIsTwoOverOmegaMax) {
   }
 }
 
+// Above 600 free DOFs the explicit step comes from the element bound (Irons), not a dense eigen
+// solve: it must be safe (not above 2/omega_max) and not needlessly small; and large frames build fast.
+TEST(FrameDynamics, LargeFramesUseASafeElementBoundForTheStableStep) {
+  for (MassMatrix mass : {MassMatrix::lumped, MassMatrix::consistent}) {
+    const Beam b;
+    Frame f = released_cantilever(b, 250, FrameIntegrator::explicit_euler, mass);
+    const double exact = 2 / f.natural_frequencies(3 * 250).back(), dt = f.stable_time_step();
+    EXPECT_LE(dt, exact * (1 + 1e-12));
+    EXPECT_GT(dt, 0.5 * exact);
+    std::printf("250 elements, %s: element-bound step / exact = %.3f\n", mass == MassMatrix::lumped ? "lumped" : "consistent",
+                dt / exact);
+  }
+  const Frame big = released_cantilever(Beam{}, 5000, FrameIntegrator::explicit_euler);
+  EXPECT_GT(big.stable_time_step(), 0);
+}
+
 // Orders in dt on a single-DOF oscillator with an exact solution: one lumped-mass bar element, fixed at node 0,
 // released from a static axial tip load; the tip moves as u0 cos(omega t), omega^2 = (EA/L) / (m/2).
 double bar_error(FrameIntegrator integ, int steps, double t_over_T, double hht_alpha = 0.0) {
