@@ -65,9 +65,9 @@ template <int D> void MemberContact<D>::find_candidates(const Scene<D>& s) {
           int& k = slot_[id];
           if (k < 0) {
             k = static_cast<int>(cand_.size());
-            cand_.push_back(Candidate{id, e, pr.xi, pr.dist2, c.point(pr.xi)});
-          } else if (pr.dist2 < cand_[k].dist2) {
-            cand_[k] = Candidate{id, e, pr.xi, pr.dist2, c.point(pr.xi)};
+            cand_.push_back(Candidate{id, e, pr.xi, pr.dist2, r, c.point(pr.xi)});
+          } else if (r < cand_[k].surface) {  // nearest surface, not centre-line (joints of unequal depth)
+            cand_[k] = Candidate{id, e, pr.xi, pr.dist2, r, c.point(pr.xi)};
           }
         }
     }

@@ -16,6 +16,9 @@
 //   added mass a heavy mass on a light member rang up (energy x 300 in a debris-on-pipe test).
 // v* is the velocity of the member's surface point: centre-line velocity plus omega x (c n) (frame
 // state at t_n).
+// Each node is held by one member: the one whose surface is nearest. Material on both sides of a member
+// thinner than a cell shares nodes, and x-bar then averages both sides (one normal per node and field):
+// keep bodies on opposite sides in separate fields (multi-field contact), or members thicker than a cell.
 // Deviation from the paper: separable contact tests the sign of the normal force (equivalently the
 // trial velocity v^k + dt f_tot/m approaching the member) rather than v^k alone, so the field never
 // pulls material towards a member in the step it starts to separate.
@@ -53,7 +56,8 @@ template <int D> class MemberContact {
     Index node;
     int element;
     double xi, dist2;
-    Vec<D> xm;  // projection point on the centre-line
+    double surface;  // distance to the member surface, |x - x^M| - c (m)
+    Vec<D> xm;       // projection point on the centre-line
   };
   void find_candidates(const Scene<D>& s);
   void mass_positions(const Scene<D>& s, const TransferKernels<D>& kernels);

@@ -269,7 +269,8 @@ void read_structure(Obj o, StructureConfig& st) {
   o.choice<FrameTransformKind>("transformation", st.transformation,
                                {{"linear", FrameTransformKind::linear}, {"corotational", FrameTransformKind::corotational}},
                                Spec{.doc = "geometric transformation: linear (small displacement, M and K formed once) or corotational "
-                                           "(large displacement and rotation, re-formed every step; SEEDS.md A.3)"});
+                                           "(large displacement and rotation: internal forces and tangent from the current chords; "
+                                           "the mass matrix stays the initial one; SEEDS.md A.3)"});
   o.choice<FrameMassKind>("mass", st.mass, {{"lumped", FrameMassKind::lumped}, {"consistent", FrameMassKind::consistent}},
                           Spec{.doc = "element mass matrix: lumped (diagonal) or consistent"});
   o.choice<FrameIntegratorKind>("integrator", st.integrator,
@@ -285,7 +286,12 @@ void read_structure(Obj o, StructureConfig& st) {
   o.boolean("self_weight", st.self_weight, Spec{.doc = "apply analysis.gravity to the members' own mass"});
   Obj r = o.object("rayleigh_damping", "Rayleigh damping of the frame, C = alpha M + beta K; absent: undamped");
   r.number("mass", st.rayleigh_mass, Spec{.unit = "1/s", .doc = "mass-proportional coefficient alpha", .min = 0});
-  r.number("stiffness", st.rayleigh_stiffness, Spec{.unit = "s", .doc = "stiffness-proportional coefficient beta", .min = 0});
+  r.number("stiffness", st.rayleigh_stiffness, Spec{.unit = "s", .doc = "stiffness-proportional coefficient beta "
+                                                                         "(linear transformation only: with corotational members the initial "
+                                                                         "stiffness would damp rigid rotation)", .min = 0});
+  if (!o.documenting() && st.rayleigh_stiffness > 0 && st.transformation == FrameTransformKind::corotational)
+    r.fail("stiffness", nullptr, "0 with transformation corotational (beta K0 damps rigid-body rotation of the members; "
+                                 "use the mass-proportional term or HHT damping)");
   r.finish();
   o.array<FrameNodeConfig>("nodes", st.nodes, Spec{.doc = "frame nodes (at least 2), inside the grid", .required = true}, read_frame_node);
   o.array<MemberConfig>("members", st.members, Spec{.doc = "members (at least 1), each a straight beam-column between two nodes", .required = true},

@@ -339,7 +339,7 @@ TEST(ScenarioStructure, FullFrameParses) {
   j["materials"].push_back({{"name", "concrete"}, {"density", 2400}, {"youngs_modulus", 3e10}, {"poisson_ratio", 0.2}});
   j["structure"] = json::parse(R"({
     "theory": "timoshenko",
-    "transformation": "corotational",
+    "transformation": "linear",
     "mass": "consistent",
     "integrator": "newmark",
     "self_weight": false,
@@ -367,7 +367,7 @@ TEST(ScenarioStructure, FullFrameParses) {
   const StructureConfig& st = s.structure;
   EXPECT_TRUE(st.present);
   EXPECT_EQ(st.theory, BeamTheoryKind::timoshenko);
-  EXPECT_EQ(st.transformation, FrameTransformKind::corotational);
+  EXPECT_EQ(st.transformation, FrameTransformKind::linear);
   EXPECT_EQ(st.mass, FrameMassKind::consistent);
   EXPECT_EQ(st.integrator, FrameIntegratorKind::newmark);
   EXPECT_FALSE(st.self_weight);
