@@ -1,5 +1,6 @@
 // The scenario schema, version 1: every key declared once here (default, unit, doc, validation).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -362,6 +363,47 @@ std::string value_text(double x) { return json(x).dump(); }
 std::string quoted(const std::string& name) { return json(name).dump(); }
 
 // The frame's cross-references and geometry (SEEDS.md A.3); returns the member names.
+// Members meet only at shared nodes: coincident nodes, a node inside another member's span, or two
+// members crossing would be silently disconnected frames (members do not join where they touch).
+void check_frame_geometry(const StructureConfig& st, const std::string& file) {
+  std::map<std::string, std::size_t> index;
+  for (std::size_t i = 0; i < st.nodes.size(); ++i) index[st.nodes[i].name] = i;
+  auto at = [&](std::size_t i) { return std::array<double, 2>{st.nodes[i].position[0], st.nodes[i].position[1]}; };
+  double scale = 0;
+  for (const auto& n : st.nodes) scale = std::max({scale, std::abs(n.position[0]), std::abs(n.position[1])});
+  const double tol = 1e-9 * std::max(scale, 1.0);
+  for (std::size_t i = 0; i < st.nodes.size(); ++i)
+    for (std::size_t j = i + 1; j < st.nodes.size(); ++j)
+      if (std::hypot(at(i)[0] - at(j)[0], at(i)[1] - at(j)[1]) <= tol)
+        throw InputError(file, "/structure/nodes/" + std::to_string(j) + "/position", value_text(st.nodes[j].position),
+                         "a position apart from node '" + st.nodes[i].name + "' (coincident nodes are not joined; use one node)");
+  auto cross = [](const std::array<double, 2>& o, const std::array<double, 2>& a, const std::array<double, 2>& b) {
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+  };
+  for (std::size_t m = 0; m < st.members.size(); ++m) {
+    const std::size_t a = index.at(st.members[m].start), b = index.at(st.members[m].end);
+    const double len = std::hypot(at(b)[0] - at(a)[0], at(b)[1] - at(a)[1]);
+    for (std::size_t i = 0; i < st.nodes.size(); ++i) {  // a node strictly inside the member's span
+      if (i == a || i == b) continue;
+      const double t = ((at(i)[0] - at(a)[0]) * (at(b)[0] - at(a)[0]) + (at(i)[1] - at(a)[1]) * (at(b)[1] - at(a)[1])) / (len * len);
+      if (t > 0 && t < 1 && std::abs(cross(at(a), at(b), at(i))) / len <= tol)
+        throw InputError(file, "/structure/members/" + std::to_string(m), quoted(st.members[m].name),
+                         "a member whose span does not pass through other nodes (node '" + st.nodes[i].name +
+                             "' lies on it; split the member there so they are joined)");
+    }
+    for (std::size_t k = m + 1; k < st.members.size(); ++k) {  // proper crossing of two spans
+      const std::size_t c = index.at(st.members[k].start), d = index.at(st.members[k].end);
+      if (c == a || c == b || d == a || d == b) continue;
+      const double d1 = cross(at(a), at(b), at(c)), d2 = cross(at(a), at(b), at(d));
+      const double d3 = cross(at(c), at(d), at(a)), d4 = cross(at(c), at(d), at(b));
+      if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
+        throw InputError(file, "/structure/members/" + std::to_string(k), quoted(st.members[k].name),
+                         "a member that does not cross member '" + st.members[m].name +
+                             "' (members join only at shared nodes; add a node at the crossing)");
+    }
+  }
+}
+
 std::set<std::string> check_structure(const Scenario& s, const std::string& file, const std::set<std::string>& bodies) {
   const StructureConfig& st = s.structure;
   const std::string base = "/structure";
@@ -435,6 +477,7 @@ std::set<std::string> check_structure(const Scenario& s, const std::string& file
                                                                          "supports nothing)");
   }
   for (std::size_t i = 0; i < st.masses.size(); ++i) node_ref(st.masses[i].node, base + "/masses/" + std::to_string(i) + "/node");
+  check_frame_geometry(st, file);
   return members;
 }
 
