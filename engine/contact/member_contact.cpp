@@ -75,22 +75,42 @@ template <int D> void MemberContact<D>::find_candidates(const Scene<D>& s) {
 }
 
 // mx_i = sum_p m_p N_ip x_p at the candidate nodes, from the particles of the tiles that reach them.
+// mx_i = sum_p m_p N_ip x_p at the candidate nodes, from the particles of the occupied tiles that
+// reach them: tile t's particles touch nodes [T t - 1, T t + T + 1], so node n is reached by tiles
+// ceil((n - T - 1) / T) .. floor((n + 1) / T) along each axis.
 template <int D> void MemberContact<D>::mass_positions(const Scene<D>& s, const TransferKernels<D>& kernels) {
   const Grid<D>& g = *s.grid;
-  IVec<D> lo = g.nodes(), hi = IVec<D>::Constant(-1);
+  constexpr int T = Grid<D>::T;
+  if (tile_flag_.size() != static_cast<std::size_t>(g.ntiles())) tile_flag_.assign(static_cast<std::size_t>(g.ntiles()), 0);
+  marked_.clear();
   for (const Candidate& c : cand_) {
-    const IVec<D> ijk = g.node_ijk(c.node);
-    lo = lo.cwiseMin(ijk);
-    hi = hi.cwiseMax(ijk);
+    const IVec<D> n = g.node_ijk(c.node);
+    IVec<D> lo, hi;
+    for (int d = 0; d < D; ++d) {
+      lo[d] = std::max(0, (n[d] - 1 + T - 1) / T - 1);  // ceil((n - T - 1) / T), n >= 0
+      hi[d] = std::min(g.tiles()[d] - 1, (n[d] + 1) / T);
+    }
+    IVec<D> t = lo;
+    while (true) {
+      Index id = t[D - 1];
+      for (int d = D - 2; d >= 0; --d) id = id * g.tiles()[d] + t[d];
+      if (!tile_flag_[id]) {
+        tile_flag_[id] = 1;
+        marked_.push_back(id);
+      }
+      int d = 0;
+      for (; d < D; ++d) {
+        if (++t[d] <= hi[d]) break;
+        t[d] = lo[d];
+      }
+      if (d == D) break;
+    }
   }
   tiles_.clear();
   const auto& occ = g.occupied();
-  for (Index k = 0; k < static_cast<Index>(occ.size()); ++k) {
-    const IVec<D> t = g.tile_coord(occ[k]);
-    bool overlap = true;  // the tile's particles touch nodes [T t - 1, T t + T + 1]
-    for (int d = 0; d < D; ++d) overlap = overlap && t[d] * Grid<D>::T - 1 <= hi[d] && t[d] * Grid<D>::T + Grid<D>::T + 1 >= lo[d];
-    if (overlap) tiles_.push_back(k);
-  }
+  for (Index k = 0; k < static_cast<Index>(occ.size()); ++k)
+    if (tile_flag_[occ[k]]) tiles_.push_back(k);
+  for (Index id : marked_) tile_flag_[id] = 0;
   for (const Candidate& c : cand_)
     for (int f = 0; f < g.nfields(); ++f) mx_[f * g.nnodes() + c.node].setZero();
   kernels.scatter_mass_position(s, tiles_, mx_);

@@ -70,7 +70,9 @@ template <int D> class MemberContact {
   std::vector<Loaded> loaded_;
   std::vector<int> slot_;          // per node: index into cand_, -1 if none
   std::vector<Vec<D>> mx_;         // sum m_p N_ip x_p, field layout; nonzero only at candidate nodes
-  std::vector<Index> tiles_;
+  std::vector<Index> tiles_;               // occupied-tile indices whose particles reach a candidate
+  std::vector<unsigned char> tile_flag_;   // per tile id, scratch
+  std::vector<Index> marked_;
   Vec2 force_ = Vec2::Zero();
   MemberContactStats stats_;
 };

@@ -60,6 +60,8 @@ template <int D> class Grid {
   const std::vector<Index>& color_tiles(int c) const { return color_tiles_[c]; }
   // Occupied tiles (tile ids, ascending); index k into this list is the "occupied-tile index".
   const std::vector<Index>& occupied() const { return occupied_; }
+  const IVec<D>& tiles() const { return tiles_; }  // tile counts per axis
+  Index ntiles() const { return ntiles_; }
   // Tile coordinates of tile id t: cells [T t, T t + T - 1] along each axis.
   IVec<D> tile_coord(Index t) const {
     IVec<D> ti;
