@@ -91,6 +91,7 @@ enum class BeamTheoryKind { euler_bernoulli, timoshenko };
 enum class FrameTransformKind { linear, corotational };
 enum class FrameMassKind { lumped, consistent };
 enum class FrameIntegratorKind { explicit_euler, newmark };
+enum class FrameInitialState { static_equilibrium, unloaded };
 
 struct SectionConfig {
   std::string type;                                  // rectangle | pipe | tapered_rectangle
@@ -129,6 +130,7 @@ struct StructureConfig {
   FrameMassKind mass = FrameMassKind::lumped;
   FrameIntegratorKind integrator = FrameIntegratorKind::explicit_euler;
   bool self_weight = true;                           // gravity on the members' own mass
+  FrameInitialState initial_state = FrameInitialState::static_equilibrium;  // with self_weight
   double rayleigh_mass = 0, rayleigh_stiffness = 0;  // C = alpha M + beta K: alpha (1/s), beta (s)
   double hht_alpha = -0.1;                           // newmark: HHT alpha in [-1/3, 0]
   std::vector<FrameNodeConfig> nodes;

@@ -285,6 +285,13 @@ void read_structure(Obj o, StructureConfig& st) {
                          "otherwise pumps (docs/verification.md)", .min = -1.0 / 3, .max = 0});
   o.end_when();
   o.boolean("self_weight", st.self_weight, Spec{.doc = "apply analysis.gravity to the members' own mass"});
+  if (o.when("self_weight", st.self_weight ? "true" : "", "true"))
+    o.choice<FrameInitialState>("initial_state", st.initial_state,
+                                {{"static", FrameInitialState::static_equilibrium}, {"unloaded", FrameInitialState::unloaded}},
+                                Spec{.doc = "frame state at t = 0: static (in equilibrium under its self-weight, linear static "
+                                            "solution; the default, as a built structure stands) or unloaded (undeformed, so it "
+                                            "oscillates about its static sag)"});
+  o.end_when();
   Obj r = o.object("rayleigh_damping", "Rayleigh damping of the frame, C = alpha M + beta K; absent: undamped");
   r.number("mass", st.rayleigh_mass, Spec{.unit = "1/s", .doc = "mass-proportional coefficient alpha", .min = 0});
   r.number("stiffness", st.rayleigh_stiffness, Spec{.unit = "s", .doc = "stiffness-proportional coefficient beta "

@@ -135,6 +135,8 @@ template <int D> Scene<D> build_scene(const Scenario& s) {
   if (s.structure.present) {
     try {
       sc.frame = std::make_unique<Frame>(build_frame_model(s));
+      // A built structure stands in equilibrium under its own weight at t = 0.
+      if (s.structure.self_weight && s.structure.initial_state == FrameInitialState::static_equilibrium) sc.frame->solve_static();
     } catch (const std::invalid_argument& e) {  // e.g. a mechanism: the parser cannot see it
       throw InputError(s.source_file, "/structure", "", std::string("a stable frame (") + e.what() + ")");
     }

@@ -112,6 +112,24 @@ TEST(MemberContact, HeavyDebrisStuckToALightPipeGainsNoEnergy) {
   }
 }
 
+// A structure stands in equilibrium under its own weight at t = 0 (initial_state static, the default):
+// the fixed-fixed beam's mid-span sits at w L^4 / (384 EI) and stays there; unloaded it swings to ~2x.
+TEST(MemberContact, SelfWeightStartsInStaticEquilibrium) {
+  J j = scene({{"mode", "separable"}}, {0, 0}, false, 0.05);
+  j["structure"]["self_weight"] = true;
+  j["structure"]["integrator"] = "explicit";
+  j["bodies"][0]["shape"] = {{"type", "box"}, {"min", {4.2, 0.5}}, {"max", {4.4, 0.7}}};  // out of reach
+  j["output"]["probes"] = {{{"name", "mid"}, {"type", "member"}, {"member", "beam"}, {"position", 0.5}, {"quantities", {"displacement"}}}};
+  const double w = 7850 * 0.2 * 9.81, EI = 2e11 * 0.2 * 0.2 * 0.2 / 12, sag = w * 256 / (384 * EI);
+  const RunOutput st = run(j);
+  const Series& u = series(st.results, "probes/mid/displacement");
+  EXPECT_NEAR(-u.data[1], sag, 1e-3 * sag);
+  EXPECT_NEAR(column_max(u, 1, true), sag, 0.01 * sag);
+  j["structure"]["initial_state"] = "unloaded";
+  const RunOutput un = run(j);
+  EXPECT_GT(column_max(series(un.results, "probes/mid/displacement"), 1, true), 1.5 * sag);
+}
+
 // An explicit frame's stability limit enters the global step (scaled by the CFL fraction); an
 // implicit (Newmark) frame does not limit it. The stiff steel beam (c = 5 km/s) governs here.
 TEST(MemberContact, ExplicitFrameLimitsTheTimeStepNewmarkDoesNot) {
