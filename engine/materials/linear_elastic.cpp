@@ -4,41 +4,73 @@
 // uses lambda* = 2 lambda mu / (lambda + 2 mu) so that sigma_zz = 0.
 // Strain energy density (complementary form, equal for a linear law):
 //   w = [(1 + nu) sigma:sigma - nu (tr sigma)^2] / (2E).
+// Optional Kelvin-Voigt damping (stiffness-proportional, beta = zeta / (pi f)): the stress carries a viscous
+// part beta [lambda tr(D) I + 2 mu D] on top of the elastic one, which is then integrated separately; its
+// power sigma_v : D V is dissipated.
 #include <memory>
+#include <vector>
 
 #include "engine/materials/material.hpp"
+#include "engine/mpm/reduce.hpp"
 
 namespace dmi {
 namespace {
 
 template <int D> class LinearElastic final : public Material<D> {
  public:
-  LinearElastic(const MaterialConfig& c, Plane plane) : rho_(c.density), el_(c.youngs_modulus, c.poisson_ratio), plane_(plane) {
+  LinearElastic(const MaterialConfig& c, Plane plane)
+      : rho_(c.density), el_(c.youngs_modulus, c.poisson_ratio), plane_(plane),
+        beta_(c.damping_ratio > 0 ? c.damping_ratio / (3.14159265358979323846 * c.damping_frequency) : 0.0) {
     lambda_in_ = plane == Plane::stress ? 2 * el_.lambda * el_.mu / (el_.lambda + 2 * el_.mu) : el_.lambda;
   }
   double density() const override { return rho_; }
   double wave_speed() const override { return el_.wave_speed(rho_, plane_); }
+  double damping_time() const override { return beta_; }
+  double dissipated() const override { return dissipated_; }
+  void attach(const Particles<D>& p, Index begin, Index end) override {
+    if (beta_ <= 0) return;
+    elastic_.resize(p.size(), Mat<D>::Zero());
+    elastic_zz_.resize(p.size(), 0.0);
+    power_.resize(p.size(), 0.0);
+    for (Index i = begin; i < end; ++i) {
+      elastic_[i] = p.stress[i];
+      elastic_zz_[i] = p.stress_zz[i];
+    }
+  }
 
   void update(Particles<D>& p, Index begin, Index end, double dt) override {
-    const double lam = lambda_in_, mu = el_.mu, lam3 = el_.lambda;
+    const double lam = lambda_in_, mu = el_.mu, lam3 = el_.lambda, beta = beta_;
     const bool strain2d = D == 2 && plane_ == Plane::strain;
 #pragma omp parallel for schedule(static) if (end - begin > kParallelMin)
     for (Index i = begin; i < end; ++i) {
       const Mat<D>& L = p.L[i];
       const Mat<D> Dm = 0.5 * (L + L.transpose());
       const Mat<D> W = 0.5 * (L - L.transpose());
-      Mat<D>& s = p.stress[i];
+      Mat<D>& s = beta > 0 ? elastic_[i] : p.stress[i];
+      double& szz = beta > 0 ? elastic_zz_[i] : p.stress_zz[i];
       const double trD = Dm.trace();
-      s += dt * (lam * trD * Mat<D>::Identity() + 2 * mu * Dm) + dt * (W * s - s * W);
-      if (strain2d) p.stress_zz[i] += dt * lam3 * trD;
+      const Mat<D> rate = lam * trD * Mat<D>::Identity() + 2 * mu * Dm;
+      s += dt * rate + dt * (W * s - s * W);
+      if (strain2d) szz += dt * lam3 * trD;
       p.vol[i] = p.vol0[i] * p.F[i].determinant();
+      if (beta > 0) {  // total = elastic + viscous beta C:D; power sigma_v : D (D_zz = 0 in plane strain)
+        p.stress[i] = s + beta * rate;
+        p.stress_zz[i] = szz + (strain2d ? beta * lam3 * trD : 0.0);
+        power_[i] = beta * (rate.cwiseProduct(Dm)).sum() * p.vol[i];
+      }
     }
+    if (beta > 0) dissipated_ += dt * deterministic_sum(end - begin, [&](Index k) { return power_[begin + k]; });
   }
 
   double strain_energy(const Particles<D>& p, Index begin, Index end) const override {
     double e = 0;
     for (Index i = begin; i < end; ++i) {
-      const Voigt6 s = voigt_stress(p, static_cast<std::size_t>(i));
+      Voigt6 s = voigt_stress(p, static_cast<std::size_t>(i));
+      if (beta_ > 0) {  // the elastic part only
+        const Mat<D>& t = elastic_[i];
+        if constexpr (D == 2) s << t(0, 0), t(1, 1), elastic_zz_[i], t(0, 1), 0.0, 0.0;
+        else s << t(0, 0), t(1, 1), t(2, 2), t(0, 1), t(1, 2), t(0, 2);
+      }
       const double ss = s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + 2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
       const double tr = s[0] + s[1] + s[2];
       e += p.vol[i] * ((1 + el_.nu) * ss - el_.nu * tr * tr) / (2 * el_.E);
@@ -50,7 +82,11 @@ template <int D> class LinearElastic final : public Material<D> {
   double rho_;
   Elastic el_;
   Plane plane_;
+  double beta_;  // s
   double lambda_in_;
+  std::vector<Mat<D>> elastic_;     // elastic stress (damped laws only), by particle index
+  std::vector<double> elastic_zz_, power_;
+  double dissipated_ = 0;
 };
 
 }  // namespace

@@ -25,6 +25,11 @@ template <int D> class Material {
   virtual void update(Particles<D>& p, Index begin, Index end, double dt) = 0;
   // Stored (recoverable) strain energy of particles [begin, end) (J).
   virtual double strain_energy(const Particles<D>& p, Index begin, Index end) const = 0;
+  // Energy dissipated since t = 0 (viscosity, plasticity) by all bodies of this material (J).
+  virtual double dissipated() const { return 0.0; }
+  // Stiffness-proportional viscous time beta (s): the stress has a part beta C:D. It lowers the
+  // explicit stable step to (2/omega)(sqrt(1 + zeta^2) - zeta), zeta = beta omega / 2.
+  virtual double damping_time() const { return 0.0; }
 };
 
 // Lamé constants from E and nu (3D / plane strain).

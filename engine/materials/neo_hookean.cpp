@@ -2,19 +2,32 @@
 //   W = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2,   sigma = mu/J (B - I) + lambda ln J / J I,
 // B = F F^T, J = det F. Plane strain: F_zz = 1. Plane stress: F_zz = s solves sigma_zz = 0,
 //   g(s) = mu (s^2 - 1) + lambda ln(J2 s) = 0   (Newton from s = 1, step-limited; g'(1) = lambda + 2 mu > 0).
+// Optional Kelvin-Voigt damping (tyre rubber): sigma += beta [lambda* tr(D) I + 2 mu D], beta = zeta / (pi f),
+// lambda* the plane-stress modulus in plane stress; its power is dissipated.
 #include <cmath>
 #include <memory>
+#include <vector>
 
 #include "engine/materials/material.hpp"
+#include "engine/mpm/reduce.hpp"
 
 namespace dmi {
 namespace {
 
 template <int D> class NeoHookean final : public Material<D> {
  public:
-  NeoHookean(const MaterialConfig& c, Plane plane) : rho_(c.density), el_(c.youngs_modulus, c.poisson_ratio), plane_(plane) {}
+  NeoHookean(const MaterialConfig& c, Plane plane)
+      : rho_(c.density), el_(c.youngs_modulus, c.poisson_ratio), plane_(plane),
+        beta_(c.damping_ratio > 0 ? c.damping_ratio / (3.14159265358979323846 * c.damping_frequency) : 0.0) {
+    lambda_v_ = plane == Plane::stress ? 2 * el_.lambda * el_.mu / (el_.lambda + 2 * el_.mu) : el_.lambda;
+  }
   double density() const override { return rho_; }
   double wave_speed() const override { return el_.wave_speed(rho_, plane_); }
+  double damping_time() const override { return beta_; }
+  double dissipated() const override { return dissipated_; }
+  void attach(const Particles<D>& p, Index, Index) override {
+    if (beta_ > 0) power_.resize(p.size(), 0.0);
+  }
 
   // Out-of-plane stretch F_zz for an in-plane Jacobian J2.
   double stretch_zz(double J2) const {
@@ -30,8 +43,8 @@ template <int D> class NeoHookean final : public Material<D> {
     return s;
   }
 
-  void update(Particles<D>& p, Index begin, Index end, double /*dt*/) override {
-    const double mu = el_.mu, lam = el_.lambda;
+  void update(Particles<D>& p, Index begin, Index end, double dt) override {
+    const double mu = el_.mu, lam = el_.lambda, beta = beta_, lamv = lambda_v_;
 #pragma omp parallel for schedule(static) if (end - begin > kParallelMin)
     for (Index i = begin; i < end; ++i) {
       const Mat<D>& F = p.F[i];
@@ -41,7 +54,15 @@ template <int D> class NeoHookean final : public Material<D> {
       p.stress[i] = (mu / J) * (F * F.transpose() - Mat<D>::Identity()) + (lam * lnJ / J) * Mat<D>::Identity();
       if constexpr (D == 2) p.stress_zz[i] = (mu / J) * (s * s - 1) + lam * lnJ / J;
       p.vol[i] = p.vol0[i] * J;
+      if (beta > 0) {
+        const Mat<D> Dm = 0.5 * (p.L[i] + p.L[i].transpose());
+        const Mat<D> sv = beta * (lamv * Dm.trace() * Mat<D>::Identity() + 2 * mu * Dm);
+        p.stress[i] += sv;
+        if constexpr (D == 2) if (plane_ == Plane::strain) p.stress_zz[i] += beta * lam * Dm.trace();
+        power_[i] = sv.cwiseProduct(Dm).sum() * p.vol[i];
+      }
     }
+    if (beta > 0) dissipated_ += dt * deterministic_sum(end - begin, [&](Index k) { return power_[begin + k]; });
   }
 
   double strain_energy(const Particles<D>& p, Index begin, Index end) const override {
@@ -59,6 +80,9 @@ template <int D> class NeoHookean final : public Material<D> {
   double rho_;
   Elastic el_;
   Plane plane_;
+  double beta_, lambda_v_;  // s, Pa
+  std::vector<double> power_;
+  double dissipated_ = 0;
 };
 
 }  // namespace

@@ -6,6 +6,7 @@ namespace dmi {
 
 template <int D> std::unique_ptr<Material<D>> make_linear_elastic(const MaterialConfig&, Plane);
 template <int D> std::unique_ptr<Material<D>> make_neo_hookean(const MaterialConfig&, Plane);
+template <int D> std::unique_ptr<Material<D>> make_drucker_prager(const MaterialConfig&, Plane);
 
 template <int D> std::unique_ptr<Material<D>> MaterialRegistry<D>::make(const MaterialConfig& c, Plane plane) const {
   auto it = factories_.find(c.model);
@@ -16,6 +17,7 @@ template <int D> std::unique_ptr<Material<D>> MaterialRegistry<D>::make(const Ma
 template <int D> void register_materials(MaterialRegistry<D>& r) {
   r.add("linear_elastic", make_linear_elastic<D>);
   r.add("neo_hookean", make_neo_hookean<D>);
+  r.add("drucker_prager", make_drucker_prager<D>);
 }
 
 template class MaterialRegistry<2>;

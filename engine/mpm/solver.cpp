@@ -115,8 +115,14 @@ template <int D> double Solver<D>::stable_time_step(double limit) const {
     double vmax = 0;
 #pragma omp parallel for schedule(static) reduction(max : vmax) if (b.end - b.begin > kParallelMin)
     for (Index i = b.begin; i < b.end; ++i) vmax = std::max(vmax, P.v[i].norm());
-    const double c = scene_.materials[b.material]->wave_speed();
-    dt = std::min(dt, scene_.options.cfl * scene_.grid->h() / (c + vmax));
+    const Material<D>& mat = *scene_.materials[b.material];
+    const double h = scene_.grid->h(), c = mat.wave_speed();
+    double dt_b = h / (c + vmax);
+    if (const double beta = mat.damping_time(); beta > 0) {  // Kelvin-Voigt: omega_max ~ 2 (c + |v|) / h
+      const double w = 2 / dt_b, zeta = 0.5 * beta * w;
+      dt_b = (2 / w) * (std::sqrt(1 + zeta * zeta) - zeta);
+    }
+    dt = std::min(dt, scene_.options.cfl * dt_b);
   }
   // An explicit frame limits the step (2 / omega_max, scaled by the same fraction); Newmark does not.
   if (scene_.frame) dt = std::min(dt, scene_.options.cfl * scene_.frame->stable_time_step());
@@ -131,6 +137,7 @@ template <int D> Diagnostics<D> Solver<D>::diagnostics() const {
   d.gravity_work = deterministic_sum(np, [&](Index i) { return P.mass[i] * scene_.gravity.dot(P.x[i] - P.x0[i]); });
   for (int c = 0; c < D; ++c) d.momentum[c] = deterministic_sum(np, [&](Index i) { return P.mass[i] * P.v[i][c]; });
   for (const Body& b : scene_.bodies) d.strain += scene_.materials[b.material]->strain_energy(P, b.begin, b.end);
+  for (const auto& m : scene_.materials) d.dissipated += m->dissipated();
   d.boundary_work = boundary_work_;
   if (const Frame* f = scene_.frame.get()) {
     d.frame_kinetic = f->kinetic_energy();

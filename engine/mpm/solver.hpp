@@ -12,6 +12,7 @@ namespace dmi {
 
 template <int D> struct Diagnostics {
   double kinetic = 0, strain = 0;  // J
+  double dissipated = 0;           // J, by material viscosity and plasticity since t = 0
   double gravity_work = 0;         // J, work of gravity since t = 0: sum m g.(x - x0)
   double boundary_work = 0;        // J, work of walls and prescribed velocities since t = 0
   Vec<D> momentum = Vec<D>::Zero();  // kg m/s (continua only)
@@ -23,7 +24,8 @@ template <int D> struct Diagnostics {
   // gravity and walls, minus E_0. Member contact is internal to the system, so its losses (and any
   // numerical loss or gain) show here: negative = dissipated.
   double balance(double e0) const {
-    return kinetic + strain + frame_kinetic + frame_strain + frame_damping - gravity_work - boundary_work - frame_gravity_work - e0;
+    return kinetic + strain + dissipated + frame_kinetic + frame_strain + frame_damping - gravity_work - boundary_work -
+           frame_gravity_work - e0;
   }
 };
 

@@ -44,6 +44,9 @@ struct MaterialConfig {
   double density = 0.0;                              // kg/m^3
   double youngs_modulus = 0.0;                       // Pa
   double poisson_ratio = 0.0;
+  double damping_ratio = 0.0, damping_frequency = 0.0;   // -, Hz (linear_elastic, neo_hookean)
+  double cohesion = 0.0;                                  // Pa (drucker_prager)
+  double friction_angle = 0.0, dilation_angle = 0.0;      // deg (drucker_prager)
 };
 
 struct ShapeConfig {

@@ -69,15 +69,39 @@ void read_grid(Obj o, GridConfig& g) {
   o.finish();
 }
 
+bool when_any(Obj& o, const std::string& key, const std::string& value, const std::vector<std::string>& options);
+
 void read_material(Obj& o, MaterialConfig& m) {
   o.string("name", m.name, Spec{.doc = "name that bodies refer to", .required = true});
   m.model = "linear_elastic";
-  o.string("model", m.model, Spec{.doc = "material law: linear_elastic (small strain, Jaumann rate) | neo_hookean (compressible, large strain)"});
-  if (!o.documenting() && m.model != "linear_elastic" && m.model != "neo_hookean")
-    o.fail("model", nullptr, "linear_elastic or neo_hookean (got '" + m.model + "')");
+  o.string("model", m.model, Spec{.doc = "material law: linear_elastic (small strain, Jaumann rate) | neo_hookean (compressible, "
+                                         "large strain; rubber, tyre buffers) | drucker_prager (elastic-perfectly plastic "
+                                         "Drucker-Prager matched to Mohr-Coulomb in plane strain; granular debris)"});
+  if (!o.documenting() && m.model != "linear_elastic" && m.model != "neo_hookean" && m.model != "drucker_prager")
+    o.fail("model", nullptr, "linear_elastic, neo_hookean or drucker_prager (got '" + m.model + "')");
   o.number("density", m.density, positive("kg/m^3", "mass density", true));
   o.number("youngs_modulus", m.youngs_modulus, positive("Pa", "Young's modulus E", true));
   o.number("poisson_ratio", m.poisson_ratio, Spec{.doc = "Poisson's ratio", .min = -1, .max = 0.5, .min_open = true, .max_open = true, .required = true});
+  if (when_any(o, "model", m.model, {"linear_elastic", "neo_hookean"})) {
+    o.number("damping_ratio", m.damping_ratio, Spec{.doc = "viscous (Kelvin-Voigt, stiffness-proportional) damping ratio zeta reached "
+                                                            "at damping_frequency: sigma_v = beta C:D, beta = zeta / (pi f); 0 = elastic",
+                                                    .min = 0, .max = 1});
+    o.number("damping_frequency", m.damping_frequency, Spec{.unit = "Hz", .doc = "frequency f at which the damping ratio holds (zeta grows "
+                                                                                 "with frequency as in Rayleigh beta damping); required with a damping ratio",
+                                                            .min = 0, .min_open = true});
+    if (!o.documenting() && m.damping_ratio > 0 && !(m.damping_frequency > 0))
+      o.fail("damping_frequency", nullptr, "a frequency > 0 (Hz) with damping_ratio " + std::to_string(m.damping_ratio));
+  }
+  o.end_when();
+  if (o.when("model", m.model, "drucker_prager")) {
+    o.number("cohesion", m.cohesion, Spec{.unit = "Pa", .doc = "cohesion c (Mohr-Coulomb)", .min = 0});
+    o.number("friction_angle", m.friction_angle, Spec{.unit = "deg", .doc = "internal friction angle phi", .min = 0, .max = 70, .required = true});
+    o.number("dilation_angle", m.dilation_angle, Spec{.unit = "deg", .doc = "dilation angle psi (0: no plastic volume change), at most phi",
+                                                      .min = 0, .max = 70});
+    if (!o.documenting() && m.dilation_angle > m.friction_angle)
+      o.fail("dilation_angle", nullptr, "a dilation angle <= friction_angle (" + std::to_string(m.friction_angle) + " deg)");
+  }
+  o.end_when();
 }
 
 void read_shape(Obj o, ShapeConfig& s) {
@@ -514,6 +538,10 @@ void check_semantics(const Scenario& s, const std::string& file) {
     const std::string p = "/bodies/" + std::to_string(i);
     dup(bodies, b.name, p + "/name");
     if (!mats.count(b.material)) throw InputError(file, p + "/material", "\"" + b.material + "\"", "the name of one of the materials");
+    for (const auto& m : s.materials)
+      if (m.name == b.material && m.model == "drucker_prager" && s.analysis.plane == Plane::stress)
+        throw InputError(file, p + "/material", "\"" + b.material + "\"", "a material other than drucker_prager in plane stress "
+                                                                        "(Drucker-Prager debris needs plane strain or 3D)");
     DVec lo(dim), hi(dim);
     for (int d = 0; d < dim; ++d) {
       lo[d] = b.shape.type == "box" ? b.shape.min[d] : b.shape.center[d] - b.shape.radius;

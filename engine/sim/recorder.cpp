@@ -17,7 +17,8 @@ template <int D> Series& Recorder<D>::add(const std::string& path, const std::st
 
 template <int D> Recorder<D>::Recorder(const Solver<D>& solver, const Scenario& s) {
   const Scene<D>& sc = solver.scene();
-  for (const char* e : {"kinetic", "strain", "gravity_work", "boundary_work", "balance_error"}) add(std::string("energy/") + e, "J", {"value"});
+  for (const char* e : {"kinetic", "strain", "gravity_work", "boundary_work", "balance_error", "dissipated"})
+    add(std::string("energy/") + e, "J", {"value"});
   add("momentum", "kg m/s", axes<D>());
   add("dt", "s", {"value"});
   add("step", "-", {"value"});
@@ -85,7 +86,7 @@ template <int D> void Recorder<D>::sample(const Solver<D>& solver, double dt) {
   const auto d = solver.diagnostics();
   time_.push_back(solver.time());
   std::size_t k = 0;
-  for (double e : {d.kinetic, d.strain, d.gravity_work, d.boundary_work, d.balance(e0_)}) series_[k++].data.push_back(e);
+  for (double e : {d.kinetic, d.strain, d.gravity_work, d.boundary_work, d.balance(e0_), d.dissipated}) series_[k++].data.push_back(e);
   push<D>(series_[k++], d.momentum);
   series_[k++].data.push_back(dt);
   series_[k++].data.push_back(static_cast<double>(solver.steps()));

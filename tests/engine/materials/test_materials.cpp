@@ -107,3 +107,77 @@ TEST(NeoHookean, SmallStrainLimitAndPlaneStress) {
 
 }  // namespace
 }  // namespace dmi
+
+namespace dmi {
+namespace {
+
+MaterialConfig dp(double c, double phi_deg, double psi_deg) {
+  MaterialConfig m;
+  m.name = "debris";
+  m.model = "drucker_prager";
+  m.density = 2000;
+  m.youngs_modulus = 5e7;
+  m.poisson_ratio = 0.3;
+  m.cohesion = c;
+  m.friction_angle = phi_deg;
+  m.dilation_angle = psi_deg;
+  return m;
+}
+
+// Pure shear (W = 0) at confining pressure p0, psi = 0: the shear stress rises elastically (mu gamma) and
+// stays at the plane-strain Mohr-Coulomb match tau = k + alpha p0 with
+// alpha = 3 tan(phi) / sqrt(9 + 12 tan^2 phi), k = 3 c / sqrt(9 + 12 tan^2 phi); p does not change; the
+// plastic work is tau times the plastic shear strain.
+TEST(DruckerPrager, PureShearPlateauAndPlasticWork) {
+  const double c = 5e3, phi = 30, p0 = 2e4, rate = 1.0, dt = 1e-5;
+  const double t = std::tan(phi * 3.14159265358979323846 / 180), m = 3 / std::sqrt(9 + 12 * t * t);
+  const double tau_y = m * c + m * t * p0;
+  auto mat = make<2>(dp(c, phi, 0), Plane::strain);
+  auto p = one_particle<2>();
+  p.stress[0] = -p0 * Mat<2>::Identity();
+  p.stress_zz[0] = -p0;
+  mat->attach(p, 0, 1);
+  p.L[0] << 0, 0.5 * rate, 0.5 * rate, 0;  // engineering shear rate gamma_dot = rate
+  const double mu = 5e7 / 2.6;
+  const int steps = 4000;  // gamma = 0.04, yield at tau_y / mu ~ 1.1e-3
+  for (int k = 0; k < steps; ++k) mat->update(p, 0, 1, dt);
+  EXPECT_NEAR(p.stress[0](0, 1), tau_y, 1e-9 * tau_y);
+  EXPECT_NEAR(p.stress[0].trace() + p.stress_zz[0], -3 * p0, 1e-9 * p0);
+  const double gamma = steps * dt * rate, gamma_p = gamma - tau_y / mu;
+  EXPECT_NEAR(mat->dissipated(), tau_y * gamma_p * 1e-3, 2e-3 * tau_y * gamma_p * 1e-3);  // volume 1e-3 m^3
+}
+
+// Cohesionless material pulled apart cannot carry tension: it returns to the apex, zero stress, and
+// the plastic flow at zero stress does no work.
+TEST(DruckerPrager, CohesionlessCarriesNoTension) {
+  auto mat = make<3>(dp(0, 35, 0), Plane::none);
+  auto p = one_particle<3>();
+  mat->attach(p, 0, 1);
+  p.L[0] = 1e-2 * Mat<3>::Identity();
+  mat->update(p, 0, 1, 1e-3);
+  EXPECT_LT(p.stress[0].norm(), 1e-9);
+  EXPECT_EQ(mat->dissipated(), 0.0);
+}
+
+// Kelvin-Voigt damping (beta = zeta / (pi f)): a uniaxial strain rate eps_dot adds the viscous stress
+// beta (lambda + 2 mu) eps_dot and dissipates beta (lambda + 2 mu) eps_dot^2 V per unit time; the strain energy
+// is the elastic part only.
+TEST(LinearElastic, ViscousDampingStressAndDissipation) {
+  MaterialConfig c = elastic("linear_elastic", 1e7, 0.25);
+  c.damping_ratio = 0.05;
+  c.damping_frequency = 10;
+  const double beta = 0.05 / (3.14159265358979323846 * 10), lam = 4e6, mu = 4e6, rate = 0.1, dt = 1e-4;
+  auto m = make<2>(c, Plane::strain);
+  EXPECT_DOUBLE_EQ(m->damping_time(), beta);
+  auto p = one_particle<2>();
+  m->attach(p, 0, 1);
+  p.L[0](0, 0) = rate;
+  for (int k = 0; k < 10; ++k) m->update(p, 0, 1, dt);
+  const double eps = 10 * dt * rate;
+  EXPECT_NEAR(p.stress[0](0, 0), (lam + 2 * mu) * (eps + beta * rate), 1e-9 * (lam + 2 * mu) * eps);
+  EXPECT_NEAR(m->dissipated(), 10 * dt * beta * (lam + 2 * mu) * rate * rate * 1e-3, 1e-9);
+  EXPECT_NEAR(m->strain_energy(p, 0, 1), 0.5 * (lam + 2 * mu) * eps * eps * 1e-3, 1e-9 * (lam + 2 * mu) * eps * eps * 1e-3);
+}
+
+}  // namespace
+}  // namespace dmi

@@ -1,0 +1,114 @@
+// Drucker-Prager, elastic-perfectly plastic, small strain with the Jaumann rate (granular debris).
+// Stresses tension positive; p = tr(sigma)/3, s = dev(sigma), q = sqrt(J2) = sqrt(s:s/2).
+//   yield     f = q + alpha p - k <= 0,       flow potential g = q + alpha_psi p (non-associated, psi <= phi)
+//   plane-strain match to Mohr-Coulomb (c, phi):  alpha = 3 tan(phi) / sqrt(9 + 12 tan^2(phi)),
+//                                                   k = 3 c / sqrt(9 + 12 tan^2(phi))       (same for psi)
+//   return (de Souza Neto, Peric & Owen 2008, sec. 8.3.3): from the elastic trial state,
+//     dgamma = f_tr / (G + K alpha alpha_psi),  q = q_tr - G dgamma,  p = p_tr - K alpha_psi dgamma;
+//     if q would be < 0 the state returns to the apex: s = 0, p = k / alpha.
+// The full 3D stress is updated (sigma_zz kept in plane strain; plane stress is refused by the parser).
+// Dissipated power per particle: sigma : d_eps_p with d_eps_p = C^-1 (sigma_tr - sigma) (exact for any return).
+// Stored energy: the elastic complementary energy of the stress, as for linear elasticity.
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "engine/materials/material.hpp"
+#include "engine/mpm/reduce.hpp"
+
+namespace dmi {
+namespace {
+
+using Mat3 = Eigen::Matrix3d;
+
+template <int D> class DruckerPrager final : public Material<D> {
+ public:
+  DruckerPrager(const MaterialConfig& c, Plane plane) : rho_(c.density), el_(c.youngs_modulus, c.poisson_ratio), plane_(plane) {
+    const double deg = 3.14159265358979323846 / 180;
+    auto match = [](double angle) { const double t = std::tan(angle); return 3 / std::sqrt(9 + 12 * t * t); };
+    alpha_ = match(c.friction_angle * deg) * std::tan(c.friction_angle * deg);
+    alpha_psi_ = match(c.dilation_angle * deg) * std::tan(c.dilation_angle * deg);
+    k_ = match(c.friction_angle * deg) * c.cohesion;
+    K_ = el_.lambda + 2 * el_.mu / 3;
+  }
+  double density() const override { return rho_; }
+  double wave_speed() const override { return el_.wave_speed(rho_, plane_); }
+  double dissipated() const override { return dissipated_; }
+  void attach(const Particles<D>& p, Index, Index) override { power_.resize(p.size(), 0.0); }
+
+  // Full 3D stress of a particle, and back.
+  static Mat3 full(const Particles<D>& p, Index i) {
+    Mat3 s = Mat3::Zero();
+    s.template topLeftCorner<D, D>() = p.stress[i];
+    if constexpr (D == 2) s(2, 2) = p.stress_zz[i];
+    return s;
+  }
+
+  // Returns sigma onto the yield surface; the plastic strain increment's work sigma : C^-1 (tr - sigma).
+  double return_map(Mat3& s) const {
+    const double G = el_.mu, K = K_;
+    const double p = s.trace() / 3;
+    const Mat3 dev = s - p * Mat3::Identity();
+    const double q = std::sqrt(0.5 * dev.squaredNorm());
+    const double f = q + alpha_ * p - k_;
+    if (f <= 0) return 0.0;
+    const Mat3 trial = s;
+    const double dg = f / (G + K * alpha_ * alpha_psi_);
+    if (q - G * dg >= 0) {
+      s = (q > 0 ? (q - G * dg) / q : 0.0) * dev + (p - K * alpha_psi_ * dg) * Mat3::Identity();
+    } else {  // apex (cohesionless: p = 0 and no stress)
+      s = (alpha_ > 0 ? k_ / alpha_ : p) * Mat3::Identity();
+    }
+    const Mat3 d = trial - s;  // C^-1 d = dev(d) / 2G + tr(d) / 9K I
+    const double trd = d.trace();
+    const Mat3 eps_p = (d - trd / 3 * Mat3::Identity()) / (2 * G) + trd / (9 * K) * Mat3::Identity();
+    return (s.cwiseProduct(eps_p)).sum();
+  }
+
+  void update(Particles<D>& p, Index begin, Index end, double dt) override {
+    const double lam = el_.lambda, mu = el_.mu;
+#pragma omp parallel for schedule(static) if (end - begin > kParallelMin)
+    for (Index i = begin; i < end; ++i) {
+      Mat3 L = Mat3::Zero();
+      L.template topLeftCorner<D, D>() = p.L[i];
+      const Mat3 Dm = 0.5 * (L + L.transpose()), W = 0.5 * (L - L.transpose());
+      Mat3 s = full(p, i);
+      s += dt * (lam * Dm.trace() * Mat3::Identity() + 2 * mu * Dm) + dt * (W * s - s * W);  // elastic trial
+      const double w = return_map(s);
+      p.stress[i] = s.template topLeftCorner<D, D>();
+      if constexpr (D == 2) p.stress_zz[i] = s(2, 2);
+      p.vol[i] = p.vol0[i] * p.F[i].determinant();
+      power_[i] = w * p.vol[i];
+    }
+    dissipated_ += deterministic_sum(end - begin, [&](Index k) { return power_[begin + k]; });
+  }
+
+  double strain_energy(const Particles<D>& p, Index begin, Index end) const override {
+    double e = 0;
+    for (Index i = begin; i < end; ++i) {
+      const Voigt6 s = voigt_stress(p, static_cast<std::size_t>(i));
+      const double ss = s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + 2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
+      const double tr = s[0] + s[1] + s[2];
+      e += p.vol[i] * ((1 + el_.nu) * ss - el_.nu * tr * tr) / (2 * el_.E);
+    }
+    return e;
+  }
+
+ private:
+  double rho_;
+  Elastic el_;
+  Plane plane_;
+  double alpha_ = 0, alpha_psi_ = 0, k_ = 0, K_ = 0;
+  std::vector<double> power_;
+  double dissipated_ = 0;
+};
+
+}  // namespace
+
+template <int D> std::unique_ptr<Material<D>> make_drucker_prager(const MaterialConfig& c, Plane plane) {
+  return std::make_unique<DruckerPrager<D>>(c, plane);
+}
+template std::unique_ptr<Material<2>> make_drucker_prager<2>(const MaterialConfig&, Plane);
+template std::unique_ptr<Material<3>> make_drucker_prager<3>(const MaterialConfig&, Plane);
+
+}  // namespace dmi
