@@ -1,0 +1,146 @@
+#include "engine/solid/element.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace dmi::solid {
+
+void Elastic::validate() const {
+  if (!(E_Pa > 0) || !std::isfinite(E_Pa)) throw std::invalid_argument("Elastic: E_Pa must be > 0");
+  if (!(nu > -1 && nu < 0.5)) throw std::invalid_argument("Elastic: nu must lie in (-1, 0.5)");
+  if (!(thickness_m > 0)) throw std::invalid_argument("Elastic: thickness_m must be > 0");
+  if (!(density_kg_m3 >= 0)) throw std::invalid_argument("Elastic: density_kg_m3 must be >= 0");
+}
+
+const Eigen::MatrixXd& corner_signs(int dim) {
+  static const Eigen::MatrixXd s2 = (Eigen::MatrixXd(4, 2) << -1, -1, 1, -1, 1, 1, -1, 1).finished();
+  static const Eigen::MatrixXd s3 = (Eigen::MatrixXd(8, 3) << -1, -1, -1, 1, -1, -1, 1, 1, -1, -1, 1, -1,  //
+                                     -1, -1, 1, 1, -1, 1, 1, 1, 1, -1, 1, 1).finished();
+  if (dim == 2) return s2;
+  if (dim == 3) return s3;
+  throw std::invalid_argument("corner_signs: dim must be 2 or 3, got " + std::to_string(dim));
+}
+
+void shape_functions(int dim, const Eigen::VectorXd& xi, Eigen::VectorXd& N, Eigen::MatrixXd& dN) {
+  const Eigen::MatrixXd& s = corner_signs(dim);
+  if (xi.size() != dim) throw std::invalid_argument("shape_functions: xi must have dim entries");
+  const int nen = static_cast<int>(s.rows());
+  const double scale = 1.0 / (1 << dim);
+  N.resize(nen);
+  dN.resize(nen, dim);
+  for (int a = 0; a < nen; ++a) {
+    Eigen::VectorXd f(dim);  // 1D factors (1 + s_ad xi_d)
+    for (int d = 0; d < dim; ++d) f(d) = 1 + s(a, d) * xi(d);
+    N(a) = scale * f.prod();
+    for (int d = 0; d < dim; ++d) {
+      double p = scale * s(a, d);
+      for (int e = 0; e < dim; ++e)
+        if (e != d) p *= f(e);
+      dN(a, d) = p;
+    }
+  }
+}
+
+Eigen::MatrixXd gauss_points(int dim) { return corner_signs(dim) / std::sqrt(3.0); }
+
+Eigen::MatrixXd elasticity_matrix(const Elastic& mat) {
+  mat.validate();
+  const double E = mat.E_Pa, nu = mat.nu;
+  if (mat.analysis == Analysis::solid3d) {
+    const double lam = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+    Eigen::MatrixXd D = Eigen::MatrixXd::Zero(6, 6);
+    D.topLeftCorner(3, 3).setConstant(lam);
+    for (int i = 0; i < 3; ++i) D(i, i) += 2 * mu, D(i + 3, i + 3) = mu;
+    return D;
+  }
+  Eigen::MatrixXd D(3, 3);
+  if (mat.analysis == Analysis::plane_strain) {
+    const double c = E / ((1 + nu) * (1 - 2 * nu));
+    D << c * (1 - nu), c * nu, 0, c * nu, c * (1 - nu), 0, 0, 0, c * (1 - 2 * nu) / 2;
+  } else {
+    const double c = E / (1 - nu * nu);
+    D << c, c * nu, 0, c * nu, c, 0, 0, 0, c * (1 - nu) / 2;
+  }
+  return D;
+}
+
+Eigen::MatrixXd strain_displacement(const Eigen::MatrixXd& X, const Eigen::VectorXd& xi, double* detJ) {
+  const int dim = static_cast<int>(X.cols()), nen = static_cast<int>(X.rows());
+  if (nen != (1 << dim)) throw std::invalid_argument("strain_displacement: X must be 2^dim x dim");
+  Eigen::VectorXd N;
+  Eigen::MatrixXd dN;
+  shape_functions(dim, xi, N, dN);
+  const Eigen::MatrixXd J = X.transpose() * dN;  // J_ij = dx_i / dxi_j
+  const double det = J.determinant();
+  if (detJ) *detJ = det;
+  if (!(std::abs(det) > 0)) throw std::invalid_argument("strain_displacement: singular element Jacobian");
+  const Eigen::MatrixXd G = dN * J.inverse();  // dN_a / dx_j
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(dim == 3 ? 6 : 3, dim * nen);
+  for (int a = 0; a < nen; ++a) {
+    const int c = dim * a;
+    if (dim == 3) {
+      const double gx = G(a, 0), gy = G(a, 1), gz = G(a, 2);
+      B(0, c) = gx, B(1, c + 1) = gy, B(2, c + 2) = gz;
+      B(3, c + 1) = gz, B(3, c + 2) = gy;
+      B(4, c) = gz, B(4, c + 2) = gx;
+      B(5, c) = gy, B(5, c + 1) = gx;
+    } else {
+      const double gx = G(a, 0), gz = G(a, 1);
+      B(0, c) = gx, B(1, c + 1) = gz, B(2, c) = gz, B(2, c + 1) = gx;
+    }
+  }
+  return B;
+}
+
+namespace {
+void check_dims(const Eigen::MatrixXd& X, const Elastic& mat) {
+  if (X.cols() != mat.dim())
+    throw std::invalid_argument("element: solid3d needs hex8 (3 columns), plane analyses quad4 (2 columns)");
+}
+double volume_factor(const Elastic& mat) { return mat.dim() == 2 ? mat.thickness_m : 1.0; }
+}  // namespace
+
+Eigen::MatrixXd element_stiffness(const Eigen::MatrixXd& X, const Elastic& mat) {
+  check_dims(X, mat);
+  const Eigen::MatrixXd D = elasticity_matrix(mat), gp = gauss_points(mat.dim());
+  const int n = static_cast<int>(X.size());
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
+  for (int g = 0; g < gp.rows(); ++g) {
+    double detJ = 0;
+    const Eigen::MatrixXd B = strain_displacement(X, gp.row(g).transpose(), &detJ);
+    K.noalias() += B.transpose() * D * B * (detJ * volume_factor(mat));
+  }
+  return K;
+}
+
+Eigen::MatrixXd element_mass(const Eigen::MatrixXd& X, const Elastic& mat) {
+  check_dims(X, mat);
+  mat.validate();
+  const int dim = mat.dim(), nen = static_cast<int>(X.rows());
+  const Eigen::MatrixXd gp = gauss_points(dim);
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(dim * nen, dim * nen);
+  Eigen::VectorXd N;
+  Eigen::MatrixXd dN;
+  for (int g = 0; g < gp.rows(); ++g) {
+    shape_functions(dim, gp.row(g).transpose(), N, dN);
+    const double w = mat.density_kg_m3 * (X.transpose() * dN).determinant() * volume_factor(mat);
+    for (int a = 0; a < nen; ++a)
+      for (int b = 0; b < nen; ++b)
+        for (int d = 0; d < dim; ++d) M(dim * a + d, dim * b + d) += w * N(a) * N(b);
+  }
+  return M;
+}
+
+Stress6 element_stress(const Eigen::MatrixXd& X, const Eigen::VectorXd& ue, const Eigen::VectorXd& xi,
+                       const Elastic& mat) {
+  check_dims(X, mat);
+  const Eigen::VectorXd s = elasticity_matrix(mat) * strain_displacement(X, xi, nullptr) * ue;
+  Stress6 out;
+  if (mat.dim() == 3) return s;
+  const double syy = mat.analysis == Analysis::plane_strain ? mat.nu * (s(0) + s(1)) : 0.0;
+  out << s(0), syy, s(1), 0, s(2), 0;
+  return out;
+}
+
+}  // namespace dmi::solid
