@@ -87,9 +87,7 @@ template <int D> class DruckerPrager final : public Material<D> {
     double e = 0;
     for (Index i = begin; i < end; ++i) {
       const Voigt6 s = voigt_stress(p, static_cast<std::size_t>(i));
-      const double ss = s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + 2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
-      const double tr = s[0] + s[1] + s[2];
-      e += p.vol[i] * ((1 + el_.nu) * ss - el_.nu * tr * tr) / (2 * el_.E);
+      e += p.vol[i] * el_.energy_density(s);
     }
     return e;
   }

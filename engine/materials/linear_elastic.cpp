@@ -71,9 +71,7 @@ template <int D> class LinearElastic final : public Material<D> {
         if constexpr (D == 2) s << t(0, 0), t(1, 1), elastic_zz_[i], t(0, 1), 0.0, 0.0;
         else s << t(0, 0), t(1, 1), t(2, 2), t(0, 1), t(1, 2), t(0, 2);
       }
-      const double ss = s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + 2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
-      const double tr = s[0] + s[1] + s[2];
-      e += p.vol[i] * ((1 + el_.nu) * ss - el_.nu * tr * tr) / (2 * el_.E);
+      e += p.vol[i] * el_.energy_density(s);
     }
     return e;
   }

@@ -36,6 +36,12 @@ template <int D> class Material {
 struct Elastic {
   double E, nu, lambda, mu;
   Elastic(double E_, double nu_) : E(E_), nu(nu_), lambda(E_ * nu_ / ((1 + nu_) * (1 - 2 * nu_))), mu(E_ / (2 * (1 + nu_))) {}
+  // Complementary strain energy density of a stress (J/m^3): [(1 + nu) sigma:sigma - nu (tr sigma)^2] / (2E).
+  double energy_density(const Voigt6& s) const {
+    const double ss = s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + 2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
+    const double tr = s[0] + s[1] + s[2];
+    return ((1 + nu) * ss - nu * tr * tr) / (2 * E);
+  }
   // P-wave speed: sqrt(E/(rho(1-nu^2))) in plane stress, sqrt((lambda+2mu)/rho) otherwise.
   double wave_speed(double rho, Plane plane) const {
     const double M = plane == Plane::stress ? E / (1 - nu * nu) : lambda + 2 * mu;
