@@ -152,19 +152,24 @@ template <int D> void MemberContact<D>::apply(Scene<D>& s, const TransferKernels
         // Orientation by the mass-weighted particle position the node sees, eqs. (24)-(25).
         const Vec2 xbar = mx_[k] / m;
         const Vec2 n = (xbar - c.xm).dot(n0) >= 0 ? n0 : Vec2(-n0);
-        const double r = ((opt.distance == DistanceKind::node ? x : xbar) - c.xm).dot(n) - hm;  // eq. (23)
+        // Bodies bonded to the members (a tyre buffer fixed on the dam face) stick whatever the mode, and are
+        // held from the node distance: measured from x-bar the bond peeled (the held mass sagged, q fell).
+        const bool bonded = std::find(opt.bonded_fields.begin(), opt.bonded_fields.end(), f) != opt.bonded_fields.end();
+        const MemberContactMode mode = bonded ? MemberContactMode::stick : opt.mode;
+        const bool node_distance = bonded || opt.distance == DistanceKind::node;
+        const double r = ((node_distance ? x : xbar) - c.xm).dot(n) - hm;  // eq. (23)
         // Velocity of the member's surface point x^M + c n: centre-line velocity plus omega x (c n), so the
         // material is held where the reaction acts (its power then matches the frame's, moment included).
         const Vec2 vstar = vc + omega * hm * Vec2(-n.y(), n.x());
         const double q = r <= 0 ? 1.0 : (r < ln ? decay(opt.decay, r / ln) : 0.0);
         if (q == 0) continue;
-        loaded_.push_back(Loaded{k, n, vstar, q});
+        loaded_.push_back(Loaded{k, n, vstar, q, mode});
         Vec2 fv = -g.f[k] + (m * vstar - g.p[k]) / dt;  // eq. (20)
-        if (opt.mode != MemberContactMode::stick) {
+        if (mode != MemberContactMode::stick) {
           const double fn = fv.dot(n);
           if (fn <= 0) continue;  // separating: no force, eq. (21)
           Vec2 ft = fv - fn * n;
-          if (opt.mode == MemberContactMode::friction) {
+          if (mode == MemberContactMode::friction) {
             const double lim = opt.friction * fn, t = ft.norm();
             if (t > lim) ft *= lim / t;
           } else {
@@ -179,7 +184,7 @@ template <int D> void MemberContact<D>::apply(Scene<D>& s, const TransferKernels
         fr.add_point_load(c.element, c.xi, F, arm.x() * F.y() - arm.y() * F.x());
         // The held material moves with the member: its mass joins the frame's inertia for the step
         // (all directions when stuck, the normal one when sliding).
-        fr.add_point_mass(c.element, c.xi, q * m * (opt.mode == MemberContactMode::stick ? Mat<2>(Mat<2>::Identity()) : Mat<2>(n * n.transpose())));
+        fr.add_point_mass(c.element, c.xi, q * m * (mode == MemberContactMode::stick ? Mat<2>(Mat<2>::Identity()) : Mat<2>(n * n.transpose())));
         force_ += F;
         ++stats_.loaded;
       }
@@ -191,7 +196,7 @@ template <int D> void MemberContact<D>::constrain_remap(const Scene<D>& s, std::
   const MemberCoupling& opt = s.coupling;
   for (const Loaded& l : loaded_) {
     Vec<D>& v = vel[l.k];
-    if (opt.mode == MemberContactMode::stick) {
+    if (l.mode == MemberContactMode::stick) {
       v += l.q * (l.vstar - v);
       continue;
     }
@@ -199,7 +204,7 @@ template <int D> void MemberContact<D>::constrain_remap(const Scene<D>& s, std::
     const double vn = rel.dot(l.n);
     if (vn >= 0) continue;  // separating
     Vec<D> dv = -l.q * vn * l.n;
-    if (opt.mode == MemberContactMode::friction) {
+    if (l.mode == MemberContactMode::friction) {
       const Vec<D> vt = rel - vn * l.n;
       const double t = vt.norm(), cut = std::min(t, opt.friction * l.q * -vn);
       if (t > 0) dv -= cut / t * vt;

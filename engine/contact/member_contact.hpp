@@ -65,6 +65,7 @@ template <int D> class MemberContact {
     Index k;        // field * nnodes + node
     Vec<D> n, vstar;
     double q;
+    MemberContactMode mode;
   };
   std::vector<Candidate> cand_;
   std::vector<Loaded> loaded_;

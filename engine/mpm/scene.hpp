@@ -64,7 +64,8 @@ struct MemberCoupling {
   DecayKind decay = DecayKind::linear;
   double decay_scale = 1.0;
   DistanceKind distance = DistanceKind::material;
-  std::vector<int> fields;   // velocity fields the members act on
+  std::vector<int> fields;         // velocity fields the members act on
+  std::vector<int> bonded_fields;  // of those, the fields held by stick whatever the mode
 };
 
 template <int D> struct Scene {

@@ -154,6 +154,7 @@ struct MemberContactConfig {
   double decay_scale = 1.0;                          // multiplies l_n of eq. (18)
   DistanceKind distance = DistanceKind::material;    // where r of eq. (23) is measured from
   std::vector<std::string> bodies;                   // bodies the members act on; empty = all
+  std::vector<std::string> bonded;                   // bodies stuck to the members whatever the mode
 };
 
 struct OutputConfig {

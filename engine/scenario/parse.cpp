@@ -358,6 +358,9 @@ void read_member_contact(Obj o, MemberContactConfig& c, bool structure) {
                                      "reaches the member; node = from the grid node itself (eq. 23, the paper), which acts up to a "
                                      "cell early (docs/verification.md)"});
   o.strings("bodies", c.bodies, {}, Spec{.doc = "names of the bodies the members act on; empty: all bodies"});
+  o.strings("bonded", c.bonded, {}, Spec{.doc = "names of bodies bonded to the members: held by stick contact whatever the mode "
+                                                "(a tyre buffer fixed on the dam face, while a boulder meets the dam separably); "
+                                                "needs multi_field contact unless every body is bonded"});
   o.finish();
 }
 
@@ -595,6 +598,17 @@ void check_semantics(const Scenario& s, const std::string& file) {
   for (std::size_t i = 0; i < s.member_contact.bodies.size(); ++i)
     if (!bodies.count(s.member_contact.bodies[i]))
       throw InputError(file, "/member_contact/bodies/" + std::to_string(i), quoted(s.member_contact.bodies[i]), "the name of one of the bodies");
+  for (std::size_t i = 0; i < s.member_contact.bonded.size(); ++i) {
+    const std::string& b = s.member_contact.bonded[i];
+    const std::string p = "/member_contact/bonded/" + std::to_string(i);
+    if (!bodies.count(b)) throw InputError(file, p, quoted(b), "the name of one of the bodies");
+    if (!s.member_contact.bodies.empty() &&
+        std::find(s.member_contact.bodies.begin(), s.member_contact.bodies.end(), b) == s.member_contact.bodies.end())
+      throw InputError(file, p, quoted(b), "a body the members act on (listed in member_contact.bodies)");
+  }
+  if (!s.member_contact.bonded.empty() && s.member_contact.bonded.size() < s.bodies.size() && s.contact.method == ContactMethod::single_field)
+    throw InputError(file, "/member_contact/bonded", value_text_names(s.member_contact.bonded),
+                     "all bodies or none with contact.method single_field (the bodies share one velocity field); use multi_field");
   // With one velocity field for all bodies the members cannot act on only some of them.
   const std::set<std::string> listed(s.member_contact.bodies.begin(), s.member_contact.bodies.end());
   if (!listed.empty() && listed.size() < s.bodies.size() && s.contact.method == ContactMethod::single_field)

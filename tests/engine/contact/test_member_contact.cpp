@@ -130,6 +130,23 @@ TEST(MemberContact, SelfWeightStartsInStaticEquilibrium) {
   EXPECT_GT(column_max(series(un.results, "probes/mid/displacement"), 1, true), 1.5 * sag);
 }
 
+// A body bonded to a member (a tyre buffer fixed on a dam face) hangs from it whatever the contact mode:
+// a block under the beam stays put and the supports carry its weight; not bonded, it falls away.
+TEST(MemberContact, BondedBodyHangsFromTheMember) {
+  J j = scene({{"mode", "separable"}, {"bonded", {"block"}}}, {0, 0}, true, 0.6);
+  j["analysis"]["gravity"] = {0, -9.81};
+  const RunOutput bonded = run(j);
+  const auto& t = bonded.results.time;
+  EXPECT_LT(column_max(series(bonded.results, "probes/block/displacement"), 1, true), 0.025);
+  const double reactions = time_mean(t, series(bonded.results, "supports/A/reaction"), 1, 0.2, 0.6) +
+                           time_mean(t, series(bonded.results, "supports/B/reaction"), 1, 0.2, 0.6);
+  EXPECT_NEAR(reactions / (125 * 9.81), 1.0, 0.03);
+  j["member_contact"].erase("bonded");
+  j["analysis"]["end_time"] = 0.3;
+  const RunOutput loose = run(j);
+  EXPECT_GT(column_max(series(loose.results, "probes/block/displacement"), 1, true), 0.3);
+}
+
 // An explicit frame's stability limit enters the global step (scaled by the CFL fraction); an
 // implicit (Newmark) frame does not limit it. The stiff steel beam (c = 5 km/s) governs here.
 TEST(MemberContact, ExplicitFrameLimitsTheTimeStepNewmarkDoesNot) {
