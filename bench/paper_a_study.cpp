@@ -14,18 +14,11 @@ using namespace dmi;
 
 namespace {
 
-double interp(const std::vector<double>& t, const std::vector<double>& u, double x) {
-  std::size_t k = 1;
-  while (k + 1 < t.size() && t[k] < x) ++k;
-  const double a = std::clamp((x - t[k - 1]) / (t[k] - t[k - 1]), 0.0, 1.0);
-  return (1 - a) * u[k - 1] + a * u[k];
-}
-
 void a5() {
   std::vector<double> tr, ur, t2, u2;
   paper_a5_point_mass_reference(64, 1e-5, 5.0, 1e-4, tr, ur);
   paper_a5_point_mass_reference(128, 5e-6, 5.0, 1e-4, t2, u2);
-  const std::function<double(double)> fe = [&](double t) { return interp(tr, ur, t); };
+  const std::function<double(double)> fe = [&](double t) { return interpolate(tr, ur, t); };
   const ErrorPair conv = compare_history(t2, u2, 0.0, fe);
   const ErrorPair fe30 = compare_history(tr, ur, 0.0, paper_a5_eq30);
   std::printf("Point-mass FE reference (64 elements, consistent mass, dt 1e-5): vs 128 elements NRMS %.2e; vs eq. (30) NRMS %.4f, peak %+.4f\n\n",

@@ -39,8 +39,10 @@ template <int D> void MemberContact<D>::find_candidates(const Scene<D>& s) {
     const double ln = s.coupling.decay_scale * g.h() + (s.coupling.distance == DistanceKind::material ? 1.5 * g.h() : 0.0);
     for (const Candidate& c : cand_) slot_[c.node] = -1;
     cand_.clear();
+    curves_.resize(static_cast<std::size_t>(fr.nelements()));
     for (int e = 0; e < fr.nelements(); ++e) {
-      const ElementCurve c = fr.curve(e);
+      curves_[e] = fr.curve(e);
+      const ElementCurve& c = curves_[e];
       Vec2 lo, hi;
       curve_box(c, lo, hi);
       const double reach = std::max(fr.half_depth(e, 0), fr.half_depth(e, 1)) + ln + 1e-9 * g.h();
@@ -133,7 +135,7 @@ template <int D> void MemberContact<D>::apply(Scene<D>& s, const TransferKernels
     const Index nn = g.nnodes();
     for (const Candidate& c : cand_) {
       const Vec2 x = g.node_pos(c.node);
-      const ElementCurve curve = fr.curve(c.element);
+      const ElementCurve& curve = curves_[c.element];
       const double hm = fr.half_depth(c.element, c.xi);
       const Vec2 vc = fr.velocity_at(c.element, c.xi);
       const double omega = fr.angular_velocity_at(c.element, c.xi);

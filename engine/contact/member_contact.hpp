@@ -67,6 +67,7 @@ template <int D> class MemberContact {
     double q;
     MemberContactMode mode;
   };
+  std::vector<ElementCurve> curves_;  // deformed centre-lines at t_n, by element (this step)
   std::vector<Candidate> cand_;
   std::vector<Loaded> loaded_;
   std::vector<int> slot_;          // per node: index into cand_, -1 if none

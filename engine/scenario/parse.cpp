@@ -516,12 +516,6 @@ std::set<std::string> check_structure(const Scenario& s, const std::string& file
 }
 
 // Cross-references and geometry: what a single key cannot check.
-std::string value_text_names(const std::vector<std::string>& v) {
-  std::string t = "[";
-  for (std::size_t i = 0; i < v.size(); ++i) t += (i ? ", \"" : "\"") + v[i] + "\"";
-  return t + "]";
-}
-
 void check_semantics(const Scenario& s, const std::string& file) {
   const int dim = s.analysis.dimension;
   if (s.bodies.empty()) throw InputError(file, "/bodies", "[]", "at least one body");
@@ -607,12 +601,12 @@ void check_semantics(const Scenario& s, const std::string& file) {
       throw InputError(file, p, quoted(b), "a body the members act on (listed in member_contact.bodies)");
   }
   if (!s.member_contact.bonded.empty() && s.member_contact.bonded.size() < s.bodies.size() && s.contact.method == ContactMethod::single_field)
-    throw InputError(file, "/member_contact/bonded", value_text_names(s.member_contact.bonded),
+    throw InputError(file, "/member_contact/bonded", json(s.member_contact.bonded).dump(),
                      "all bodies or none with contact.method single_field (the bodies share one velocity field); use multi_field");
   // With one velocity field for all bodies the members cannot act on only some of them.
   const std::set<std::string> listed(s.member_contact.bodies.begin(), s.member_contact.bodies.end());
   if (!listed.empty() && listed.size() < s.bodies.size() && s.contact.method == ContactMethod::single_field)
-    throw InputError(file, "/member_contact/bodies", value_text_names(s.member_contact.bodies),
+    throw InputError(file, "/member_contact/bodies", json(s.member_contact.bodies).dump(),
                      "all bodies (or none listed) with contact.method single_field: the bodies share one velocity field, so "
                      "members act on all of them; use multi_field to exempt some");
   std::set<std::string> probes;

@@ -94,7 +94,7 @@ template <int D> void Recorder<D>::sample(const Solver<D>& solver, double dt) {
   for (const auto& w : sc.walls) push<D>(series_[k++], elapsed_ > 0 ? Vec<D>(impulse_[j++] / elapsed_) : w.force);
   for (const auto& r : sc.regions) push<D>(series_[k++], elapsed_ > 0 ? Vec<D>(impulse_[j++] / elapsed_) : r.force);
   for (auto& i : impulse_) i.setZero();
-  if (sc.frame) sample_frame(*sc.frame, *solver.member_contact(), k);
+  if (sc.frame) sample_frame(*sc.frame, *solver.member_contact(), d, k);
   elapsed_ = 0;
   const auto& P = sc.particles;
   for (const auto& p : probes_) {
@@ -145,9 +145,9 @@ template <int D> void Recorder<D>::add_frame_series(const Frame& f, const Scenar
   for (const auto& sup : s.structure.supports) add("supports/" + sup.node + "/reaction", "N, N, N m", {"Fx", "Fy", "M"});
 }
 
-template <int D> void Recorder<D>::sample_frame(const Frame& f, const MemberContact<D>& mc, std::size_t& k) {
-  for (double e : {f.kinetic_energy(), f.strain_energy(), f.external_work() - f.applied_work(), f.damping_work(), f.applied_work()})
-    series_[k++].data.push_back(e);
+template <int D>
+void Recorder<D>::sample_frame(const Frame& f, const MemberContact<D>& mc, const Diagnostics<D>& d, std::size_t& k) {
+  for (double e : {d.frame_kinetic, d.frame_strain, d.frame_gravity_work, d.frame_damping, d.contact_work}) series_[k++].data.push_back(e);
   const auto& d = f.displacement();
   Series& disp = series_[k++];
   disp.data.insert(disp.data.end(), d.data(), d.data() + d.size());

@@ -50,6 +50,9 @@ struct ErrorPair {
   double nrms = 0;  // RMS(u - ref) / max |ref|
   double peak = 0;  // (max |u| - max |ref|) / max |ref|
 };
+// u(x) by linear interpolation of samples (t, u), clamped at the ends.
+double interpolate(const std::vector<double>& t, const std::vector<double>& u, double x);
+
 ErrorPair compare_history(const std::vector<double>& t, const std::vector<double>& u, double t0,
                           const std::function<double(double)>& ref);
 

@@ -26,6 +26,14 @@ CaseResult metric(const std::string& c, const std::string& m, const std::string&
   return r;
 }
 
+CaseResult bound_metric(const std::string& c, const std::string& m, const std::string& unit, double value, double limit,
+                        bool must_exceed) {
+  CaseResult r = metric(c, m, unit, value, limit, 0.0, false);
+  r.error = std::max(0.0, must_exceed ? limit - value : value - limit);
+  r.passed = std::isfinite(value) && (must_exceed ? value > limit : value < limit);
+  return r;
+}
+
 std::vector<CaseResult> stamp(std::vector<CaseResult> r, double wall) {
   for (auto& x : r) x.wall_seconds = wall;
   return r;

@@ -35,6 +35,10 @@ RunOutput run_quiet(const Scenario& s);
 // One metric: error relative to |ref| (absolute if !relative); passes when finite and <= tol.
 CaseResult metric(const std::string& case_name, const std::string& metric, const std::string& unit, double value, double ref,
                   double tol, bool relative = true);
+// A one-sided check: passes when value > limit (must_exceed) or value < limit (otherwise); the error is by
+// how much the value falls on the wrong side of the limit (0 when it passes).
+CaseResult bound_metric(const std::string& case_name, const std::string& metric, const std::string& unit, double value,
+                        double limit, bool must_exceed);
 struct CaseTimer {
   std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
   double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); }
