@@ -148,9 +148,9 @@ template <int D> void Recorder<D>::add_frame_series(const Frame& f, const Scenar
 template <int D>
 void Recorder<D>::sample_frame(const Frame& f, const MemberContact<D>& mc, const Diagnostics<D>& d, std::size_t& k) {
   for (double e : {d.frame_kinetic, d.frame_strain, d.frame_gravity_work, d.frame_damping, d.contact_work}) series_[k++].data.push_back(e);
-  const auto& d = f.displacement();
+  const Eigen::VectorXd& u = f.displacement();
   Series& disp = series_[k++];
-  disp.data.insert(disp.data.end(), d.data(), d.data() + d.size());
+  disp.data.insert(disp.data.end(), u.data(), u.data() + u.size());
   Series& ends = series_[k++];
   for (int e = 0; e < f.nelements(); ++e)
     for (double xi : {0.0, 1.0}) {
