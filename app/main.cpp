@@ -4,6 +4,9 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <iostream>
 
 #include "engine/common/error.hpp"
@@ -24,21 +27,50 @@ dmi::ProgressMode progress_mode(bool quiet, const std::string& p) {
   return dmi::ProgressMode::automatic;
 }
 
-int simulate(const std::string& file, const std::string& out, int threads, bool quiet, const std::string& progress, bool dry_run) {
-  const dmi::Scenario s = dmi::load_scenario(file);
-  if (dry_run) {
-    std::printf("%s: valid scenario '%s' (%dD, %zu bodies, %zu materials, %zu walls)\n", file.c_str(), s.name.c_str(),
-                s.analysis.dimension, s.bodies.size(), s.materials.size(), s.walls.size());
-    return 0;
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// --dry-run: validate every variant and print a one-line summary of each (stdout). With --expand,
+// print the low-level scenario the presets expand to instead (stdout, runnable as a scenario file;
+// the summaries go to stderr).
+int dry_run_report(const std::string& file, const std::vector<dmi::ScenarioVariant>& variants, bool expand) {
+  const std::string text = read_text(file);
+  for (const auto& v : variants) {
+    const dmi::Scenario& s = v.scenario;
+    std::fprintf(expand ? stderr : stdout, "%s%s%s: valid scenario '%s' (%dD, %zu bodies, %zu materials, %zu walls, %zu members)\n", file.c_str(),
+                 v.label.empty() ? "" : " / ", v.label.c_str(), s.name.c_str(), s.analysis.dimension, s.bodies.size(), s.materials.size(),
+                 s.walls.size(), s.structure.members.size());
   }
-  dmi::RunOptions o;
-  o.out_dir = out;
-  o.threads = threads;
-  o.progress = progress_mode(quiet, progress);
-  o.software_version = DMI_VERSION;
-  const dmi::RunOutput r = dmi::run_scenario(s, o);
-  if (!quiet) std::printf("wrote %s (%.0f steps, %.2f s wall)\n", r.results_path.c_str(), r.results.info.numbers.at("steps"),
-                          r.results.info.numbers.at("wall_seconds"));
+  if (!expand) return 0;
+  if (variants.size() == 1) {
+    std::cout << dmi::expanded_scenario_json(text, file, variants[0].label).dump(1) << "\n";
+  } else {
+    nlohmann::json all = nlohmann::json::object();
+    for (const auto& v : variants) all[v.label] = dmi::expanded_scenario_json(text, file, v.label);
+    std::cout << all.dump(1) << "\n";
+  }
+  return 0;
+}
+
+int simulate(const std::string& file, const std::string& out, int threads, bool quiet, const std::string& progress, bool dry_run,
+             bool expand) {
+  const std::vector<dmi::ScenarioVariant> variants = dmi::load_scenario_variants(file);
+  if (dry_run || expand) return dry_run_report(file, variants, expand);
+  for (const auto& v : variants) {
+    dmi::RunOptions o;
+    o.out_dir = v.label.empty() ? out : (std::filesystem::path(out) / v.label).string();
+    o.threads = threads;
+    o.progress = progress_mode(quiet, progress);
+    o.software_version = DMI_VERSION;
+    if (!quiet && !v.label.empty()) std::printf("variant %s -> %s\n", v.label.c_str(), o.out_dir.c_str());
+    const dmi::RunOutput r = dmi::run_scenario(v.scenario, o);
+    if (!quiet) std::printf("wrote %s (%.0f steps, %.2f s wall)\n", r.results_path.c_str(), r.results.info.numbers.at("steps"),
+                            r.results.info.numbers.at("wall_seconds"));
+  }
   return 0;
 }
 
@@ -58,7 +90,7 @@ int main(int argc, char** argv) {
 
   std::string file, out = "out", progress = "auto";
   int threads = 0;
-  bool quiet = false, dry_run = false, json = false, list = false, markdown = false;
+  bool quiet = false, dry_run = false, expand = false, json = false, list = false, markdown = false;
   auto add_run_options = [&](CLI::App* c) {
     c->add_option("scenario", file, "scenario JSON file (docs/scenario.md)")->required();
     c->add_option("-o,--out", out, "output folder (results.h5, fields/)")->capture_default_str();
@@ -70,7 +102,8 @@ int main(int argc, char** argv) {
   add_run_options(run);
   CLI::App* sim = app.add_subcommand("simulate", "simulate a scenario: OUT/results.h5 and ParaView files OUT/fields/");
   add_run_options(sim);
-  sim->add_flag("--dry-run", dry_run, "only read and validate the scenario");
+  sim->add_flag("--dry-run", dry_run, "only read and validate the scenario (every variant of a comparison)");
+  sim->add_flag("--expand", expand, "with --dry-run: print the low-level scenario the presets expand to (JSON; a runnable scenario file)");
   std::vector<std::string> cases;
   CLI::App* val = app.add_subcommand("validate", "run the verification cases against closed forms; exit 0 when all pass");
   val->add_option("cases", cases, "case names (default: all; see --list)");
@@ -87,7 +120,7 @@ int main(int argc, char** argv) {
     return rc == 0 ? 0 : 2;
   }
   try {
-    if (*run || *sim) return simulate(file, out, threads, quiet, progress, dry_run);
+    if (*run || *sim) return simulate(file, out, threads, quiet, progress, dry_run, expand);
     if (*val) return dmi::validate_main(cases, json, list, threads);
     if (*sch) {
       std::cout << dmi::scenario_reference_markdown();

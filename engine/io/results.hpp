@@ -43,6 +43,8 @@ struct RunInfo {
   std::string scenario_name;
   std::string scenario_file;
   std::string scenario_json;   // the scenario text as given
+  std::string scenario_expanded_json;  // the low-level scenario its presets expanded to ("" without presets)
+  std::string variant;         // with_buffer / without_buffer of a comparison, else ""
   std::string software_version;
   int dimension = 2;
   std::vector<std::string> body_names, material_names;

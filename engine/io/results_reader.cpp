@@ -325,6 +325,13 @@ Results read_file(const std::string& path, bool with_snapshots) {
     if (v.size() != 1) r.error("/scenario is not a single string");
     info.scenario_json = std::move(v[0]);
   }
+  if (r.has_link(file, "scenario_expanded")) {
+    Handle ds = r.open(file, "scenario_expanded", "/scenario_expanded", H5I_DATASET);
+    std::vector<std::string> v = r.strings(ds, false, "/scenario_expanded");
+    if (v.size() != 1) r.error("/scenario_expanded is not a single string");
+    info.scenario_expanded_json = std::move(v[0]);
+  }
+  if (r.has_attr(file, "variant", "/")) info.variant = r.attr_string(file, "variant", "/");
   {
     Handle run = r.open(file, "run", "/run", H5I_GROUP);
     std::vector<std::string> names;

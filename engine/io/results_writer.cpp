@@ -191,6 +191,9 @@ struct ResultsWriter::Impl {
 
     remove_link(file, "scenario", f);
     write_strings(file, "scenario", {info.scenario_json}, true, f);
+    remove_link(file, "scenario_expanded", f);
+    if (!info.scenario_expanded_json.empty()) write_strings(file, "scenario_expanded", {info.scenario_expanded_json}, true, f);
+    attr_string(file, "variant", info.variant, f);
 
     remove_link(file, "run", f);
     Handle run(check_id(H5Gcreate2(file, "run", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), f,

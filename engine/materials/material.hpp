@@ -3,6 +3,7 @@
 // (already advanced by the solver) and write stress, out-of-plane stress and current volume.
 // History-dependent laws (viscoelastic rubber, Drucker-Prager, Bingham) keep their internal
 // variables in arrays of their own, sized in attach() and indexed by particle index.
+// Fluids (newtonian, bingham) keep only J = det F and reset F to J^(1/D) I in update().
 #pragma once
 #include <functional>
 #include <map>

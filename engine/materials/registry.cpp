@@ -1,6 +1,7 @@
 #include <stdexcept>
 
 #include "engine/materials/material.hpp"
+#include "engine/materials/viscous_fluid.hpp"
 
 namespace dmi {
 
@@ -18,6 +19,8 @@ template <int D> void register_materials(MaterialRegistry<D>& r) {
   r.add("linear_elastic", make_linear_elastic<D>);
   r.add("neo_hookean", make_neo_hookean<D>);
   r.add("drucker_prager", make_drucker_prager<D>);
+  r.add("newtonian", make_viscous_fluid<D>);
+  r.add("bingham", make_viscous_fluid<D>);
 }
 
 template class MaterialRegistry<2>;

@@ -47,12 +47,18 @@ struct MaterialConfig {
   double damping_ratio = 0.0, damping_frequency = 0.0;   // -, Hz (linear_elastic, neo_hookean)
   double cohesion = 0.0;                                  // Pa (drucker_prager)
   double friction_angle = 0.0, dilation_angle = 0.0;      // deg (drucker_prager)
+  double bulk_modulus = 0.0;                              // Pa (newtonian, bingham)
+  double viscosity = 0.0;                                 // Pa s (newtonian, bingham)
+  double yield_stress = 0.0;                              // Pa (bingham)
+  double regularisation_rate = 0.01;                      // 1/s (bingham, Papanastasiou 1/m)
 };
 
 struct ShapeConfig {
-  std::string type;                                  // box | ball
+  std::string type;                                  // box | ball | polygon (2D)
   DVec min, max, center;                             // m
   double radius = 0.0;                               // m
+  double inner_radius = 0.0;                         // m, ball: > 0 makes a ring / hollow sphere
+  std::vector<DVec> vertices;                        // m, polygon (2D), in order
 };
 
 struct BodyConfig {
@@ -180,6 +186,8 @@ struct Scenario {
   OutputConfig output;
   std::string source_file;   // where it came from, for messages
   std::string source_text;   // the JSON as given, stored in results.h5
+  std::string expanded_text; // the low-level scenario the presets expanded into ("" without presets)
+  std::string variant;       // "" or with_buffer / without_buffer (compare)
 };
 
 }  // namespace dmi

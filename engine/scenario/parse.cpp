@@ -9,8 +9,10 @@
 #include <sstream>
 
 #include "engine/common/error.hpp"
+#include "engine/scenario/presets.hpp"
 #include "engine/scenario/scenario.hpp"
 #include "engine/scenario/schema.hpp"
+#include "engine/scenario/shape_geometry.hpp"
 
 namespace dmi {
 
@@ -76,12 +78,36 @@ void read_material(Obj& o, MaterialConfig& m) {
   m.model = "linear_elastic";
   o.string("model", m.model, Spec{.doc = "material law: linear_elastic (small strain, Jaumann rate) | neo_hookean (compressible, "
                                          "large strain; rubber, tyre buffers) | drucker_prager (elastic-perfectly plastic "
-                                         "Drucker-Prager matched to Mohr-Coulomb in plane strain; granular debris)"});
-  if (!o.documenting() && m.model != "linear_elastic" && m.model != "neo_hookean" && m.model != "drucker_prager")
-    o.fail("model", nullptr, "linear_elastic, neo_hookean or drucker_prager (got '" + m.model + "')");
+                                         "Drucker-Prager matched to Mohr-Coulomb in plane strain; granular debris) | newtonian "
+                                         "(weakly compressible viscous fluid; slurry) | bingham (weakly compressible Bingham fluid, "
+                                         "Papanastasiou-regularised; mud and debris slurry). The fluids need plane strain or 3D"});
+  if (!o.documenting() && m.model != "linear_elastic" && m.model != "neo_hookean" && m.model != "drucker_prager" &&
+      m.model != "newtonian" && m.model != "bingham")
+    o.fail("model", nullptr, "linear_elastic, neo_hookean, drucker_prager, newtonian or bingham (got '" + m.model + "')");
   o.number("density", m.density, positive("kg/m^3", "mass density", true));
-  o.number("youngs_modulus", m.youngs_modulus, positive("Pa", "Young's modulus E", true));
-  o.number("poisson_ratio", m.poisson_ratio, Spec{.doc = "Poisson's ratio", .min = -1, .max = 0.5, .min_open = true, .max_open = true, .required = true});
+  if (when_any(o, "model", m.model, {"linear_elastic", "neo_hookean", "drucker_prager"})) {
+    o.number("youngs_modulus", m.youngs_modulus, positive("Pa", "Young's modulus E", true));
+    o.number("poisson_ratio", m.poisson_ratio, Spec{.doc = "Poisson's ratio", .min = -1, .max = 0.5, .min_open = true, .max_open = true, .required = true});
+  }
+  o.end_when();
+  if (when_any(o, "model", m.model, {"newtonian", "bingham"})) {
+    o.number("bulk_modulus", m.bulk_modulus, positive("Pa", "bulk modulus K of the weakly compressible fluid: p = K (1/J - 1) >= 0, "
+                                                            "J = V/V0 (Monaghan 1994, gamma = 1); sound speed c = sqrt(K/density) "
+                                                            "sets the time step; take c >= 10x the fastest flow speed (about 1 % density error)", true));
+    o.number("viscosity", m.viscosity, positive("Pa s", "dynamic (plastic, for bingham) viscosity mu: deviatoric stress s = 2 mu D'; "
+                                                       "a large viscosity lowers the time step to about cfl h^2 density / (8/3 mu)", true));
+  }
+  o.end_when();
+  if (o.when("model", m.model, "bingham")) {
+    o.number("yield_stress", m.yield_stress, Spec{.unit = "Pa", .doc = "Bingham yield stress tau_y: shear stress tau = tau_y + mu gamma_dot "
+                                                                        "in flow", .min = 0, .required = true});
+    o.number("regularisation_rate", m.regularisation_rate,
+             positive("1/s", "Papanastasiou (1987) regularisation, 1/m: tau = mu gamma_dot + tau_y (1 - exp(-gamma_dot / rate)); below "
+                             "yield the material creeps at about this shear rate, as a fluid of viscosity mu + tau_y / rate, which "
+                             "also bounds the time step to about cfl h^2 density / (8/3 (mu + tau_y / rate)): a larger rate runs "
+                             "faster but creeps more"));
+  }
+  o.end_when();
   if (when_any(o, "model", m.model, {"linear_elastic", "neo_hookean"})) {
     o.number("damping_ratio", m.damping_ratio, Spec{.doc = "viscous (Kelvin-Voigt, stiffness-proportional) damping ratio zeta reached "
                                                             "at damping_frequency: sigma_v = beta C:D, beta = zeta / (pi f); 0 = elastic",
@@ -105,7 +131,8 @@ void read_material(Obj& o, MaterialConfig& m) {
 }
 
 void read_shape(Obj o, ShapeConfig& s) {
-  o.string("type", s.type, Spec{.doc = "box (rectangle in 2D) | ball (disk in 2D, sphere in 3D)", .required = true});
+  o.string("type", s.type, Spec{.doc = "box (rectangle in 2D) | ball (disk in 2D, sphere in 3D; with inner_radius a ring or hollow sphere) | "
+                                       "polygon (2D only: a simple polygon, e.g. a trapezoidal dam or an inclined debris body)", .required = true});
   if (o.when("type", s.type, "box")) {
     o.vector("min", s.min, any("m", "lower corner", true));
     o.vector("max", s.max, any("m", "upper corner", true));
@@ -114,9 +141,22 @@ void read_shape(Obj o, ShapeConfig& s) {
   if (o.when("type", s.type, "ball")) {
     o.vector("center", s.center, any("m", "centre", true));
     o.number("radius", s.radius, positive("m", "radius", true));
+    o.number("inner_radius", s.inner_radius, Spec{.unit = "m", .doc = "radius of the hole: a ring in 2D (e.g. a tyre), a hollow sphere in 3D; 0 = solid",
+                                                  .min = 0});
+    if (!o.documenting() && s.inner_radius >= s.radius)
+      o.fail("inner_radius", nullptr, "an inner radius below radius = " + std::to_string(s.radius) + " m");
   }
   o.end_when();
-  if (!o.documenting() && s.type != "box" && s.type != "ball") o.fail("type", nullptr, "box or ball (got '" + s.type + "')");
+  if (o.when("type", s.type, "polygon")) {
+    if (!o.documenting() && o.context().dim != 2) o.fail("type", nullptr, "box or ball in 3D (polygon is 2D only)");
+    o.vectors("vertices", s.vertices, any("m", "corners in order (either orientation); edges must not cross", true), 3);
+    if (!o.documenting() && polygon_self_intersects(s.vertices))
+      o.fail("vertices", nullptr, "a simple polygon (two of its edges cross)");
+    if (!o.documenting() && !(std::abs(polygon_area(s.vertices)) > 0)) o.fail("vertices", nullptr, "a polygon with a non-zero area");
+  }
+  o.end_when();
+  if (!o.documenting() && s.type != "box" && s.type != "ball" && s.type != "polygon")
+    o.fail("type", nullptr, "box, ball or polygon (got '" + s.type + "')");
   o.finish();
 }
 
@@ -536,13 +576,13 @@ void check_semantics(const Scenario& s, const std::string& file) {
     dup(bodies, b.name, p + "/name");
     if (!mats.count(b.material)) throw InputError(file, p + "/material", "\"" + b.material + "\"", "the name of one of the materials");
     for (const auto& m : s.materials)
-      if (m.name == b.material && m.model == "drucker_prager" && s.analysis.plane == Plane::stress)
-        throw InputError(file, p + "/material", "\"" + b.material + "\"", "a material other than drucker_prager in plane stress "
-                                                                        "(Drucker-Prager debris needs plane strain or 3D)");
-    DVec lo(dim), hi(dim);
+      if (m.name == b.material && (m.model == "drucker_prager" || m.model == "newtonian" || m.model == "bingham") &&
+          s.analysis.plane == Plane::stress)
+        throw InputError(file, p + "/material", "\"" + b.material + "\"", "a material other than " + m.model + " in plane stress "
+                                                                        "(Drucker-Prager debris and slurries need plane strain or 3D)");
+    DVec lo, hi;
+    shape_bounds(b.shape, dim, lo, hi);
     for (int d = 0; d < dim; ++d) {
-      lo[d] = b.shape.type == "box" ? b.shape.min[d] : b.shape.center[d] - b.shape.radius;
-      hi[d] = b.shape.type == "box" ? b.shape.max[d] : b.shape.center[d] + b.shape.radius;
       if (b.shape.type == "box" && !(hi[d] > lo[d]))
         throw InputError(file, p + "/shape/max", value_text(b.shape.max), "max > min along every axis (min = " + value_text(b.shape.min) + ")");
       // Every particle must lie at least half a cell inside the grid (shape function support).
@@ -626,6 +666,16 @@ void check_semantics(const Scenario& s, const std::string& file) {
 
 }  // namespace
 
+namespace detail {
+void read_material_object(const json& j, const std::string& path, const std::string& file, MaterialConfig& out) {
+  schema::Context ctx{.file = file, .dim = 2};
+  if (!j.is_object()) throw InputError(file, path, schema::short_dump(j), "an object (a material: model, density, ...)");
+  Obj o(&j, path, ctx);
+  read_material(o, out);
+  o.finish();
+}
+}  // namespace detail
+
 const std::vector<std::string>& particle_probe_quantities() {
   static const std::vector<std::string> q = {"displacement", "position", "velocity", "stress", "von_mises"};
   return q;
@@ -639,7 +689,9 @@ const std::vector<std::string>& member_probe_quantities() {
   return q;
 }
 
-Scenario parse_scenario(const json& j, const std::string& file) {
+namespace {
+
+Scenario parse_low_level(const json& j, const std::string& file) {
   Scenario s;
   schema::Context ctx{.file = file};
   if (!j.is_object()) throw InputError(file, "/", schema::short_dump(j), "a JSON object (a scenario)");
@@ -650,10 +702,9 @@ Scenario parse_scenario(const json& j, const std::string& file) {
   return s;
 }
 
-Scenario parse_scenario(const std::string& text, const std::string& file) {
-  json j;
+json parse_json_text(const std::string& text, const std::string& file) {
   try {
-    j = json::parse(text);
+    return json::parse(text);
   } catch (const json::out_of_range& e) {
     // e.g. a number too large for a double; the JSON library gives no position for it.
     std::string what = e.what();
@@ -671,19 +722,58 @@ Scenario parse_scenario(const std::string& text, const std::string& file) {
     throw InputError(file + ":" + std::to_string(line) + ":" + std::to_string(col) + ": invalid JSON (" +
                      (k == std::string::npos ? what : what.substr(k)) + ")");
   }
-  Scenario s = parse_scenario(j, file);
-  s.source_text = text;
+}
+
+// One variant: presets expanded first (their own keys validated at their own paths), then the
+// low-level scene parsed; an error in a generated key names the expansion (see --dry-run).
+Scenario parse_variant(const json& j, const std::string& file, const std::string& variant) {
+  if (!has_presets(j)) return parse_low_level(j, file);
+  const json low = expand_presets(j, file, variant);
+  Scenario s = parse_low_level(low, file + " (expanded presets)");
+  s.source_file = file;
+  s.expanded_text = low.dump(1);
+  s.variant = variant;
   return s;
 }
 
-Scenario load_scenario(const std::string& path) {
+std::string read_file_text(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, not a scenario file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open the scenario file (does it exist and is it readable?)");
   std::stringstream ss;
   ss << in.rdbuf();
-  return parse_scenario(ss.str(), path);
+  return ss.str();
+}
+
+}  // namespace
+
+Scenario parse_scenario(const json& j, const std::string& file) { return parse_variant(j, file, preset_variants(j, file).front()); }
+
+Scenario parse_scenario(const std::string& text, const std::string& file) {
+  Scenario s = parse_scenario(parse_json_text(text, file), file);
+  s.source_text = text;
+  return s;
+}
+
+Scenario load_scenario(const std::string& path) { return parse_scenario(read_file_text(path), path); }
+
+std::vector<ScenarioVariant> parse_scenario_variants(const std::string& text, const std::string& file) {
+  const json j = parse_json_text(text, file);
+  std::vector<ScenarioVariant> out;
+  for (const auto& v : preset_variants(j, file)) {
+    out.push_back({v, parse_variant(j, file, v)});
+    out.back().scenario.source_text = text;
+  }
+  return out;
+}
+
+std::vector<ScenarioVariant> load_scenario_variants(const std::string& path) { return parse_scenario_variants(read_file_text(path), path); }
+
+json expanded_scenario_json(const std::string& text, const std::string& file, const std::string& variant) {
+  const json j = parse_json_text(text, file);
+  if (!has_presets(j)) return j;
+  return expand_presets(j, file, variant);
 }
 
 std::string scenario_reference_markdown() {
@@ -692,6 +782,7 @@ std::string scenario_reference_markdown() {
   Scenario s;
   Obj o(nullptr, "", ctx);
   read_scenario(o, s);
+  document_presets(o);
   return schema::markdown(rows);
 }
 

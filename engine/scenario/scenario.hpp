@@ -16,6 +16,17 @@ Scenario parse_scenario(const std::string& text, const std::string& file);
 Scenario parse_scenario(const nlohmann::json& j, const std::string& file);
 // Reads and parses a scenario file. Throws InputError (unreadable file, syntax error with line/column, ...).
 Scenario load_scenario(const std::string& path);
+// The variants a scenario asks for (compare = with_and_without_buffer gives two, labelled
+// with_buffer and without_buffer; otherwise one, labelled ""), each parsed and validated.
+struct ScenarioVariant {
+  std::string label;
+  Scenario scenario;
+};
+std::vector<ScenarioVariant> parse_scenario_variants(const std::string& text, const std::string& file);
+std::vector<ScenarioVariant> load_scenario_variants(const std::string& path);
+// The low-level scenario JSON a file expands to (the file itself when it uses no presets).
+nlohmann::json expanded_scenario_json(const std::string& text, const std::string& file, const std::string& variant = "");
+
 // Markdown reference of every key (generated from the parser's declarations).
 std::string scenario_reference_markdown();
 

@@ -131,6 +131,26 @@ void Obj::vector(const char* key, DVec& out, const Spec& s, int length) {
   out = r;
 }
 
+void Obj::vectors(const char* key, std::vector<DVec>& out, const Spec& s, int min_count) {
+  const int n = ctx_.dim;
+  const std::string expect = "an array of at least " + std::to_string(min_count) + " points, each an array of " + std::to_string(n) +
+                             " numbers" + (s.unit.empty() ? "" : " (" + s.unit + ")");
+  const json* v = get(key, s, "array of vectors", "", "at least " + std::to_string(min_count) + " points of length = dimension");
+  if (!v) return;
+  if (!v->is_array() || static_cast<int>(v->size()) < min_count) fail(key, v, expect);
+  std::vector<DVec> r;
+  for (const auto& p : *v) {
+    if (!p.is_array() || static_cast<int>(p.size()) != n) fail(key, v, expect);
+    DVec x;
+    for (const auto& e : p) {
+      if (!e.is_number() || !std::isfinite(e.get<double>())) fail(key, v, expect);
+      x.push_back(e.get<double>());
+    }
+    r.push_back(x);
+  }
+  out = r;
+}
+
 void Obj::strings(const char* key, std::vector<std::string>& out, const std::vector<std::string>& allowed, const Spec& s) {
   std::string names;
   for (const auto& a : allowed) names += (names.empty() ? "" : " | ") + a;

@@ -50,10 +50,15 @@ class Obj {
   void string(const char* key, std::string& out, const Spec& s);
   // length = ctx.dim, or `length` when > 0 (e.g. the three spring stiffnesses of a frame support).
   void vector(const char* key, DVec& out, const Spec& s, int length = 0);
+  // An array of at least min_count vectors of length ctx.dim (e.g. polygon vertices).
+  void vectors(const char* key, std::vector<DVec>& out, const Spec& s, int min_count);
   // Each element one of allowed; an empty allowed list accepts any string (checked elsewhere).
   void strings(const char* key, std::vector<std::string>& out, const std::vector<std::string>& allowed, const Spec& s);
   // An enumerated string mapped to a value.
   template <class E> void choice(const char* key, E& out, const std::vector<std::pair<std::string, E>>& map, const Spec& s);
+  // The raw JSON value of a key declared with a free-form type (e.g. a material object validated
+  // elsewhere); nullptr when absent or documenting.
+  const json* raw(const char* key, const Spec& s, const char* type, const std::string& def) { return get(key, s, type, def, ""); }
   // A nested object; absent -> its keys keep their defaults.
   Obj object(const char* key, const std::string& doc);
   // An array of objects, each read by f.

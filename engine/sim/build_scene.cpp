@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "engine/common/error.hpp"
+#include "engine/scenario/shape_geometry.hpp"
 #include "engine/sim/build_frame.hpp"
 
 namespace dmi {
@@ -15,12 +16,7 @@ template <int D> Vec<D> vec(const DVec& v) {
   return r;
 }
 
-template <int D> bool inside(const ShapeConfig& s, const Vec<D>& x) {
-  if (s.type == "ball") return (x - vec<D>(s.center)).norm() <= s.radius;
-  for (int d = 0; d < D; ++d)
-    if (x[d] < s.min[d] || x[d] > s.max[d]) return false;
-  return true;
-}
+template <int D> bool inside(const ShapeConfig& s, const Vec<D>& x) { return shape_contains(s, x.data(), D); }
 
 // Seeds particles on the regular sub-grid of spacing h/ppc aligned with the cells: positions
 // origin + (c + (k + 1/2)/ppc) h, kept when inside the shape. Volume (h/ppc)^D (x thickness in 2D).
@@ -29,11 +25,9 @@ template <int D> void seed_body(Scene<D>& sc, const Scenario& s, const BodyConfi
   const int ppc = b.particles_per_cell;
   const double dx = h / ppc;
   const Vec<D> origin = vec<D>(s.grid.origin);
-  Vec<D> lo, hi;
-  for (int d = 0; d < D; ++d) {
-    lo[d] = b.shape.type == "box" ? b.shape.min[d] : b.shape.center[d] - b.shape.radius;
-    hi[d] = b.shape.type == "box" ? b.shape.max[d] : b.shape.center[d] + b.shape.radius;
-  }
+  DVec blo, bhi;
+  shape_bounds(b.shape, D, blo, bhi);
+  const Vec<D> lo = vec<D>(blo), hi = vec<D>(bhi);
   IVec<D> first, count;
   for (int d = 0; d < D; ++d) {
     first[d] = static_cast<int>(std::floor((lo[d] - origin[d]) / dx));

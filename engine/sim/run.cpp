@@ -24,6 +24,8 @@ RunInfo make_info(const Scenario& s, const RunOptions& o) {
   info.scenario_name = s.name;
   info.scenario_file = s.source_file;
   info.scenario_json = s.source_text;
+  info.scenario_expanded_json = s.expanded_text;
+  info.variant = s.variant;
   info.software_version = o.software_version;
   info.dimension = s.analysis.dimension;
   for (const auto& b : s.bodies) info.body_names.push_back(b.name);

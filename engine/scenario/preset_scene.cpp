@@ -1,0 +1,394 @@
+// The low-level scene of the presets (layout in presets.hpp): materials, bodies, walls, the frame,
+// member contact, grid, end time and probes. Every default is stated where it is chosen.
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "engine/common/error.hpp"
+#include "engine/scenario/preset_types.hpp"
+
+namespace dmi {
+
+using json = nlohmann::json;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846, kG = 9.81;
+
+// x to 12 significant digits, so generated coordinates print without floating-point noise.
+double clean(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.12g", x);
+  return std::strtod(b, nullptr);
+}
+
+// Largest of {1, 1.5, 2, 2.5, 3, 4, 5, 6, 8} x 10^k not above x: cell sizes that print cleanly.
+double nice_floor(double x) {
+  const double e = std::pow(10.0, std::floor(std::log10(x)));
+  for (double m : {8.0, 6.0, 5.0, 4.0, 3.0, 2.5, 2.0, 1.5, 1.0})
+    if (m * e <= x * (1 + 1e-12)) return clean(m * e);
+  return e;
+}
+
+struct Box {
+  double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+  void add(double x, double y) {
+    lo[0] = std::min(lo[0], x), lo[1] = std::min(lo[1], y);
+    hi[0] = std::max(hi[0], x), hi[1] = std::max(hi[1], y);
+  }
+};
+
+// Uniform cantilever first two circular frequencies (rad/s): omega_i = (beta_i L)^2 sqrt(E/rho) r / L^2,
+// beta L = 1.8751, 4.6941 (SEEDS.md B.2; Clough & Penzien 1993, 18-3).
+std::pair<double, double> cantilever_modes(double E, double rho, double r, double L) {
+  const double base = std::sqrt(E / rho) * r / (L * L);
+  return {1.8751 * 1.8751 * base, 4.6941 * 4.6941 * base};
+}
+
+// Rayleigh C = a M + b K with damping ratio zeta at w1 and w2 (Chopra 2012, eq. 11.4.9).
+json rayleigh(double zeta, std::pair<double, double> w) {
+  return json{{"mass", 2 * zeta * w.first * w.second / (w.first + w.second)}, {"stiffness", 2 * zeta / (w.first + w.second)}};
+}
+
+json pipe(double d, double t) { return json{{"type", "pipe"}, {"diameter", d}, {"wall_thickness", t}}; }
+
+class Builder {
+ public:
+  Builder(const PresetScene& p, std::string file) : p_(p), d_(p_.dam), file_(std::move(file)) {}
+  json build();
+
+ private:
+  // Upstream and downstream dam faces x(y) (concrete_gravity; steel: the upstream column's surface).
+  double xu(double y) const;
+  double xd(double y) const;
+  // What a boulder or surge meets first at height y: the buffer's front where there is one.
+  double front(double y) const;
+  double bed(double x) const { return -x * std::tan(slope_); }  // ground line through the face's foot
+  double choose_cell_size() const;
+  void add_dam();
+  void add_concrete_members();
+  void add_steel_frame();
+  void add_buffer();
+  void add_boulder();
+  void add_debris();
+  void add_grid_walls_and_time();
+  double buffer_damping_frequency(double E, double thickness) const;
+  [[noreturn]] void fail(const std::string& path, const json& value, const std::string& expected) const {
+    throw InputError(file_, path, value.is_null() ? "" : value.dump(), expected);
+  }
+
+  PresetScene p_;  // a copy: the buffer's resolved top is written back
+  const DamPreset& d_;
+  std::string file_;
+  double h_ = 0, slope_ = 0, end_time_ = 0, boulder_r_ = 0, boulder_m_ = 0, impact_y_ = 0, boulder_speed_ = 0;
+  json out_ = json::object(), materials_ = json::array(), bodies_ = json::array(), probes_ = json::array(), bonded_ = json::array();
+  Box box_;
+  bool members_ = true;
+};
+
+double Builder::xu(double y) const {
+  if (d_.type != "concrete_gravity" || d_.sloped_face == "downstream") return 0.0;
+  const double batter = (d_.base_thickness - d_.crest) * y / d_.height;
+  return d_.sloped_face == "both" ? 0.5 * batter : batter;
+}
+
+double Builder::xd(double y) const {
+  if (d_.type == "steel_open") return (d_.rows - 1) * d_.row_spacing + d_.column_d;
+  const double batter = (d_.base_thickness - d_.crest) * y / d_.height;
+  return d_.base_thickness - (d_.sloped_face == "upstream" ? 0.0 : d_.sloped_face == "both" ? 0.5 * batter : batter);
+}
+
+double Builder::front(double y) const {
+  if (!p_.buffer) return xu(y);
+  const BufferPreset& b = *p_.buffer;
+  if (y < b.bottom || y > b.top) return xu(y);
+  return xu(y) - (b.type == "homogenised" ? b.thickness : b.tyre_diameter);
+}
+
+double Builder::choose_cell_size() const {
+  if (p_.cell_size > 0) return p_.cell_size;
+  // About 5 cells across the thinnest feature that must be resolved (a boulder radius, a buffer layer),
+  // 10 through a surge, 2 through a tyre ring; never coarser than height / 40.
+  double h = d_.height / 40;
+  if (p_.boulder) h = std::min(h, boulder_r_ / 5);
+  if (p_.debris) h = std::min(h, p_.debris->depth / 10);
+  if (p_.buffer) h = std::min(h, p_.buffer->type == "homogenised" ? p_.buffer->thickness / 5 : p_.buffer->ring_thickness / 2);
+  if (d_.type == "concrete_gravity" && d_.model == "continuum") h = std::min(h, d_.crest / 8);
+  if (d_.type == "steel_open") h = std::min(h, d_.column_d / 4);
+  return nice_floor(h);
+}
+
+json Builder::build() {
+  members_ = !(d_.type == "concrete_gravity" && d_.model == "continuum");
+  if (p_.debris) slope_ = p_.debris->slope * kPi / 180;
+  if (p_.boulder) {
+    const BoulderPreset& b = *p_.boulder;
+    // The 2D model is a cylinder as long as the out-of-plane width with the boulder's mass:
+    // m = rho pi D^3 / 6 (a sphere) = rho pi r^2 W  ->  r = sqrt(m / (rho pi W)).
+    boulder_m_ = b.mass > 0 ? b.mass : b.density * kPi * std::pow(b.diameter, 3) / 6;
+    boulder_r_ = std::sqrt(boulder_m_ / (b.density * kPi * d_.width));
+  }
+  h_ = choose_cell_size();
+  add_dam();
+  if (p_.buffer) add_buffer();
+  if (p_.boulder) add_boulder();
+  if (p_.debris) add_debris();
+  add_grid_walls_and_time();
+  out_["materials"] = materials_;
+  out_["bodies"] = bodies_;
+  out_["contact"] = json{{"method", "multi_field"}, {"friction", 0.3}};
+  if (members_) out_["member_contact"] = json{{"mode", "separable"}, {"bonded", bonded_}};
+  out_["output"]["probes"] = probes_;
+  return out_;
+}
+
+void Builder::add_dam() {
+  if (d_.type == "concrete_gravity") {
+    json m = d_.concrete;
+    m["name"] = "concrete";
+    if (!members_ && d_.damping_ratio > 0 && !m.contains("damping_ratio")) {
+      const double r = 0.5 * (d_.base_thickness + d_.crest) / std::sqrt(12.0);
+      m["damping_ratio"] = d_.damping_ratio;
+      m["damping_frequency"] = cantilever_modes(m["youngs_modulus"], m["density"], r, d_.height).first / (2 * kPi);
+    }
+    materials_.push_back(m);
+    if (members_) return add_concrete_members();
+    json poly = json::array({{xu(0), 0.0}, {xd(0), 0.0}, {xd(d_.height), d_.height}, {xu(d_.height), d_.height}});
+    bodies_.push_back(json{{"name", "dam"}, {"material", "concrete"}, {"shape", {{"type", "polygon"}, {"vertices", poly}}}});
+    probes_.push_back(json{{"name", "dam"}, {"type", "body"}, {"body", "dam"}, {"quantities", {"displacement", "velocity"}}});
+    box_.add(xu(0), 0), box_.add(xd(0), d_.height);
+    return;
+  }
+  json m = d_.steel;
+  m["name"] = "steel";
+  materials_.push_back(m);
+  add_steel_frame();
+}
+
+void Builder::add_concrete_members() {
+  const double H = d_.height;
+  const double x0 = 0.5 * (xu(0) + xd(0)), x1 = 0.5 * (xu(H) + xd(H));
+  // Depth normal to the (slightly inclined) centre line: the horizontal thickness times cos(phi).
+  const double c = H / std::hypot(H, x1 - x0);
+  json st;
+  st["integrator"] = "newmark";
+  st["self_weight"] = true;
+  st["nodes"] = json::array({{{"name", "base"}, {"position", {x0, 0.0}}}, {{"name", "crest"}, {"position", {x1, H}}}});
+  st["members"] = json::array({{{"name", "dam"}, {"start", "base"}, {"end", "crest"}, {"material", "concrete"}, {"elements", d_.elements},
+                                {"section", {{"type", "tapered_rectangle"}, {"width", d_.width}, {"depth_start", d_.base_thickness * c},
+                                             {"depth_end", d_.crest * c}}}}});
+  st["supports"] = json::array({{{"node", "base"}, {"type", d_.base}}});
+  if (d_.damping_ratio > 0) {
+    const double r = 0.5 * (d_.base_thickness + d_.crest) * c / std::sqrt(12.0);
+    st["rayleigh_damping"] = rayleigh(d_.damping_ratio, cantilever_modes(d_.concrete["youngs_modulus"], d_.concrete["density"], r, H));
+  }
+  out_["structure"] = st;
+  box_.add(xu(0), 0), box_.add(xd(0), H), box_.add(xu(H), H);
+  probes_.push_back(json{{"name", "base"}, {"type", "member"}, {"member", "dam"}, {"position", 0.0}, {"quantities", {"section_forces", "fibre_stress"}}});
+  probes_.push_back(json{{"name", "crest"}, {"type", "member"}, {"member", "dam"}, {"position", 1.0}, {"quantities", {"displacement"}}});
+}
+
+void Builder::add_steel_frame() {
+  const double H = d_.height, D = d_.column_d, s = d_.row_spacing;
+  const double bd = d_.beam_d > 0 ? d_.beam_d : D, bt = d_.beam_t > 0 ? d_.beam_t : d_.column_t;
+  json nodes = json::array(), members = json::array(), supports = json::array();
+  auto node = [](int i, int k) { return "c" + std::to_string(i) + "_" + std::to_string(k); };
+  const int secondary = std::max(2, d_.elements / 2);
+  for (int i = 0; i < d_.rows; ++i) {
+    const double x = 0.5 * D + i * s;  // the upstream column's upstream surface is at x = 0
+    for (int k = 0; k <= d_.levels; ++k) {
+      nodes.push_back({{"name", node(i, k)}, {"position", {x, H * k / d_.levels}}});
+      if (k == 0) {
+        supports.push_back({{"node", node(i, 0)}, {"type", d_.base}});
+        continue;
+      }
+      const std::string tag = std::to_string(i) + "_" + std::to_string(k);
+      members.push_back({{"name", "column_" + tag}, {"start", node(i, k - 1)}, {"end", node(i, k)}, {"material", "steel"},
+                         {"elements", d_.elements}, {"section", pipe(D, d_.column_t)}});
+      if (i + 1 == d_.rows) continue;
+      members.push_back({{"name", "beam_" + tag}, {"start", node(i, k)}, {"end", node(i + 1, k)}, {"material", "steel"},
+                         {"elements", secondary}, {"section", pipe(bd, bt)}});
+      if (d_.bracing)
+        members.push_back({{"name", "brace_" + tag}, {"start", node(i + 1, k - 1)}, {"end", node(i, k)}, {"material", "steel"},
+                           {"elements", secondary}, {"section", pipe(bd, bt)}});
+    }
+  }
+  json st{{"integrator", "newmark"}, {"self_weight", true}, {"nodes", nodes}, {"members", members}, {"supports", supports}};
+  if (d_.damping_ratio > 0) {
+    const double r = std::sqrt(D * D + std::pow(D - 2 * d_.column_t, 2)) / 4;  // pipe: r^2 = (D^2 + d^2) / 16
+    st["rayleigh_damping"] = rayleigh(d_.damping_ratio, cantilever_modes(d_.steel["youngs_modulus"], d_.steel["density"], r, H));
+  }
+  out_["structure"] = st;
+  box_.add(0, 0), box_.add(xd(0), H + 0.5 * D);
+  probes_.push_back(json{{"name", "base"}, {"type", "member"}, {"member", "column_0_1"}, {"position", 0.0},
+                         {"quantities", {"section_forces", "fibre_stress"}}});
+  probes_.push_back(json{{"name", "crest"}, {"type", "member"}, {"member", "column_0_" + std::to_string(d_.levels)}, {"position", 1.0},
+                         {"quantities", {"displacement"}}});
+}
+
+double Builder::buffer_damping_frequency(double E, double thickness) const {
+  // The buffer works as a spring k = E A / t under the boulder (A = r x W, a contact strip as wide as the
+  // equivalent radius) against the boulder's mass: f = sqrt(k/m) / (2 pi). Without a boulder, the
+  // layer's own quarter-wave frequency c / (4 t) (an estimate: the ratio is exact only at this frequency).
+  if (p_.boulder) return std::sqrt(E * boulder_r_ * d_.width / thickness / boulder_m_) / (2 * kPi);
+  const double rho = p_.buffer->material.value("density", 600.0);
+  return std::sqrt(E / rho) / (4 * thickness);
+}
+
+void Builder::add_buffer() {
+  const BufferPreset& b = *p_.buffer;
+  const double H = d_.height;
+  const double top = b.top > 0 ? b.top : H;
+  if (top > H) fail("/tyre_buffer/top", top, "a top at most the dam height " + std::to_string(H) + " m");
+  if (top <= b.bottom) fail("/tyre_buffer/top", top, "a top above bottom = " + std::to_string(b.bottom) + " m");
+  p_.buffer->top = top;  // front() reads the resolved top
+  json m = b.material;
+  const bool homog = b.type == "homogenised";
+  m["name"] = homog ? "tyre_buffer" : "tyre_rubber";
+  const double E = m["youngs_modulus"], nu = m["poisson_ratio"];
+  const double f = m.contains("damping_frequency") ? m["damping_frequency"].get<double>()
+                                                   : buffer_damping_frequency(E, homog ? b.thickness : b.tyre_diameter);
+  if (b.viscosity > 0) {
+    // Kelvin-Voigt: sigma_v = beta C:D, shear part 2 mu beta D' = 2 eta D'  ->  beta = eta / mu; zeta(f) = pi f beta.
+    const double zeta = kPi * f * b.viscosity / (E / (2 * (1 + nu)));
+    if (zeta > 1) fail("/tyre_buffer/viscosity", b.viscosity, "a viscosity giving a damping ratio <= 1 at " + std::to_string(f) + " Hz (it gives " +
+                                                                 std::to_string(zeta) + ")");
+    m["damping_ratio"] = zeta;
+  }
+  if (m.value("damping_ratio", 0.0) > 0 && !m.contains("damping_frequency")) m["damping_frequency"] = f;
+  materials_.push_back(m);
+  if (homog) {
+    const double t = b.thickness;
+    const double y0 = std::max(b.bottom, bed(xu(b.bottom) - t));
+    json poly = json::array({{xu(y0) - t, y0}, {xu(y0), y0}, {xu(top), top}, {xu(top) - t, top}});
+    bodies_.push_back(json{{"name", "buffer"}, {"material", m["name"]}, {"shape", {{"type", "polygon"}, {"vertices", poly}}}});
+    bonded_.push_back("buffer");
+    box_.add(xu(y0) - t, y0), box_.add(xu(top) - t, top);
+    return;
+  }
+  const double R = 0.5 * b.tyre_diameter, inner = R - b.ring_thickness;
+  if (inner <= 0) fail("/tyre_buffer/ring_thickness", b.ring_thickness, "a ring thickness below the tyre radius " + std::to_string(R) + " m");
+  if (b.fill != "none") {
+    const bool sand = b.fill == "sand";
+    materials_.push_back(json{{"name", "tyre_fill"}, {"model", "drucker_prager"}, {"density", sand ? 1800 : 2000},
+                              {"youngs_modulus", sand ? 30e6 : 80e6}, {"poisson_ratio", 0.3}, {"friction_angle", sand ? 35 : 40}});
+  }
+  int n = 0;
+  for (double y = std::max(b.bottom, 0.0) + R; y + R <= top + 1e-9; y += 2 * R, ++n) {
+    const std::string name = "tyre_" + std::to_string(n + 1);
+    const double x = xu(y) - R;
+    bodies_.push_back(json{{"name", name}, {"material", "tyre_rubber"},
+                           {"shape", {{"type", "ball"}, {"center", {x, y}}, {"radius", R}, {"inner_radius", inner}}}});
+    bonded_.push_back(name);
+    if (b.fill != "none")
+      bodies_.push_back(json{{"name", name + "_fill"}, {"material", "tyre_fill"},
+                             {"shape", {{"type", "ball"}, {"center", {x, y}}, {"radius", inner * (1 - 1e-9)}}}});
+    box_.add(x - R, y - R), box_.add(x + R, y + R);
+  }
+  if (n == 0) fail("/tyre_buffer/tyre_diameter", b.tyre_diameter, "tyres that fit between bottom and top (" + std::to_string(top - b.bottom) + " m)");
+}
+
+void Builder::add_boulder() {
+  const BoulderPreset& b = *p_.boulder;
+  materials_.push_back(json{{"name", "rock"}, {"model", "linear_elastic"}, {"density", b.density}, {"youngs_modulus", b.youngs_modulus},
+                            {"poisson_ratio", b.poisson_ratio}});
+  double vx = b.velocity.empty() ? std::sqrt(2 * kG * b.release_height) : b.velocity[0];
+  double vy = b.velocity.empty() ? 0.0 : b.velocity[1];
+  boulder_speed_ = std::hypot(vx, vy);
+  if (!(vx > 0)) fail("/boulder/velocity", b.velocity, "a velocity with a positive x component (towards the dam, downstream)");
+  const double r = boulder_r_, gap = b.gap >= 0 ? b.gap : 2 * h_;
+  impact_y_ = b.impact_height > 0 ? b.impact_height : 0.9 * d_.height;
+  double cx, cy;
+  if (!b.position.empty()) {
+    cx = b.position[0], cy = b.position[1];
+    impact_y_ = cy;
+  } else {
+    // Touching point (centre r upstream of the face at the impact height), moved back by gap along the path.
+    cx = front(impact_y_) - r - gap * vx / boulder_speed_;
+    cy = impact_y_ - gap * vy / boulder_speed_;
+  }
+  if (cy - r < bed(cx) + 0.5 * h_)
+    fail(b.position.empty() ? "/boulder/impact_height" : "/boulder/position", b.position.empty() ? json(impact_y_) : json(b.position),
+         "a boulder above the ground: its centre at least the equivalent radius " + std::to_string(r) + " m (+ half a cell) above the bed");
+  if (cx + r > front(cy) + 1e-9)
+    fail("/boulder/position", b.position, "a boulder upstream of the dam face or buffer (it overlaps them)");
+  bodies_.push_back(json{{"name", "boulder"}, {"material", "rock"}, {"shape", {{"type", "ball"}, {"center", {clean(cx), clean(cy)}}, {"radius", clean(r)}}},
+                         {"velocity", {vx, vy}}});
+  probes_.push_back(json{{"name", "boulder"}, {"type", "body"}, {"body", "boulder"}, {"quantities", {"velocity", "kinetic_energy", "position"}}});
+  box_.add(cx - r, cy - r), box_.add(cx + r, cy + r);
+  // End: arrival plus 0.15 s (a buffered impact lasts a few hundredths of a second; docs/verification.md).
+  const double travel = std::max(0.0, front(cy) - r - cx) / vx;
+  end_time_ = std::max(end_time_, travel + 0.15);
+  if (members_) {
+    const double y = std::clamp(impact_y_ / d_.height, 0.0, 1.0);
+    if (d_.type == "concrete_gravity") {
+      probes_.push_back(json{{"name", "impact"}, {"type", "member"}, {"member", "dam"}, {"position", y},
+                             {"quantities", {"section_forces", "fibre_stress", "displacement"}}});
+    } else {
+      const int k = std::clamp(static_cast<int>(std::ceil(y * d_.levels)), 1, d_.levels);
+      const double pos = std::clamp(y * d_.levels - (k - 1), 0.0, 1.0);
+      probes_.push_back(json{{"name", "impact"}, {"type", "member"}, {"member", "column_0_" + std::to_string(k)}, {"position", pos},
+                             {"quantities", {"section_forces", "fibre_stress", "displacement"}}});
+    }
+  }
+}
+
+void Builder::add_debris() {
+  const DebrisPreset& f = *p_.debris;
+  json m = f.material;
+  m["name"] = "debris";
+  materials_.push_back(m);
+  const double c = std::cos(slope_), gap = f.gap >= 0 ? f.gap : 2 * h_, height = f.depth / c;  // vertical flow height
+  // Front: a vertical edge gap upstream of whatever it meets first over its height (found by a
+  // fixed-point pass, since the bed height at the front depends on where the front is).
+  double x = -gap;
+  for (int pass = 0; pass < 3; ++pass) {
+    const double y0 = bed(x);
+    double face = 1e300;
+    for (int k = 0; k <= 50; ++k) face = std::min(face, front(std::min(y0 + height * k / 50, d_.height)));
+    x = face - gap;
+  }
+  const double xb = x - f.length * c;  // back edge: the surge is `length` long along the bed
+  json poly = json::array({{xb, bed(xb)}, {x, bed(x)}, {x, bed(x) + height}, {xb, bed(xb) + height}});
+  const double vx = f.velocity * c, vy = -f.velocity * std::sin(slope_);
+  bodies_.push_back(json{{"name", "debris"}, {"material", "debris"}, {"shape", {{"type", "polygon"}, {"vertices", poly}}}, {"velocity", {vx, vy}}});
+  probes_.push_back(json{{"name", "debris"}, {"type", "body"}, {"body", "debris"}, {"quantities", {"velocity", "kinetic_energy", "position"}}});
+  box_.add(xb, bed(x)), box_.add(x, bed(xb) + height);
+  // End: the whole surge has arrived, plus 0.5 s of pile-up.
+  end_time_ = std::max(end_time_, (gap + f.length) / f.velocity + 0.5);
+}
+
+void Builder::add_grid_walls_and_time() {
+  const double h = h_, H = d_.height;
+  // Room: 4 cells round everything; above, the boulder's possible rebound height v^2 / 2g (at most H)
+  // and for a surge its depth (it may overtop); downstream, a quarter of the height (half with a surge).
+  double top = std::max(box_.hi[1], H) + 4 * h;
+  if (p_.boulder) top += std::min(boulder_speed_ * boulder_speed_ / (2 * kG), H);
+  if (p_.debris) top += p_.debris->depth;
+  const double right = box_.hi[0] + std::max(4 * h, (p_.debris ? 0.5 : 0.25) * H);
+  const double left = box_.lo[0] - 4 * h;
+  const double bottom = std::min(0.0, bed(right)) - 4 * h;
+  const double ox = std::floor(left / h) * h, oy = std::floor(bottom / h) * h;
+  const double sx = std::ceil((right - ox) / h) * h, sy = std::ceil((top - oy) / h) * h;
+  out_["grid"] = json{{"origin", {clean(ox), clean(oy)}}, {"size", {clean(sx), clean(sy)}}, {"cell_size", h}};
+  out_["analysis"] = json{{"dimension", 2}, {"plane", "strain"}, {"thickness", d_.width}, {"end_time", end_time_}};
+  out_["output"] = json{{"history_interval", std::min(1e-4, end_time_ / 2000)}, {"snapshot_interval", end_time_ / 20}};
+  json walls = json::array();
+  const double bed_mu = p_.debris ? p_.debris->bed_friction : 0.4;
+  walls.push_back({{"name", "ground"}, {"type", "plane"}, {"point", {0.0, 0.0}}, {"normal", {std::sin(slope_), std::cos(slope_)}},
+                   {"condition", "friction"}, {"friction", bed_mu}});
+  walls.push_back({{"name", "upstream_end"}, {"type", "plane"}, {"point", {ox + 2 * h, 0.0}}, {"normal", {1.0, 0.0}}, {"condition", "slip"}});
+  walls.push_back({{"name", "downstream_end"}, {"type", "plane"}, {"point", {ox + sx - 2 * h, 0.0}}, {"normal", {-1.0, 0.0}}, {"condition", "slip"}});
+  if (!members_)  // the continuum dam is stuck to its foundation along its base
+    walls.push_back({{"name", "dam_base"}, {"type", "box"}, {"min", {xu(0), oy}}, {"max", {xd(0), 1e-9 * H}}, {"condition", "stick"}});
+  out_["walls"] = walls;
+}
+
+}  // namespace
+
+json build_preset_scene(const PresetScene& p, const std::string& file) { return Builder(p, file).build(); }
+
+}  // namespace dmi

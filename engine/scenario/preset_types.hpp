@@ -1,0 +1,55 @@
+// What the presets say (read by presets.cpp) and the scene builder (preset_scene.cpp).
+#pragma once
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/scenario/config.hpp"
+
+namespace dmi {
+
+struct DamPreset {
+  std::string type, base = "fixed", sloped_face = "downstream", model = "members";
+  double height = 0, width = 1.0, damping_ratio = 0.05;
+  int elements = 8;
+  double crest = 0, base_thickness = 0;                          // concrete_gravity, m
+  nlohmann::json concrete, steel;                                // material objects
+  int rows = 2, levels = 2;                                      // steel_open
+  double row_spacing = 0, column_d = 0, column_t = 0, beam_d = 0, beam_t = 0;
+  bool bracing = true;
+};
+
+struct BoulderPreset {
+  double diameter = 0, mass = 0, density = 2650, youngs_modulus = 50e9, poisson_ratio = 0.25;
+  DVec velocity, position;
+  double release_height = 0, impact_height = 0, gap = -1;        // gap < 0: default
+};
+
+struct DebrisPreset {
+  double depth = 0, length = 0, velocity = 0, slope = 0, gap = -1, bed_friction = 0.4;
+  nlohmann::json material;
+};
+
+struct BufferPreset {
+  std::string type = "homogenised", fill = "none";
+  double bottom = 0, top = 0, thickness = 0, viscosity = 0;
+  double tyre_diameter = 0.6, ring_thickness = 0.08;
+  nlohmann::json material;
+};
+
+struct PresetScene {
+  DamPreset dam;
+  std::optional<BoulderPreset> boulder;
+  std::optional<DebrisPreset> debris;
+  std::optional<BufferPreset> buffer;
+  double cell_size = 0;          // the user's grid.cell_size, 0 = choose
+  bool gravity_given = false;
+};
+
+// The low-level scenario JSON of the presets (without the user's low-level keys).
+nlohmann::json build_preset_scene(const PresetScene& p, const std::string& file);
+// Recursive merge: objects key by key (from wins), arrays appended, anything else replaced.
+void merge_json(nlohmann::json& into, const nlohmann::json& from);
+
+}  // namespace dmi

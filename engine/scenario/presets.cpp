@@ -1,0 +1,231 @@
+// Preset keys (declared once, with defaults, units and docs) and their expansion into the
+// low-level scene. Geometry conventions: presets.hpp.
+#include "engine/scenario/presets.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/common/error.hpp"
+#include "engine/scenario/preset_types.hpp"
+
+namespace dmi {
+
+using json = nlohmann::json;
+using schema::Obj;
+using schema::Spec;
+
+namespace {
+
+const char* const kPresetKeys[] = {"dam", "boulder", "debris_surge", "tyre_buffer", "compare"};
+
+Spec positive(const std::string& unit, const std::string& doc, bool required = false) {
+  return Spec{.unit = unit, .doc = doc, .min = 0, .min_open = true, .required = required};
+}
+Spec nonneg(const std::string& unit, const std::string& doc) { return Spec{.unit = unit, .doc = doc, .min = 0}; }
+
+// A material object: defaults overlaid by the user's keys, validated as a materials[] entry at its
+// own JSON path (so a wrong key names /dam/concrete/..., not the generated list).
+// `derived` holds keys the expansion fills in later (e.g. a damping frequency), used for the check only.
+json material_object(Obj& o, const char* key, const json& defaults, const std::string& doc, const std::string& name,
+                     const json& derived = json::object()) {
+  const json* v = o.raw(key, Spec{.doc = doc + "; the keys of a materials[] entry without name (docs: materials)"}, "object",
+                        defaults.dump());
+  json m = defaults;
+  if (v) {
+    if (!v->is_object()) o.fail(key, v, "an object (a material: model, density, youngs_modulus, ...)");
+    if (v->contains("name")) o.fail(std::string(key) + "/name", &v->at("name"), "no name (the preset names its materials)");
+    if (v->contains("model") && v->at("model") != defaults.value("model", "")) {
+      // Another law: keep only the density default, the rest must come from the user.
+      m = json::object();
+      if (defaults.contains("density")) m["density"] = defaults["density"];
+    }
+    m.update(*v);
+  }
+  if (!o.documenting()) {
+    json named = m;
+    named["name"] = name;
+    for (auto it = derived.begin(); it != derived.end(); ++it)
+      if (!named.contains(it.key())) named[it.key()] = it.value();
+    MaterialConfig unused;
+    detail::read_material_object(named, o.path() + "/" + key, o.context().file, unused);
+  }
+  return m;
+}
+
+void read_dam(Obj o, DamPreset& d) {
+  o.string("type", d.type, Spec{.doc = "concrete_gravity (a tapered concrete wall) | steel_open (a frame of steel pipes: columns in rows "
+                                       "along the flow, beams between them)", .required = true});
+  if (!o.documenting() && d.type != "concrete_gravity" && d.type != "steel_open")
+    o.fail("type", nullptr, "concrete_gravity or steel_open (got '" + d.type + "')");
+  o.number("height", d.height, positive("m", "height above the ground at the upstream face", true));
+  o.number("width", d.width, positive("m", "out-of-plane width the 2D model stands for (analysis.thickness): the face width of a concrete dam, "
+                                           "the column spacing across the channel of a steel dam"));
+  o.choice<std::string>("base", d.base, {{"fixed", "fixed"}, {"pinned", "pinned"}}, Spec{.doc = "support at the foundation"});
+  o.number("damping_ratio", d.damping_ratio, Spec{.doc = "structural damping ratio (Rayleigh, fitted to the first two cantilever modes "
+                                                         "of the dam estimated as a uniform cantilever, SEEDS.md B.2; concrete 5-10 %, B.4)",
+                                                  .min = 0, .max = 0.5});
+  o.integer("elements", d.elements, Spec{.doc = "beam-column elements per member (members model)", .min = 1, .max = 1000});
+  if (o.when("type", d.type, "concrete_gravity")) {
+    o.number("crest_thickness", d.crest, positive("m", "thickness at the crest, along the flow", true));
+    o.number("base_thickness", d.base_thickness, positive("m", "thickness at the base, >= crest_thickness", true));
+    o.choice<std::string>("sloped_face", d.sloped_face, {{"downstream", "downstream"}, {"upstream", "upstream"}, {"both", "both"}},
+                          Spec{.doc = "which face is battered: downstream (vertical upstream face), upstream, or both (symmetric)"});
+    o.choice<std::string>("model", d.model, {{"members", "members"}, {"continuum", "continuum"}},
+                          Spec{.doc = "members: one tapered beam-column member fixed at the base (SEEDS.md A.3; stresses from N and M); "
+                                      "continuum: an MPM body stuck to the ground along its base (for comparison)"});
+    d.concrete = material_object(o, "concrete", json{{"model", "linear_elastic"}, {"density", 2400}, {"youngs_modulus", 25e9}, {"poisson_ratio", 0.2}},
+                                 "concrete (paper B uses E 25 GPa, rho 2300)", "concrete");
+    if (!o.documenting() && d.base_thickness < d.crest)
+      o.fail("base_thickness", nullptr, "a base thickness >= crest_thickness = " + std::to_string(d.crest) + " m");
+  }
+  o.end_when();
+  if (o.when("type", d.type, "steel_open")) {
+    o.integer("rows", d.rows, Spec{.doc = "rows of columns along the flow (the upstream row is hit)", .min = 1, .max = 10});
+    o.number("row_spacing", d.row_spacing, positive("m", "distance between rows along the flow; default height / 2"));
+    o.integer("levels", d.levels, Spec{.doc = "beam levels between the rows, evenly spaced up to the crest", .min = 1, .max = 20});
+    o.boolean("bracing", d.bracing, Spec{.doc = "one diagonal per panel, from the foot of the downstream column to the head of the upstream one"});
+    Obj c = o.object("column", "column pipe section");
+    c.number("diameter", d.column_d, positive("m", "outer diameter D", true));
+    c.number("wall_thickness", d.column_t, positive("m", "wall thickness t <= D/2", true));
+    c.finish();
+    Obj b = o.object("beam", "beam and brace pipe section; default: the column's");
+    b.number("diameter", d.beam_d, positive("m", "outer diameter D"));
+    b.number("wall_thickness", d.beam_t, positive("m", "wall thickness t <= D/2"));
+    b.finish();
+    d.steel = material_object(o, "steel", json{{"model", "linear_elastic"}, {"density", 7850}, {"youngs_modulus", 205e9}, {"poisson_ratio", 0.3}},
+                              "steel", "steel");
+  }
+  o.end_when();
+  o.finish();
+}
+
+void read_boulder(Obj o, BoulderPreset& b) {
+  o.number("diameter", b.diameter, positive("m", "diameter of the (spherical) boulder; give this or mass"));
+  o.number("mass", b.mass, positive("kg", "boulder mass; give this or diameter"));
+  o.number("density", b.density, positive("kg/m^3", "rock density"));
+  o.number("youngs_modulus", b.youngs_modulus, positive("Pa", "rock Young's modulus (stiffness)"));
+  o.number("poisson_ratio", b.poisson_ratio, Spec{.doc = "rock Poisson's ratio", .min = 0, .max = 0.5, .max_open = true});
+  o.vector("velocity", b.velocity, Spec{.unit = "m/s", .doc = "velocity at release; give this or release_height"});
+  o.number("release_height", b.release_height, positive("m", "drop height converted to a horizontal speed sqrt(2 g h) towards the dam"));
+  o.number("impact_height", b.impact_height, positive("m", "height of the boulder's centre where it meets the dam (or buffer); default 0.9 x dam height"));
+  o.vector("position", b.position, Spec{.unit = "m", .doc = "centre at release (overrides impact_height and gap)"});
+  o.number("gap", b.gap, nonneg("m", "clearance to the face at release along the path; default 2 cells"));
+  o.finish();
+  if (o.documenting()) return;
+  if ((b.diameter > 0) == (b.mass > 0)) o.fail("diameter", nullptr, "either diameter or mass (exactly one of them)");
+  if (b.velocity.empty() == !(b.release_height > 0)) o.fail("velocity", nullptr, "either velocity or release_height (exactly one of them)");
+}
+
+void read_debris(Obj o, DebrisPreset& d) {
+  o.number("depth", d.depth, positive("m", "flow depth, normal to the bed", true));
+  o.number("length", d.length, positive("m", "surge length along the bed", true));
+  o.number("velocity", d.velocity, positive("m/s", "front speed along the bed, towards the dam", true));
+  o.number("channel_slope", d.slope, Spec{.unit = "deg", .doc = "bed inclination (rising upstream)", .min = 0, .max = 45, .max_open = true});
+  o.number("gap", d.gap, nonneg("m", "distance from the surge front to the dam face (or buffer) at t = 0; default 2 cells"));
+  o.number("bed_friction", d.bed_friction, nonneg("", "Coulomb friction coefficient of the bed"));
+  d.material = material_object(o, "material", json{{"model", "drucker_prager"}, {"density", 2000}, {"youngs_modulus", 20e6}, {"poisson_ratio", 0.3},
+                                                   {"cohesion", 0}, {"friction_angle", 30}},
+                               "debris law: drucker_prager (granular, default) or a slurry (bingham, newtonian)", "debris");
+  o.finish();
+}
+
+void read_buffer(Obj o, BufferPreset& b) {
+  o.choice<std::string>("type", b.type, {{"homogenised", "homogenised"}, {"discrete", "discrete"}},
+                        Spec{.doc = "homogenised: one rubber layer bonded to the upstream face; discrete: a column of tyres (rubber "
+                                    "rings, axis across the channel) bonded to the face, optionally filled"});
+  o.number("bottom", b.bottom, nonneg("m", "lowest point of the buffer above the ground"));
+  o.number("top", b.top, positive("m", "highest point; default the dam height"));
+  o.number("viscosity", b.viscosity, positive("Pa s", "instead of material.damping_ratio: Kelvin-Voigt shear viscosity eta; the "
+                                                      "stiffness-proportional time beta = eta / mu (mu the shear modulus)"));
+  if (o.when("type", b.type, "homogenised")) {
+    o.number("thickness", b.thickness, positive("m", "layer thickness (horizontal)", true));
+    b.material = material_object(o, "material", json{{"model", "neo_hookean"}, {"density", 600}, {"youngs_modulus", 2e6}, {"poisson_ratio", 0.3},
+                                                     {"damping_ratio", 0.15}},
+                                 "homogenised tyre layer (effective modulus of the stack; damping_frequency defaults to the "
+                                 "boulder-on-buffer frequency)", "tyre_buffer", json{{"damping_frequency", 1.0}});
+  }
+  o.end_when();
+  if (o.when("type", b.type, "discrete")) {
+    o.number("tyre_diameter", b.tyre_diameter, positive("m", "outer diameter of a tyre"));
+    o.number("ring_thickness", b.ring_thickness, positive("m", "rubber ring thickness in the section (tread and sidewalls homogenised)"));
+    o.choice<std::string>("fill", b.fill, {{"none", "none"}, {"sand", "sand"}, {"gravel", "gravel"}},
+                          Spec{.doc = "filling of the tyres: none, sand or gravel (Drucker-Prager)"});
+    b.material = material_object(o, "material", json{{"model", "neo_hookean"}, {"density", 1100}, {"youngs_modulus", 10e6}, {"poisson_ratio", 0.4},
+                                                     {"damping_ratio", 0.1}},
+                                 "tyre rubber (damping_frequency defaults to the boulder-on-buffer frequency)", "tyre_rubber",
+                                 json{{"damping_frequency", 1.0}});
+  }
+  o.end_when();
+  o.finish();
+}
+
+}  // namespace
+
+bool has_presets(const json& j) {
+  if (!j.is_object()) return false;
+  for (const char* k : kPresetKeys)
+    if (j.contains(k)) return true;
+  return false;
+}
+
+std::vector<std::string> preset_variants(const json& j, const std::string& file) {
+  if (!j.is_object() || !j.contains("compare")) return {""};
+  const json& c = j["compare"];
+  if (c != "with_and_without_buffer" && c != "none")
+    throw InputError(file, "/compare", schema::short_dump(c), "with_and_without_buffer or none");
+  if (c == "none") return {""};
+  if (!j.contains("tyre_buffer"))
+    throw InputError(file, "/compare", schema::short_dump(c), "a tyre_buffer to compare with (there is none)");
+  return {"with_buffer", "without_buffer"};
+}
+
+void document_presets(Obj& o) {
+  DamPreset d;
+  BoulderPreset b;
+  DebrisPreset f;
+  BufferPreset t;
+  read_dam(o.object("dam", "preset: the check dam (expanded into a structure or a body; docs/presets.md)"), d);
+  read_boulder(o.object("boulder", "preset: a boulder thrown at the dam's upstream face"), b);
+  read_debris(o.object("debris_surge", "preset: a debris surge running down the channel into the dam"), f);
+  read_buffer(o.object("tyre_buffer", "preset: waste tyres on the upstream face"), t);
+  std::string c;
+  o.string("compare", c, Spec{.doc = "with_and_without_buffer: run the scenario with and without its tyre_buffer (OUT/with_buffer, "
+                                     "OUT/without_buffer) | none"});
+}
+
+json expand_presets(const json& j, const std::string& file, const std::string& variant) {
+  schema::Context ctx{.file = file, .dim = 2};
+  Obj root(&j, "", ctx);
+  PresetScene p;
+  if (j.contains("analysis") && j["analysis"].is_object() && j["analysis"].value("dimension", 2) != 2)
+    throw InputError(file, "/analysis/dimension", schema::short_dump(j["analysis"]["dimension"]), "2 with presets (they build 2D elevations)");
+  if (!j.contains("dam")) throw InputError(file, "/dam", "", "a dam preset with the other presets (boulder, debris_surge and tyre_buffer act on it)");
+  read_dam(root.object("dam", ""), p.dam);
+  if (j.contains("boulder")) read_boulder(root.object("boulder", ""), p.boulder.emplace());
+  if (j.contains("debris_surge")) read_debris(root.object("debris_surge", ""), p.debris.emplace());
+  if (j.contains("tyre_buffer") && variant != "without_buffer") read_buffer(root.object("tyre_buffer", ""), p.buffer.emplace());
+  if (!p.boulder && !p.debris) throw InputError(file, "/boulder", "", "a boulder or a debris_surge hitting the dam");
+  if (j.contains("grid") && j["grid"].is_object() && j["grid"].contains("cell_size") && j["grid"]["cell_size"].is_number())
+    p.cell_size = j["grid"]["cell_size"].get<double>();
+  if (j.contains("analysis") && j["analysis"].is_object() && j["analysis"].contains("gravity")) p.gravity_given = true;
+  json low = build_preset_scene(p, file);
+  // Merge the user's low-level keys: objects key by key (user wins), arrays appended.
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    if (std::find(std::begin(kPresetKeys), std::end(kPresetKeys), it.key()) != std::end(kPresetKeys)) continue;
+    merge_json(low[it.key()], it.value());
+  }
+  if (!variant.empty()) low["name"] = low.value("name", std::string()) + (variant == "with_buffer" ? " (with buffer)" : " (without buffer)");
+  return low;
+}
+
+void merge_json(json& into, const json& from) {
+  if (into.is_object() && from.is_object()) {
+    for (auto it = from.begin(); it != from.end(); ++it) merge_json(into[it.key()], it.value());
+  } else if (into.is_array() && from.is_array()) {
+    for (const auto& e : from) into.push_back(e);
+  } else {
+    into = from;
+  }
+}
+
+}  // namespace dmi

@@ -1,0 +1,204 @@
+// Presets expand into a scene whose geometry, masses and sections are checked by hand here.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/common/error.hpp"
+#include "engine/mpm/scene.hpp"
+#include "engine/scenario/presets.hpp"
+#include "engine/scenario/scenario.hpp"
+#include "engine/scenario/shape_geometry.hpp"
+#include "engine/sim/build_scene.hpp"
+
+namespace dmi {
+namespace {
+
+using json = nlohmann::json;
+constexpr double kPi = 3.14159265358979323846;
+
+json concrete_boulder() {
+  return json::parse(R"({"schema_version": 1, "name": "c",
+    "dam": {"type": "concrete_gravity", "height": 4, "crest_thickness": 1.0, "base_thickness": 1.6, "width": 2.0},
+    "boulder": {"mass": 1000, "velocity": [5, 0], "impact_height": 3.6},
+    "tyre_buffer": {"thickness": 0.3, "bottom": 3.0},
+    "compare": "with_and_without_buffer"})");
+}
+
+const json& named(const json& list, const std::string& name) {
+  for (const auto& e : list)
+    if (e.value("name", "") == name) return e;
+  throw std::runtime_error("no entry " + name);
+}
+
+TEST(Presets, ConcreteDamMembersSectionAndSupport) {
+  for (const std::string face : {"downstream", "upstream", "both"}) {
+    json j = concrete_boulder();
+    j["dam"]["sloped_face"] = face;
+    const json low = expand_presets(j, "t.json", "with_buffer");
+    const json& st = low["structure"];
+    const double xb = st["nodes"][0]["position"][0], xc = st["nodes"][1]["position"][0];
+    // Centre line through the mid-thickness: base 0.8 m from the upstream toe; crest per face.
+    const double crest_mid = face == "downstream" ? 0.5 : face == "upstream" ? 1.1 : 0.8;
+    EXPECT_NEAR(xb, 0.8, 1e-12) << face;
+    EXPECT_NEAR(xc, crest_mid, 1e-12) << face;
+    const double c = 4.0 / std::hypot(4.0, xc - xb);
+    EXPECT_NEAR(st["members"][0]["section"]["depth_start"].get<double>(), 1.6 * c, 1e-12);
+    EXPECT_NEAR(st["members"][0]["section"]["depth_end"].get<double>(), 1.0 * c, 1e-12);
+    EXPECT_EQ(st["supports"][0]["type"], "fixed");
+    // The buffer's inner edge lies on the upstream face: x = 0 (downstream batter) or the batter line.
+    const json& v = named(low["bodies"], "buffer")["shape"]["vertices"];
+    const double batter = face == "downstream" ? 0.0 : face == "upstream" ? 0.6 : 0.3;
+    EXPECT_NEAR(v[1][0].get<double>(), batter * 3.0 / 4.0, 1e-12) << face;
+    EXPECT_NEAR(v[2][0].get<double>(), batter, 1e-12) << face;
+    EXPECT_NEAR(v[1][0].get<double>() - v[0][0].get<double>(), 0.3, 1e-12);
+  }
+}
+
+TEST(Presets, BoulderKeepsItsMassAndTouchesTheBufferAfterTheGap) {
+  const json low = expand_presets(concrete_boulder(), "t.json", "with_buffer");
+  const json& b = named(low["bodies"], "boulder");
+  const double r = b["shape"]["radius"], W = low["analysis"]["thickness"], h = low["grid"]["cell_size"];
+  EXPECT_NEAR(2650 * kPi * r * r * W, 1000.0, 1e-6);  // the equivalent cylinder has the boulder's mass
+  const double gap = -0.3 - (b["shape"]["center"][0].get<double>() + r);
+  EXPECT_NEAR(gap, 2 * h, 1e-9);
+  EXPECT_NEAR(b["shape"]["center"][1].get<double>(), 3.6, 1e-12);
+  // Cell size: about r / 5, rounded down to a clean value.
+  EXPECT_LE(h, r / 5);
+  EXPECT_GE(h, r / 5 * 0.6);
+  // Sphere given by diameter: m = rho pi D^3 / 6.
+  json j = concrete_boulder();
+  j["boulder"].erase("mass");
+  j["boulder"]["diameter"] = 0.9;
+  const json low2 = expand_presets(j, "t.json");
+  const double r2 = named(low2["bodies"], "boulder")["shape"]["radius"];
+  EXPECT_NEAR(2650 * kPi * r2 * r2 * 2.0, 2650 * kPi * 0.729 / 6, 1e-6);
+}
+
+TEST(Presets, CompareGivesTwoVariantsDifferingOnlyInTheBuffer) {
+  const std::vector<ScenarioVariant> v = parse_scenario_variants(concrete_boulder().dump(), "t.json");
+  ASSERT_EQ(v.size(), 2u);
+  EXPECT_EQ(v[0].label, "with_buffer");
+  EXPECT_EQ(v[1].label, "without_buffer");
+  EXPECT_EQ(v[0].scenario.bodies.size(), 2u);
+  EXPECT_EQ(v[1].scenario.bodies.size(), 1u);
+  EXPECT_TRUE(v[1].scenario.member_contact.bonded.empty());
+  // The boulder meets the face 0.3 m later without the buffer; same mass, speed and height.
+  const auto &b0 = v[0].scenario.bodies[1], &b1 = v[1].scenario.bodies[0];
+  EXPECT_EQ(b1.name, "boulder");
+  EXPECT_NEAR(b1.shape.center[0] - b0.shape.center[0], 0.3, 1e-9);
+  EXPECT_EQ(b0.shape.radius, b1.shape.radius);
+  EXPECT_FALSE(v[0].scenario.expanded_text.empty());
+}
+
+TEST(Presets, UserLowLevelKeysMergeIntoTheExpansion) {
+  json j = concrete_boulder();
+  j.erase("compare");
+  j["grid"] = {{"cell_size", 0.05}};
+  j["analysis"] = {{"end_time", 0.05}};
+  j["output"] = {{"probes", json::array({{{"name", "mid"}, {"type", "member"}, {"member", "dam"}, {"position", 0.5}}})}};
+  const Scenario s = parse_scenario(j.dump(), "t.json");
+  EXPECT_EQ(s.grid.cell_size, 0.05);
+  EXPECT_NEAR(std::remainder(s.grid.origin[0], 0.05), 0.0, 1e-9);  // grid rebuilt for the user's cell
+  EXPECT_EQ(s.analysis.end_time, 0.05);
+  EXPECT_EQ(s.analysis.thickness, 2.0);
+  EXPECT_EQ(s.output.probes.back().name, "mid");
+  EXPECT_GT(s.output.probes.size(), 2u);
+}
+
+TEST(Presets, SteelOpenDamFrame) {
+  const json j = json::parse(R"({"schema_version": 1, "name": "s",
+    "dam": {"type": "steel_open", "height": 4, "width": 1.5, "rows": 2, "row_spacing": 2, "levels": 2,
+            "column": {"diameter": 0.4, "wall_thickness": 0.012}},
+    "boulder": {"diameter": 0.8, "velocity": [6, 0]}})");
+  const Scenario s = parse_scenario(j.dump(), "t.json");
+  // 2 rows x 2 levels: 4 column segments, 2 beams, 2 braces; bases fixed; the upstream surface at x = 0.
+  EXPECT_EQ(s.structure.members.size(), 8u);
+  EXPECT_EQ(s.structure.supports.size(), 2u);
+  EXPECT_NEAR(s.structure.nodes[0].position[0], 0.2, 1e-12);
+  EXPECT_EQ(s.structure.members[0].section.type, "pipe");
+  EXPECT_EQ(s.analysis.thickness, 1.5);
+  // The boulder's centre at 0.9 H; the impact probe on the upper upstream column segment at 0.8 of it.
+  const auto& impact = s.output.probes.back();
+  EXPECT_EQ(impact.target, "column_0_2");
+  EXPECT_NEAR(impact.position, 0.8, 1e-12);
+}
+
+TEST(Presets, DebrisSurgeLiesOnTheInclinedBed) {
+  const json j = json::parse(R"({"schema_version": 1, "name": "d",
+    "dam": {"type": "concrete_gravity", "height": 4, "crest_thickness": 1.0, "base_thickness": 1.6},
+    "debris_surge": {"depth": 1.0, "length": 6, "velocity": 8, "channel_slope": 15, "gap": 0.2}})");
+  const json low = expand_presets(j, "t.json");
+  const json& v = named(low["bodies"], "debris")["shape"]["vertices"];
+  const double t = std::tan(15 * kPi / 180), c = std::cos(15 * kPi / 180);
+  for (int k : {0, 1}) EXPECT_NEAR(v[k][1].get<double>(), -v[k][0].get<double>() * t, 1e-12);  // on the bed y = -x tan
+  EXPECT_NEAR(v[1][0].get<double>(), -0.2, 1e-12);                                           // front gap upstream of the face
+  EXPECT_NEAR(v[1][0].get<double>() - v[0][0].get<double>(), 6 * c, 1e-12);                  // 6 m along the bed
+  EXPECT_NEAR(v[2][1].get<double>() - v[1][1].get<double>(), 1.0 / c, 1e-12);                // 1 m normal depth
+  const json& vel = named(low["bodies"], "debris")["velocity"];
+  EXPECT_NEAR(std::atan2(-vel[1].get<double>(), vel[0].get<double>()), 15 * kPi / 180, 1e-12);
+  EXPECT_NEAR(named(low["walls"], "ground")["normal"][0].get<double>(), std::sin(15 * kPi / 180), 1e-12);
+  EXPECT_EQ(named(low["materials"], "debris")["model"], "drucker_prager");
+  EXPECT_NO_THROW(parse_scenario(j.dump(), "t.json"));
+}
+
+TEST(Presets, ContinuumDamAndDiscreteTyresSeedTheRightMass) {
+  const json j = json::parse(R"({"schema_version": 1, "name": "m",
+    "dam": {"type": "concrete_gravity", "height": 2, "crest_thickness": 0.5, "base_thickness": 0.9, "model": "continuum", "width": 1},
+    "boulder": {"mass": 300, "velocity": [4, 0]},
+    "tyre_buffer": {"type": "discrete", "tyre_diameter": 0.5, "ring_thickness": 0.1, "fill": "sand", "bottom": 1.0}})");
+  const Scenario s = parse_scenario(j.dump(), "t.json");
+  const Scene<2> sc = build_scene<2>(s);
+  auto body_mass = [&](const std::string& name) {
+    int id = -1;
+    for (std::size_t b = 0; b < s.bodies.size(); ++b)
+      if (s.bodies[b].name == name) id = static_cast<int>(b);
+    double m = 0;
+    for (Index p = 0; p < sc.particles.size(); ++p)
+      if (sc.particles.body[p] == id) m += sc.particles.mass[p];
+    return m;
+  };
+  // Trapezoid 2 m high, 0.9 -> 0.5 m thick, 1 m wide, rho 2400; rings pi (R^2 - r^2) W rho 1100; sampling error O(h).
+  EXPECT_NEAR(body_mass("dam") / (2400 * 0.5 * (0.9 + 0.5) * 2.0), 1.0, 0.03);
+  EXPECT_NEAR(body_mass("tyre_1") / (1100 * kPi * (0.0625 - 0.0225)), 1.0, 0.08);
+  EXPECT_NEAR(body_mass("tyre_1_fill") / (1800 * kPi * 0.0225), 1.0, 0.08);
+  EXPECT_EQ(s.member_contact.bonded.size(), 0u);  // no members in the continuum model
+  bool base = false;
+  for (const auto& w : s.walls) base = base || (w.name == "dam_base" && w.condition == WallCondition::stick);
+  EXPECT_TRUE(base);
+}
+
+TEST(Presets, BufferViscosityBecomesADampingRatio) {
+  json j = concrete_boulder();
+  j["tyre_buffer"]["viscosity"] = 2000.0;
+  j["tyre_buffer"]["material"] = {{"damping_frequency", 10.0}};
+  const json low = expand_presets(j, "t.json", "with_buffer");
+  const json& m = named(low["materials"], "tyre_buffer");
+  // beta = eta / mu, zeta = pi f beta, mu = E / (2 (1 + nu)) = 2e6 / 2.6.
+  EXPECT_NEAR(m["damping_ratio"].get<double>(), kPi * 10 * 2000 / (2e6 / 2.6), 1e-12);
+}
+
+TEST(ShapeGeometry, PolygonMembershipAreaAndCrossing) {
+  ShapeConfig s;
+  s.type = "polygon";
+  s.vertices = {{0, 0}, {2, 0}, {1.5, 1}, {0.5, 1}};
+  EXPECT_NEAR(polygon_area(s.vertices), 1.5, 1e-15);
+  const double in[2] = {1.0, 0.5}, out[2] = {1.9, 0.9};
+  EXPECT_TRUE(shape_contains(s, in, 2));
+  EXPECT_FALSE(shape_contains(s, out, 2));
+  EXPECT_FALSE(polygon_self_intersects(s.vertices));
+  EXPECT_TRUE(polygon_self_intersects({{0, 0}, {1, 1}, {1, 0}, {0, 1}}));
+  ShapeConfig ring;
+  ring.type = "ball";
+  ring.center = {0, 0};
+  ring.radius = 1;
+  ring.inner_radius = 0.5;
+  const double hole[2] = {0.2, 0.2}, wall[2] = {0.7, 0.0};
+  EXPECT_FALSE(shape_contains(ring, hole, 2));
+  EXPECT_TRUE(shape_contains(ring, wall, 2));
+}
+
+}  // namespace
+}  // namespace dmi
