@@ -126,6 +126,7 @@ template <int D> void MemberContact<D>::apply(Scene<D>& s, const TransferKernels
     fr.clear_loads();
     force_.setZero();
     loaded_.clear();
+    loads_.clear();
     find_candidates(s);
     if (cand_.empty()) return;
     mass_positions(s, kernels);
@@ -188,6 +189,7 @@ template <int D> void MemberContact<D>::apply(Scene<D>& s, const TransferKernels
         // (all directions when stuck, the normal one when sliding).
         fr.add_point_mass(c.element, c.xi, q * m * (mode == MemberContactMode::stick ? Mat<2>(Mat<2>::Identity()) : Mat<2>(n * n.transpose())));
         force_ += F;
+        loads_.push_back(ContactLoad{c.element, c.xi, c.xm + hm * n, F});
         ++stats_.loaded;
       }
     }

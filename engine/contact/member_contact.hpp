@@ -37,6 +37,13 @@ struct MemberContactStats {
   int max_projection_iterations = 0;
 };
 
+// One reaction of this step: force of the material on the member at a surface point.
+struct ContactLoad {
+  int element = 0;
+  double xi = 0;     // local coordinate on the element, 0 at its start node, 1 at its end
+  Vec2 point, force;  // surface point (m) and force (N)
+};
+
 template <int D> class MemberContact {
  public:
   explicit MemberContact(const Grid<D>& g);
@@ -50,6 +57,8 @@ template <int D> class MemberContact {
   const MemberContactStats& stats() const { return stats_; }
   // Total force the material exerts on the members in the last step (N): sum of -f_bc.
   const Vec2& force() const { return force_; }
+  // The individual reactions of the last step (they sum to force()).
+  const std::vector<ContactLoad>& loads() const { return loads_; }
 
  private:
   struct Candidate {
@@ -76,6 +85,7 @@ template <int D> class MemberContact {
   std::vector<unsigned char> tile_flag_;   // per tile id, scratch
   std::vector<Index> marked_;
   Vec2 force_ = Vec2::Zero();
+  std::vector<ContactLoad> loads_;
   MemberContactStats stats_;
 };
 

@@ -50,6 +50,9 @@ struct RunInfo {
   std::vector<std::string> body_names, material_names;
   std::map<std::string, double> numbers;       // e.g. "cell_size", "end_time", "wall_seconds", "steps"
   std::map<std::string, std::string> strings;  // e.g. "shape_function", "transfer", "status"
+  // JSON documents (/documents/<name>): e.g. "peak_contact" (the contact loads on the members at the
+  // instant of the largest contact force), "solid_check" (solid-FE checks); docs/results.md.
+  std::map<std::string, std::string> documents;
 };
 
 struct Results {

@@ -332,6 +332,15 @@ Results read_file(const std::string& path, bool with_snapshots) {
     info.scenario_expanded_json = std::move(v[0]);
   }
   if (r.has_attr(file, "variant", "/")) info.variant = r.attr_string(file, "variant", "/");
+  if (r.has_link(file, "documents")) {
+    Handle docs = r.open(file, "documents", "/documents", H5I_GROUP);
+    for (const std::string& name : r.children(docs, "/documents")) {
+      Handle ds = r.open(docs, name, "/documents/" + name, H5I_DATASET);
+      std::vector<std::string> v = r.strings(ds, false, "/documents/" + name);
+      if (v.size() != 1) r.error("/documents/" + name + " is not a single string");
+      info.documents[name] = std::move(v[0]);
+    }
+  }
   {
     Handle run = r.open(file, "run", "/run", H5I_GROUP);
     std::vector<std::string> names;

@@ -2,6 +2,8 @@
 //   /                 attrs format="damimpact-results", format_version=1, complete (0 -> 1 by
 //                     finish), software_version, scenario_name, scenario_file, dimension
 //   /scenario         scalar string dataset: the scenario JSON text
+//   /scenario_expanded scalar string: the low-level scenario of a preset file (when it has presets)
+//   /documents/<name> scalar strings: JSON documents (peak_contact, solid_check)
 //   /run              group; attrs = RunInfo::numbers (double) and RunInfo::strings (string);
 //                     datasets body_names, material_names (1-D string arrays)
 //   /history/time     (n) double, s
@@ -194,6 +196,12 @@ struct ResultsWriter::Impl {
     remove_link(file, "scenario_expanded", f);
     if (!info.scenario_expanded_json.empty()) write_strings(file, "scenario_expanded", {info.scenario_expanded_json}, true, f);
     attr_string(file, "variant", info.variant, f);
+    remove_link(file, "documents", f);
+    if (!info.documents.empty()) {
+      Handle docs(check_id(H5Gcreate2(file, "documents", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), f, "cannot create group /documents"),
+                  H5Gclose);
+      for (const auto& [name, text] : info.documents) write_strings(docs, name, {text}, true, f);
+    }
 
     remove_link(file, "run", f);
     Handle run(check_id(H5Gcreate2(file, "run", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), f,

@@ -18,9 +18,11 @@
 //   dissipated power  s:D V = 2 mu_eff D':D' V >= 0, summed times dt (exact for constant rates).
 //   stable step  the viscous stress is Kelvin-Voigt damping of the pressure waves: a longitudinal mode has
 //              elastic modulus M = K (no shear modulus) and viscous modulus (4/3) mu_eff, so damping_time()
-//              returns beta = (4/3) mu_max / K. The solver's damped CFL step (2/w)(sqrt(1 + zeta^2) - zeta),
-//              w = 2c/h, zeta = beta w/2, then tends to h^2 rho / (2 (4/3) mu_max) for strong viscosity: the
-//              explicit limit of viscous diffusion on cells of size h (shear modes, viscous modulus mu, are slower).
+//              returns beta = D (4/3) mu_max / K. The solver's damped CFL step (2/w)(sqrt(1 + zeta^2) - zeta),
+//              w = 2c/h, zeta = beta w/2, then tends to h^2 rho / (2 D (4/3) mu_max) for strong viscosity: the
+//              explicit limit of viscous diffusion on cells of size h in D dimensions (FTCS: h^2 / (2 D nu)).
+//              Measured in 2D (GIMP and B-spline, tests/engine/materials/test_fluids.cpp): unstable above
+//              0.6-0.7 h^2 rho / (2 (4/3) mu), so without the factor D the default cfl 0.5 would leave no margin.
 // Only J is a state of a fluid: after each update F is replaced by J^(1/D) I (as taichi's mpm99 does for water),
 // so its isochoric part cannot grow without bound in long shear flows and det F stays accurate.
 // Plane stress is refused (the parser's check_semantics, and make_viscous_fluid).
@@ -48,7 +50,7 @@ template <int D> class ViscousFluid final : public Material<D> {
   }
   double density() const override { return rho_; }
   double wave_speed() const override { return std::sqrt(K_ / rho_); }
-  double damping_time() const override { return (4.0 / 3.0) * max_viscosity() / K_; }
+  double damping_time() const override { return D * (4.0 / 3.0) * max_viscosity() / K_; }
   double dissipated() const override { return dissipated_; }
   void attach(const Particles<D>& p, Index, Index) override { power_.resize(p.size(), 0.0); }
 

@@ -170,6 +170,28 @@ struct OutputConfig {
   std::vector<ProbeConfig> probes;
 };
 
+// --- Solid-FE check of a concrete dam body (paper B, SEEDS.md B.3) ------------------------------
+struct SolidLoadConfig {
+  std::string name, type;                            // point | patch | simulation
+  double force = 0;                                  // N (point, patch)
+  double height = 0;                                 // m above the base (point, patch centre)
+  double across = -1;                                // m from the side edge of the face (3D); < 0: mid-width
+  double patch_width = 0, patch_height = 0;          // m (patch)
+  std::string shape = "pyramid";                     // uniform | pyramid (patch)
+  std::string member;                                // simulation: the dam member ("" = the first)
+  std::string spread = "uniform";                    // simulation, 3D: uniform across the width | axisymmetric
+};
+
+struct SolidCheckConfig {
+  bool present = false;
+  double height = 0, crest_thickness = 0, base_thickness = 0, width = 0;  // m
+  std::string sloped_face = "downstream";            // upstream | downstream | both
+  std::string element = "hex8";                      // hex8 (3D) | quad4 (2D plane strain)
+  std::vector<int> cells = {8, 10, 20};              // through the thickness, across the width, up the height
+  double youngs_modulus = 25e9, poisson_ratio = 0.2; // Pa, -
+  std::vector<SolidLoadConfig> loads;
+};
+
 struct Scenario {
   int schema_version = 1;
   std::string name, description;
@@ -184,6 +206,7 @@ struct Scenario {
   StructureConfig structure;
   MemberContactConfig member_contact;
   OutputConfig output;
+  SolidCheckConfig solid_check;
   std::string source_file;   // where it came from, for messages
   std::string source_text;   // the JSON as given, stored in results.h5
   std::string expanded_text; // the low-level scenario the presets expanded into ("" without presets)

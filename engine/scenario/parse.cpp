@@ -95,7 +95,7 @@ void read_material(Obj& o, MaterialConfig& m) {
                                                             "J = V/V0 (Monaghan 1994, gamma = 1); sound speed c = sqrt(K/density) "
                                                             "sets the time step; take c >= 10x the fastest flow speed (about 1 % density error)", true));
     o.number("viscosity", m.viscosity, positive("Pa s", "dynamic (plastic, for bingham) viscosity mu: deviatoric stress s = 2 mu D'; "
-                                                       "a large viscosity lowers the time step to about cfl h^2 density / (8/3 mu)", true));
+                                                       "a large viscosity lowers the time step to about cfl h^2 density / (8/3 d mu) in d dimensions", true));
   }
   o.end_when();
   if (o.when("model", m.model, "bingham")) {
@@ -104,8 +104,8 @@ void read_material(Obj& o, MaterialConfig& m) {
     o.number("regularisation_rate", m.regularisation_rate,
              positive("1/s", "Papanastasiou (1987) regularisation, 1/m: tau = mu gamma_dot + tau_y (1 - exp(-gamma_dot / rate)); below "
                              "yield the material creeps at about this shear rate, as a fluid of viscosity mu + tau_y / rate, which "
-                             "also bounds the time step to about cfl h^2 density / (8/3 (mu + tau_y / rate)): a larger rate runs "
-                             "faster but creeps more"));
+                             "also bounds the time step to about cfl h^2 density / (8/3 d (mu + tau_y / rate)) in d dimensions: a "
+                             "larger rate runs faster but creeps more"));
   }
   o.end_when();
   if (when_any(o, "model", m.model, {"linear_elastic", "neo_hookean"})) {
@@ -412,6 +412,63 @@ void read_output(Obj o, OutputConfig& out) {
   o.finish();
 }
 
+void read_solid_load(Obj& o, SolidLoadConfig& l) {
+  o.string("name", l.name, Spec{.doc = "load case name, used in results and reports", .required = true});
+  o.string("type", l.type, Spec{.doc = "point (one node of the upstream face) | patch (spread over a rectangle of the upstream face) | "
+                                       "simulation (the contact loads on a dam member at the instant of the largest contact force "
+                                       "of this run, as a pressure on the upstream face)", .required = true});
+  if (!o.documenting() && l.type != "point" && l.type != "patch" && l.type != "simulation")
+    o.fail("type", nullptr, "point, patch or simulation (got '" + l.type + "')");
+  if (when_any(o, "type", l.type, {"point", "patch"})) {
+    o.number("force", l.force, positive("N", "horizontal force towards downstream (paper B: 980 kN)", true));
+    o.number("height", l.height, positive("m", "height of the load (patch centre) above the base", true));
+    o.number("across", l.across, Spec{.unit = "m", .doc = "position across the face width from its side edge (hex8); default mid-width"});
+  }
+  o.end_when();
+  if (o.when("type", l.type, "patch")) {
+    o.number("patch_width", l.patch_width, positive("m", "patch extent across the face", true));
+    o.number("patch_height", l.patch_height, positive("m", "patch extent up the face", true));
+    o.choice<std::string>("shape", l.shape, {{"pyramid", "pyramid"}, {"uniform", "uniform"}},
+                          Spec{.doc = "pressure decreasing linearly from the centre to the patch edges and corners (paper B), or uniform"});
+  }
+  o.end_when();
+  if (o.when("type", l.type, "simulation")) {
+    o.string("member", l.member, Spec{.doc = "the dam member whose contact loads are taken; default the first member"});
+    o.choice<std::string>("spread", l.spread, {{"uniform", "uniform"}, {"axisymmetric", "axisymmetric"}},
+                          Spec{.doc = "across the face width (hex8): uniform (the plane-strain model's assumption) or axisymmetric "
+                                      "(the vertical profile turned about its centroid: a round contact patch, same resultant)"});
+  }
+  o.end_when();
+}
+
+void read_solid_check(Obj o, SolidCheckConfig& c) {
+  if (!o.present()) return;
+  c.present = true;
+  o.number("height", c.height, positive("m", "dam height (with a concrete_gravity dam preset: taken from it)", true));
+  o.number("crest_thickness", c.crest_thickness, positive("m", "thickness at the crest", true));
+  o.number("base_thickness", c.base_thickness, positive("m", "thickness at the base", true));
+  o.number("width", c.width, positive("m", "face width across the channel (hex8); 2D quad4: the plane-strain thickness", true));
+  o.choice<std::string>("sloped_face", c.sloped_face, {{"downstream", "downstream"}, {"upstream", "upstream"}, {"both", "both"}},
+                        Spec{.doc = "which face is battered"});
+  o.choice<std::string>("element", c.element, {{"hex8", "hex8"}, {"quad4", "quad4"}},
+                        Spec{.doc = "hex8: 3D block (paper B); quad4: 2D plane-strain section (loads per unit width x width)"});
+  DVec cells{8, 10, 20};
+  o.vector("cells", cells, Spec{.doc = "elements through the thickness, across the width (hex8 only) and up the height (paper B: 8 x 10 x 20)",
+                                .min = 1, .max = 400}, 3);
+  c.cells = {static_cast<int>(cells[0]), static_cast<int>(cells[1]), static_cast<int>(cells[2])};
+  o.number("youngs_modulus", c.youngs_modulus, positive("Pa", "concrete Young's modulus"));
+  o.number("poisson_ratio", c.poisson_ratio, Spec{.doc = "concrete Poisson's ratio", .min = 0, .max = 0.5, .max_open = true});
+  o.array<SolidLoadConfig>("loads", c.loads, Spec{.doc = "load cases, each solved statically (linear elastic, base fixed)", .required = true},
+                           read_solid_load);
+  o.finish();
+  if (o.documenting()) return;
+  if (c.loads.empty()) o.fail("loads", nullptr, "at least one load case");
+  if (c.base_thickness < c.crest_thickness)
+    o.fail("base_thickness", nullptr, "a base thickness >= crest_thickness = " + std::to_string(c.crest_thickness) + " m");
+  for (double x : cells)
+    if (x != std::floor(x)) o.fail("cells", nullptr, "whole numbers of elements");
+}
+
 void read_scenario(Obj& o, Scenario& s) {
   o.integer("schema_version", s.schema_version, Spec{.doc = "scenario format version; must be 1", .min = 1, .max = 1, .required = true});
   o.string("name", s.name, Spec{.doc = "scenario name, shown in outputs and reports", .required = true});
@@ -419,8 +476,9 @@ void read_scenario(Obj& o, Scenario& s) {
   read_analysis(o.object("analysis", "dimension, kinematics, duration, time step and gravity"), s.analysis);
   read_mpm(o.object("mpm", "material point method options"), s.mpm);
   read_grid(o.object("grid", "the background grid"), s.grid);
-  o.array<MaterialConfig>("materials", s.materials, Spec{.doc = "material laws", .required = true}, read_material);
-  o.array<BodyConfig>("bodies", s.bodies, Spec{.doc = "continuum bodies discretised by particles", .required = true}, read_body);
+  o.array<MaterialConfig>("materials", s.materials, Spec{.doc = "material laws"}, read_material);
+  o.array<BodyConfig>("bodies", s.bodies, Spec{.doc = "continuum bodies discretised by particles; at least one, unless the scenario is "
+                                                      "only a solid_check"}, read_body);
   read_contact(o.object("contact", "contact between bodies"), s.contact);
   o.array<WallConfig>("walls", s.walls, Spec{.doc = "rigid fixed walls acting on grid nodes"}, read_wall);
   o.array<PrescribedVelocityConfig>("prescribed_velocity", s.prescribed_velocity, Spec{.doc = "regions of grid nodes moving with a given velocity"}, read_region);
@@ -428,6 +486,8 @@ void read_scenario(Obj& o, Scenario& s) {
   read_member_contact(o.object("member_contact", "how the structure's members act on the bodies (SEEDS.md A.2); only with a structure"),
                       s.member_contact, s.structure.present);
   read_output(o.object("output", "what is recorded"), s.output);
+  read_solid_check(o.object("solid_check", "a linear solid-FE check of a concrete dam body (paper B, SEEDS.md B.3): static load cases, "
+                                           "given or taken from this run's contact loads; absent: none"), s.solid_check);
   o.finish();
 }
 
@@ -555,10 +615,32 @@ std::set<std::string> check_structure(const Scenario& s, const std::string& file
   return members;
 }
 
+void check_solid_check(const Scenario& s, const std::string& file) {
+  const SolidCheckConfig& c = s.solid_check;
+  if (!c.present) return;
+  for (std::size_t i = 0; i < c.loads.size(); ++i) {
+    const SolidLoadConfig& l = c.loads[i];
+    const std::string p = "/solid_check/loads/" + std::to_string(i);
+    if (l.type == "simulation") {
+      if (!s.structure.present || s.bodies.empty())
+        throw InputError(file, p + "/type", quoted(l.type), "point or patch without a simulated structure (type simulation takes "
+                                                             "the contact loads of this run's members)");
+      if (!l.member.empty() && std::none_of(s.structure.members.begin(), s.structure.members.end(),
+                                            [&](const MemberConfig& m) { return m.name == l.member; }))
+        throw InputError(file, p + "/member", quoted(l.member), "the name of one of the structure's members");
+      continue;
+    }
+    if (l.height > c.height) throw InputError(file, p + "/height", value_text(l.height), "a height at most the dam height " + value_text(c.height) + " m");
+    if (l.across > c.width) throw InputError(file, p + "/across", value_text(l.across), "a position within the face width " + value_text(c.width) + " m");
+  }
+}
+
 // Cross-references and geometry: what a single key cannot check.
 void check_semantics(const Scenario& s, const std::string& file) {
   const int dim = s.analysis.dimension;
-  if (s.bodies.empty()) throw InputError(file, "/bodies", "[]", "at least one body");
+  if (s.bodies.empty() && !(s.solid_check.present && !s.structure.present))
+    throw InputError(file, "/bodies", "[]", "at least one body (or a scenario with only a solid_check)");
+  check_solid_check(s, file);
   std::set<std::string> mats, bodies, walls;
   auto dup = [&](std::set<std::string>& set, const std::string& name, const std::string& path) {
     if (!set.insert(name).second) throw InputError(file, path, "\"" + name + "\"", "a name not used before in this list");
@@ -696,6 +778,17 @@ Scenario parse_low_level(const json& j, const std::string& file) {
   schema::Context ctx{.file = file};
   if (!j.is_object()) throw InputError(file, "/", schema::short_dump(j), "a JSON object (a scenario)");
   Obj o(&j, "", ctx);
+  if (j.contains("solid_check") && !j.contains("bodies") && !j.contains("structure")) {
+    // A solid-FE check on its own (e.g. paper B Table 1): no grid, bodies or time stepping.
+    o.integer("schema_version", s.schema_version, Spec{.min = 1, .max = 1, .required = true});
+    o.string("name", s.name, Spec{.required = true});
+    o.string("description", s.description, Spec{});
+    read_solid_check(o.object("solid_check", ""), s.solid_check);
+    o.finish();
+    check_solid_check(s, file);
+    s.source_file = file;
+    return s;
+  }
   read_scenario(o, s);
   check_semantics(s, file);
   s.source_file = file;

@@ -209,6 +209,11 @@ json expand_presets(const json& j, const std::string& file, const std::string& v
     p.cell_size = j["grid"]["cell_size"].get<double>();
   if (j.contains("analysis") && j["analysis"].is_object() && j["analysis"].contains("gravity")) p.gravity_given = true;
   json low = build_preset_scene(p, file);
+  if (j.contains("solid_check") && p.dam.type == "concrete_gravity")  // the dam body's geometry and concrete by default
+    low["solid_check"] = json{{"height", p.dam.height}, {"crest_thickness", p.dam.crest}, {"base_thickness", p.dam.base_thickness},
+                              {"width", p.dam.width}, {"sloped_face", p.dam.sloped_face},
+                              {"youngs_modulus", p.dam.concrete.value("youngs_modulus", 25e9)},
+                              {"poisson_ratio", p.dam.concrete.value("poisson_ratio", 0.2)}};
   // Merge the user's low-level keys: objects key by key (user wins), arrays appended.
   for (auto it = j.begin(); it != j.end(); ++it) {
     if (std::find(std::begin(kPresetKeys), std::end(kPresetKeys), it.key()) != std::end(kPresetKeys)) continue;

@@ -1,5 +1,7 @@
 #include "engine/sim/recorder.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -77,8 +79,33 @@ template <int D> void Recorder<D>::accumulate(const Solver<D>& solver, double dt
   std::size_t b = 0;
   for (const auto& w : sc.walls) impulse_[b++] += w.force * dt;
   for (const auto& r : sc.regions) impulse_[b++] += r.force * dt;
-  if (const auto* mc = solver.member_contact()) member_impulse_ += mc->force() * dt;
+  if (const auto* mc = solver.member_contact()) {
+    member_impulse_ += mc->force() * dt;
+    if (mc->force().norm() > peak_contact_) {
+      peak_contact_ = mc->force().norm();
+      peak_contact_time_ = solver.time();
+      peak_loads_ = mc->loads();
+    }
+  }
   elapsed_ += dt;
+}
+
+template <int D> std::string Recorder<D>::peak_contact_document(const Frame& f) const {
+  if (peak_loads_.empty()) return "";
+  const FrameModel& m = f.model();
+  nlohmann::json loads = nlohmann::json::array();
+  Vec2 total = Vec2::Zero();
+  for (const ContactLoad& l : peak_loads_) {
+    const FrameElementDef& e = m.elements[l.element];
+    const FrameMemberDef& mem = m.members[e.member];
+    // Position along the member as a fraction of its length: elements are equal in length along it.
+    const double s = (l.element - mem.first_element + l.xi) / mem.elements;
+    loads.push_back({{"member", mem.name}, {"position", s}, {"point", {l.point.x(), l.point.y()}}, {"force", {l.force.x(), l.force.y()}}});
+    total += l.force;
+  }
+  return nlohmann::json{{"time", peak_contact_time_}, {"total_force", {total.x(), total.y()}}, {"units", {{"time", "s"}, {"point", "m"}, {"force", "N"}}},
+                        {"loads", loads}}
+      .dump();
 }
 
 template <int D> void Recorder<D>::sample(const Solver<D>& solver, double dt) {

@@ -26,6 +26,9 @@ template <int D> class Recorder {
   const std::vector<double>& time() const { return time_; }
   std::vector<Series>& series() { return series_; }
   double initial_energy() const { return e0_; }
+  // JSON document "peak_contact": the members' contact loads at the step with the largest total contact
+  // force (time, total, and each load's member, position along it, surface point and force); "" if none.
+  std::string peak_contact_document(const Frame& f) const;
 
  private:
   struct Probe {
@@ -48,6 +51,8 @@ template <int D> class Recorder {
   std::vector<Vec<D>> impulse_;  // per wall, then per region, since the last sample (N s)
   Vec2 member_impulse_ = Vec2::Zero();  // of the material on the members since the last sample (N s)
   double elapsed_ = 0;           // s since the last sample
+  double peak_contact_ = 0, peak_contact_time_ = 0;  // largest |total contact force| (N) and when
+  std::vector<ContactLoad> peak_loads_;
   double e0_ = 0;
 };
 

@@ -5,7 +5,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <nlohmann/json.hpp>
 
 #include "engine/materials/material.hpp"
@@ -121,8 +120,8 @@ TEST(Bingham, YieldPlateauAndArrestedCreep) {
   const double creep = 0.5 * (lo + hi), newtonian = 0.5 * tau_y / mu;
   EXPECT_NEAR(creep, gamma_c * std::log(2.0), 0.01 * gamma_c);
   EXPECT_LT(creep, 1e-3 * newtonian);
-  // The stable step sees the largest viscosity mu + tau_y / gamma_c (Kelvin-Voigt time (4/3) mu_max / K).
-  EXPECT_DOUBLE_EQ(m->damping_time(), 4.0 / 3.0 * (mu + tau_y / gamma_c) / c.bulk_modulus);
+  // The stable step sees the largest viscosity mu + tau_y / gamma_c (Kelvin-Voigt time D (4/3) mu_max / K).
+  EXPECT_DOUBLE_EQ(m->damping_time(), 2 * 4.0 / 3.0 * (mu + tau_y / gamma_c) / c.bulk_modulus);
   std::printf("[ fluids   ] bingham: tau(10/s) = %.6g Pa (tau_y + mu gd = %.6g); tau(1e-3/s) = %.4g Pa < tau_y; "
               "creep at tau_y/2: %.4g 1/s vs %.4g 1/s newtonian\n",
               tau_at(10.0), tau_y + mu * 10, tau_at(1e-3), creep, newtonian);
@@ -187,38 +186,37 @@ namespace {
 
 using json = nlohmann::json;
 
-// A Newtonian column (H = 0.5 m, rho = 1000 kg/m^3, c = 20 m/s) released at rest, unstressed, in a box of
-// roller walls on grid lines: it compresses under its own weight, the pressure waves are damped by the
-// viscosity, and the column settles to p = rho g (H - y0) (reference depth: the weight above a particle).
-// Its mechanical energy (kinetic + stored - work of gravity) must never rise above the start value.
+// A Newtonian column (H = 0.5 m, rho = 1000 kg/m^3, c = 20 m/s, mu = 1000 Pa s) released at rest and unstressed
+// in a box of roller walls on grid lines: it compresses under its own weight, the viscosity damps the pressure
+// waves, and it settles to p = rho g (H - y0) (y0: reference height; the weight above a particle is fixed).
+// Its mechanical energy (kinetic + stored - work of gravity) must not rise at any step, and what it loses must
+// be the energy the law reports as dissipated. GIMP shapes: with bspline2, roller/stick walls on grid lines
+// (mirrored nodes) gain energy in this set-up for elastic solids too, a boundary matter outside the law.
 TEST(ViscousFluid, ColumnSettlesToHydrostaticPressure) {
-  const double rho = 1000, g = 9.81, H = 0.5, y_bed = 0.1, h = 0.05;
-  json j = {{"schema_version", 1},
-            {"name", "fluid column"},
-            {"analysis", {{"dimension", 2}, {"end_time", 1.0}, {"gravity", {0, -g}}}},
-            {"grid", {{"origin", {0, 0}}, {"size", {0.6, 0.8}}, {"cell_size", h}}},
-            {"materials", {{{"name", "slurry"}, {"model", "newtonian"}, {"density", rho}, {"bulk_modulus", rho * 20 * 20}, {"viscosity", 500}}}},
-            {"bodies", {{{"name", "column"}, {"material", "slurry"}, {"shape", {{"type", "box"}, {"min", {0.1, y_bed}}, {"max", {0.5, y_bed + H}}}}}}},
-            {"walls", {{{"name", "bed"}, {"type", "plane"}, {"point", {0, y_bed}}, {"normal", {0, 1}}, {"condition", "roller"}},
-                       {{"name", "left"}, {"type", "plane"}, {"point", {0.1, 0}}, {"normal", {1, 0}}, {"condition", "roller"}},
-                       {{"name", "right"}, {"type", "plane"}, {"point", {0.5, 0}}, {"normal", {-1, 0}}, {"condition", "roller"}}}}};
-  if (const char* e = std::getenv("DBG_MPM")) j["mpm"] = json::parse(e);
-  if (std::getenv("DBG_BEDONLY")) j["walls"].erase(1), j["walls"].erase(1);
-  if (const char* e = std::getenv("DBG_WALL")) for (auto& w : j["walls"]) w["condition"] = e;
-  if (const char* e = std::getenv("DBG_MAT")) j["materials"][0] = json::parse(e);
-  if (const char* e = std::getenv("DBG_MU")) j["materials"][0]["viscosity"] = std::atof(e);
-  if (const char* e = std::getenv("DBG_C")) j["materials"][0]["bulk_modulus"] = rho * std::atof(e) * std::atof(e);
-  if (const char* e = std::getenv("DBG_PPC")) j["bodies"][0]["particles_per_cell"] = std::atoi(e);
+  const double rho = 1000, g = 9.81, H = 0.5, y_bed = 0.1, h = 0.05, T = 1.0;
+  const json j = {
+      {"schema_version", 1},
+      {"name", "fluid column"},
+      {"analysis", {{"dimension", 2}, {"end_time", T}, {"gravity", {0, -g}}}},
+      {"mpm", {{"shape_function", "gimp"}}},
+      {"grid", {{"origin", {0, 0}}, {"size", {0.6, 0.8}}, {"cell_size", h}}},
+      {"materials", {{{"name", "slurry"}, {"model", "newtonian"}, {"density", rho}, {"bulk_modulus", rho * 20 * 20}, {"viscosity", 1000}}}},
+      {"bodies", {{{"name", "column"}, {"material", "slurry"}, {"shape", {{"type", "box"}, {"min", {0.1, y_bed}}, {"max", {0.5, y_bed + H}}}}}}},
+      {"walls", {{{"name", "bed"}, {"type", "plane"}, {"point", {0, y_bed}}, {"normal", {0, 1}}, {"condition", "roller"}},
+                 {{"name", "left"}, {"type", "plane"}, {"point", {0.1, 0}}, {"normal", {1, 0}}, {"condition", "roller"}},
+                 {{"name", "right"}, {"type", "plane"}, {"point", {0.5, 0}}, {"normal", {-1, 0}}, {"condition", "roller"}}}}};
   Solver<2> s(build_scene<2>(parse_scenario(j, "column.json")));
   auto mechanical = [&] {
     const auto d = s.diagnostics();
     return d.kinetic + d.strain - d.gravity_work - d.boundary_work;
   };
   const double e0 = mechanical();
-  double rise = 0;
-  while (s.time() < 1.0 - 1e-12) {
-    s.step(s.stable_time_step(1.0 - s.time()));
-    rise = std::max(rise, mechanical() - e0);
+  double lowest = e0, rise = 0;  // largest rise above the lowest energy reached so far
+  while (s.time() < T - 1e-12) {
+    s.step(s.stable_time_step(T - s.time()));
+    const double e = mechanical();
+    rise = std::max(rise, e - lowest);
+    lowest = std::min(lowest, e);
   }
   const auto d = s.diagnostics();
   const auto& P = s.scene().particles;
@@ -226,31 +224,24 @@ TEST(ViscousFluid, ColumnSettlesToHydrostaticPressure) {
   int n = 0;
   for (std::size_t i = 0; i < P.size(); ++i) {
     const double p = -(P.stress[i].trace() + P.stress_zz[i]) / 3, ref = rho * g * (y_bed + H - P.x0[i][1]);
-    if (P.x0[i][1] < y_bed + 0.5 * h) {  // the bottom cell's two particle rows
+    if (P.x0[i][1] < y_bed + 0.5 * h) {  // the two particle rows of the bottom cell
       p_sum += p;
       p_ref += ref;
       ++n;
     }
     if (P.x0[i][1] < y_bed + 0.6 * H) worst = std::max(worst, std::abs(p - ref) / ref);  // lower 60 % of the column
   }
-  const double err = p_sum / p_ref - 1, released = -d.gravity_work;
-  std::printf("[ fluids   ] column: %d bottom particles, mean p = %.1f Pa vs rho g depth %.1f Pa (%.2f %%), worst in the lower "
-              "60 %%: %.2f %%; steps %ld; KE %.3g J; E_mech rise max %.3g J, released %.3g J, dissipated %.3g J, balance %.3g J\n",
-              n, p_sum / n, p_ref / n, 100 * err, 100 * worst, s.steps(), d.kinetic, rise, released, d.dissipated, d.balance(e0));
-  {
-    double ymin = 1e9, ymax = -1e9, vmax = 0;
-    for (std::size_t i = 0; i < P.size(); ++i) { ymin = std::min(ymin, P.x[i][1]); ymax = std::max(ymax, P.x[i][1]); vmax = std::max(vmax, P.v[i].norm()); }
-    std::printf("DEBUG ke %g strain %g gw %g bw %g diss %g ymin %g ymax %g vmax %g np %zu\n", d.kinetic, d.strain, d.gravity_work, d.boundary_work, d.dissipated, ymin, ymax, vmax, P.size());
-    if (std::getenv("DBG_P")) for (std::size_t i = 0; i < P.size(); i += 16) std::printf("  x0 %.4f %.4f x %.4f %.4f p %.1f ref %.1f\n", P.x0[i][0], P.x0[i][1], P.x[i][0], P.x[i][1], -(P.stress[i].trace() + P.stress_zz[i]) / 3, rho * g * (y_bed + H - P.x0[i][1]));
-  }
-  EXPECT_GT(n, 0);
+  const double err = p_sum / p_ref - 1, released = d.gravity_work;
+  std::printf("[ fluids   ] column: bottom p = %.1f Pa vs rho g depth %.1f Pa (%+.2f %%), worst particle in the lower 60 %%: %.2f %%; "
+              "%ld steps; released %.4g J, dissipated %.4g J, KE %.2g J, largest rise %.2g J, balance %.3g J\n",
+              p_sum / n, p_ref / n, 100 * err, 100 * worst, s.steps(), released, d.dissipated, d.kinetic, rise, d.balance(e0));
+  ASSERT_GT(n, 0);
   EXPECT_LT(std::abs(err), 0.10);
-  EXPECT_LT(worst, 0.15);
+  EXPECT_LT(worst, 0.10);
   EXPECT_GT(released, 0.0);
-  EXPECT_LT(rise, 1e-3 * released);       // never gains energy
-  EXPECT_LT(d.kinetic, 1e-2 * released);  // settled
-  EXPECT_GT(d.dissipated, 0.0);
-  EXPECT_LT(d.balance(e0), 1e-3 * released);  // dissipation accounted for, no spurious gain
+  EXPECT_LE(rise, 1e-4 * released);              // never gains energy
+  EXPECT_LT(d.kinetic, 1e-4 * released);         // settled
+  EXPECT_LT(std::abs(d.balance(e0)), 0.01 * released);  // the loss is the reported dissipation
 }
 
 }  // namespace

@@ -541,7 +541,7 @@ TEST(ScenarioErrors, OutOfRange) {
   expect_error(with([](json& j) { j["analysis"]["cfl"] = 1.5; }), "/analysis/cfl", {"> 0 and <= 1"});
   expect_error(with([](json& j) { j["analysis"]["dimension"] = 4; }), "/analysis/dimension", {">= 2 and <= 3"});
   expect_error(with([](json& j) { j["bodies"][0]["particles_per_cell"] = 0; }), "/bodies/0/particles_per_cell", {">= 1 and <= 8"});
-  expect_error(with([](json& j) { j["materials"][0]["model"] = "mohr_coulomb"; }), "/materials/0/model", {"linear_elastic, neo_hookean or drucker_prager", "mohr_coulomb"});
+  expect_error(with([](json& j) { j["materials"][0]["model"] = "mohr_coulomb"; }), "/materials/0/model", {"linear_elastic, neo_hookean, drucker_prager, newtonian or bingham", "mohr_coulomb"});
   expect_error(with([](json& j) { j["bodies"][0]["shape"]["type"] = "cylinder"; }), "/bodies/0/shape/type", {"box or ball", "cylinder"});
 }
 
@@ -846,6 +846,73 @@ TEST(ScenarioErrors, LoadScenarioFileProblems) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("directory"), std::string::npos) << e.what();
   }
+}
+
+}  // namespace
+}  // namespace dmi
+
+namespace dmi {
+namespace {
+
+// Slurry materials: a fluid takes bulk_modulus and viscosity (bingham also yield_stress) instead of the
+// elastic constants, which stay required for the solids.
+json with_fluid(const json& material) {
+  json j = minimal_2d();
+  j["materials"][0] = material;
+  return j;
+}
+const json kNewtonian = {{"name", "rock"}, {"model", "newtonian"}, {"density", 1200}, {"bulk_modulus", 2e6}, {"viscosity", 0.5}};
+const json kBingham = {{"name", "rock"}, {"model", "bingham"}, {"density", 2000}, {"bulk_modulus", 5e6}, {"viscosity", 20}, {"yield_stress", 300}};
+
+TEST(ScenarioMaterials, FluidsParse) {
+  const Scenario n = parse(with_fluid(kNewtonian));
+  ASSERT_EQ(n.materials.size(), 1u);
+  EXPECT_EQ(n.materials[0].model, "newtonian");
+  EXPECT_DOUBLE_EQ(n.materials[0].bulk_modulus, 2e6);
+  EXPECT_DOUBLE_EQ(n.materials[0].viscosity, 0.5);
+  const Scenario b = parse(with_fluid(kBingham));
+  EXPECT_DOUBLE_EQ(b.materials[0].yield_stress, 300);
+  EXPECT_DOUBLE_EQ(b.materials[0].regularisation_rate, 0.01);  // default
+  json r = kBingham;
+  r["regularisation_rate"] = 0.1;
+  EXPECT_DOUBLE_EQ(parse(with_fluid(r)).materials[0].regularisation_rate, 0.1);
+  r["yield_stress"] = 0;  // a Bingham fluid without yield stress is Newtonian, and allowed
+  EXPECT_NO_THROW(parse(with_fluid(r)));
+  json j3 = minimal_3d();
+  j3["materials"][0] = kBingham;
+  EXPECT_EQ(parse(j3).materials[0].model, "bingham");
+  // The reference documents the fluid keys, scoped to their models.
+  const std::string md = scenario_reference_markdown();
+  for (const char* key : {"`/materials[]/bulk_modulus`", "`/materials[]/viscosity`", "`/materials[]/yield_stress`", "`/materials[]/regularisation_rate`",
+                          "when model = newtonian or bingham", "when model = linear_elastic or neo_hookean or drucker_prager"})
+    EXPECT_NE(md.find(key), std::string::npos) << key;
+}
+
+TEST(ScenarioMaterials, FluidErrors) {
+  auto fluid_without = [](json m, const char* key) { m.erase(key); return with_fluid(m); };
+  auto fluid_with = [](json m, const char* key, const json& v) { m[key] = v; return with_fluid(m); };
+  expect_error(fluid_without(kNewtonian, "viscosity"), "/materials/0/viscosity", {"the required key 'viscosity'"});
+  expect_error(fluid_without(kBingham, "viscosity"), "/materials/0/viscosity", {"the required key 'viscosity'"});
+  expect_error(fluid_without(kNewtonian, "bulk_modulus"), "/materials/0/bulk_modulus", {"the required key 'bulk_modulus'"});
+  expect_error(fluid_without(kBingham, "yield_stress"), "/materials/0/yield_stress", {"the required key 'yield_stress'"});
+  expect_error(fluid_with(kBingham, "yield_stress", -10), "/materials/0/yield_stress", {"-10", ">= 0 (Pa)"});
+  expect_error(fluid_with(kNewtonian, "viscosity", 0), "/materials/0/viscosity", {"> 0 (Pa s)"});
+  expect_error(fluid_with(kBingham, "regularisation_rate", 0), "/materials/0/regularisation_rate", {"> 0 (1/s)"});
+  // Keys of another model are unknown here.
+  expect_error(fluid_with(kNewtonian, "yield_stress", 100), "/materials/0/yield_stress", {"unknown key 'yield_stress'", "viscosity"});
+  expect_error(fluid_with(kNewtonian, "youngs_modulus", 1e8), "/materials/0/youngs_modulus", {"unknown key 'youngs_modulus'"});
+  expect_error(fluid_with(kBingham, "viscocity", 1), "/materials/0/viscocity", {"unknown key 'viscocity'"});
+  expect_error(with([](json& j) { j["materials"][0]["viscosity"] = 1; }), "/materials/0/viscosity", {"unknown key 'viscosity'"});
+  // The solids still need their elastic constants.
+  expect_error(with([](json& j) { j["materials"][0].erase("youngs_modulus"); }), "/materials/0/youngs_modulus",
+               {"the required key 'youngs_modulus'"});
+  expect_error(with([](json& j) { j["materials"][0]["model"] = "drucker_prager"; j["materials"][0]["friction_angle"] = 30;
+                                  j["materials"][0].erase("poisson_ratio"); }),
+               "/materials/0/poisson_ratio", {"the required key 'poisson_ratio'"});
+  // Plane stress: a fluid layer cannot be a thin plate.
+  json ps = with_fluid(kBingham);
+  ps["analysis"]["plane"] = "stress";
+  expect_error(ps, "/bodies/0/material", {"a material other than bingham in plane stress", "plane strain or 3D"});
 }
 
 }  // namespace

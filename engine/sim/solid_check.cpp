@@ -1,0 +1,172 @@
+#include "engine/sim/solid_check.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/common/error.hpp"
+#include "engine/solid/loads.hpp"
+#include "engine/solid/mesh.hpp"
+#include "engine/solid/static_solver.hpp"
+#include "engine/solid/stress.hpp"
+
+namespace dmi {
+
+using json = nlohmann::json;
+using namespace dmi::solid;
+
+namespace {
+
+struct Model {
+  TaperedBlock block;
+  Mesh mesh;
+  Elastic mat;
+  std::vector<int> base;
+};
+
+Model make_model(const SolidCheckConfig& c) {
+  Model m;
+  TaperedBlock& b = m.block;
+  b.height_m = c.height;
+  b.width_m = c.width;
+  b.base_thickness_m = c.base_thickness;
+  b.crest_thickness_m = c.crest_thickness;
+  b.sloped = parse_sloped_face(c.sloped_face);
+  b.nx = c.cells[0], b.ny = c.cells[1], b.nz = c.cells[2];
+  const bool hex = c.element == "hex8";
+  m.mesh = hex ? hex8_tapered_block(b) : quad4_tapered_section(b);
+  m.mat.E_Pa = c.youngs_modulus;
+  m.mat.nu = c.poisson_ratio;
+  m.mat.analysis = hex ? Analysis::solid3d : Analysis::plane_strain;
+  m.mat.thickness_m = c.width;
+  m.base = nodes_at_height(m.mesh, 0.0, 1e-9 * c.height);
+  return m;
+}
+
+// Horizontal contact loads on one member binned by height (bins of width dz from z = 0), as samples of
+// a piecewise-linear pressure: each bin a hat of half-width dz, so the integral is sum(F_x) / W.
+std::pair<std::vector<double>, std::vector<double>> contact_profile(const json& doc, const std::string& member, double dz, double W,
+                                                                    double H, double& resultant) {
+  std::map<long, double> bins;
+  resultant = 0;
+  for (const auto& l : doc.at("loads")) {
+    if (!member.empty() && l.at("member") != member) continue;
+    const double z = std::clamp(l.at("point")[1].get<double>(), 0.0, H), fx = l.at("force")[0].get<double>();
+    bins[static_cast<long>(std::floor(z / dz))] += fx;
+    resultant += fx;
+  }
+  std::vector<double> z, q;
+  for (const auto& [k, f] : bins) {
+    const double zc = (k + 0.5) * dz;
+    if (z.empty()) {
+      z.push_back(zc - dz), q.push_back(0.0);
+    } else if (zc - z.back() > 1.5 * dz) {  // a gap: close the previous hat, open this one
+      z.push_back(z.back() + dz), q.push_back(0.0);
+      if (zc - dz > z.back() + 1e-12 * dz) z.push_back(zc - dz), q.push_back(0.0);
+    }
+    z.push_back(zc), q.push_back(f / (dz * W));
+  }
+  if (!z.empty()) z.push_back(z.back() + dz), q.push_back(0.0);
+  return {z, q};
+}
+
+json stress_peaks(const Model& m, const Eigen::VectorXd& u) {
+  const StressField field = recover_stress(m.mesh, m.mat, u);
+  json out = json::object();
+  const std::pair<Measure, const char*> measures[] = {
+      {Measure::von_mises, "von_mises"}, {Measure::max_principal, "max_principal"}, {Measure::min_principal, "min_principal"}, {Measure::max_shear, "max_shear"}};
+  for (const auto& [ms, key] : measures) {
+    json at = json::object();
+    for (const auto& [loc, where] : {std::pair{Location::gauss, "gauss"}, std::pair{Location::centroid, "centroid"}, std::pair{Location::node, "node"}}) {
+      const Peak p = peak(field, ms, loc);
+      const Eigen::VectorXd x = point_coordinates(m.mesh, loc, p.index);
+      at[where] = {{"value_Pa", measure(field.at(loc)[p.index], ms)}, {"location_m", std::vector<double>(x.data(), x.data() + x.size())}};
+    }
+    out[key] = at;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string run_solid_check(const Scenario& s, const std::string& peak_contact_json) {
+  const SolidCheckConfig& c = s.solid_check;
+  const Model m = make_model(c);
+  const int dim = m.mesh.dim;
+  const StaticSolver solver(assemble_stiffness(m.mesh, m.mat), node_dofs(m.mesh, m.base));
+  const json contact = peak_contact_json.empty() ? json() : json::parse(peak_contact_json);
+  json cases = json::array();
+  for (std::size_t i = 0; i < c.loads.size(); ++i) {
+    const SolidLoadConfig& l = c.loads[i];
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(m.mesh.n_dofs());
+    json entry{{"name", l.name}, {"type", l.type}};
+    const double across = l.across >= 0 ? l.across : 0.5 * c.width;
+    if (l.type == "point") {
+      Eigen::VectorXd F = Eigen::VectorXd::Zero(dim);
+      F[0] = l.force;
+      add_point_load(m.mesh, nearest_face_node(m.mesh, Face::upstream, across, l.height), F, f);
+    } else if (l.type == "patch" && dim == 3) {
+      PatchLoad p;
+      p.centre_y_m = across, p.centre_z_m = l.height, p.width_m = l.patch_width, p.height_m = l.patch_height;
+      p.total_force_N = l.force;
+      p.shape = l.shape == "uniform" ? PatchShape::uniform : PatchShape::pyramid;
+      add_patch_load(m.mesh, p, f);
+    } else if (l.type == "patch") {  // 2D: the patch's vertical profile over the plane-strain width
+      const double h = 0.5 * l.patch_height, W = c.width;
+      if (l.shape == "uniform")
+        add_pressure_profile(m.mesh, m.mat, Face::upstream, {l.height - h, l.height + h}, {l.force / (W * 2 * h), l.force / (W * 2 * h)}, f);
+      else
+        add_pressure_profile(m.mesh, m.mat, Face::upstream, {l.height - h, l.height, l.height + h}, {0.0, l.force / (W * h), 0.0}, f);
+    } else {
+      if (contact.is_null())
+        throw InputError(s.source_file, "/solid_check/loads/" + std::to_string(i) + "/type", "\"simulation\"",
+                         "a run in which the members were touched (no contact loads were recorded)");
+      const std::string member = l.member.empty() ? s.structure.members.front().name : l.member;
+      double resultant = 0;
+      const auto [z, q] = contact_profile(contact, member, s.grid.cell_size, c.width, c.height, resultant);
+      entry["time_s"] = contact.at("time");
+      entry["member"] = member;
+      entry["profile"] = {{"height_m", z}, {"pressure_Pa", q}};
+      if (z.size() < 2 || !(std::abs(resultant) > 0)) {
+        entry["note"] = "no horizontal contact load on the member at the governing instant";
+      } else if (dim == 2 || l.spread == "uniform") {
+        add_pressure_profile(m.mesh, m.mat, Face::upstream, z, q, f);
+      } else {  // a round patch: the vertical profile, symmetrised about its centroid, turned about it
+        double zc = 0, sum = 0;
+        for (std::size_t k = 0; k < z.size(); ++k) zc += q[k] * z[k], sum += q[k];
+        zc /= sum;
+        FaceTraction t;
+        t.q_Pa = [&, zc](double y, double zz) {
+          const double r = std::hypot(y - across, zz - zc);
+          return 0.5 * (piecewise_linear(z, q, zc + r) + piecewise_linear(z, q, zc - r));
+        };
+        t.gauss_per_direction = 4;
+        Eigen::VectorXd g = Eigen::VectorXd::Zero(f.size());
+        const FaceLoadReport rep = add_face_traction(m.mesh, m.mat, t, g);
+        f += g * (resultant / rep.resultant_N);  // same resultant as the simulation
+      }
+    }
+    const StaticSolution sol = solver.solve(f);
+    double fx = 0;
+    for (int n = 0; n < m.mesh.n_nodes(); ++n) fx += f[dim * n];
+    double rmax = 0, umax = 0;
+    for (int n : m.base) rmax = std::max(rmax, sol.reaction.segment(dim * n, dim).norm());
+    for (int n = 0; n < m.mesh.n_nodes(); ++n) umax = std::max(umax, sol.u.segment(dim * n, dim).norm());
+    const Eigen::VectorXd total = total_reaction(m.mesh, sol.reaction, m.base);
+    entry["load_resultant_N"] = fx;
+    entry["peaks"] = stress_peaks(m, sol.u);
+    entry["max_nodal_base_reaction_N"] = rmax;
+    entry["total_base_reaction_N"] = std::vector<double>(total.data(), total.data() + total.size());
+    entry["max_displacement_m"] = umax;
+    cases.push_back(entry);
+  }
+  json model{{"element", c.element}, {"cells", c.cells}, {"nodes", m.mesh.n_nodes()}, {"elements", m.mesh.n_elements()},
+             {"height_m", c.height}, {"crest_thickness_m", c.crest_thickness}, {"base_thickness_m", c.base_thickness},
+             {"width_m", c.width}, {"sloped_face", c.sloped_face}, {"youngs_modulus_Pa", c.youngs_modulus}, {"poisson_ratio", c.poisson_ratio},
+             {"axes", dim == 3 ? "x through the thickness (downstream), y across the face, z up" : "x through the thickness (downstream), z up"}};
+  return json{{"model", model}, {"cases", cases}}.dump();
+}
+
+}  // namespace dmi

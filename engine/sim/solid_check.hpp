@@ -1,0 +1,23 @@
+// The solid-FE check of a concrete dam body (paper B, SEEDS.md B.3): the tapered dam as hex8 (3D) or
+// quad4 (2D plane strain) elements, base fixed, linear elastic, one static solve per load case:
+//   point      a horizontal force at the upstream-face node nearest to (across, height);
+//   patch      the same force spread over a rectangle of the face (pyramid or uniform, paper B);
+//   simulation the horizontal contact loads this run's boulder/debris put on a dam member at the instant
+//              of the largest total contact force, binned by height (bins of one MPM cell) into a
+//              piecewise-linear face pressure with the same resultant; across the width uniform (the
+//              plane-strain assumption) or axisymmetric about the profile's centroid (a round patch).
+// Results (JSON document "solid_check" in results.h5, docs/results.md): per case the load resultant,
+// peak von Mises / max and min principal stress at Gauss points and at nodes (value and location),
+// the largest nodal base reaction, the total base reaction and the largest displacement.
+#pragma once
+#include <string>
+
+#include "engine/scenario/config.hpp"
+
+namespace dmi {
+
+// peak_contact_json: the run's "peak_contact" document ("" when the run had none). Throws
+// InputError when a simulation load case has no contact loads to take.
+std::string run_solid_check(const Scenario& s, const std::string& peak_contact_json);
+
+}  // namespace dmi
