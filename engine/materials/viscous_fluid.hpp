@@ -21,7 +21,7 @@
 //              returns beta = D (4/3) mu_max / K. The solver's damped CFL step (2/w)(sqrt(1 + zeta^2) - zeta),
 //              w = 2c/h, zeta = beta w/2, then tends to h^2 rho / (2 D (4/3) mu_max) for strong viscosity: the
 //              explicit limit of viscous diffusion on cells of size h in D dimensions (FTCS: h^2 / (2 D nu)).
-//              Measured in 2D (GIMP and B-spline, tests/engine/materials/test_fluids.cpp): unstable above
+//              Measured in 2D (the settling column of test_fluids.cpp at forced steps, GIMP and B-spline): unstable above
 //              0.6-0.7 h^2 rho / (2 (4/3) mu), so without the factor D the default cfl 0.5 would leave no margin.
 // Only J is a state of a fluid: after each update F is replaced by J^(1/D) I (as taichi's mpm99 does for water),
 // so its isochoric part cannot grow without bound in long shear flows and det F stays accurate.
