@@ -18,8 +18,8 @@
 //   dissipated power  s:D V = 2 mu_eff D':D' V >= 0, summed times dt (exact for constant rates).
 //   stable step  the viscous stress is Kelvin-Voigt damping of the pressure waves: a longitudinal mode has
 //              elastic modulus M = K (no shear modulus) and viscous modulus (4/3) mu_eff, so damping_time()
-//              returns beta = D (4/3) mu_max / K. The solver's damped CFL step (2/w)(sqrt(1 + zeta^2) - zeta),
-//              w = 2c/h, zeta = beta w/2, then tends to h^2 rho / (2 D (4/3) mu_max) for strong viscosity: the
+//              returns beta = (4/3) mu_max / K. The solver's damped CFL step (2/w)(sqrt(1 + zeta^2) - zeta),
+//              w = 2 sqrt(D) c/h, zeta = beta w/2, then tends to h^2 rho / (2 D (4/3) mu_max) for strong viscosity: the
 //              explicit limit of viscous diffusion on cells of size h in D dimensions (FTCS: h^2 / (2 D nu)).
 //              Measured in 2D (the settling column of test_fluids.cpp at forced steps, GIMP and B-spline): unstable above
 //              0.6-0.7 h^2 rho / (2 (4/3) mu), so without the factor D the default cfl 0.5 would leave no margin.
@@ -50,7 +50,7 @@ template <int D> class ViscousFluid final : public Material<D> {
   }
   double density() const override { return rho_; }
   double wave_speed() const override { return std::sqrt(K_ / rho_); }
-  double damping_time() const override { return D * (4.0 / 3.0) * max_viscosity() / K_; }
+  double damping_time() const override { return (4.0 / 3.0) * max_viscosity() / K_; }
   double dissipated() const override { return dissipated_; }
   void attach(const Particles<D>& p, Index, Index) override { power_.resize(p.size(), 0.0); }
 

@@ -206,24 +206,32 @@ std::string cell(const std::string& s) {
 }  // namespace
 
 std::string markdown(const std::vector<Row>& rows) {
-  std::ostringstream os;
-  std::string section = "#";
-  for (const Row& r : rows) {
-    // A section per top-level object or array, headed by its own row; scalar top-level keys
-    // form "(top level)".
+  // A section per top-level object or array, headed by its own row; scalar top-level keys form
+  // "(top level)". Sections keep the order of their first row, wherever their rows were declared.
+  auto section_of = [](const Row& r) {
     const auto slash = r.path.find('/', 1);
     const bool nested = slash != std::string::npos || r.type == "object" || r.type == "array of objects";
     std::string top = nested ? r.path.substr(1, slash == std::string::npos ? std::string::npos : slash - 1) : "(top level)";
     if (top.size() > 2 && top.compare(top.size() - 2, 2, "[]") == 0) top.resize(top.size() - 2);
-    if (top != section) {
-      section = top;
-      os << "\n### `" << top << "`\n\n| key | type | unit | default | allowed | description |\n|---|---|---|---|---|---|\n";
+    return top;
+  };
+  std::vector<std::string> order;
+  std::map<std::string, std::vector<const Row*>> groups;
+  for (const Row& r : rows) {
+    const std::string top = section_of(r);
+    if (!groups.count(top)) order.push_back(top);
+    groups[top].push_back(&r);
+  }
+  std::ostringstream os;
+  for (const std::string& top : order) {
+    os << "\n### `" << top << "`\n\n| key | type | unit | default | allowed | description |\n|---|---|---|---|---|---|\n";
+    for (const Row* r : groups[top]) {
+      std::string doc = r->doc;
+      if (!r->condition.empty()) doc = "*(when " + r->condition + ")* " + doc;
+      os << "| `" << r->path << "` | " << r->type << " | " << (r->unit.empty() ? "–" : r->unit) << " | "
+         << (r->required ? "**required**" : (r->default_value.empty() ? "–" : "`" + r->default_value + "`")) << " | "
+         << (r->constraint.empty() ? "–" : cell(r->constraint)) << " | " << cell(doc) << " |\n";
     }
-    std::string doc = r.doc;
-    if (!r.condition.empty()) doc = "*(when " + r.condition + ")* " + doc;
-    os << "| `" << r.path << "` | " << r.type << " | " << (r.unit.empty() ? "–" : r.unit) << " | "
-       << (r.required ? "**required**" : (r.default_value.empty() ? "–" : "`" + r.default_value + "`")) << " | "
-       << (r.constraint.empty() ? "–" : cell(r.constraint)) << " | " << cell(doc) << " |\n";
   }
   return os.str();
 }

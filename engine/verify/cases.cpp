@@ -229,6 +229,7 @@ const std::vector<ValidationCase>& validation_cases() {
       {"damped_bar", "bar with Kelvin-Voigt damping: logarithmic decrement and dissipated energy", damped_bar},
     };
     for (auto& m : member_validation_cases()) c.push_back(std::move(m));
+    for (auto& m : debris_validation_cases()) c.push_back(std::move(m));
     return c;
   }();
   return cases;
