@@ -371,7 +371,9 @@ void Builder::add_grid_walls_and_time() {
   if (p_.boulder) top += std::min(boulder_speed_ * boulder_speed_ / (2 * kG), H);
   if (p_.debris) top += p_.debris->depth + p_.debris->velocity * p_.debris->velocity / kG;  // twice the run-up v^2/2g
   const double right = box_.hi[0] + std::max(4 * h, (p_.debris ? 0.5 : 0.25) * H);
-  const double left = box_.lo[0] - 4 * h;
+  // Upstream, room for a rebounding boulder to fly freely until the end (at most its impact speed for the
+  // 0.15 s after arrival): with 4 cells it struck the upstream end wall and came back for a second impact.
+  const double left = box_.lo[0] - 4 * h - (p_.boulder ? boulder_speed_ * 0.15 : 0.0);
   const double bottom = std::min(0.0, bed(right)) - 4 * h;
   const double ox = std::floor(left / h) * h, oy = std::floor(bottom / h) * h;
   const double sx = std::ceil((right - ox) / h) * h, sy = std::ceil((top - oy) / h) * h;
