@@ -7,8 +7,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <iostream>
 
 #include "engine/common/error.hpp"
@@ -29,18 +27,10 @@ dmi::ProgressMode progress_mode(bool quiet, const std::string& p) {
   return dmi::ProgressMode::automatic;
 }
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 // --dry-run: validate every variant and print a one-line summary of each (stdout). With --expand,
 // print the low-level scenario the presets expand to instead (stdout, runnable as a scenario file;
 // the summaries go to stderr).
 int dry_run_report(const std::string& file, const std::vector<dmi::ScenarioVariant>& variants, bool expand) {
-  const std::string text = read_text(file);
   for (const auto& v : variants) {
     const dmi::Scenario& s = v.scenario;
     std::fprintf(expand ? stderr : stdout, "%s%s%s: valid scenario '%s' (%dD, %zu bodies, %zu materials, %zu walls, %zu members)\n", file.c_str(),
@@ -48,11 +38,13 @@ int dry_run_report(const std::string& file, const std::vector<dmi::ScenarioVaria
                  s.walls.size(), s.structure.members.size());
   }
   if (!expand) return 0;
+  // The parser kept each variant's expansion (or, without presets, the file as given).
+  auto low_level = [](const dmi::Scenario& s) { return nlohmann::json::parse(s.expanded_text.empty() ? s.source_text : s.expanded_text); };
   if (variants.size() == 1) {
-    std::cout << dmi::expanded_scenario_json(text, file, variants[0].label).dump(1) << "\n";
+    std::cout << low_level(variants[0].scenario).dump(1) << "\n";
   } else {
     nlohmann::json all = nlohmann::json::object();
-    for (const auto& v : variants) all[v.label] = dmi::expanded_scenario_json(text, file, v.label);
+    for (const auto& v : variants) all[v.label] = low_level(v.scenario);
     std::cout << all.dump(1) << "\n";
   }
   return 0;

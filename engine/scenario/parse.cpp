@@ -22,13 +22,8 @@ using json = nlohmann::json;
 
 namespace {
 
-constexpr double inf = std::numeric_limits<double>::infinity();
-Spec positive(const std::string& unit, const std::string& doc, bool required = false) {
-  return Spec{.unit = unit, .doc = doc, .min = 0, .min_open = true, .required = required};
-}
-Spec any(const std::string& unit, const std::string& doc, bool required = false) {
-  return Spec{.unit = unit, .doc = doc, .required = required};
-}
+using schema::any;
+using schema::positive;
 
 void read_analysis(Obj o, AnalysisConfig& a) {
   o.integer("dimension", a.dimension, Spec{.doc = "2 (plane strain or plane stress) or 3", .min = 2, .max = 3});
@@ -469,10 +464,14 @@ void read_solid_check(Obj o, SolidCheckConfig& c) {
     if (x != std::floor(x)) o.fail("cells", nullptr, "whole numbers of elements");
 }
 
-void read_scenario(Obj& o, Scenario& s) {
+void read_header(Obj& o, Scenario& s) {
   o.integer("schema_version", s.schema_version, Spec{.doc = "scenario format version; must be 1", .min = 1, .max = 1, .required = true});
   o.string("name", s.name, Spec{.doc = "scenario name, shown in outputs and reports", .required = true});
   o.string("description", s.description, Spec{.doc = "free text"});
+}
+
+void read_scenario(Obj& o, Scenario& s) {
+  read_header(o, s);
   read_analysis(o.object("analysis", "dimension, kinematics, duration, time step and gravity"), s.analysis);
   read_mpm(o.object("mpm", "material point method options"), s.mpm);
   read_grid(o.object("grid", "the background grid"), s.grid);
@@ -780,9 +779,7 @@ Scenario parse_low_level(const json& j, const std::string& file) {
   Obj o(&j, "", ctx);
   if (j.contains("solid_check") && !j.contains("bodies") && !j.contains("structure")) {
     // A solid-FE check on its own (e.g. paper B Table 1): no grid, bodies or time stepping.
-    o.integer("schema_version", s.schema_version, Spec{.min = 1, .max = 1, .required = true});
-    o.string("name", s.name, Spec{.required = true});
-    o.string("description", s.description, Spec{});
+    read_header(o, s);
     read_solid_check(o.object("solid_check", ""), s.solid_check);
     o.finish();
     check_solid_check(s, file);
@@ -862,12 +859,6 @@ std::vector<ScenarioVariant> parse_scenario_variants(const std::string& text, co
 }
 
 std::vector<ScenarioVariant> load_scenario_variants(const std::string& path) { return parse_scenario_variants(read_file_text(path), path); }
-
-json expanded_scenario_json(const std::string& text, const std::string& file, const std::string& variant) {
-  const json j = parse_json_text(text, file);
-  if (!has_presets(j)) return j;
-  return expand_presets(j, file, variant);
-}
 
 std::string scenario_reference_markdown() {
   std::vector<schema::Row> rows;

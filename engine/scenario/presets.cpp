@@ -18,10 +18,8 @@ namespace {
 
 const char* const kPresetKeys[] = {"dam", "boulder", "debris_surge", "tyre_buffer", "compare"};
 
-Spec positive(const std::string& unit, const std::string& doc, bool required = false) {
-  return Spec{.unit = unit, .doc = doc, .min = 0, .min_open = true, .required = required};
-}
-Spec nonneg(const std::string& unit, const std::string& doc) { return Spec{.unit = unit, .doc = doc, .min = 0}; }
+using schema::nonneg;
+using schema::positive;
 
 // A material object: defaults overlaid by the user's keys, validated as a materials[] entry at its
 // own JSON path (so a wrong key names /dam/concrete/..., not the generated list).

@@ -24,8 +24,6 @@ struct ScenarioVariant {
 };
 std::vector<ScenarioVariant> parse_scenario_variants(const std::string& text, const std::string& file);
 std::vector<ScenarioVariant> load_scenario_variants(const std::string& path);
-// The low-level scenario JSON a file expands to (the file itself when it uses no presets).
-nlohmann::json expanded_scenario_json(const std::string& text, const std::string& file, const std::string& variant = "");
 
 // Markdown reference of every key (generated from the parser's declarations).
 std::string scenario_reference_markdown();

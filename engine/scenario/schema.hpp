@@ -40,6 +40,15 @@ struct Spec {
   bool required = false;
 };
 
+// Common specs: a number > 0, any value, a number >= 0.
+inline Spec positive(const std::string& unit, const std::string& doc, bool required = false) {
+  return Spec{.unit = unit, .doc = doc, .min = 0, .min_open = true, .required = required};
+}
+inline Spec any(const std::string& unit, const std::string& doc, bool required = false) {
+  return Spec{.unit = unit, .doc = doc, .required = required};
+}
+inline Spec nonneg(const std::string& unit, const std::string& doc) { return Spec{.unit = unit, .doc = doc, .min = 0}; }
+
 class Obj {
  public:
   Obj(const json* j, std::string path, Context& ctx, std::string condition = "");

@@ -336,6 +336,19 @@ std::vector<CaseResult> paper_b_table1() {
   return stamp(r, timer.seconds());
 }
 
+// Impact duration from a body's x velocity (the first column of a 2-component series, initial speed v0 > 0):
+// from its first loss of frac v0 until it is within frac v0 of its final value.
+double impact_duration(const std::vector<double>& t, const Series& v, double v0, double frac) {
+  const double v_end = v.data[2 * (t.size() - 1)];
+  double start = -1, stop = -1;
+  for (std::size_t k = 0; k < t.size() && stop < 0; ++k) {
+    const double vx = v.data[2 * k];
+    if (start < 0 && vx < (1 - frac) * v0) start = t[k];
+    if (start >= 0 && std::abs(vx - v_end) < frac * v0) stop = t[k];
+  }
+  return stop - start;
+}
+
 // Tyre buffer (issue 4): the same 1 t boulder at 5 m/s on the concrete check dam without and with a 0.3 m
 // damped rubber layer bonded to the face (examples/dam_boulder_*.json). The buffer must lower the peak base
 // shear and moment and lengthen the load; neither run may create energy (balance <= +1 % of the input).
@@ -352,17 +365,8 @@ std::vector<CaseResult> tyre_buffer() {
       p.moment = std::max(p.moment, std::abs(r.data[3 * k + 2]));
       p.balance = std::max(p.balance, b.data[k]);
     }
-    // Impact duration: from the boulder's first loss of 2 % of v0 until its velocity is within 2 % of v0 of
-    // its final value (the structure's free vibration afterwards is not load).
-    const Series& v = series(out.results, "probes/boulder/velocity");
-    const double v_end = v.data[2 * (t.size() - 1)];
-    double start = -1, stop = -1;
-    for (std::size_t k = 0; k < t.size(); ++k) {
-      const double vx = v.data[2 * k];
-      if (start < 0 && vx < 0.98 * 5.0) start = t[k];
-      if (start >= 0 && stop < 0 && std::abs(vx - v_end) < 0.02 * 5.0) stop = t[k];
-    }
-    p.loaded = stop - start;
+    // The structure's free vibration after the boulder has left is not load.
+    p.loaded = impact_duration(t, series(out.results, "probes/boulder/velocity"), 5.0, 0.02);
     return p;
   };
   const Peaks bare = peaks(run_quiet(example_scenario("dam_boulder_no_buffer.json")));
@@ -400,17 +404,13 @@ std::vector<CaseResult> buffer_pad() {
     const Series& v = series(out.results, "probes/block/velocity");
     const Series& bal = series(out.results, "energy/balance_error");
     const double v_end = v.data[2 * (tm.size() - 1)];
-    double start = -1, stop = -1;
     for (std::size_t k = 0; k < tm.size(); ++k) {
       o.peak = std::max(o.peak, std::abs(f.data[2 * k]));
       o.created = std::max(o.created, bal.data[k]);
-      const double vx = v.data[2 * k];
-      if (start < 0 && vx < 0.99 * v0) start = tm[k];
-      if (start >= 0 && stop < 0 && std::abs(vx - v_end) < 0.01 * v0) stop = tm[k];
       if (k > 0) o.impulse += f.data[2 * k] * (tm[k] - tm[k - 1]);  // each step's force over that step
     }
     o.dp = M * (v0 - v_end);
-    o.duration = stop - start;
+    o.duration = impact_duration(tm, v, v0, 0.01);
     o.e = -v_end / v0;
     o.dissipated = series(out.results, "energy/dissipated").data.back();
     o.lost = 0.5 * M * (v0 * v0 - v_end * v_end);

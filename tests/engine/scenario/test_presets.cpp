@@ -156,7 +156,7 @@ TEST(Presets, ContinuumDamAndDiscreteTyresSeedTheRightMass) {
     for (std::size_t b = 0; b < s.bodies.size(); ++b)
       if (s.bodies[b].name == name) id = static_cast<int>(b);
     double m = 0;
-    for (Index p = 0; p < sc.particles.size(); ++p)
+    for (std::size_t p = 0; p < sc.particles.size(); ++p)
       if (sc.particles.body[p] == id) m += sc.particles.mass[p];
     return m;
   };
