@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "design/design.hpp"
 #include "engine/common/error.hpp"
 #include "engine/scenario/scenario.hpp"
 #include "engine/sim/run.hpp"
@@ -80,7 +81,7 @@ void print_comparison(const std::vector<std::pair<std::string, Peaks>>& v) {
 }
 
 int simulate(const std::string& file, const std::string& out, int threads, bool quiet, const std::string& progress, bool dry_run,
-             bool expand) {
+             bool expand, bool compare_table = true) {
   const std::vector<dmi::ScenarioVariant> variants = dmi::load_scenario_variants(file);
   if (dry_run || expand) return dry_run_report(file, variants, expand);
   std::vector<std::pair<std::string, Peaks>> peaks;
@@ -96,7 +97,7 @@ int simulate(const std::string& file, const std::string& out, int threads, bool 
                             r.results.info.numbers.at("wall_seconds"));
     peaks.emplace_back(v.label, frame_peaks(r.results));
   }
-  if (!quiet) print_comparison(peaks);
+  if (!quiet && compare_table) print_comparison(peaks);
   return 0;
 }
 
@@ -136,6 +137,16 @@ int main(int argc, char** argv) {
   val->add_flag("--json", json, "print a JSON array of {case, metric, value, reference, error, tolerance, passed, wall_seconds}");
   val->add_flag("--list", list, "list the cases and exit");
   val->add_option("-t,--threads", threads, "OpenMP threads (0 = all cores)");
+  std::vector<std::string> check_paths;
+  std::string limits_file, design_out;
+  CLI::App* chk = app.add_subcommand("check", "design checks of finished runs: envelopes, reactions, strength checks -> design.json; "
+                                              "exit 0 all pass, 1 a check fails, 2 bad input");
+  chk->add_option("results", check_paths, "results.h5 files or run folders (a comparison folder holds with_buffer/ and without_buffer/)")->required();
+  chk->add_option("--limits", limits_file, "limits JSON (docs/design-checks.md): strengths, factors, member materials");
+  chk->add_flag("--json", json, "print design.json to stdout instead of the summary");
+  chk->add_option("-o,--out", design_out, "where to write design.json (default: beside the results)");
+  chk->add_flag("-q,--quiet", quiet, "no summary");
+  run->add_option("--limits", limits_file, "limits JSON for the design checks (docs/design-checks.md)");
   CLI::App* sch = app.add_subcommand("schema", "print the scenario key reference (Markdown, as in docs/scenario.md)");
   sch->add_flag("--markdown", markdown, "Markdown tables (default)");
 
@@ -146,7 +157,12 @@ int main(int argc, char** argv) {
     return rc == 0 ? 0 : 2;
   }
   try {
-    if (*run || *sim) return simulate(file, out, threads, quiet, progress, dry_run, expand);
+    if (*sim) return simulate(file, out, threads, quiet, progress, dry_run, expand);
+    if (*run) {  // the whole chain: simulation, then the design checks of what it wrote
+      simulate(file, out, threads, quiet, progress, false, false, false);
+      return dmi::design::check_main({out}, limits_file, false, "", quiet, DMI_VERSION);
+    }
+    if (*chk) return dmi::design::check_main(check_paths, limits_file, json, design_out, quiet, DMI_VERSION);
     if (*val) return dmi::validate_main(cases, json, list, threads);
     if (*sch) {
       std::cout << dmi::scenario_reference_markdown();

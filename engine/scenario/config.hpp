@@ -211,6 +211,7 @@ struct Scenario {
   std::string source_text;   // the JSON as given, stored in results.h5
   std::string expanded_text; // the low-level scenario the presets expanded into ("" without presets)
   std::string variant;       // "" or with_buffer / without_buffer (compare)
+  std::string design_basis_text;  // the design_basis object ("" when absent), for design/'s estimates
 };
 
 }  // namespace dmi

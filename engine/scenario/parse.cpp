@@ -487,6 +487,12 @@ void read_scenario(Obj& o, Scenario& s) {
   read_output(o.object("output", "what is recorded"), s.output);
   read_solid_check(o.object("solid_check", "a linear solid-FE check of a concrete dam body (paper B, SEEDS.md B.3): static load cases, "
                                            "given or taken from this run's contact loads; absent: none"), s.solid_check);
+  // Free-form here: design/ validates it where it reads it (docs/design-json.md).
+  if (const json* b = o.raw("design_basis", Spec{.doc = "inputs of the closed-form impact estimates of the design checks (dam, boulder, "
+                                                        "debris_surge, tyre_buffer; docs/design-json.md); the presets write it"}, "object", "")) {
+    if (!b->is_object()) o.fail("design_basis", b, "an object (docs/design-json.md)");
+    s.design_basis_text = b->dump();
+  }
   o.finish();
 }
 

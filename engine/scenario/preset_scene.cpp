@@ -75,6 +75,7 @@ class Builder {
   void add_boulder();
   void add_debris();
   void add_grid_walls_and_time();
+  json design_basis() const;
   double buffer_damping_frequency(double E, double thickness) const;
   [[noreturn]] void fail(const std::string& path, const json& value, const std::string& expected) const {
     throw InputError(file_, path, value.is_null() ? "" : value.dump(), expected);
@@ -145,7 +146,44 @@ json Builder::build() {
   if (p_.debris) out_["mpm"] = json{{"stress_update", "musl"}};
   if (members_) out_["member_contact"] = json{{"mode", "separable"}, {"bonded", bonded_}};
   out_["output"]["probes"] = probes_;
+  out_["design_basis"] = design_basis();
   return out_;
+}
+
+// What the closed-form estimates of design/ need (docs/design-json.md, "design basis"): the real
+// (spherical) boulder, the surge, the dam and the buffer as the engineer described them.
+json Builder::design_basis() const {
+  json dam{{"type", d_.type}, {"height_m", d_.height}, {"width_m", d_.width}};
+  const json& m = d_.type == "concrete_gravity" ? d_.concrete : d_.steel;
+  dam["youngs_modulus_Pa"] = m.value("youngs_modulus", 0.0);
+  dam["poisson_ratio"] = m.value("poisson_ratio", 0.0);
+  dam["density_kg_m3"] = m.value("density", 0.0);
+  if (d_.type == "concrete_gravity") {
+    dam["crest_thickness_m"] = d_.crest;
+    dam["base_thickness_m"] = d_.base_thickness;
+  } else {
+    dam["column_diameter_m"] = d_.column_d;
+    dam["column_wall_thickness_m"] = d_.column_t;
+  }
+  json out{{"dam", dam}};
+  if (p_.boulder) {
+    const BoulderPreset& b = *p_.boulder;
+    out["boulder"] = json{{"mass_kg", boulder_m_}, {"diameter_m", std::cbrt(6 * boulder_m_ / (b.density * kPi))}, {"density_kg_m3", b.density},
+                          {"youngs_modulus_Pa", b.youngs_modulus}, {"poisson_ratio", b.poisson_ratio}, {"speed_m_s", boulder_speed_},
+                          {"impact_height_m", impact_y_}};
+  }
+  if (p_.debris) {
+    const DebrisPreset& f = *p_.debris;
+    out["debris_surge"] = json{{"density_kg_m3", f.material.value("density", 2000.0)}, {"depth_m", f.depth}, {"length_m", f.length},
+                               {"speed_m_s", f.velocity}, {"channel_slope_deg", f.slope}};
+  }
+  if (p_.buffer) {
+    const BufferPreset& b = *p_.buffer;
+    const bool homog = b.type == "homogenised";
+    out["tyre_buffer"] = json{{"type", b.type}, {"youngs_modulus_Pa", b.material.value("youngs_modulus", 0.0)},
+                              {"thickness_m", homog ? b.thickness : b.tyre_diameter}, {"bottom_m", b.bottom}, {"top_m", b.top}};
+  }
+  return out;
 }
 
 void Builder::add_dam() {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <map>
 
+#include <nlohmann/json.hpp>
+
 namespace dmi {
 namespace {
 
@@ -94,5 +96,47 @@ template <int D> MemberCoupling build_coupling(const Scenario& s, const Scene<D>
 
 template MemberCoupling build_coupling<2>(const Scenario&, const Scene<2>&);
 template MemberCoupling build_coupling<3>(const Scenario&, const Scene<3>&);
+
+}  // namespace dmi
+
+namespace dmi {
+
+// The frame as design/ needs it (docs/results.md, /documents/structure): geometry, sections and
+// materials of every element, members and supports, so results.h5 alone answers "which section
+// carried these forces" without the scenario parser.
+std::string structure_document(const Scenario& s, const FrameModel& fm) {
+  using nlohmann::json;
+  json nodes = json::array(), names = json::array(), elements = json::array(), members = json::array(), supports = json::array();
+  for (std::size_t k = 0; k < fm.nodes.size(); ++k) {
+    nodes.push_back({fm.nodes[k].x(), fm.nodes[k].y()});
+    names.push_back(k < s.structure.nodes.size() ? s.structure.nodes[k].name : "");
+  }
+  for (const auto& e : fm.elements) {
+    const Section& c = e.section;
+    json sec{{"kind", c.kind() == SectionKind::pipe ? "pipe" : c.kind() == SectionKind::tapered_rectangle ? "tapered_rectangle" : "rectangle"}};
+    if (c.kind() == SectionKind::pipe) {
+      sec["diameter_m"] = c.depth(0);
+      sec["wall_thickness_m"] = c.wall_thickness();
+    } else {
+      sec["width_m"] = c.width(0);
+      sec["depth_start_m"] = c.depth(0);
+      sec["depth_end_m"] = c.depth(1);
+    }
+    elements.push_back({{"member", e.member}, {"i", e.i}, {"j", e.j}, {"s0", e.s0}, {"s1", e.s1}, {"section", sec},
+                        {"youngs_modulus_Pa", e.E}, {"poisson_ratio", e.nu}, {"density_kg_m3", e.rho}});
+  }
+  for (std::size_t k = 0; k < fm.members.size(); ++k) {
+    const auto& m = fm.members[k];
+    members.push_back({{"name", m.name}, {"material", s.structure.members[k].material}, {"first_element", m.first_element}, {"elements", m.elements}});
+  }
+  for (std::size_t k = 0; k < fm.supports.size(); ++k) {
+    const auto& d = fm.supports[k];
+    supports.push_back({{"node", s.structure.supports[k].node}, {"node_index", d.node}, {"type", s.structure.supports[k].type},
+                        {"fixed", {d.fixed[0], d.fixed[1], d.fixed[2]}}, {"series", "supports/" + s.structure.supports[k].node + "/reaction"}});
+  }
+  return json{{"nodes_m", nodes}, {"node_names", names}, {"elements", elements}, {"members", members}, {"supports", supports},
+              {"gravity_m_s2", {fm.gravity.x(), fm.gravity.y()}}, {"plane_thickness_m", s.analysis.thickness}}
+      .dump();
+}
 
 }  // namespace dmi

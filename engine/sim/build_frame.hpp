@@ -1,6 +1,8 @@
 // Turns a scenario's "structure" section into a FrameModel (members subdivided into elements,
 // sections, supports, nodal masses) and its "member_contact" section into the coupling options.
 #pragma once
+#include <string>
+
 #include "engine/mpm/scene.hpp"
 #include "engine/scenario/config.hpp"
 #include "engine/structure/frame.hpp"
@@ -8,6 +10,9 @@
 namespace dmi {
 
 FrameModel build_frame_model(const Scenario& s);
+// JSON document /documents/structure of results.h5 (docs/results.md): nodes, elements with sections and
+// materials, members, supports and the series of their reactions.
+std::string structure_document(const Scenario& s, const FrameModel& m);
 // Fields the members act on: those of the listed bodies (all bodies if none are listed).
 template <int D> MemberCoupling build_coupling(const Scenario& s, const Scene<D>& scene);
 

@@ -13,6 +13,7 @@
 #include "engine/io/results_writer.hpp"
 #include "engine/io/vtu.hpp"
 #include "engine/mpm/solver.hpp"
+#include "engine/sim/build_frame.hpp"
 #include "engine/sim/build_scene.hpp"
 #include "engine/sim/recorder.hpp"
 
@@ -41,6 +42,7 @@ RunInfo make_info(const Scenario& s, const RunOptions& o) {
   info.strings["stress_update"] = s.mpm.update == StressUpdate::usl ? "usl" : "musl";
   info.strings["plane"] = s.analysis.dimension == 3 ? "none" : s.analysis.plane == Plane::strain ? "strain" : "stress";
   info.strings["contact"] = s.contact.method == ContactMethod::multi_field ? "multi_field" : "single_field";
+  if (!s.design_basis_text.empty()) info.documents["design_basis"] = s.design_basis_text;
   return info;
 }
 
@@ -115,6 +117,7 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   info.numbers["dt_max"] = dt_max;
   info.numbers["threads"] = omp_get_max_threads();
   if (solver.scene().frame) {
+    info.documents["structure"] = structure_document(s, solver.scene().frame->model());
     const std::string doc = rec.peak_contact_document(*solver.scene().frame);
     if (!doc.empty()) info.documents["peak_contact"] = doc;
   }

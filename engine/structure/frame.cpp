@@ -217,25 +217,8 @@ SectionForces Frame::forces_at(int e, double xi) const {
 // sigma(y) = N/A - M y/I (frame.hpp); tau(y) = tau_max (1 - (y/c)^2) for a rectangle, tau_max sqrt(1 - (y/c)^2)
 // for a thin pipe (shear flow ~ cos of the polar angle); von Mises sqrt(sigma^2 + 3 tau^2) on 21 fibres.
 FibreStresses Frame::stresses_at(int e, double xi) const {
-  const SectionForces sf = forces_at(e, xi);
   const FrameElementDef& el = model().elements[e];
-  const double s = el.s0 + xi * (el.s1 - el.s0), A = el.section.area(s), I = el.section.inertia(s);
-  const double c = el.section.half_depth(s);
-  const bool pipe = el.section.kind() == SectionKind::pipe;
-  FibreStresses r;
-  r.sigma_top = sf.N / A - sf.M * c / I;
-  r.sigma_bottom = sf.N / A + sf.M * c / I;
-  r.tau_max = el.section.shear_stress_factor() * std::abs(sf.V) / A;
-  r.von_mises_top = std::abs(r.sigma_top);
-  r.von_mises_bottom = std::abs(r.sigma_bottom);
-  constexpr int kFibres = 21;
-  for (int k = 0; k < kFibres; ++k) {
-    const double eta = -1 + 2.0 * k / (kFibres - 1), sigma = sf.N / A - sf.M * eta * c / I;
-    const double shape = pipe ? std::sqrt(std::max(0.0, 1 - eta * eta)) : 1 - eta * eta;
-    const double tau = r.tau_max * shape;
-    r.von_mises_max = std::max(r.von_mises_max, std::sqrt(sigma * sigma + 3 * tau * tau));
-  }
-  return r;
+  return fibre_stresses(el.section, el.s0 + xi * (el.s1 - el.s0), forces_at(e, xi));
 }
 
 // Restrained DOF: r = f_int + M a + C v - f_ext (the rows of the full matrices couple the free DOFs);

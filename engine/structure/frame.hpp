@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/structure/fibre.hpp"
 #include "engine/structure/section.hpp"
 
 namespace dmi {
@@ -93,15 +94,6 @@ struct ElementCurve {
     const double w = (-6 + 12 * xi) * w1 + L * (-4 + 6 * xi) * t1 + (6 - 12 * xi) * w2 + L * (6 * xi - 2) * t2;
     return w * e2;
   }
-};
-
-struct SectionForces { double N = 0, V = 0, M = 0; };  // N, N, N m (conventions above)
-struct FibreStresses {
-  double sigma_top = 0, sigma_bottom = 0;       // Pa, normal stress at the +e2 / -e2 surfaces
-  double tau_max = 0;                           // Pa, peak shear stress over the section
-  double von_mises_top = 0, von_mises_bottom = 0;  // Pa, sqrt(sigma^2 + 3 tau^2) with tau at that fibre (0 for
-                                                   // the extreme fibres of a rectangle or pipe)
-  double von_mises_max = 0;                     // Pa, max over the depth of sqrt(sigma^2 + 3 tau^2)
 };
 
 class Frame {

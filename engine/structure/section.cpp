@@ -69,6 +69,8 @@ double Section::width(double s) const {
   return kind_ == SectionKind::pipe ? h0_ : b_;
 }
 
+double Section::wall_thickness() const { return kind_ == SectionKind::pipe ? b_ : 0.0; }
+
 double Section::area(double s) const {
   require_fraction(s);
   if (kind_ == SectionKind::pipe) {

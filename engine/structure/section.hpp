@@ -20,6 +20,7 @@ class Section {
   double depth(double s) const;        // m, extreme-fibre to extreme-fibre in-plane
   double half_depth(double s) const { return 0.5 * depth(s); }  // c (m): centroid to each surface
   double width(double s) const;        // m, out of plane (pipe: D)
+  double wall_thickness() const;       // m, pipe wall t (0 for rectangles)
   double area(double s) const;         // A (m^2)
   double inertia(double s) const;      // I about the out-of-plane axis (m^4)
   // Shear coefficient kappa: A_s = kappa A (Timoshenko). Rectangle 5/6; thin pipe 1/2 (Cowper 1966 limits).

@@ -1,0 +1,163 @@
+// `damimpact check`: results.h5 -> design.json and a readable summary.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+
+#include "design/design.hpp"
+#include "engine/common/error.hpp"
+#include "engine/io/results_writer.hpp"
+
+namespace dmi::design {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Value in engineering units: Pa -> MPa, N -> kN, N m -> kN m, N s -> kN s, s -> ms.
+std::string eng(double v, const std::string& unit) {
+  char b[64];
+  if (unit == "Pa") std::snprintf(b, sizeof b, "%.3g MPa", v / 1e6);
+  else if (unit == "N") std::snprintf(b, sizeof b, "%.4g kN", v / 1e3);
+  else if (unit == "N m") std::snprintf(b, sizeof b, "%.4g kN m", v / 1e3);
+  else if (unit == "N s") std::snprintf(b, sizeof b, "%.4g kN s", v / 1e3);
+  else if (unit == "s") std::snprintf(b, sizeof b, "%.4g ms", v * 1e3);
+  else std::snprintf(b, sizeof b, "%.3g", v);
+  return b;
+}
+
+std::string where_when(const json& c) {
+  std::ostringstream o;
+  if (c["s_m"].is_number()) o << "s = " << eng(c["s_m"].get<double>(), "") << " m";
+  else if (c["member"].get<std::string>().empty() || c["member"].get<std::string>().rfind("solid", 0) == 0)
+    o << "(" << eng(c["location_m"][0].get<double>(), "") << ", " << eng(c["location_m"][1].get<double>(), "") << ") m";
+  if (c["time_s"].is_number()) o << ", t = " << eng(c["time_s"].get<double>(), "s");
+  return o.str();
+}
+
+void run_summary(std::ostringstream& o, const json& r) {
+  char line[512];
+  o << "\n" << (r["variant"].get<std::string>().empty() ? "" : "[" + r["variant"].get<std::string>() + "] ") << r["results_file"].get<std::string>()
+    << "  (" << r["scenario_name"].get<std::string>() << ")\n";
+  if (!r["base_total"].is_null()) {
+    const json& b = r["base_total"];
+    o << "  base: |Fx| " << eng(b["Fx_N"]["abs_max"]["value"], "N") << ", |M| " << eng(b["M_Nm"]["abs_max"]["value"], "N m") << ", Fy "
+      << eng(b["Fy_N"]["min"]["value"], "N") << " .. " << eng(b["Fy_N"]["max"]["value"], "N") << "\n";
+  }
+  if (!r["contact"].is_null() && r["contact"]["peak_force_N"].get<double>() > 0) {
+    const json& c = r["contact"];
+    o << "  contact: peak " << eng(c["peak_force_N"], "N") << " at " << eng(c["peak_time_s"], "s") << ", impulse "
+      << eng(c["impulse_magnitude_N_s"], "N s") << ", pulse " << eng(c["pulse"]["duration_s"], "s") << "\n";
+  }
+  for (const auto& e : r["estimates"]) {
+    std::snprintf(line, sizeof line, "  estimate %-40s %12s  (simulated %s: ratio %.2f)\n", e["title"].get<std::string>().c_str(),
+                  eng(e["value_N"], "N").c_str(), eng(e["simulated_N"], "N").c_str(), e["ratio"].get<double>());
+    o << line;
+  }
+  if (r["checks"].empty()) {
+    o << "  no checks (no members and no solid check in this run)\n";
+    return;
+  }
+  std::snprintf(line, sizeof line, "  %-38s %-14s %13s %13s %6s %-5s %s\n", "check", "member", "demand", "capacity", "util", "", "where / when");
+  o << line;
+  for (const auto& c : r["checks"]) {
+    const std::string u = c["unit"];
+    std::snprintf(line, sizeof line, "  %-38s %-14s %13s %13s %6.2f %-5s %s\n", c["title"].get<std::string>().c_str(), c["member"].get<std::string>().c_str(),
+                  eng(c["demand"], u).c_str(), eng(c["capacity"], u).c_str(), c["utilisation"].get<double>(), c["passed"] ? "ok" : "FAIL",
+                  where_when(c).c_str());
+    o << line;
+  }
+}
+
+}  // namespace
+
+std::string summary_text(const json& d) {
+  std::ostringstream o;
+  for (const auto& r : d["runs"]) run_summary(o, r);
+  if (!d["comparison"].is_null()) {
+    char line[256];
+    o << "\nwith vs without buffer\n";
+    std::snprintf(line, sizeof line, "  %-36s %14s %14s %10s\n", "peak", "with buffer", "without", "reduction");
+    o << line;
+    for (const auto& q : d["comparison"]["quantities"]) {
+      const std::string u = q["unit"];
+      std::snprintf(line, sizeof line, "  %-36s %14s %14s %9.0f %%\n", q["title"].get<std::string>().c_str(), eng(q["with_buffer"], u).c_str(),
+                    eng(q["without_buffer"], u).c_str(), q["reduction_percent"].is_number() ? q["reduction_percent"].get<double>() : 0.0);
+      o << line;
+    }
+  }
+  const json& v = d["verdict"];
+  o << "\nverdict (" << v["runs_judged"].get<std::string>() << "): ";
+  if (v["status"] == "no_checks") o << "NO CHECKS (nothing to check in these results)\n";
+  else {
+    o << (v["passed"] ? "PASS" : "FAIL") << ", " << v["failed"].get<int>() << " of " << v["checks"].get<int>() << " checks failed";
+    const json& g = v["governing"];
+    o << "; governing: " << g["title"].get<std::string>() << (g["member"].get<std::string>().empty() ? "" : ", " + g["member"].get<std::string>())
+      << ", utilisation " << eng(g["utilisation"], "") << " (" << where_when(g) << ")\n";
+  }
+  return o.str();
+}
+
+namespace {
+
+std::vector<std::string> resolve(const std::string& p) {
+  std::error_code ec;
+  if (fs::is_directory(p, ec)) {
+    const fs::path d(p);
+    if (fs::exists(d / "results.h5")) return {(d / "results.h5").string()};
+    if (fs::exists(d / "with_buffer" / "results.h5") && fs::exists(d / "without_buffer" / "results.h5"))
+      return {(d / "with_buffer" / "results.h5").string(), (d / "without_buffer" / "results.h5").string()};
+    if (fs::exists(d / "results.h5.partial")) throw InputError(p + ": holds only results.h5.partial: the run did not finish; nothing to check");
+    throw InputError(p + ": no results.h5 in this folder (nor with_buffer/ and without_buffer/ holding one)");
+  }
+  if (!fs::exists(p, ec)) throw InputError(p + ": no such results file");
+  return {p};
+}
+
+}  // namespace
+
+int check_main(const std::vector<std::string>& paths, const std::string& limits_file, bool print_json, const std::string& out, bool quiet,
+               const std::string& version) {
+  const Limits limits = limits_file.empty() ? Limits{} : read_limits(limits_file);
+  std::vector<std::string> files;
+  for (const auto& p : paths)
+    for (const auto& f : resolve(p)) files.push_back(f);
+  std::vector<json> runs;
+  for (const auto& f : files) {
+    Results r;
+    try {
+      r = read_results(f, false);
+    } catch (const std::exception& e) {
+      throw InputError(e.what());
+    }
+    try {
+      runs.push_back(design_run(r, limits, f));
+    } catch (const std::runtime_error& e) {
+      throw InputError(e.what());
+    }
+  }
+  const json doc = design_document(runs, limits, version);
+  // Beside the results (a comparison folder: in the folder), atomically.
+  fs::path target = out;
+  if (target.empty()) {
+    std::error_code ec;
+    target = fs::is_directory(paths.front(), ec) ? fs::path(paths.front()) / "design.json" : fs::path(paths.front()).parent_path() / "design.json";
+  }
+  const fs::path tmp = target.string() + ".tmp";
+  {
+    std::ofstream o(tmp);
+    if (!o) throw InputError(target.string() + ": cannot write design.json here");
+    o << doc.dump(1) << "\n";
+    if (!o) throw InputError(target.string() + ": writing design.json failed");
+  }
+  fs::rename(tmp, target);
+  if (print_json) std::cout << doc.dump(1) << "\n";
+  else if (!quiet) std::cout << summary_text(doc) << "wrote " << target.string() << "\n";
+  return doc["verdict"]["passed"] ? 0 : 1;
+}
+
+}  // namespace dmi::design

@@ -1,0 +1,55 @@
+// Capacity formulas of the design checks (docs/design-checks.md), pure functions in SI units so each
+// can be checked by hand, and the record of one check (demand, capacity, utilisation, where, when).
+#pragma once
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace dmi::design {
+
+// One check. utilisation = demand / capacity; passed when utilisation <= 1.
+struct Check {
+  std::string id;        // stable key, e.g. "concrete_flexural_tension" (docs/design-json.md)
+  std::string title;     // readable
+  std::string member;    // member name, or "solid: <case>" / "" for whole-structure checks
+  std::string material;  // concrete | steel
+  double demand = 0, capacity = 0;
+  std::string unit;      // of demand and capacity
+  double utilisation = 0;
+  bool passed = true;
+  double position = -1;  // fraction of the member length from its start (-1: not on a member)
+  double s_m = -1;       // distance from the member start (m)
+  double x_m = 0, y_m = 0;  // global location (m)
+  double time_s = -1;    // instant of the governing demand (-1: not time-dependent)
+  std::string formula, source;
+  void finish() { utilisation = capacity > 0 ? demand / capacity : (demand > 0 ? 1e300 : 0.0); passed = utilisation <= 1.0; }
+  nlohmann::json to_json() const;
+};
+
+// --- Concrete (plain, ACI 318-19 chapter 14; SI: f'c in Pa, results in N or Pa) --------------------------
+// Sqrt of f'c in MPa, returned in Pa: lambda sqrt(f'c[MPa]) * 1e6.
+double sqrt_fc_Pa(double fc_Pa, double lambda = 1.0);
+// One-way shear, ACI 318-19 Table 14.5.5.1(a): V_n = (4/3) lambda sqrt(f'c) b_w h [psi] = 0.11 lambda sqrt(f'c) b_w h [MPa];
+// returns phi V_n (N).
+double concrete_one_way_shear_capacity(double fc_Pa, double lambda, double width_m, double depth_m, double phi);
+// Two-way (punching) shear, ACI 318-19 Table 14.5.5.1(b): V_n = min((4/3 + 8/(3 beta)), 2.66) lambda sqrt(f'c) b_o h [psi]
+// = min(0.11 (1 + 2/beta), 0.22) lambda sqrt(f'c) b_o h [MPa], beta = long/short side of the patch, b_o the perimeter
+// at h/2 from the patch (ACI 318-19 22.6.4.1): b_o = 2 (c1 + h) + 2 (c2 + h). Returns phi V_n (N).
+double concrete_punching_capacity(double fc_Pa, double lambda, double patch_w_m, double patch_h_m, double depth_m, double phi);
+
+// --- Steel circular hollow sections (EN 1993-1-1) -----------------------------------------------------------
+double chs_area(double D, double t);               // pi (D^2 - d^2) / 4, d = D - 2t
+double chs_elastic_modulus(double D, double t);    // W_el = I / (D/2), I = pi (D^4 - d^4) / 64
+double chs_plastic_modulus(double D, double t);    // W_pl = (D^3 - d^3) / 6
+double chs_shear_area(double D, double t);         // A_v = 2 A / pi (EN 1993-1-1 6.2.6(3)(g))
+// Section class in bending and/or compression from D/t, EN 1993-1-1 Table 5.2 (sheet 3):
+// eps^2 = 235 / f_y[MPa]; class 1: D/t <= 50 eps^2, 2: <= 70 eps^2, 3: <= 90 eps^2, else 4.
+int chs_class(double D, double t, double fy_Pa);
+double chs_class3_limit(double fy_Pa);             // 90 eps^2 (the largest D/t this check accepts)
+// Plastic shear resistance V_pl,Rd = A_v (f_y / sqrt 3) / gamma_M0 (EN 1993-1-1 eq. 6.18), N.
+double chs_shear_resistance(double D, double t, double fy_Pa, double gamma_M0);
+// Linear interaction N_Ed / N_Rd + M_Ed / M_Rd (EN 1993-1-1 6.2.1(7) eq. 6.2), N_Rd = A f_y / gamma_M0,
+// M_Rd = W f_y / gamma_M0 with W = W_pl for class 1-2, W_el for class 3 (6.2.5(2) eqs. 6.13-6.14).
+double chs_interaction(double N, double M, double D, double t, double fy_Pa, double gamma_M0);
+
+}  // namespace dmi::design

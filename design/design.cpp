@@ -1,0 +1,196 @@
+// design_run: one results.h5 -> one entry of design.json "runs" (layout: docs/design-json.md).
+#include "design/design.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "design/estimates.hpp"
+#include "design/loads.hpp"
+#include "design/members.hpp"
+
+namespace dmi::design {
+
+using nlohmann::json;
+
+namespace {
+
+json extreme(const Extreme& e) { return e.set ? json{{"value", e.value}, {"time_s", e.time}} : json(nullptr); }
+
+// The member-wide peak of one station quantity: the station and instant where it is largest (or smallest).
+json member_peak(const MemberEnvelope& m, Extreme Station::*q, bool smallest, const char* unit) {
+  const Station* best = nullptr;
+  for (const auto& st : m.stations) {
+    const Extreme& e = st.*q;
+    if (!e.set) continue;
+    if (!best || (smallest ? e.value < (best->*q).value : e.value > (best->*q).value)) best = &st;
+  }
+  if (!best) return nullptr;
+  return json{{"value", (best->*q).value}, {"unit", unit}, {"time_s", (best->*q).time}, {"position", best->position}, {"s_m", best->s_m},
+              {"location_m", {best->x, best->y}}};
+}
+
+json member_json(const MemberEnvelope& m) {
+  json stations = json::array();
+  for (const auto& s : m.stations)
+    stations.push_back({{"position", s.position}, {"s_m", s.s_m}, {"location_m", {s.x, s.y}}, {"depth_m", s.depth},
+                        {"N_max_N", extreme(s.N_max)}, {"N_min_N", extreme(s.N_min)}, {"V_abs_max_N", extreme(s.V_abs)},
+                        {"M_max_Nm", extreme(s.M_max)}, {"M_min_Nm", extreme(s.M_min)},
+                        {"sigma_tension_max_Pa", extreme(s.sigma_tension)}, {"sigma_compression_min_Pa", extreme(s.sigma_compression)},
+                        {"tau_max_Pa", extreme(s.tau)}, {"von_mises_max_Pa", extreme(s.von_mises)}});
+  json peaks{{"N_max", member_peak(m, &Station::N_max, false, "N")},
+             {"N_min", member_peak(m, &Station::N_min, true, "N")},
+             {"V_abs_max", member_peak(m, &Station::V_abs, false, "N")},
+             {"M_max", member_peak(m, &Station::M_max, false, "N m")},
+             {"M_min", member_peak(m, &Station::M_min, true, "N m")},
+             {"sigma_tension_max", member_peak(m, &Station::sigma_tension, false, "Pa")},
+             {"sigma_compression_min", member_peak(m, &Station::sigma_compression, true, "Pa")},
+             {"tau_max", member_peak(m, &Station::tau, false, "Pa")},
+             {"von_mises_max", member_peak(m, &Station::von_mises, false, "Pa")}};
+  return json{{"name", m.name}, {"material", m.cls}, {"length_m", m.length}, {"peaks", peaks}, {"stations", stations}};
+}
+
+json reaction_json(const ReactionPeaks& p) {
+  return json{{"name", p.name},
+              {"Fx_N", {{"max", extreme(p.Fx_max)}, {"min", extreme(p.Fx_min)}, {"abs_max", extreme(p.Fx_abs)}, {"final", p.final[0]}}},
+              {"Fy_N", {{"max", extreme(p.Fy_max)}, {"min", extreme(p.Fy_min)}, {"abs_max", extreme(p.Fy_abs)}, {"final", p.final[1]}}},
+              {"M_Nm", {{"max", extreme(p.M_max)}, {"min", extreme(p.M_min)}, {"abs_max", extreme(p.M_abs)}, {"final", p.final[2]}}}};
+}
+
+json contact_json(const Contact& c) {
+  if (!c.present) return nullptr;
+  return json{{"peak_force_N", c.peak_N}, {"peak_time_s", c.peak_time_s >= 0 ? json(c.peak_time_s) : json(nullptr)},
+              {"impulse_N_s", {c.impulse_N_s[0], c.impulse_N_s[1]}}, {"impulse_magnitude_N_s", std::hypot(c.impulse_N_s[0], c.impulse_N_s[1])},
+              {"pulse", {{"start_s", c.pulse_start_s}, {"end_s", c.pulse_end_s}, {"duration_s", c.pulse_end_s - c.pulse_start_s},
+                         {"impulse_N_s", c.pulse_impulse_N_s}}},
+              {"loaded_time_s", c.loaded_time_s}, {"threshold", "5 % of the peak"}};
+}
+
+json parse_document(const Results& r, const char* name, const std::string& where) {
+  const auto it = r.info.documents.find(name);
+  if (it == r.info.documents.end()) return nullptr;
+  try {
+    return json::parse(it->second);
+  } catch (const json::exception& e) {
+    throw std::runtime_error(where + ": /documents/" + name + " is not valid JSON (" + e.what() + ")");
+  }
+}
+
+// Solid-FE peaks (SEEDS.md B.3) and their concrete checks: max principal vs phi_f f_t, min principal vs phi_c alpha f'c.
+json solid_part(const json& doc, const Limits& L, std::vector<Check>& checks, const std::string& where) {
+  if (doc.is_null()) return nullptr;
+  json cases = json::array();
+  try {
+    for (const auto& c : doc.at("cases")) {
+      const json& pk = c.at("peaks");
+      json e{{"name", c.at("name")}, {"type", c.at("type")}, {"load_resultant_N", c.value("load_resultant_N", 0.0)},
+             {"von_mises", pk.at("von_mises").at("gauss")}, {"max_principal", pk.at("max_principal").at("gauss")},
+             {"min_principal", pk.at("min_principal").at("gauss")}, {"max_nodal_base_reaction_N", c.value("max_nodal_base_reaction_N", 0.0)},
+             {"max_displacement_m", c.value("max_displacement_m", 0.0)}};
+      cases.push_back(e);
+      auto add = [&](const char* id, const char* title, double demand, double cap, const json& loc, const char* formula, const char* src) {
+        Check k;
+        k.id = id, k.title = title, k.member = "solid: " + c.at("name").get<std::string>(), k.material = "concrete", k.unit = "Pa";
+        k.demand = demand, k.capacity = cap, k.formula = formula, k.source = src;
+        k.x_m = loc.at(0), k.y_m = loc.size() > 2 ? loc.at(2).get<double>() : loc.at(1).get<double>();
+        if (c.contains("time_s")) k.time_s = c["time_s"];
+        k.finish();
+        checks.push_back(k);
+      };
+      const json& mx = pk.at("max_principal").at("gauss");
+      const json& mn = pk.at("min_principal").at("gauss");
+      add("solid_principal_tension", "solid FE: principal tension", std::max(0.0, mx.at("value_Pa").get<double>()), L.concrete.tensile_capacity(),
+          mx.at("location_m"), "sigma_1 <= phi_f f_t", "SEEDS.md B.3; ACI 318-19 21.2.1");
+      add("solid_principal_compression", "solid FE: principal compression", std::max(0.0, -mn.at("value_Pa").get<double>()),
+          L.concrete.compressive_capacity(), mn.at("location_m"), "|sigma_3| <= phi_c alpha f'c", "ACI 318-19 21.2.1, 22.2.2.4.1");
+    }
+  } catch (const json::exception& e) {
+    throw std::runtime_error(where + ": /documents/solid_check is malformed (" + std::string(e.what()) + ")");
+  }
+  return json{{"model", doc.value("model", json::object())}, {"cases", cases}};
+}
+
+// Punching around the contact patch of the peak contact (ACI 318-19 Table 14.5.5.1(b)), concrete members only.
+void punching(const json& peak_contact, const std::vector<MemberEnvelope>& members, const Contact& c, const Limits& L, std::vector<Check>& checks) {
+  if (!L.concrete.punching_patch_width || !c.present || peak_contact.is_null() || !peak_contact.contains("loads")) return;
+  const json* load = nullptr;
+  double fmax = -1;
+  for (const auto& l : peak_contact["loads"]) {
+    const double f = std::hypot(l["force"][0].get<double>(), l["force"][1].get<double>());
+    if (f > fmax) fmax = f, load = &l;
+  }
+  if (!load) return;
+  const auto m = std::find_if(members.begin(), members.end(), [&](const MemberEnvelope& e) { return e.name == (*load)["member"]; });
+  if (m == members.end() || m->cls != "concrete") return;
+  const double pos = (*load)["position"];
+  const auto& st = m->stations;  // depth at the load: linear between stations
+  const double u = pos * (st.size() - 1);
+  const std::size_t k = std::min<std::size_t>(static_cast<std::size_t>(u), st.size() - 2);
+  const double h = st[k].depth + (u - k) * (st[k + 1].depth - st[k].depth);
+  Check p;
+  p.id = "concrete_punching", p.title = "punching shear at the contact patch", p.member = m->name, p.material = "concrete", p.unit = "N";
+  p.demand = c.peak_N;
+  p.capacity = concrete_punching_capacity(L.concrete.compressive_strength, L.concrete.lambda, *L.concrete.punching_patch_width,
+                                          *L.concrete.punching_patch_height, h, L.concrete.phi_shear);
+  p.position = pos, p.s_m = pos * m->length, p.time_s = c.peak_time_s;
+  p.x_m = (*load)["point"][0], p.y_m = (*load)["point"][1];
+  p.formula = "F_contact <= phi_v min(0.11 (1 + 2/beta), 0.22) lambda sqrt(f'c) b_o h, b_o = 2 (c1 + h) + 2 (c2 + h)";
+  p.source = "ACI 318-19 Table 14.5.5.1(b), 22.6.4.1";
+  p.finish();
+  checks.push_back(p);
+}
+
+json verdict(const std::vector<Check>& checks) {
+  const Check* gov = nullptr;
+  int failed = 0;
+  for (const auto& c : checks) {
+    failed += !c.passed;
+    if (!gov || c.utilisation > gov->utilisation) gov = &c;
+  }
+  return json{{"checks", checks.size()}, {"failed", failed}, {"passed", failed == 0}, {"max_utilisation", gov ? json(gov->utilisation) : json(nullptr)},
+              {"governing", gov ? gov->to_json() : json(nullptr)}};
+}
+
+}  // namespace
+
+json design_run(const Results& r, const Limits& L, const std::string& where) {
+  if (!r.complete) throw std::runtime_error(where + ": the run did not finish (complete = 0); nothing to check");
+  json run{{"results_file", where}, {"scenario_name", r.info.scenario_name}, {"variant", r.info.variant}};
+  std::vector<Check> checks;
+  const json structure = parse_document(r, "structure", where);
+  std::vector<MemberEnvelope> members;
+  Contact c = contact(r);
+  run["members"] = json::array();
+  run["supports"] = json::array();
+  run["base_total"] = nullptr;
+  double base_shear = 0;
+  if (!structure.is_null()) {
+    const FrameInfo f = parse_structure(structure.dump(), where, L);
+    members = member_envelopes(r, f, L, where);
+    for (const auto& m : members) {
+      run["members"].push_back(member_json(m));
+      checks.insert(checks.end(), m.checks.begin(), m.checks.end());
+    }
+    const Reactions re = reactions(r, f, where);
+    for (const auto& s : re.supports) run["supports"].push_back(reaction_json(s));
+    if (!re.supports.empty()) {
+      run["base_total"] = reaction_json(re.total);
+      run["base_total"]["about_m"] = {re.about[0], re.about[1]};
+      base_shear = re.total.Fx_abs.value;
+    }
+  }
+  run["contact"] = contact_json(c);
+  punching(parse_document(r, "peak_contact", where), members, c, L, checks);
+  run["solid"] = solid_part(parse_document(r, "solid_check", where), L, checks, where);
+  json est = json::array();
+  const json basis = parse_document(r, "design_basis", where);
+  if (!basis.is_null())
+    for (const auto& e : estimates(basis, base_shear, c.present ? c.peak_N : 0.0, where)) est.push_back(e.to_json());
+  run["estimates"] = est;
+  run["checks"] = json::array();
+  for (const auto& k : checks) run["checks"].push_back(k.to_json());
+  run["verdict"] = verdict(checks);
+  return run;
+}
+
+}  // namespace dmi::design

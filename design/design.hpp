@@ -1,0 +1,36 @@
+// The design layer's entry points (docs/design-checks.md, docs/design-json.md): results.h5 in,
+// design.json out. Reads files only, never solver objects.
+#pragma once
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "design/limits.hpp"
+#include "engine/io/results.hpp"
+
+namespace dmi::design {
+
+constexpr int kDesignFormatVersion = 1;
+
+// The design of one run (an entry of design.json "runs"): envelopes, reactions, contact, solid-FE peaks,
+// closed-form estimates, checks and the verdict. `where` names the results file in errors.
+nlohmann::json design_run(const Results& r, const Limits& limits, const std::string& where);
+
+// With vs without buffer: every compared peak and its reduction in % (docs/design-json.md "comparison").
+nlohmann::json compare_runs(const nlohmann::json& with_buffer, const nlohmann::json& without_buffer);
+
+// The whole design.json. The verdict is that of the design: the with_buffer run of a comparison (the
+// without_buffer run is the reference), else every run.
+nlohmann::json design_document(const std::vector<nlohmann::json>& runs, const Limits& limits, const std::string& software_version);
+
+// The readable summary `damimpact check` prints.
+std::string summary_text(const nlohmann::json& design);
+
+// `damimpact check PATH... [--limits FILE] [--json] [-o design.json]`: PATH a results.h5 or a run folder (holding
+// results.h5, or with_buffer/ and without_buffer/). Writes design.json (atomically) beside the results, or to
+// `out`. Returns 0 when every check of the design passes, 1 when one fails; bad input throws (exit 2).
+int check_main(const std::vector<std::string>& paths, const std::string& limits_file, bool print_json, const std::string& out,
+               bool quiet, const std::string& software_version);
+
+}  // namespace dmi::design

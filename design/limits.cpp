@@ -1,0 +1,137 @@
+#include "design/limits.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "engine/common/error.hpp"
+
+namespace dmi::design {
+
+using nlohmann::json;
+
+double ConcreteLimits::tensile_value() const {
+  // ACI 318-19 eq. (19.2.3.1): modulus of rupture f_r = 0.62 lambda sqrt(f'c), f'c in MPa.
+  if (tensile_rule == "aci_rupture") return 0.62 * lambda * std::sqrt(compressive_strength / 1e6) * 1e6;
+  return tensile_strength;
+}
+double ConcreteLimits::tensile_capacity() const { return phi_flexure * tensile_value(); }
+double ConcreteLimits::compressive_capacity() const { return phi_compression * compression_coefficient * compressive_strength; }
+
+json Limits::to_json() const {
+  json c{{"compressive_strength_Pa", concrete.compressive_strength}, {"tensile_strength_Pa", concrete.tensile_value()},
+         {"tensile_rule", concrete.tensile_rule}, {"lambda", concrete.lambda}, {"compression_coefficient", concrete.compression_coefficient},
+         {"phi_flexure", concrete.phi_flexure}, {"phi_compression", concrete.phi_compression}, {"phi_shear", concrete.phi_shear},
+         {"shear_strength_Pa", concrete.shear_strength ? json(*concrete.shear_strength) : json(nullptr)}};
+  if (concrete.punching_patch_width)
+    c["punching_patch_m"] = {*concrete.punching_patch_width, *concrete.punching_patch_height};
+  else
+    c["punching_patch_m"] = nullptr;
+  return json{{"concrete", c},
+              {"steel", {{"yield_strength_Pa", steel.yield_strength}, {"gamma_M0", steel.gamma_M0}}},
+              {"members", member_material}};
+}
+
+namespace {
+
+struct Reader {
+  const std::string& file;
+  [[noreturn]] void fail(const std::string& path, const json* v, const std::string& expected) const {
+    throw InputError(file, path, v ? v->dump() : "", expected);
+  }
+  void keys(const json& o, const std::string& path, const std::set<std::string>& allowed) const {
+    if (!o.is_object()) fail(path, &o, "an object");
+    for (auto it = o.begin(); it != o.end(); ++it)
+      if (!allowed.count(it.key())) {
+        std::string list;
+        for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+        fail(path + "/" + it.key(), &it.value(), "a known key (one of: " + list + ")");
+      }
+  }
+  // A number > 0 (or in (0, 1] when factor).
+  void number(const json& o, const std::string& path, const char* key, double& out, bool factor = false) const {
+    if (!o.contains(key)) return;
+    const json& v = o[key];
+    const std::string p = path + "/" + key;
+    if (!v.is_number() || !std::isfinite(v.get<double>())) fail(p, &v, factor ? "a number in (0, 1]" : "a number > 0");
+    const double x = v.get<double>();
+    if (!(x > 0) || (factor && x > 1)) fail(p, &v, factor ? "a number in (0, 1]" : "a number > 0");
+    out = x;
+  }
+};
+
+}  // namespace
+
+Limits parse_limits(const json& j, const std::string& file) {
+  Reader r{file};
+  Limits L;
+  r.keys(j, "", {"concrete", "steel", "members"});
+  if (j.contains("concrete")) {
+    const json& c = j["concrete"];
+    const std::string p = "/concrete";
+    r.keys(c, p, {"compressive_strength_Pa", "tensile_strength_Pa", "tensile_rule", "lambda", "compression_coefficient", "phi_flexure",
+                  "phi_compression", "phi_shear", "shear_strength_Pa", "punching_patch_m"});
+    ConcreteLimits& k = L.concrete;
+    r.number(c, p, "compressive_strength_Pa", k.compressive_strength);
+    r.number(c, p, "tensile_strength_Pa", k.tensile_strength);
+    if (c.contains("tensile_rule")) {
+      const json& v = c["tensile_rule"];
+      if (!v.is_string() || (v != "given" && v != "aci_rupture")) r.fail(p + "/tensile_rule", &v, "\"given\" or \"aci_rupture\"");
+      k.tensile_rule = v.get<std::string>();
+    }
+    r.number(c, p, "lambda", k.lambda, true);
+    r.number(c, p, "compression_coefficient", k.compression_coefficient, true);
+    r.number(c, p, "phi_flexure", k.phi_flexure, true);
+    r.number(c, p, "phi_compression", k.phi_compression, true);
+    r.number(c, p, "phi_shear", k.phi_shear, true);
+    if (c.contains("shear_strength_Pa") && !c["shear_strength_Pa"].is_null()) {
+      double v = 0;
+      r.number(c, p, "shear_strength_Pa", v);
+      k.shear_strength = v;
+    }
+    if (c.contains("punching_patch_m") && !c["punching_patch_m"].is_null()) {
+      const json& v = c["punching_patch_m"];
+      if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number() || !(v[0].get<double>() > 0) || !(v[1].get<double>() > 0))
+        r.fail(p + "/punching_patch_m", &v, "[width, height] of the contact patch, both > 0 (m)");
+      k.punching_patch_width = v[0].get<double>();
+      k.punching_patch_height = v[1].get<double>();
+    }
+  }
+  if (j.contains("steel")) {
+    const json& s = j["steel"];
+    r.keys(s, "/steel", {"yield_strength_Pa", "gamma_M0"});
+    r.number(s, "/steel", "yield_strength_Pa", L.steel.yield_strength);
+    if (s.contains("gamma_M0")) {
+      const json& v = s["gamma_M0"];
+      if (!v.is_number() || !(v.get<double>() >= 1.0) || !std::isfinite(v.get<double>())) r.fail("/steel/gamma_M0", &v, "a partial factor >= 1");
+      L.steel.gamma_M0 = v.get<double>();
+    }
+  }
+  if (j.contains("members")) {
+    const json& m = j["members"];
+    if (!m.is_object()) r.fail("/members", &m, "an object {member name: \"concrete\" | \"steel\"}");
+    for (auto it = m.begin(); it != m.end(); ++it) {
+      if (!it.value().is_string() || (it.value() != "concrete" && it.value() != "steel"))
+        r.fail("/members/" + it.key(), &it.value(), "\"concrete\" or \"steel\"");
+      L.member_material[it.key()] = it.value().get<std::string>();
+    }
+  }
+  return L;
+}
+
+Limits read_limits(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open the limits file (does it exist and is it readable?)");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  json j;
+  try {
+    j = json::parse(ss.str());
+  } catch (const json::parse_error& e) {
+    throw InputError(path + ": invalid JSON (" + std::string(e.what()) + ")");
+  }
+  return parse_limits(j, path);
+}
+
+}  // namespace dmi::design

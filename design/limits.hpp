@@ -1,0 +1,50 @@
+// Strength limits and factors of the design checks (docs/design-checks.md), with their defaults and
+// where they come from. Read from a limits file (`damimpact check --limits limits.json`), so limits
+// change without re-simulating. SI units: Pa, m.
+#pragma once
+#include <map>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace dmi::design {
+
+struct ConcreteLimits {
+  double compressive_strength = 28e6;  // f'c (Pa); paper B's concrete (SEEDS.md B.3)
+  // f_t (Pa): 3.28 MPa (paper B), or with tensile_rule "aci_rupture" 0.62 lambda sqrt(f'c) (ACI 318-19 eq. 19.2.3.1).
+  double tensile_strength = 3.28e6;
+  std::string tensile_rule = "given";   // given | aci_rupture
+  double lambda = 1.0;                  // lightweight-concrete factor (ACI 318-19 19.2.4), 1 for normal weight
+  double compression_coefficient = 0.85;  // alpha: usable fraction of f'c (ACI 318 0.85 f'c; EN 1992-1-1 alpha_cc)
+  // Strength-reduction factors phi (ACI 318-19 Table 21.2.1: plain concrete, 0.60 for flexure, compression, shear).
+  double phi_flexure = 0.60, phi_compression = 0.60, phi_shear = 0.60;
+  // A shear stress limit (Pa) instead of ACI 318 one-way shear: tau_max = 1.5 V / A <= phi_shear * shear_strength.
+  std::optional<double> shear_strength;
+  // Punching shear around the contact patch (ACI 318-19 Table 14.5.5.1, two-way): off unless a patch is given.
+  std::optional<double> punching_patch_width, punching_patch_height;  // m, across the face and up the face
+
+  double tensile_capacity() const;      // phi_flexure * f_t (Pa)
+  double compressive_capacity() const;  // phi_compression * alpha * f'c (Pa)
+  double tensile_value() const;         // f_t by the rule (Pa)
+};
+
+struct SteelLimits {
+  double yield_strength = 235e6;  // f_y (Pa), S235 (EN 10025-2)
+  double gamma_M0 = 1.0;          // partial factor of cross-section resistance (EN 1993-1-1 6.1, recommended 1.0)
+  double design_strength() const { return yield_strength / gamma_M0; }
+};
+
+struct Limits {
+  ConcreteLimits concrete;
+  SteelLimits steel;
+  std::map<std::string, std::string> member_material;  // member name -> concrete | steel (overrides the guess)
+  nlohmann::json to_json() const;
+};
+
+// Reads a limits file; every key is optional. Throws dmi::InputError naming the file, the JSON path, the
+// value and what was expected (unknown key, wrong type, non-positive strength, factor outside (0, 1]).
+Limits read_limits(const std::string& path);
+Limits parse_limits(const nlohmann::json& j, const std::string& file);
+
+}  // namespace dmi::design

@@ -1,0 +1,203 @@
+#include "design/members.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/structure/fibre.hpp"
+
+namespace dmi::design {
+
+using nlohmann::json;
+
+namespace {
+
+std::string lower(std::string s) {
+  for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// Concrete or steel: the limits file decides; else the material's name; else a pipe or E >= 100 GPa is steel.
+std::string classify(const std::string& member, const std::string& material, const Section& sec, double E, const Limits& L) {
+  if (auto it = L.member_material.find(member); it != L.member_material.end()) return it->second;
+  const std::string m = lower(material);
+  if (m.find("steel") != std::string::npos) return "steel";
+  if (m.find("concrete") != std::string::npos) return "concrete";
+  return sec.kind() == SectionKind::pipe || E >= 100e9 ? "steel" : "concrete";
+}
+
+Section section_of(const json& s) {
+  const std::string kind = s.at("kind");
+  if (kind == "pipe") return Section::pipe(s.at("diameter_m"), s.at("wall_thickness_m"));
+  const double b = s.at("width_m"), h0 = s.at("depth_start_m"), h1 = s.at("depth_end_m");
+  return kind == "tapered_rectangle" ? Section::tapered(b, h0, h1) : Section::rectangle(b, h0);
+}
+
+}  // namespace
+
+FrameInfo parse_structure(const std::string& doc, const std::string& where, const Limits& L) {
+  FrameInfo f;
+  try {
+    const json j = json::parse(doc);
+    for (const auto& n : j.at("nodes_m")) f.nodes.push_back({n.at(0).get<double>(), n.at(1).get<double>()});
+    for (const auto& e : j.at("elements")) {
+      FrameInfo::Element el;
+      el.member = e.at("member"), el.i = e.at("i"), el.j = e.at("j"), el.s0 = e.at("s0"), el.s1 = e.at("s1"), el.E = e.at("youngs_modulus_Pa");
+      el.section = section_of(e.at("section"));
+      if (el.i < 0 || el.j < 0 || el.i >= int(f.nodes.size()) || el.j >= int(f.nodes.size())) throw std::out_of_range("element node index");
+      f.elements.push_back(el);
+    }
+    for (const auto& m : j.at("members")) {
+      FrameInfo::Member mb;
+      mb.name = m.at("name"), mb.material = m.at("material"), mb.first = m.at("first_element"), mb.count = m.at("elements");
+      if (mb.first < 0 || mb.count < 1 || mb.first + mb.count > int(f.elements.size())) throw std::out_of_range("member element range");
+      const auto& a = f.nodes[f.elements[mb.first].i];
+      const auto& b = f.nodes[f.elements[mb.first + mb.count - 1].j];
+      mb.length = std::hypot(b[0] - a[0], b[1] - a[1]);
+      const auto& e0 = f.elements[mb.first];
+      mb.cls = classify(mb.name, mb.material, e0.section, e0.E, L);
+      f.members.push_back(mb);
+    }
+    for (const auto& s : j.at("supports")) f.supports.push_back({s.at("node"), s.at("series"), s.at("node_index")});
+  } catch (const std::exception& e) {
+    throw std::runtime_error(where + ": /documents/structure is malformed (" + e.what() + ")");
+  }
+  for (const auto& [name, cls] : L.member_material) {
+    if (std::none_of(f.members.begin(), f.members.end(), [&](const FrameInfo::Member& m) { return m.name == name; }))
+      throw std::runtime_error(where + ": the limits name member '" + name + "', which the structure does not have");
+  }
+  return f;
+}
+
+namespace {
+
+// Tracks the governing instance (largest utilisation) of each check of a member.
+struct CheckTracker {
+  std::map<std::string, Check> by_id;
+  std::vector<std::string> order;
+  void consider(const Check& proto, double demand, double capacity, const Station& st, double t) {
+    auto it = by_id.find(proto.id);
+    const double u = capacity > 0 ? demand / capacity : 0.0;
+    if (it == by_id.end()) {
+      order.push_back(proto.id);
+      it = by_id.emplace(proto.id, proto).first;
+      it->second.utilisation = -1;
+    }
+    Check& c = it->second;
+    if (u <= c.utilisation) return;
+    c.demand = demand, c.capacity = capacity, c.utilisation = u;
+    c.position = st.position, c.s_m = st.s_m, c.x_m = st.x, c.y_m = st.y, c.time_s = t;
+  }
+  std::vector<Check> result() {
+    std::vector<Check> v;
+    for (const auto& id : order) {
+      Check c = by_id.at(id);
+      c.finish();
+      v.push_back(c);
+    }
+    return v;
+  }
+};
+
+Check proto(const std::string& id, const std::string& title, const MemberEnvelope& m, const std::string& unit, const std::string& formula,
+            const std::string& source) {
+  Check c;
+  c.id = id, c.title = title, c.member = m.name, c.material = m.cls, c.unit = unit, c.formula = formula, c.source = source;
+  return c;
+}
+
+}  // namespace
+
+std::vector<MemberEnvelope> member_envelopes(const Results& r, const FrameInfo& f, const Limits& L, const std::string& where) {
+  std::vector<MemberEnvelope> out;
+  if (f.members.empty()) return out;
+  const Series* ef = r.find("frame/end_forces");
+  if (!ef) throw std::runtime_error(where + ": missing history frame/end_forces (needed for the member envelopes)");
+  if (ef->components.size() != 6 * f.elements.size())
+    throw std::runtime_error(where + ": frame/end_forces has " + std::to_string(ef->components.size()) + " columns, expected 6 x " +
+                             std::to_string(f.elements.size()) + " elements");
+  const ConcreteLimits& C = L.concrete;
+  const SteelLimits& S = L.steel;
+  for (const auto& m : f.members) {
+    MemberEnvelope env;
+    env.name = m.name, env.cls = m.cls, env.length = m.length;
+    for (int k = 0; k <= m.count; ++k) {
+      const auto& el = f.elements[m.first + std::min(k, m.count - 1)];
+      const auto& x = f.nodes[k < m.count ? el.i : el.j];
+      Station st;
+      st.position = double(k) / m.count, st.s_m = st.position * m.length, st.x = x[0], st.y = x[1];
+      st.depth = el.section.depth(k < m.count ? el.s0 : el.s1);
+      env.stations.push_back(st);
+    }
+    const bool steel = m.cls == "steel";
+    const bool pipe = f.elements[m.first].section.kind() == SectionKind::pipe;
+    const double D = f.elements[m.first].section.depth(0), t_w = f.elements[m.first].section.wall_thickness();
+    // Capacities that do not vary in time (docs/design-checks.md).
+    const Check tension = proto("concrete_flexural_tension", "flexural tension", env, "Pa", "sigma_t = N/A + |M| c/I <= phi_f f_t",
+                                "ACI 318-19 14.5.2 / 21.2.1 (phi 0.60), f_t: SEEDS.md B.3 or ACI 318-19 19.2.3.1");
+    const Check compr = proto("concrete_compression", "compression", env, "Pa", "|sigma_c| = |N/A - |M| c/I| <= phi_c alpha f'c",
+                              "ACI 318-19 14.5.2, 21.2.1; alpha 0.85 (ACI 318-19 22.2.2.4.1)");
+    const Check shear_c = C.shear_strength ? proto("concrete_shear", "shear stress", env, "Pa", "tau = k V/A <= phi_v tau_lim", "user shear limit")
+                                           : proto("concrete_shear", "one-way shear", env, "N", "V <= phi_v 0.11 lambda sqrt(f'c) b h",
+                                                   "ACI 318-19 Table 14.5.5.1(a)");
+    const Check elastic = proto("steel_elastic_stress", "extreme-fibre stress", env, "Pa", "|N|/A + |M|/W_el <= f_y / gamma_M0",
+                                "EN 1993-1-1 6.2.1(7)");
+    const Check mises = proto("steel_von_mises", "von Mises stress", env, "Pa", "sqrt(sigma^2 + 3 tau^2) <= f_y / gamma_M0", "EN 1993-1-1 6.2.1(5) eq. 6.1");
+    const Check inter = proto("steel_interaction", "axial + bending resistance", env, "-", "|N|/N_Rd + |M|/M_Rd <= 1, M_Rd = W_pl (class 1-2) or W_el (3) f_y/gamma_M0",
+                              "EN 1993-1-1 6.2.1(7) eq. 6.2, 6.2.5 eqs. 6.13-6.14");
+    const Check shear_s = proto("steel_shear", "shear resistance", env, "N", "V <= A_v f_y / (sqrt 3 gamma_M0), A_v = 2A/pi (CHS)",
+                                "EN 1993-1-1 6.2.6 eq. 6.18, 6.2.6(3)(g)");
+    CheckTracker tracker;
+    for (std::size_t k = 0; k < r.time.size(); ++k) {
+      const double t = r.time[k];
+      for (int e = 0; e < m.count; ++e) {
+        const auto& el = f.elements[m.first + e];
+        const double* row = &ef->data[k * ef->components.size() + 6 * (m.first + e)];
+        for (int end = 0; end < 2; ++end) {
+          Station& st = env.stations[e + end];
+          const SectionForces sf{row[3 * end], row[3 * end + 1], row[3 * end + 2]};
+          const double s = end == 0 ? el.s0 : el.s1;
+          const FibreStresses fs = fibre_stresses(el.section, s, sf);
+          st.N_max.max(sf.N, t), st.N_min.min(sf.N, t), st.V_abs.max(std::abs(sf.V), t);
+          st.M_max.max(sf.M, t), st.M_min.min(sf.M, t);
+          st.sigma_tension.max(std::max(fs.sigma_top, fs.sigma_bottom), t);
+          st.sigma_compression.min(std::min(fs.sigma_top, fs.sigma_bottom), t);
+          st.tau.max(fs.tau_max, t), st.von_mises.max(fs.von_mises_max, t);
+          if (!steel) {
+            tracker.consider(tension, std::max(0.0, std::max(fs.sigma_top, fs.sigma_bottom)), C.tensile_capacity(), st, t);
+            tracker.consider(compr, std::max(0.0, -std::min(fs.sigma_top, fs.sigma_bottom)), C.compressive_capacity(), st, t);
+            if (C.shear_strength)
+              tracker.consider(shear_c, fs.tau_max, C.phi_shear * *C.shear_strength, st, t);
+            else
+              tracker.consider(shear_c, std::abs(sf.V), concrete_one_way_shear_capacity(C.compressive_strength, C.lambda, el.section.width(s),
+                                                                                         el.section.depth(s), C.phi_shear), st, t);
+          } else {
+            tracker.consider(elastic, std::max(std::abs(fs.sigma_top), std::abs(fs.sigma_bottom)), S.design_strength(), st, t);
+            tracker.consider(mises, fs.von_mises_max, S.design_strength(), st, t);
+            if (pipe) {
+              tracker.consider(inter, chs_interaction(sf.N, sf.M, D, t_w, S.yield_strength, S.gamma_M0), 1.0, st, t);
+              tracker.consider(shear_s, std::abs(sf.V), chs_shear_resistance(D, t_w, S.yield_strength, S.gamma_M0), st, t);
+            }
+          }
+        }
+      }
+    }
+    env.checks = tracker.result();
+    if (steel && pipe) {  // local buckling: the section class from D/t (time-independent)
+      Check c = proto("steel_section_class", "local buckling (class <= 3)", env, "-", "D/t <= 90 eps^2, eps^2 = 235/f_y[MPa]",
+                      "EN 1993-1-1 Table 5.2 (sheet 3)");
+      c.demand = D / t_w, c.capacity = chs_class3_limit(S.yield_strength);
+      c.title += ": class " + std::to_string(chs_class(D, t_w, S.yield_strength));
+      c.finish();
+      env.checks.push_back(c);
+    }
+    out.push_back(std::move(env));
+  }
+  return out;
+}
+
+}  // namespace dmi::design
