@@ -54,7 +54,7 @@ void run_summary(std::ostringstream& o, const json& r) {
       << eng(c["impulse_magnitude_N_s"], "N s") << ", pulse " << eng(c["pulse"]["duration_s"], "s") << "\n";
   }
   for (const auto& e : r["estimates"]) {
-    std::snprintf(line, sizeof line, "  estimate %-40s %12s  (simulated %s: ratio %.2f)\n", e["title"].get<std::string>().c_str(),
+    std::snprintf(line, sizeof line, "  estimate %-41s %12s  (simulated %s: ratio %.2f)\n", e["title"].get<std::string>().c_str(),
                   eng(e["value_N"], "N").c_str(), eng(e["simulated_N"], "N").c_str(), e["ratio"].get<double>());
     o << line;
   }
@@ -62,11 +62,18 @@ void run_summary(std::ostringstream& o, const json& r) {
     o << "  no checks (no members and no solid check in this run)\n";
     return;
   }
-  std::snprintf(line, sizeof line, "  %-38s %-14s %13s %13s %6s %-5s %s\n", "check", "member", "demand", "capacity", "util", "", "where / when");
+  std::snprintf(line, sizeof line, "  %-50s %-12s %13s %13s %6s %-5s %s\n", "check", "member", "demand", "capacity", "util", "", "where / when");
   o << line;
   for (const auto& c : r["checks"]) {
     const std::string u = c["unit"];
-    std::snprintf(line, sizeof line, "  %-38s %-14s %13s %13s %6.2f %-5s %s\n", c["title"].get<std::string>().c_str(), c["member"].get<std::string>().c_str(),
+    std::string title = c["title"], member = c["member"];
+    if (member.rfind("solid: ", 0) == 0) {  // the solid-FE load case in brackets, without the common prefix
+      std::string load = member.substr(7);
+      if (load.rfind("simulated contact, ", 0) == 0) load = load.substr(19);
+      title += " [" + load + "]", member = "solid FE";
+    }
+    if (title.size() > 50) title = title.substr(0, 47) + "...";
+    std::snprintf(line, sizeof line, "  %-50s %-12s %13s %13s %6.2f %-5s %s\n", title.c_str(), member.c_str(),
                   eng(c["demand"], u).c_str(), eng(c["capacity"], u).c_str(), c["utilisation"].get<double>(), c["passed"] ? "ok" : "FAIL",
                   where_when(c).c_str());
     o << line;
@@ -81,11 +88,13 @@ std::string summary_text(const json& d) {
   if (!d["comparison"].is_null()) {
     char line[256];
     o << "\nwith vs without buffer\n";
-    std::snprintf(line, sizeof line, "  %-36s %14s %14s %10s\n", "peak", "with buffer", "without", "reduction");
+    std::snprintf(line, sizeof line, "  %-60s %14s %14s %10s\n", "peak", "with buffer", "without", "reduction");
     o << line;
     for (const auto& q : d["comparison"]["quantities"]) {
       const std::string u = q["unit"];
-      std::snprintf(line, sizeof line, "  %-36s %14s %14s %9.0f %%\n", q["title"].get<std::string>().c_str(), eng(q["with_buffer"], u).c_str(),
+      std::string title = q["title"];
+      if (title.size() > 60) title = title.substr(0, 57) + "...";
+      std::snprintf(line, sizeof line, "  %-60s %14s %14s %9.0f %%\n", title.c_str(), eng(q["with_buffer"], u).c_str(),
                     eng(q["without_buffer"], u).c_str(), q["reduction_percent"].is_number() ? q["reduction_percent"].get<double>() : 0.0);
       o << line;
     }

@@ -99,9 +99,9 @@ json solid_part(const json& doc, const Limits& L, std::vector<Check>& checks, co
       };
       const json& mx = pk.at("max_principal").at("gauss");
       const json& mn = pk.at("min_principal").at("gauss");
-      add("solid_principal_tension", "solid FE: principal tension", std::max(0.0, mx.at("value_Pa").get<double>()), L.concrete.tensile_capacity(),
+      add("solid_principal_tension", "principal tension", std::max(0.0, mx.at("value_Pa").get<double>()), L.concrete.tensile_capacity(),
           mx.at("location_m"), "sigma_1 <= phi_f f_t", "SEEDS.md B.3; ACI 318-19 21.2.1");
-      add("solid_principal_compression", "solid FE: principal compression", std::max(0.0, -mn.at("value_Pa").get<double>()),
+      add("solid_principal_compression", "principal compression", std::max(0.0, -mn.at("value_Pa").get<double>()),
           L.concrete.compressive_capacity(), mn.at("location_m"), "|sigma_3| <= phi_c alpha f'c", "ACI 318-19 21.2.1, 22.2.2.4.1");
     }
   } catch (const json::exception& e) {
