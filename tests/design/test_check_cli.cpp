@@ -1,0 +1,136 @@
+// `damimpact check` end to end: a static cantilever simulated, then checked from its results.h5 alone.
+// The envelope peak must be the largest value in the stored history, the base reactions must balance the
+// self-weight, and bad input must exit 2 with one clear message.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "engine/io/results_writer.hpp"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+struct Cli {
+  int status;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+Cli cli(const std::string& args) {
+  const fs::path base = fs::temp_directory_path() / ("dmi_check_cli_" + std::to_string(::getpid()));
+  const std::string cmd = std::string(DMI_BINARY) + " " + args + " > " + base.string() + ".out 2> " + base.string() + ".err";
+  const int rc = std::system(cmd.c_str());
+  Cli c{WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, slurp(base.string() + ".out"), slurp(base.string() + ".err")};
+  fs::remove(base.string() + ".out"), fs::remove(base.string() + ".err");
+  return c;
+}
+
+class CheckCli : public ::testing::Test {
+ protected:
+  static fs::path dir;
+  static void SetUpTestSuite() {
+    dir = fs::temp_directory_path() / ("dmi_check_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    const Cli r = cli("simulate " + std::string(DMI_SOURCE_DIR) + "/tests/data/design/cantilever_self_weight.json -o " + dir.string() + " -q");
+    ASSERT_EQ(r.status, 0) << r.err;
+  }
+  static void TearDownTestSuite() { fs::remove_all(dir); }
+  static fs::path write(const std::string& name, const std::string& text) {
+    const fs::path p = dir / name;
+    std::ofstream(p) << text;
+    return p;
+  }
+};
+fs::path CheckCli::dir;
+
+}  // namespace
+
+TEST_F(CheckCli, StaticCantileverReactionsBalanceTheSelfWeightAndPeaksMatchTheHistory) {
+  const Cli c = cli("check " + dir.string() + " --json");
+  ASSERT_EQ(c.status, 0) << c.err;
+  const json d = json::parse(c.out);
+  EXPECT_EQ(d, json::parse(slurp(dir / "design.json")));  // the same document is written beside the results
+  ASSERT_EQ(d["runs"].size(), 1u);
+  const json& run = d["runs"][0];
+  // w = rho g A = 2500 x 9.81 x 0.06 = 1471.5 N/m over L = 2 m: the fixed end carries w L = 2943 N up and w L^2 / 2 = 2943 N m
+  // (counter-clockwise on the frame, the beam running +x).
+  const double W = 2500 * 9.81 * 0.2 * 0.3 * 2.0, M = W * 1.0;
+  const json& b = run["base_total"];
+  EXPECT_NEAR(b["Fy_N"]["max"]["value"].get<double>(), W, 1e-6 * W);
+  EXPECT_NEAR(b["Fy_N"]["min"]["value"].get<double>(), W, 1e-6 * W);
+  EXPECT_NEAR(b["M_Nm"]["max"]["value"].get<double>(), M, 1e-6 * M);
+  EXPECT_NEAR(b["Fx_N"]["abs_max"]["value"].get<double>(), 0.0, 1e-6 * W);
+  // The member's envelope peak equals the largest value in the stored history (element 0, end i).
+  const dmi::Results r = dmi::read_results((dir / "results.h5").string(), false);
+  const dmi::Series* ef = r.find("frame/end_forces");
+  ASSERT_NE(ef, nullptr);
+  double mmax = -1e300, mmin = 1e300, vmax = 0;
+  for (std::size_t k = 0; k < r.time.size(); ++k) {
+    const double* row = &ef->data[k * ef->components.size()];
+    for (int e = 0; e < 4; ++e) {
+      mmax = std::max({mmax, row[6 * e + 2], row[6 * e + 5]}), mmin = std::min({mmin, row[6 * e + 2], row[6 * e + 5]});
+      vmax = std::max({vmax, std::abs(row[6 * e + 1]), std::abs(row[6 * e + 4])});
+    }
+  }
+  const json& pk = run["members"][0]["peaks"];
+  EXPECT_EQ(pk["M_max"]["value"].get<double>(), mmax);
+  EXPECT_EQ(pk["M_min"]["value"].get<double>(), mmin);
+  EXPECT_EQ(pk["V_abs_max"]["value"].get<double>(), vmax);
+  // Hogging at the fixed end: |M| = w L^2 / 2; fibre stress M c / I = 2943 x 0.15 / 4.5e-4 = 981 kPa (tension on top).
+  EXPECT_NEAR(std::max(std::abs(mmax), std::abs(mmin)), M, 1e-6 * M);
+  EXPECT_DOUBLE_EQ(pk[std::abs(mmin) > std::abs(mmax) ? "M_min" : "M_max"]["s_m"].get<double>(), 0.0);
+  EXPECT_NEAR(pk["sigma_tension_max"]["value"].get<double>(), M * 0.15 / 4.5e-4, 1e-3);
+  EXPECT_TRUE(d["verdict"]["passed"].get<bool>());
+  EXPECT_EQ(d["verdict"]["status"], "pass");
+}
+
+TEST_F(CheckCli, ExitOneWhenACheckFailsUnderOtherLimitsWithoutResimulating) {
+  // f_t = 1 MPa, phi 0.6: 981 kPa / 600 kPa = 1.635 -> fail.
+  const fs::path limits = write("low.json", R"({"concrete": {"tensile_strength_Pa": 1e6}})");
+  const Cli c = cli("check " + (dir / "results.h5").string() + " --limits " + limits.string() + " -o " + (dir / "low_design.json").string());
+  EXPECT_EQ(c.status, 1) << c.err;
+  EXPECT_NE(c.out.find("FAIL"), std::string::npos) << c.out;
+  const json d = json::parse(slurp(dir / "low_design.json"));
+  EXPECT_NEAR(d["verdict"]["governing"]["utilisation"].get<double>(), 2943 * 0.15 / 4.5e-4 / 0.6e6, 1e-5);
+  EXPECT_EQ(d["verdict"]["governing"]["id"], "concrete_flexural_tension");
+}
+
+TEST_F(CheckCli, BadInputExitsTwoWithOneClearMessage) {
+  Cli c = cli("check " + (dir / "nothing.h5").string());
+  EXPECT_EQ(c.status, 2);
+  EXPECT_NE(c.err.find("nothing.h5: no such results file"), std::string::npos) << c.err;
+  const fs::path junk = write("junk.h5", "not an HDF5 file");
+  c = cli("check " + junk.string());
+  EXPECT_EQ(c.status, 2);
+  EXPECT_NE(c.err.find("junk.h5: cannot open as HDF5"), std::string::npos) << c.err;
+  const fs::path bad = write("bad_limits.json", R"({"concrete": {"fc": 28e6}})");
+  c = cli("check " + dir.string() + " --limits " + bad.string());
+  EXPECT_EQ(c.status, 2);
+  EXPECT_NE(c.err.find("bad_limits.json: /concrete/fc = 28000000.0: expected a known key"), std::string::npos) << c.err;
+  const fs::path broken = write("broken.json", "{\"concrete\": ");
+  c = cli("check " + dir.string() + " --limits " + broken.string());
+  EXPECT_EQ(c.status, 2);
+  EXPECT_NE(c.err.find("broken.json: invalid JSON"), std::string::npos) << c.err;
+  const fs::path partial = dir / "partial";
+  fs::create_directories(partial);
+  write("partial/results.h5.partial", "");
+  c = cli("check " + partial.string());
+  EXPECT_EQ(c.status, 2);
+  EXPECT_NE(c.err.find("the run did not finish"), std::string::npos) << c.err;
+  EXPECT_FALSE(fs::exists(partial / "design.json"));
+  // Exactly one line.
+  EXPECT_EQ(std::count(c.err.begin(), c.err.end(), '\n'), 1) << c.err;
+}
