@@ -1,4 +1,5 @@
-// damimpact command line: a thin shell over the engine. Exit 0 ok, 2 bad input or failed run.
+// damimpact command line: a thin shell over the engine and the design layer. Exit 0 ok, 1 a validation case or a
+// design check failed, 2 bad input or failed run.
 #include <CLI/CLI.hpp>
 #include <unistd.h>
 
@@ -51,40 +52,11 @@ int dry_run_report(const std::string& file, const std::vector<dmi::ScenarioVaria
   return 0;
 }
 
-// Peak base shear (|sum of support Fx|), base moment and contact force of a run with a frame.
-struct Peaks {
-  double shear = 0, moment = 0, contact = 0;
-};
-Peaks frame_peaks(const dmi::Results& r) {
-  Peaks p;
-  for (std::size_t k = 0; k < r.time.size(); ++k) {
-    double fx = 0, m = 0;
-    for (const auto& s : r.series)
-      if (s.path.rfind("supports/", 0) == 0 && s.components.size() == 3) fx += s.data[3 * k], m += s.data[3 * k + 2];
-    p.shear = std::max(p.shear, std::abs(fx));
-    p.moment = std::max(p.moment, std::abs(m));
-    if (const dmi::Series* c = r.find("frame/contact_force")) p.contact = std::max(p.contact, std::hypot(c->data[2 * k], c->data[2 * k + 1]));
-  }
-  return p;
-}
-
-void print_comparison(const std::vector<std::pair<std::string, Peaks>>& v) {
-  if (v.size() != 2 || v[1].second.shear <= 0) return;
-  const Peaks &a = v[0].second, &b = v[1].second;
-  std::printf("\n%-28s %14s %14s %10s\n", "peak (frame supports)", v[0].first.c_str(), v[1].first.c_str(), "ratio");
-  auto row = [](const char* name, double x, double y, double unit, const char* u) {
-    std::printf("%-28s %11.1f %-2s %11.1f %-2s %10.2f\n", name, x / unit, u, y / unit, u, y > 0 ? x / y : 0.0);
-  };
-  row("base shear", a.shear, b.shear, 1e3, "kN");
-  row("base moment", a.moment, b.moment, 1e3, "kNm");
-  row("contact force", a.contact, b.contact, 1e3, "kN");
-}
-
+// Simulates every variant; `written` receives the results files.
 int simulate(const std::string& file, const std::string& out, int threads, bool quiet, const std::string& progress, bool dry_run,
-             bool expand, bool compare_table = true) {
+             bool expand, std::vector<std::string>* written = nullptr) {
   const std::vector<dmi::ScenarioVariant> variants = dmi::load_scenario_variants(file);
   if (dry_run || expand) return dry_run_report(file, variants, expand);
-  std::vector<std::pair<std::string, Peaks>> peaks;
   for (const auto& v : variants) {
     dmi::RunOptions o;
     o.out_dir = v.label.empty() ? out : (std::filesystem::path(out) / v.label).string();
@@ -93,11 +65,10 @@ int simulate(const std::string& file, const std::string& out, int threads, bool 
     o.software_version = DMI_VERSION;
     if (!quiet && !v.label.empty()) std::printf("variant %s -> %s\n", v.label.c_str(), o.out_dir.c_str());
     const dmi::RunOutput r = dmi::run_scenario(v.scenario, o);
+    if (written) written->push_back(r.results_path);
     if (!quiet) std::printf("wrote %s (%.0f steps, %.2f s wall)\n", r.results_path.c_str(), r.results.info.numbers.at("steps"),
                             r.results.info.numbers.at("wall_seconds"));
-    peaks.emplace_back(v.label, frame_peaks(r.results));
   }
-  if (!quiet && compare_table) print_comparison(peaks);
   return 0;
 }
 
@@ -159,8 +130,11 @@ int main(int argc, char** argv) {
   try {
     if (*sim) return simulate(file, out, threads, quiet, progress, dry_run, expand);
     if (*run) {  // the whole chain: simulation, then the design checks of what it wrote
-      simulate(file, out, threads, quiet, progress, false, false, false);
-      return dmi::design::check_main({out}, limits_file, false, "", quiet, DMI_VERSION);
+      if (!limits_file.empty()) dmi::design::read_limits(limits_file);  // a bad limits file fails before the simulation
+      std::vector<std::string> written;
+      simulate(file, out, threads, quiet, progress, false, false, &written);
+      const std::string design = (std::filesystem::path(out) / "design.json").string();
+      return dmi::design::check_main(written, limits_file, false, design, quiet, DMI_VERSION);
     }
     if (*chk) return dmi::design::check_main(check_paths, limits_file, json, design_out, quiet, DMI_VERSION);
     if (*val) return dmi::validate_main(cases, json, list, threads);

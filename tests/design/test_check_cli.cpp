@@ -134,3 +134,16 @@ TEST_F(CheckCli, BadInputExitsTwoWithOneClearMessage) {
   // Exactly one line.
   EXPECT_EQ(std::count(c.err.begin(), c.err.end(), '\n'), 1) << c.err;
 }
+
+TEST_F(CheckCli, RunSimulatesThenChecksAndExitsByTheVerdict) {
+  const fs::path out = dir / "run";
+  const fs::path limits = write("run_low.json", R"({"concrete": {"tensile_strength_Pa": 1e6}})");
+  const Cli c = cli("run " + std::string(DMI_SOURCE_DIR) + "/tests/data/design/cantilever_self_weight.json -o " + out.string() +
+                    " -q --limits " + limits.string());
+  EXPECT_EQ(c.status, 1) << c.err;
+  ASSERT_TRUE(fs::exists(out / "design.json"));
+  EXPECT_FALSE(fs::exists(out / "design.json.tmp"));
+  const json d = json::parse(slurp(out / "design.json"));
+  EXPECT_EQ(d["verdict"]["status"], "fail");
+  EXPECT_EQ(d["runs"][0]["results_file"], (out / "results.h5").string());
+}
