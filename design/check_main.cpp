@@ -6,6 +6,7 @@
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
+#include <unistd.h>
 
 #include "design/design.hpp"
 #include "engine/common/error.hpp"
@@ -145,8 +146,10 @@ int check_main(const std::vector<std::string>& paths, const std::string& limits_
     }
     try {
       runs.push_back(design_run(r, limits, f));
-    } catch (const std::runtime_error& e) {
+    } catch (const std::runtime_error& e) {  // design/ names the file itself
       throw InputError(e.what());
+    } catch (const std::exception& e) {
+      throw InputError(f + ": " + e.what());
     }
   }
   const json doc = design_document(runs, limits, version);
@@ -156,12 +159,17 @@ int check_main(const std::vector<std::string>& paths, const std::string& limits_
     std::error_code ec;
     target = fs::is_directory(paths.front(), ec) ? fs::path(paths.front()) / "design.json" : fs::path(paths.front()).parent_path() / "design.json";
   }
-  const fs::path tmp = target.string() + ".tmp";
+  const fs::path tmp = target.string() + "." + std::to_string(::getpid()) + ".tmp";
   {
     std::ofstream o(tmp);
     if (!o) throw InputError(target.string() + ": cannot write design.json here");
     o << doc.dump(1) << "\n";
-    if (!o) throw InputError(target.string() + ": writing design.json failed");
+    o.flush();
+    if (!o) {
+      std::error_code ec;
+      fs::remove(tmp, ec);
+      throw InputError(target.string() + ": writing design.json failed");
+    }
   }
   fs::rename(tmp, target);
   if (print_json) std::cout << doc.dump(1) << "\n";

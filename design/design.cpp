@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 #include "design/estimates.hpp"
@@ -110,34 +111,42 @@ json solid_part(const json& doc, const Limits& L, std::vector<Check>& checks, co
   return json{{"model", doc.value("model", json::object())}, {"cases", cases}};
 }
 
-// Punching around the contact patch of the peak contact (ACI 318-19 Table 14.5.5.1(b)), concrete members only.
-void punching(const json& peak_contact, const std::vector<MemberEnvelope>& members, const Contact& c, const Limits& L, std::vector<Check>& checks) {
-  if (!L.concrete.punching_patch_width || !c.present || peak_contact.is_null() || !peak_contact.contains("loads")) return;
-  const json* load = nullptr;
-  double fmax = -1;
-  for (const auto& l : peak_contact["loads"]) {
-    const double f = std::hypot(l["force"][0].get<double>(), l["force"][1].get<double>());
-    if (f > fmax) fmax = f, load = &l;
+// Punching around the contact patch (ACI 318-19 Table 14.5.5.1(b)), concrete members only. Demand: the total contact
+// force of /documents/peak_contact (the step of the largest contact force), at the force-weighted position of its loads
+// on the most loaded member, where the member depth is taken.
+void punching(const json& pc, const std::vector<MemberEnvelope>& members, const Limits& L, std::vector<Check>& checks, const std::string& where) {
+  if (!L.concrete.punching_patch_width || pc.is_null()) return;
+  try {
+    std::map<std::string, std::pair<double, double>> on;  // member -> (sum |F|, sum |F| position)
+    for (const auto& l : pc.at("loads")) {
+      const double f = std::hypot(l.at("force").at(0).get<double>(), l.at("force").at(1).get<double>());
+      auto& s = on[l.at("member").get<std::string>()];
+      s.first += f, s.second += f * std::clamp(l.at("position").get<double>(), 0.0, 1.0);
+    }
+    if (on.empty()) return;
+    const auto best = std::max_element(on.begin(), on.end(), [](const auto& a, const auto& b) { return a.second.first < b.second.first; });
+    const auto m = std::find_if(members.begin(), members.end(), [&](const MemberEnvelope& e) { return e.name == best->first; });
+    if (m == members.end() || m->cls != "concrete" || !(best->second.first > 0)) return;
+    const double pos = best->second.second / best->second.first;
+    const auto& st = m->stations;  // depth at the load: linear between stations
+    std::size_t k = 0;
+    while (k + 2 < st.size() && st[k + 1].position < pos) ++k;
+    const double w = std::clamp((pos - st[k].position) / (st[k + 1].position - st[k].position), 0.0, 1.0);
+    const double h = st[k].depth + w * (st[k + 1].depth - st[k].depth);
+    Check p;
+    p.id = "concrete_punching", p.title = "punching shear at the contact patch", p.member = m->name, p.material = "concrete", p.unit = "N";
+    p.demand = std::hypot(pc.at("total_force").at(0).get<double>(), pc.at("total_force").at(1).get<double>());
+    p.capacity = concrete_punching_capacity(L.concrete.compressive_strength, L.concrete.lambda, *L.concrete.punching_patch_width,
+                                            *L.concrete.punching_patch_height, h, L.concrete.phi_shear);
+    p.position = pos, p.s_m = pos * m->length, p.time_s = pc.at("time").get<double>();
+    p.x_m = st[k].x + w * (st[k + 1].x - st[k].x), p.y_m = st[k].y + w * (st[k + 1].y - st[k].y);
+    p.formula = "F_contact <= phi_v min(0.11 (1 + 2/beta), 0.22) lambda sqrt(f'c) b_o h, b_o = 2 (c1 + h) + 2 (c2 + h)";
+    p.source = "ACI 318-19 Table 14.5.5.1(b), 22.6.4.1";
+    p.finish();
+    checks.push_back(p);
+  } catch (const json::exception& e) {
+    throw std::runtime_error(where + ": /documents/peak_contact is malformed (" + std::string(e.what()) + ")");
   }
-  if (!load) return;
-  const auto m = std::find_if(members.begin(), members.end(), [&](const MemberEnvelope& e) { return e.name == (*load)["member"]; });
-  if (m == members.end() || m->cls != "concrete") return;
-  const double pos = (*load)["position"];
-  const auto& st = m->stations;  // depth at the load: linear between stations
-  const double u = pos * (st.size() - 1);
-  const std::size_t k = std::min<std::size_t>(static_cast<std::size_t>(u), st.size() - 2);
-  const double h = st[k].depth + (u - k) * (st[k + 1].depth - st[k].depth);
-  Check p;
-  p.id = "concrete_punching", p.title = "punching shear at the contact patch", p.member = m->name, p.material = "concrete", p.unit = "N";
-  p.demand = c.peak_N;
-  p.capacity = concrete_punching_capacity(L.concrete.compressive_strength, L.concrete.lambda, *L.concrete.punching_patch_width,
-                                          *L.concrete.punching_patch_height, h, L.concrete.phi_shear);
-  p.position = pos, p.s_m = pos * m->length, p.time_s = c.peak_time_s;
-  p.x_m = (*load)["point"][0], p.y_m = (*load)["point"][1];
-  p.formula = "F_contact <= phi_v min(0.11 (1 + 2/beta), 0.22) lambda sqrt(f'c) b_o h, b_o = 2 (c1 + h) + 2 (c2 + h)";
-  p.source = "ACI 318-19 Table 14.5.5.1(b), 22.6.4.1";
-  p.finish();
-  checks.push_back(p);
 }
 
 json verdict(const std::vector<Check>& checks) {
@@ -180,7 +189,7 @@ json design_run(const Results& r, const Limits& L, const std::string& where) {
     }
   }
   run["contact"] = contact_json(c);
-  punching(parse_document(r, "peak_contact", where), members, c, L, checks);
+  punching(parse_document(r, "peak_contact", where), members, L, checks, where);
   run["solid"] = solid_part(parse_document(r, "solid_check", where), L, checks, where);
   json est = json::array();
   const json basis = parse_document(r, "design_basis", where);

@@ -20,8 +20,9 @@ nlohmann::json design_run(const Results& r, const Limits& limits, const std::str
 // With vs without buffer: every compared peak and its reduction in % (docs/design-json.md "comparison").
 nlohmann::json compare_runs(const nlohmann::json& with_buffer, const nlohmann::json& without_buffer);
 
-// The whole design.json. The verdict is that of the design: the with_buffer run of a comparison (the
-// without_buffer run is the reference), else every run.
+// The whole design.json. The verdict judges every run except the without_buffer run of a comparison pair (a
+// with_buffer and a without_buffer run in the same comparison folder): that one is the reference the design is
+// compared with. The first pair gives "comparison".
 nlohmann::json design_document(const std::vector<nlohmann::json>& runs, const Limits& limits, const std::string& software_version);
 
 // The readable summary `damimpact check` prints.

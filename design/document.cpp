@@ -1,6 +1,7 @@
 // design.json as a whole: runs, the with/without-buffer comparison and the verdict (docs/design-json.md).
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 
 #include "design/design.hpp"
@@ -8,6 +9,7 @@
 namespace dmi::design {
 
 using nlohmann::json;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -74,24 +76,30 @@ json compare_runs(const json& with, const json& without) {
 json design_document(const std::vector<json>& runs, const Limits& limits, const std::string& software_version) {
   json doc{{"format", "damimpact-design"}, {"format_version", kDesignFormatVersion}, {"software_version", software_version},
            {"limits", limits.to_json()}, {"runs", runs}, {"comparison", nullptr}};
-  const json* with = nullptr;
-  const json* without = nullptr;
-  for (const auto& r : runs) {
-    if (r["variant"] == "with_buffer") with = &r;
-    if (r["variant"] == "without_buffer") without = &r;
+  // Pair the variants of one comparison folder (OUT/with_buffer, OUT/without_buffer): the bare run of a pair is the
+  // reference; every other run is judged.
+  auto folder = [](const json& r) { return fs::path(r["results_file"].get<std::string>()).parent_path().parent_path().string(); };
+  std::vector<bool> reference(runs.size(), false);
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (runs[i]["variant"] != "without_buffer") continue;
+    for (std::size_t j = 0; j < runs.size(); ++j)
+      if (runs[j]["variant"] == "with_buffer" && folder(runs[j]) == folder(runs[i])) {
+        reference[i] = true;
+        if (doc["comparison"].is_null()) doc["comparison"] = compare_runs(runs[j], runs[i]);
+      }
   }
-  if (with && without) doc["comparison"] = compare_runs(*with, *without);
-  // The verdict of the design: the buffered dam of a comparison, else every run.
   json gov = nullptr;
   int checks = 0, failed = 0;
   std::string basis;
-  for (const auto& r : runs) {
-    if (with && &r != with) continue;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (reference[i]) continue;
+    const json& r = runs[i];
     const json& v = r["verdict"];
     checks += v["checks"].get<int>(), failed += v["failed"].get<int>();
     if (!v["governing"].is_null() && (gov.is_null() || v["governing"]["utilisation"] > gov["utilisation"])) {
       gov = v["governing"];
       gov["variant"] = r["variant"];
+      gov["results_file"] = r["results_file"];
     }
     basis += (basis.empty() ? "" : ", ") + (r["variant"].get<std::string>().empty() ? r["results_file"].get<std::string>() : r["variant"].get<std::string>());
   }

@@ -70,8 +70,10 @@ std::vector<Estimate> estimates(const json& basis, double shear, double contact,
     double k = 3 * E * I / (a * a * a);
     if (buffer) k = sdof::series_stiffness(k, kb);
     const auto en = sdof::en1991_hard_impact(v, m, k);
-    Estimate e = make("en1991_hard_impact", "EN 1991-1-7 hard impact", buffer ? "F = v sqrt(k m), k = 1/(1/(3EI/a^3) + 1/k_b)" : "F = v sqrt(k m), k = 3EI/a^3",
-                      "EN 1991-1-7 Annex C.2.1 eq. (C.1)", en.peak_force_N, "peak_contact_force", contact);
+    // EN 1991-1-7 C.2.1 takes k as the impacting object's stiffness on a rigid structure; here the form of eq. (C.1) is
+    // used as a spring-mass estimate with the struck member's stiffness at the impact height (a rock is far stiffer).
+    Estimate e = make("en1991_hard_impact", "spring-mass, EN 1991-1-7 eq. (C.1) form", buffer ? "F = v sqrt(k m), k = 1/(1/(3EI/a^3) + 1/k_b)" : "F = v sqrt(k m), k = 3EI/a^3",
+                      "EN 1991-1-7 Annex C.2.1 eq. (C.1), k of the struck member", en.peak_force_N, "peak_contact_force", contact);
     e.note = "pulse " + std::to_string(en.duration_s * 1e3) + " ms";
     out.push_back(e);
     if (!buffer) {  // rigid-barrier formulas: not for a soft buffer

@@ -14,6 +14,8 @@ using nlohmann::json;
 double ConcreteLimits::tensile_value() const {
   // ACI 318-19 eq. (19.2.3.1): modulus of rupture f_r = 0.62 lambda sqrt(f'c), f'c in MPa.
   if (tensile_rule == "aci_rupture") return 0.62 * lambda * std::sqrt(compressive_strength / 1e6) * 1e6;
+  // ACI 318-19 Table 14.5.2.1(a): plain-concrete flexure M_n = 5 lambda sqrt(f'c) S_m [psi] = 0.42 lambda sqrt(f'c) S_m [MPa].
+  if (tensile_rule == "aci_plain") return 0.42 * lambda * std::sqrt(compressive_strength / 1e6) * 1e6;
   return tensile_strength;
 }
 double ConcreteLimits::tensile_capacity() const { return phi_flexure * tensile_value(); }
@@ -77,7 +79,8 @@ Limits parse_limits(const json& j, const std::string& file) {
     r.number(c, p, "tensile_strength_Pa", k.tensile_strength);
     if (c.contains("tensile_rule")) {
       const json& v = c["tensile_rule"];
-      if (!v.is_string() || (v != "given" && v != "aci_rupture")) r.fail(p + "/tensile_rule", &v, "\"given\" or \"aci_rupture\"");
+      if (!v.is_string() || (v != "given" && v != "aci_rupture" && v != "aci_plain"))
+        r.fail(p + "/tensile_rule", &v, "\"given\", \"aci_plain\" or \"aci_rupture\"");
       k.tensile_rule = v.get<std::string>();
     }
     r.number(c, p, "lambda", k.lambda, true);

@@ -12,9 +12,11 @@ namespace dmi::design {
 
 struct ConcreteLimits {
   double compressive_strength = 28e6;  // f'c (Pa); paper B's concrete (SEEDS.md B.3)
-  // f_t (Pa): 3.28 MPa (paper B), or with tensile_rule "aci_rupture" 0.62 lambda sqrt(f'c) (ACI 318-19 eq. 19.2.3.1).
+  // f_t (Pa): 3.28 MPa (paper B, SEEDS.md B.3; = 0.62 sqrt(28), the modulus of rupture), or by tensile_rule:
+  // "aci_plain" 0.42 lambda sqrt(f'c) (ACI 318-19 Table 14.5.2.1(a), plain-concrete flexure: 2.22 MPa at 28 MPa),
+  // "aci_rupture" 0.62 lambda sqrt(f'c) (ACI 318-19 eq. 19.2.3.1).
   double tensile_strength = 3.28e6;
-  std::string tensile_rule = "given";   // given | aci_rupture
+  std::string tensile_rule = "given";   // given | aci_plain | aci_rupture
   double lambda = 1.0;                  // lightweight-concrete factor (ACI 318-19 19.2.4), 1 for normal weight
   double compression_coefficient = 0.85;  // alpha: usable fraction of f'c (ACI 318 0.85 f'c; EN 1992-1-1 alpha_cc)
   // Strength-reduction factors phi (ACI 318-19 Table 21.2.1: plain concrete, 0.60 for flexure, compression, shear).

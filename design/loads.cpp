@@ -49,16 +49,15 @@ Contact contact(const Results& r) {
   c.present = true;
   const auto& t = r.time;
   std::vector<double> mag(t.size());
+  std::size_t kp = 0;
   for (std::size_t k = 0; k < t.size(); ++k) {
     mag[k] = std::hypot(s->data[2 * k], s->data[2 * k + 1]);
-    if (mag[k] > c.peak_N) c.peak_N = mag[k], c.peak_time_s = t[k];
+    if (mag[k] > c.peak_N) c.peak_N = mag[k], c.peak_time_s = t[k], kp = k;
     const double dt = k == 0 ? 0.0 : t[k] - t[k - 1];  // sample k holds the mean over (t_{k-1}, t_k]
     c.impulse_N_s[0] += s->data[2 * k] * dt, c.impulse_N_s[1] += s->data[2 * k + 1] * dt;
   }
   if (c.peak_N <= 0) return c;
   const double th = 0.05 * c.peak_N;
-  std::size_t kp = 0;
-  while (t[kp] != c.peak_time_s) ++kp;
   std::size_t a = kp, b = kp;
   while (a > 0 && mag[a - 1] >= th) --a;
   while (b + 1 < t.size() && mag[b + 1] >= th) ++b;

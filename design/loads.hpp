@@ -30,7 +30,9 @@ struct Contact {
   bool present = false;
   double peak_N = 0, peak_time_s = -1;
   std::array<double, 2> impulse_N_s{0, 0};  // sum F_i (t_i - t_{i-1}) over the run: exact for interval means
-  double pulse_start_s = 0, pulse_end_s = 0, pulse_impulse_N_s = 0;  // the pulse holding the peak: |F| >= 5 % of the peak
+  // The pulse holding the peak: contiguous samples with |F| >= 5 % of the peak; its impulse integrates |F| (so it can
+  // exceed the magnitude of the vector impulse when the force turns).
+  double pulse_start_s = 0, pulse_end_s = 0, pulse_impulse_N_s = 0;
   double loaded_time_s = 0;  // total time with |F| >= 5 % of the peak
 };
 

@@ -62,7 +62,12 @@ FrameInfo parse_structure(const std::string& doc, const std::string& where, cons
       mb.cls = classify(mb.name, mb.material, e0.section, e0.E, L);
       f.members.push_back(mb);
     }
-    for (const auto& s : j.at("supports")) f.supports.push_back({s.at("node"), s.at("series"), s.at("node_index")});
+    for (const auto& s : j.at("supports")) {
+      f.supports.push_back({s.at("node"), s.at("series"), s.at("node_index")});
+      if (f.supports.back().node_index < 0 || f.supports.back().node_index >= int(f.nodes.size())) throw std::out_of_range("support node index");
+    }
+    for (const auto& e : f.elements)
+      if (!(e.s0 >= 0 && e.s0 < e.s1 && e.s1 <= 1)) throw std::out_of_range("element span s0, s1 outside 0 <= s0 < s1 <= 1");
   } catch (const std::exception& e) {
     throw std::runtime_error(where + ": /documents/structure is malformed (" + e.what() + ")");
   }
@@ -129,7 +134,7 @@ std::vector<MemberEnvelope> member_envelopes(const Results& r, const FrameInfo& 
       const auto& el = f.elements[m.first + std::min(k, m.count - 1)];
       const auto& x = f.nodes[k < m.count ? el.i : el.j];
       Station st;
-      st.position = double(k) / m.count, st.s_m = st.position * m.length, st.x = x[0], st.y = x[1];
+      st.position = k < m.count ? el.s0 : el.s1, st.s_m = st.position * m.length, st.x = x[0], st.y = x[1];
       st.depth = el.section.depth(k < m.count ? el.s0 : el.s1);
       env.stations.push_back(st);
     }
@@ -138,14 +143,14 @@ std::vector<MemberEnvelope> member_envelopes(const Results& r, const FrameInfo& 
     const double D = f.elements[m.first].section.depth(0), t_w = f.elements[m.first].section.wall_thickness();
     // Capacities that do not vary in time (docs/design-checks.md).
     const Check tension = proto("concrete_flexural_tension", "flexural tension", env, "Pa", "sigma_t = N/A + |M| c/I <= phi_f f_t",
-                                "ACI 318-19 14.5.2 / 21.2.1 (phi 0.60), f_t: SEEDS.md B.3 or ACI 318-19 19.2.3.1");
+                                "f_t: SEEDS.md B.3 (paper B) or ACI 318-19 14.5.2.1 / 19.2.3.1 by tensile_rule; phi: ACI 318-19 21.2.1");
     const Check compr = proto("concrete_compression", "compression", env, "Pa", "|sigma_c| = |N/A - |M| c/I| <= phi_c alpha f'c",
-                              "ACI 318-19 14.5.2, 21.2.1; alpha 0.85 (ACI 318-19 22.2.2.4.1)");
+                              "elastic fibre stress limit alpha f'c (alpha 0.85, ACI 318-19 22.2.2.4.1); phi: ACI 318-19 21.2.1");
     const Check shear_c = C.shear_strength ? proto("concrete_shear", "shear stress", env, "Pa", "tau = k V/A <= phi_v tau_lim", "user shear limit")
                                            : proto("concrete_shear", "one-way shear", env, "N", "V <= phi_v 0.11 lambda sqrt(f'c) b h",
                                                    "ACI 318-19 Table 14.5.5.1(a)");
     const Check elastic = proto("steel_elastic_stress", "extreme-fibre stress", env, "Pa", "|N|/A + |M|/W_el <= f_y / gamma_M0",
-                                "EN 1993-1-1 6.2.1(7)");
+                                "EN 1993-1-1 6.2.1(5)");
     const Check mises = proto("steel_von_mises", "von Mises stress", env, "Pa", "sqrt(sigma^2 + 3 tau^2) <= f_y / gamma_M0", "EN 1993-1-1 6.2.1(5) eq. 6.1");
     const Check inter = proto("steel_interaction", "axial + bending resistance", env, "-", "|N|/N_Rd + |M|/M_Rd <= 1, M_Rd = W_pl (class 1-2) or W_el (3) f_y/gamma_M0",
                               "EN 1993-1-1 6.2.1(7) eq. 6.2, 6.2.5 eqs. 6.13-6.14");

@@ -15,6 +15,8 @@ TEST(DesignFormulas, ConcreteTensileAndCompressiveCapacities) {
   EXPECT_NEAR(c.compressive_capacity(), 0.60 * 0.85 * 28e6, 1e-6);   // 14.28 MPa
   c.tensile_rule = "aci_rupture";                                    // f_r = 0.62 sqrt(28) = 0.62 x 5.29150 = 3.28073 MPa
   EXPECT_NEAR(c.tensile_value(), 3.28073e6, 10.0);
+  c.tensile_rule = "aci_plain";                                      // ACI 14.5.2.1: 0.42 sqrt(28) = 2.22243 MPa
+  EXPECT_NEAR(c.tensile_value(), 2.22243e6, 10.0);
 }
 
 TEST(DesignFormulas, ConcreteOneWayShearByHand) {
@@ -29,6 +31,9 @@ TEST(DesignFormulas, ConcretePunchingByHand) {
   // 0.8 x 0.4 m, h = 0.5 m: beta = 2 -> 0.11 (1 + 1) = 0.22 (= the cap); b_o = 2 (1.3) + 2 (0.9) = 4.4 m;
   // V_n = 0.22 x 5.29150 x 4.4 x 0.5 = 2.56109 MN; phi 0.6 -> 1.53665 MN.
   EXPECT_NEAR(concrete_punching_capacity(28e6, 1.0, 0.8, 0.4, 0.5, 0.6), 1.536652e6, 5.0);
+  // beta = 1.5: 0.11 (1 + 2/1.5) = 0.25667 > 0.22, the cap governs; beta = 3: 0.11 x 1.6667 = 0.18333 < 0.22.
+  EXPECT_NEAR(concrete_punching_capacity(28e6, 1.0, 0.6, 0.4, 0.5, 1.0), 0.22 * 5.2915026e6 * (2 * 1.1 + 2 * 0.9) * 0.5, 5.0);
+  EXPECT_NEAR(concrete_punching_capacity(28e6, 1.0, 0.9, 0.3, 0.5, 1.0), 0.11 * (1 + 2.0 / 3) * 5.2915026e6 * (2 * 1.4 + 2 * 0.8) * 0.5, 5.0);
   // A long patch governs by beta: 1.2 x 0.2 m, beta = 6 -> 0.11 (1 + 1/3) = 0.14667 < 0.22.
   const double bo = 2 * (1.2 + 0.5) + 2 * (0.2 + 0.5);
   EXPECT_NEAR(concrete_punching_capacity(28e6, 1.0, 1.2, 0.2, 0.5, 1.0), 0.11 * (4.0 / 3.0) * 5.2915026e6 * bo * 0.5, 5.0);

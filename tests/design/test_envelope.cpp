@@ -179,7 +179,8 @@ TEST(DesignEnvelope, DesignRunJsonCarriesPeaksChecksAndVerdict) {
   EXPECT_EQ(run["verdict"]["governing"]["id"], "concrete_shear");
   // Punching around a 0.4 x 0.4 m patch when asked for (the peak contact load on the member, at mid-height).
   dmi::Results r2 = r;
-  r2.info.documents["peak_contact"] = R"({"time": 0.1, "total_force": [1e5, 0], "loads": [{"member": "dam", "position": 0.5, "point": [0, 1], "force": [1e5, 0]}]})";
+  r2.info.documents["peak_contact"] = R"({"time": 0.1, "total_force": [2e5, 0], "loads": [{"member": "dam", "position": 0.4, "point": [0, 0.8], "force": [1e5, 0]},
+      {"member": "dam", "position": 0.6, "point": [0, 1.2], "force": [1e5, 0]}]})";
   Limits L;
   L.concrete.punching_patch_width = 0.4, L.concrete.punching_patch_height = 0.4;
   const json run2 = design_run(r2, L, "hand.h5");
@@ -188,7 +189,9 @@ TEST(DesignEnvelope, DesignRunJsonCarriesPeaksChecksAndVerdict) {
     if (c["id"] == "concrete_punching") {
       found = true;
       EXPECT_NEAR(c["capacity"].get<double>(), 3.911479e6, 5.0);  // h = 1 m: test_checks' hand value
-      EXPECT_NEAR(c["demand"].get<double>(), 100e3, 1e-6);
+      EXPECT_NEAR(c["demand"].get<double>(), 200e3, 1e-6);  // the total contact force, at the loads' mean position
+      EXPECT_NEAR(c["s_m"].get<double>(), 1.0, 1e-12);
+      EXPECT_DOUBLE_EQ(c["time_s"].get<double>(), 0.1);
     }
   EXPECT_TRUE(found);
   // An unfinished run is refused.
@@ -212,6 +215,19 @@ TEST(DesignEnvelope, ComparisonReductionsInPercent) {
     }
   EXPECT_TRUE(found);
   EXPECT_EQ(doc["verdict"]["runs_judged"], "with_buffer");
+  // A failing bare run is the reference only beside its own buffered run: a run from elsewhere is judged.
+  json bare = without;
+  bare["verdict"]["failed"] = 1, bare["verdict"]["passed"] = false;
+  EXPECT_TRUE(design_document({with, bare}, Limits{}, "test")["verdict"]["passed"].get<bool>());
+  json other = bare;
+  other["results_file"] = "elsewhere/without_buffer/results.h5";
+  with["results_file"] = "out/with_buffer/results.h5";
+  const json d2 = design_document({with, other}, Limits{}, "test");
+  EXPECT_FALSE(d2["verdict"]["passed"].get<bool>());
+  EXPECT_TRUE(d2["comparison"].is_null());
+  json plain = bare;
+  plain["variant"] = "";
+  EXPECT_FALSE(design_document({with, plain}, Limits{}, "test")["verdict"]["passed"].get<bool>());
   EXPECT_EQ(doc["format"], "damimpact-design");
   EXPECT_EQ(doc["format_version"], kDesignFormatVersion);
 }
