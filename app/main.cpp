@@ -11,6 +11,9 @@
 #include <iostream>
 
 #include "design/design.hpp"
+#include "render/field.hpp"
+#include "render/render_main.hpp"
+#include "render/report.hpp"
 #include "engine/common/error.hpp"
 #include "engine/scenario/scenario.hpp"
 #include "engine/sim/run.hpp"
@@ -118,6 +121,21 @@ int main(int argc, char** argv) {
   chk->add_option("-o,--out", design_out, "where to write design.json (default: beside the results)");
   chk->add_flag("-q,--quiet", quiet, "no summary");
   run->add_option("--limits", limits_file, "limits JSON for the design checks (docs/design-checks.md)");
+  std::string render_dir, quantity = "von_mises";
+  CLI::App* ren = app.add_subcommand("render", "stress-field pictures and charts of a finished run -> OUT/images/ (off-screen, no display needed)");
+  ren->add_option("out", render_dir, "run folder (results.h5, or with_buffer/ and without_buffer/)")->required();
+  ren->add_option("--quantity", quantity, "particle colouring: von_mises | sigma_xx | sigma_yy | pressure")
+      ->check(CLI::IsMember({"von_mises", "sigma_xx", "sigma_yy", "pressure"}))->capture_default_str();
+  ren->add_flag("-q,--quiet", quiet, "no progress output");
+  std::string report_dir;
+  bool no_pdf = false;
+  CLI::App* rep = app.add_subcommand("report", "pictures and the HTML + PDF design report of a finished run: OUT/report.html, OUT/report.pdf");
+  rep->add_option("out", report_dir, "run folder (results.h5, or with_buffer/ and without_buffer/; design.json when checked)")->required();
+  rep->add_option("--quantity", quantity, "particle colouring: von_mises | sigma_xx | sigma_yy | pressure")
+      ->check(CLI::IsMember({"von_mises", "sigma_xx", "sigma_yy", "pressure"}))->capture_default_str();
+  rep->add_flag("--no-pdf", no_pdf, "HTML only");
+  rep->add_flag("-q,--quiet", quiet, "no progress output");
+  run->add_flag("--no-report", no_pdf, "skip the pictures and the report (simulation and checks only)");
   CLI::App* sch = app.add_subcommand("schema", "print the scenario key reference (Markdown, as in docs/scenario.md)");
   sch->add_flag("--markdown", markdown, "Markdown tables (default)");
 
@@ -134,7 +152,17 @@ int main(int argc, char** argv) {
       std::vector<std::string> written;
       simulate(file, out, threads, quiet, progress, false, false, &written);
       const std::string design = (std::filesystem::path(out) / "design.json").string();
-      return dmi::design::check_main(written, limits_file, false, design, quiet, DMI_VERSION);
+      const int verdict = dmi::design::check_main(written, limits_file, false, design, quiet, DMI_VERSION);
+      if (!no_pdf) dmi::render::report_main(out, {quantity, quiet, true, DMI_VERSION});
+      return verdict;
+    }
+    if (*ren) {
+      dmi::render::render_main(render_dir, {quantity, quiet});
+      return 0;
+    }
+    if (*rep) {
+      dmi::render::report_main(report_dir, {quantity, quiet, !no_pdf, DMI_VERSION});
+      return 0;
     }
     if (*chk) return dmi::design::check_main(check_paths, limits_file, json, design_out, quiet, DMI_VERSION);
     if (*val) return dmi::validate_main(cases, json, list, threads);

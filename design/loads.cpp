@@ -15,30 +15,54 @@ void add(ReactionPeaks& p, double fx, double fy, double m, double t) {
 
 }  // namespace
 
-Reactions reactions(const Results& r, const FrameInfo& f, const std::string& where) {
-  Reactions out;
-  out.total.name = "base total";
-  std::vector<const Series*> series;
+namespace {
+
+std::vector<const Series*> support_series(const Results& r, const FrameInfo& f, const std::string& where) {
+  std::vector<const Series*> out;
   for (const auto& s : f.supports) {
     const Series* p = r.find(s.series);
     if (!p || p->components.size() != 3) throw std::runtime_error(where + ": missing history " + s.series + " (Fx, Fy, M) of support '" + s.node + "'");
-    series.push_back(p);
-    out.supports.emplace_back();
-    out.supports.back().name = s.node;
-    out.about[0] += f.nodes[s.node_index][0] / f.supports.size();
-    out.about[1] += f.nodes[s.node_index][1] / f.supports.size();
+    out.push_back(p);
   }
-  for (std::size_t k = 0; k < r.time.size(); ++k) {
+  return out;
+}
+
+}  // namespace
+
+BaseHistory base_history(const Results& r, const FrameInfo& f, const std::string& where) {
+  const auto series = support_series(r, f, where);
+  BaseHistory h;
+  for (const auto& s : f.supports)
+    for (int d = 0; d < 2; ++d) h.about[d] += f.nodes[s.node_index][d] / f.supports.size();
+  for (std::size_t k = 0; k < r.time.size() && !series.empty(); ++k) {
     double fx = 0, fy = 0, m = 0;
     for (std::size_t i = 0; i < series.size(); ++i) {
       const double* v = &series[i]->data[3 * k];
-      add(out.supports[i], v[0], v[1], v[2], r.time[k]);
       const auto& x = f.nodes[f.supports[i].node_index];
       fx += v[0], fy += v[1];
-      m += v[2] + (x[0] - out.about[0]) * v[1] - (x[1] - out.about[1]) * v[0];
+      m += v[2] + (x[0] - h.about[0]) * v[1] - (x[1] - h.about[1]) * v[0];
     }
-    if (!series.empty()) add(out.total, fx, fy, m, r.time[k]);
+    h.fx.push_back(fx), h.fy.push_back(fy), h.m.push_back(m);
   }
+  return h;
+}
+
+Reactions reactions(const Results& r, const FrameInfo& f, const std::string& where) {
+  Reactions out;
+  out.total.name = "base total";
+  const auto series = support_series(r, f, where);
+  for (const auto& s : f.supports) {
+    out.supports.emplace_back();
+    out.supports.back().name = s.node;
+  }
+  for (std::size_t k = 0; k < r.time.size(); ++k)
+    for (std::size_t i = 0; i < series.size(); ++i) {
+      const double* v = &series[i]->data[3 * k];
+      add(out.supports[i], v[0], v[1], v[2], r.time[k]);
+    }
+  const BaseHistory h = base_history(r, f, where);
+  out.about = h.about;
+  for (std::size_t k = 0; k < h.fx.size(); ++k) add(out.total, h.fx[k], h.fy[k], h.m[k], r.time[k]);
   return out;
 }
 

@@ -25,6 +25,13 @@ struct Reactions {
 
 Reactions reactions(const Results& r, const FrameInfo& f, const std::string& where);
 
+// The base totals at every history sample (the same sums as Reactions::total).
+struct BaseHistory {
+  std::vector<double> fx, fy, m;      // N, N, N m
+  std::array<double, 2> about{0, 0};  // m
+};
+BaseHistory base_history(const Results& r, const FrameInfo& f, const std::string& where);
+
 // Contact force the material exerts on the members (frame/contact_force, interval means).
 struct Contact {
   bool present = false;

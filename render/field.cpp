@@ -178,16 +178,17 @@ vtkSmartPointer<vtkScalarBarActor> scalar_bar(vtkLookupTable* t, const std::stri
   bar->SetLookupTable(t);
   bar->SetTitle(title.c_str());
   bar->SetNumberOfLabels(6);
-  bar->SetLabelFormat("%-#6.3g");
+  bar->SetLabelFormat("%.3g");
   bar->SetUnconstrainedFontSize(true);
   style(bar->GetTitleTextProperty(), font, true);
   style(bar->GetLabelTextProperty(), font);
   bar->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  bar->SetPosition(x, 0.08);
-  bar->SetWidth(0.42);
+  bar->SetPosition(x, 0.06);
+  bar->SetWidth(0.45);
   bar->SetHeight(0.8);
   bar->SetBarRatio(0.35);
   bar->SetTextPositionToSucceedScalarBar();
+  bar->SetVerticalTitleSeparation(font / 2);
   return bar;
 }
 
@@ -231,8 +232,8 @@ FieldImage render_field(const std::vector<Panel>& panels, const FieldSpec& spec,
   auto win = Offscreen::instance().window(spec.width, spec.height);
   auto plut = lut(img.particles, spec.quantity != "von_mises");
   auto mlut = lut(img.members, true);
-  const int font = std::max(14, spec.height / 48);
-  const double right = 0.84, top = 0.9;  // panels left of the bars and below the title
+  const int font = std::max(16, spec.width / 54);  // ~9 pt when the picture is printed 180 mm wide
+  const double right = 0.76, top = 0.85;  // panels left of the bars and below the title
   // Shared view box: all panels' particles and nodes, so the panels align.
   double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
   for (const auto& p : panels) {
@@ -245,6 +246,7 @@ FieldImage render_field(const std::vector<Panel>& panels, const FieldSpec& spec,
   }
   const double size = std::max(hi[0] - lo[0], hi[1] - lo[1]);
   lo[1] -= 0.06 * size;  // room for the support symbols
+  hi[1] += 0.08 * size;  // and for the panel heading
   // Deformation scale: the largest member displacement drawn as ~4 % of the picture's extent.
   double umax = 0;
   std::vector<FrameState> states(panels.size());
@@ -305,22 +307,27 @@ FieldImage render_field(const std::vector<Panel>& panels, const FieldSpec& spec,
   top_ren->SetBackground(1, 1, 1);
   auto title = make<vtkTextActor>();
   std::string text = spec.title;
+  // Wrap a long title at its first ": " (scenario name, then what is shown).
+  if (text.size() * 0.55 * font > 0.97 * spec.width)
+    if (const auto k = text.find(": "); k != std::string::npos) text.replace(k, 2, ":\n");
   if (img.deform_scale > 0 && any_members) {
     char b[160];
-    std::snprintf(b, sizeof b, "\nmembers at true position, faces coloured by fibre stress; magenta: centre line deformed × %g", img.deform_scale);
+    std::snprintf(b, sizeof b, "\nmembers: faces coloured by fibre stress (tension +); magenta: centre line deformed × %g", img.deform_scale);
     text += b;
   }
   title->SetInput(text.c_str());
   style(title->GetTextProperty(), font, false);
   title->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  title->SetPosition(0.01, 0.12);
+  title->SetPosition(0.01, 0.08);
   top_ren->AddActor2D(title);
   win->AddRenderer(top_ren);
   auto bar_ren = make<vtkRenderer>();
   bar_ren->SetViewport(right, 0, 1, top);
   bar_ren->SetBackground(1, 1, 1);
-  bar_ren->AddActor2D(scalar_bar(plut, "particles:\n" + quantity_label(spec.quantity) + " [MPa]", 0.02, font));
-  if (any_members) bar_ren->AddActor2D(scalar_bar(mlut, "members:\nfibre stress [MPa]\n(tension +)", 0.52, font));
+  std::string q = quantity_label(spec.quantity);
+  if (q.size() > 10) q.replace(q.rfind(' '), 1, "\n");  // "von Mises\nstress" fits the bar's width
+  bar_ren->AddActor2D(scalar_bar(plut, "particles\n" + q + "\n[MPa]", 0.04, font));
+  if (any_members) bar_ren->AddActor2D(scalar_bar(mlut, "members\nfibre\nstress\n[MPa]", 0.54, font));
   win->AddRenderer(bar_ren);
   write_png(win, path);
   return img;

@@ -33,7 +33,7 @@ struct Panel {
 
 struct FieldSpec {
   std::string quantity = "von_mises";
-  int width = 2000, height = 1300;  // pixels; a panel pair doubles neither: panels share the width
+  int width = 2000, height = 1150;  // pixels; panels share the width
   std::string title;
   std::optional<Range> particle_range, member_range;  // fixed scales (a sequence or a comparison); else the data's
 };

@@ -417,7 +417,7 @@ void Builder::add_grid_walls_and_time() {
   const double sx = std::ceil((right - ox) / h) * h, sy = std::ceil((top - oy) / h) * h;
   out_["grid"] = json{{"origin", {clean(ox), clean(oy)}}, {"size", {clean(sx), clean(sy)}}, {"cell_size", h}};
   out_["analysis"] = json{{"dimension", 2}, {"plane", "strain"}, {"thickness", d_.width}, {"end_time", clean(end_time_)}};
-  out_["output"] = json{{"history_interval", clean(std::min(1e-4, end_time_ / 2000))}, {"snapshot_interval", clean(end_time_ / 20)}};
+  out_["output"] = json{{"history_interval", clean(std::min(1e-4, end_time_ / 2000))}, {"snapshot_interval", clean(end_time_ / 50)}};
   json walls = json::array();
   const double bed_mu = p_.debris ? p_.debris->bed_friction : 0.4;
   walls.push_back({{"name", "ground"}, {"type", "plane"}, {"point", {0.0, 0.0}}, {"normal", {std::sin(slope_), std::cos(slope_)}},

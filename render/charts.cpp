@@ -1,0 +1,99 @@
+#include "render/charts.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include <vtkAxis.h>
+#include <vtkChartLegend.h>
+#include <vtkChartXY.h>
+#include <vtkContextScene.h>
+#include <vtkContextView.h>
+#include <vtkDoubleArray.h>
+#include <vtkPen.h>
+#include <vtkPlot.h>
+#include <vtkRenderer.h>
+#include <vtkTable.h>
+#include <vtkTextProperty.h>
+
+#include "render/offscreen.hpp"
+
+namespace dmi::render {
+
+namespace {
+void font(vtkTextProperty* p, int size, bool bold = false) {
+  p->SetFontFamily(VTK_FONT_FILE);
+  p->SetFontFile(font_file());
+  p->SetFontSize(size);
+  p->SetBold(bold);
+  p->SetColor(0.1, 0.1, 0.1);
+}
+}  // namespace
+
+Curve limit_line(const std::string& label, double value, double a, double b, bool vertical) {
+  Curve c;
+  c.label = label;
+  c.color = {200, 30, 30};
+  c.dashed = true;
+  c.width = 2.5f;
+  if (vertical) c.x = {value, value}, c.y = {a, b};
+  else c.x = {a, b}, c.y = {value, value};
+  return c;
+}
+
+void render_chart(const ChartSpec& spec, const std::string& path) {
+  bool any = false;
+  for (const auto& c : spec.curves) any = any || c.x.size() >= 2;
+  if (!any) throw std::runtime_error(path + ": a chart needs a curve with two points");
+  auto win = Offscreen::instance().window(spec.width, spec.height);
+  auto view = vtkSmartPointer<vtkContextView>::New();
+  view->SetRenderWindow(win);
+  view->GetRenderer()->SetBackground(1, 1, 1);
+  auto chart = vtkSmartPointer<vtkChartXY>::New();
+  view->GetScene()->AddItem(chart);
+  chart->SetAutoSize(false);
+  chart->SetSize(vtkRectf(0, 8, spec.width, spec.height - 8));  // a margin: large fonts clip the bottom title otherwise
+  const int fs = std::max(18, spec.height / 30);
+  chart->SetTitle(spec.title);
+  font(chart->GetTitleProperties(), fs + 4, true);
+  vtkAxis* bottom = chart->GetAxis(vtkAxis::BOTTOM);
+  vtkAxis* left = chart->GetAxis(vtkAxis::LEFT);
+  bottom->SetTitle(spec.x_label), left->SetTitle(spec.y_label);
+  for (vtkAxis* a : {bottom, left}) {
+    font(a->GetTitleProperties(), fs, true);
+    font(a->GetLabelProperties(), fs);
+    a->GetGridPen()->SetColor(220, 220, 220);
+    a->SetTickLabelAlgorithm(vtkAxis::TICK_WILKINSON_EXTENDED);  // 1-2-5 steps, few ticks
+  }
+  std::vector<vtkSmartPointer<vtkTable>> tables;
+  for (const auto& c : spec.curves) {
+    if (c.x.size() < 2) continue;
+    auto t = vtkSmartPointer<vtkTable>::New();
+    auto x = vtkSmartPointer<vtkDoubleArray>::New();
+    auto y = vtkSmartPointer<vtkDoubleArray>::New();
+    x->SetName("x"), y->SetName(c.label.c_str());
+    for (std::size_t k = 0; k < c.x.size(); ++k) x->InsertNextValue(c.x[k]), y->InsertNextValue(c.y[k]);
+    t->AddColumn(x), t->AddColumn(y);
+    vtkPlot* p = chart->AddPlot(vtkChart::LINE);
+    p->SetInputData(t, 0, 1);
+    p->SetColor(c.color[0], c.color[1], c.color[2], 255);
+    p->SetWidth(c.width);
+    p->SetLabel(c.label);
+    if (c.dashed) p->GetPen()->SetLineType(vtkPen::DASH_LINE);
+    tables.push_back(t);
+  }
+  if (spec.x_max > 0) {
+    double lo = 1e300;
+    for (const auto& c : spec.curves)
+      for (double x : c.x) lo = std::min(lo, x);
+    bottom->SetBehavior(vtkAxis::FIXED);
+    bottom->SetRange(lo, spec.x_max);
+  }
+  chart->SetShowLegend(true);
+  font(chart->GetLegend()->GetLabelProperties(), fs);
+  chart->GetLegend()->SetInline(true);
+  chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
+  chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
+  write_png(win, path);
+}
+
+}  // namespace dmi::render

@@ -1,0 +1,30 @@
+// Time-history and envelope charts (VTK charts, off-screen): curves, limit lines, legend, unit-labelled axes.
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+namespace dmi::render {
+
+struct Curve {
+  std::string label;
+  std::vector<double> x, y;
+  std::array<unsigned char, 3> color{31, 119, 180};
+  bool dashed = false;
+  float width = 3.0f;
+};
+
+struct ChartSpec {
+  std::string title, x_label, y_label;
+  std::vector<Curve> curves;
+  int width = 1600, height = 900;
+  double x_max = 0;  // > 0: the x axis ends here (e.g. shortly after the contact)
+};
+
+// Writes the chart as PNG; throws std::runtime_error when no curve has two points.
+void render_chart(const ChartSpec& spec, const std::string& path);
+
+// A horizontal (or, with vertical = true, vertical) limit line across [a, b] as a dashed curve.
+Curve limit_line(const std::string& label, double value, double a, double b, bool vertical = false);
+
+}  // namespace dmi::render

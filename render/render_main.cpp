@@ -1,0 +1,305 @@
+#include "render/render_main.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "design/design.hpp"
+#include "design/loads.hpp"
+#include "engine/common/error.hpp"
+#include "engine/io/results_writer.hpp"
+#include "render/charts.hpp"
+#include "render/field.hpp"
+#include "render/frame_state.hpp"
+
+namespace dmi::render {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+std::vector<RunData> load_runs(const std::string& out_dir, json& design_doc) {
+  std::error_code ec;
+  const fs::path d = fs::is_directory(out_dir, ec) ? fs::path(out_dir) : fs::path(out_dir).parent_path();
+  std::vector<std::pair<std::string, fs::path>> files;
+  if (fs::exists(d / "results.h5")) files.push_back({"", d / "results.h5"});
+  else if (fs::exists(d / "with_buffer" / "results.h5") && fs::exists(d / "without_buffer" / "results.h5"))
+    files = {{"with_buffer", d / "with_buffer" / "results.h5"}, {"without_buffer", d / "without_buffer" / "results.h5"}};
+  else throw InputError(out_dir + ": no results.h5 (nor with_buffer/ and without_buffer/ holding one); run damimpact simulate or run first");
+  std::vector<RunData> runs;
+  for (const auto& [variant, f] : files) {
+    RunData r;
+    r.file = f.string();
+    try {
+      r.results = read_results(r.file, true);
+    } catch (const std::exception& e) {
+      throw InputError(e.what());
+    }
+    r.variant = r.results.info.variant.empty() ? variant : r.results.info.variant;
+    if (const auto it = r.results.info.documents.find("structure"); it != r.results.info.documents.end()) {
+      try {
+        r.frame = design::parse_structure(it->second, r.file, design::Limits{});
+      } catch (const std::exception& e) {
+        throw InputError(e.what());
+      }
+    }
+    runs.push_back(std::move(r));
+  }
+  // design.json beside the results, else the checks with default limits.
+  design_doc = nullptr;
+  if (fs::exists(d / "design.json")) {
+    std::ifstream in(d / "design.json");
+    try {
+      design_doc = json::parse(in);
+    } catch (const json::exception& e) {
+      throw InputError((d / "design.json").string() + ": invalid JSON (" + e.what() + "); re-run damimpact check");
+    }
+  }
+  std::vector<json> entries;
+  for (auto& r : runs) {
+    if (design_doc.is_object() && design_doc.contains("runs"))
+      for (const auto& e : design_doc["runs"])
+        if (e.value("variant", std::string()) == r.variant) r.design = e;
+    if (r.design.is_null()) {
+      try {
+        r.design = design::design_run(r.results, design::Limits{}, r.file);
+      } catch (const std::exception& e) {
+        throw InputError(e.what());
+      }
+    }
+    entries.push_back(r.design);
+  }
+  if (!design_doc.is_object()) design_doc = design::design_document(entries, design::Limits{}, "");
+  return runs;
+}
+
+namespace {
+
+std::size_t nearest_snapshot(const Results& r, double t) {
+  std::size_t best = 0;
+  for (std::size_t k = 0; k < r.snapshots.size(); ++k)
+    if (std::abs(r.snapshots[k].time - t) < std::abs(r.snapshots[best].time - t)) best = k;
+  return best;
+}
+
+double num(const json& j, std::initializer_list<const char*> path, double fallback) {
+  const json* p = &j;
+  for (const char* k : path) {
+    if (!p->is_object() || !p->contains(k) || (*p)[k].is_null()) return fallback;
+    p = &(*p)[k];
+  }
+  return p->is_number() ? p->get<double>() : fallback;
+}
+
+std::string ms(double t) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.1f ms", t * 1e3);
+  return b;
+}
+
+std::string nice_variant(const std::string& v) { return v == "with_buffer" ? "with buffer" : v == "without_buffer" ? "without buffer" : ""; }
+
+// The governing instant: the governing check's time, else the contact peak, else the end.
+double governing_time(const RunData& r) {
+  const double end = r.results.time.empty() ? 0.0 : r.results.time.back();
+  return num(r.design, {"verdict", "governing", "time_s"}, num(r.design, {"contact", "peak_time_s"}, end));
+}
+
+std::array<unsigned char, 3> colour(std::size_t i) {
+  static const std::array<unsigned char, 3> c[] = {{31, 119, 180}, {255, 127, 14}, {44, 160, 44}, {148, 103, 189}};
+  return c[i % 4];
+}
+
+// A member check with a time history to plot: the governing one when it is a member check, else the member check
+// with the largest utilisation.
+const json* plotted_check(const json& run) {
+  const json* best = nullptr;
+  for (const auto& c : run["checks"]) {
+    const std::string id = c["id"];
+    if (id.rfind("solid", 0) == 0 || id == "steel_section_class" || id == "concrete_punching") continue;
+    if (!best || c["utilisation"].get<double>() > (*best)["utilisation"].get<double>()) best = &c;
+  }
+  return best;
+}
+
+}  // namespace
+
+json render_runs(const std::vector<RunData>& runs, const json& design_doc, const std::string& image_dir, const RenderOptions& o) {
+  fs::create_directories(image_dir);
+  json manifest = json::array();
+  const auto t0 = std::chrono::steady_clock::now();
+  auto add = [&](const std::string& file, const std::string& kind, const std::string& variant, const std::string& caption, int w, int h,
+                 const FieldImage* f) {
+    json e{{"file", file}, {"kind", kind}, {"variant", variant}, {"caption", caption}, {"width", w}, {"height", h}};
+    if (f) {
+      e["particles_range_Pa"] = {f->particles.lo, f->particles.hi};
+      e["members_range_Pa"] = {f->members.lo, f->members.hi};
+      e["deform_scale"] = f->deform_scale;
+      e["quantity"] = o.quantity;
+    }
+    manifest.push_back(e);
+    if (!o.quiet) std::printf("rendered %s\n", (fs::path(image_dir) / file).string().c_str());
+  };
+  const std::string qlabel = quantity_label(o.quantity);
+  // Field pictures per run: the governing instant, then initial / contact start / peak / rebound on one scale.
+  for (const auto& r : runs) {
+    if (r.results.snapshots.empty()) continue;
+    const std::string tag = r.variant.empty() ? "run" : r.variant;
+    const std::string name = r.results.info.scenario_name;
+    const double tg = governing_time(r);
+    const std::size_t sg = nearest_snapshot(r.results, tg);
+    const design::FrameInfo* fr = r.frame ? &*r.frame : nullptr;
+    Panel p{&r.results, fr, sg, "t = " + ms(r.results.snapshots[sg].time)};
+    FieldSpec spec;
+    spec.quantity = o.quantity;
+    const json& g = r.design["verdict"]["governing"];
+    spec.title = name + ": " + qlabel + " near the governing instant (" + ms(tg) + (g.is_null() ? "" : ", " + g["title"].get<std::string>()) + ")";
+    const std::string f1 = "field_" + tag + "_governing.png";
+    const FieldImage gi = render_field({p}, spec, (fs::path(image_dir) / f1).string());
+    add(f1, "field_governing", r.variant, spec.title + "; picture at the nearest snapshot, t = " + ms(r.results.snapshots[sg].time), gi.width, gi.height, &gi);
+    // The sequence: initial state, contact start, contact peak, rebound (end of the pulse).
+    const double t_peak = num(r.design, {"contact", "peak_time_s"}, tg);
+    const double t_start = num(r.design, {"contact", "pulse", "start_s"}, 0.0), t_end = num(r.design, {"contact", "pulse", "end_s"}, t_peak);
+    std::vector<std::pair<std::string, std::size_t>> seq = {{"initial state", 0},
+                                                            {"contact start", nearest_snapshot(r.results, t_start)},
+                                                            {"contact peak", nearest_snapshot(r.results, t_peak)},
+                                                            {"rebound", nearest_snapshot(r.results, t_end + 0.5 * (t_end - t_start))}};
+    std::vector<Panel> all;
+    for (const auto& [what, s] : seq) all.push_back({&r.results, fr, s, ""});
+    FieldSpec sspec = spec;
+    sspec.particle_range = particle_range(all, o.quantity);
+    sspec.member_range = member_range(all);
+    std::set<std::size_t> done;
+    int k = 0;
+    for (const auto& [what, s] : seq) {
+      if (!done.insert(s).second) continue;
+      sspec.title = name + ": " + qlabel + ", " + what + " (t = " + ms(r.results.snapshots[s].time) + "), one colour scale for the sequence";
+      const std::string f = "field_" + tag + "_seq" + std::to_string(k++) + ".png";
+      const FieldImage si = render_field({{&r.results, fr, s, what + ", t = " + ms(r.results.snapshots[s].time)}}, sspec, (fs::path(image_dir) / f).string());
+      add(f, "field_sequence", r.variant, sspec.title, si.width, si.height, &si);
+    }
+  }
+  // With vs without buffer side by side, one colour scale.
+  if (runs.size() == 2 && !runs[0].results.snapshots.empty() && !runs[1].results.snapshots.empty()) {
+    std::vector<Panel> panels;
+    for (const auto& r : runs) {
+      const std::size_t s = nearest_snapshot(r.results, governing_time(r));
+      panels.push_back({&r.results, r.frame ? &*r.frame : nullptr, s, nice_variant(r.variant) + ", t = " + ms(r.results.snapshots[s].time)});
+    }
+    FieldSpec spec;
+    spec.quantity = o.quantity;
+    spec.width = 2400, spec.height = 1100;
+    std::string name = runs[0].results.info.scenario_name;
+    if (const auto k = name.rfind(" (with buffer)"); k != std::string::npos && k + 14 == name.size()) name.erase(k);
+    spec.title = name + ": " + qlabel + " near each run's governing instant, one colour scale";
+    const FieldImage ci = render_field(panels, spec, (fs::path(image_dir) / "field_comparison.png").string());
+    add("field_comparison.png", "field_comparison", "", spec.title, ci.width, ci.height, &ci);
+  }
+  // Charts: every run overlaid (the bare run dashed).
+  auto overlay = [&](const std::string& file, const std::string& title, const std::string& ylabel, auto&& series_of, double scale,
+                     std::vector<Curve> extra = {}, double x_max = 0) {
+    ChartSpec c;
+    c.x_max = x_max;
+    c.title = title, c.x_label = "time [ms]", c.y_label = ylabel;
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      Curve cv;
+      cv.label = runs[i].variant.empty() ? "simulation" : nice_variant(runs[i].variant);
+      cv.color = colour(i);
+      cv.dashed = runs[i].variant == "without_buffer";
+      const std::vector<double> y = series_of(runs[i]);
+      if (y.size() != runs[i].results.time.size()) continue;
+      for (std::size_t k = 0; k < y.size(); ++k) cv.x.push_back(runs[i].results.time[k] * 1e3), cv.y.push_back(y[k] * scale);
+      c.curves.push_back(cv);
+    }
+    for (auto& e : extra) c.curves.push_back(e);
+    if (c.curves.empty()) return;
+    render_chart(c, (fs::path(image_dir) / file).string());
+    add(file, "chart", "", title, c.width, c.height, nullptr);
+  };
+  const bool frames = std::all_of(runs.begin(), runs.end(), [](const RunData& r) { return r.frame && !r.frame->supports.empty(); });
+  if (frames) {
+    // The contact chart ends a pulse length after the last run's pulse (in ms).
+    double contact_end = 0;
+    for (const auto& r : runs) {
+      const double a = num(r.design, {"contact", "pulse", "start_s"}, 0), b = num(r.design, {"contact", "pulse", "end_s"}, 0);
+      contact_end = std::max(contact_end, (b + std::max(b - a, 0.2 * b)) * 1e3);
+    }
+    if (contact_end >= runs[0].results.time.back() * 1e3) contact_end = 0;
+    overlay("chart_contact_force.png", "contact force on the dam", "force [kN]", [](const RunData& r) {
+      std::vector<double> y;
+      if (const Series* s = r.results.find("frame/contact_force"))
+        for (std::size_t k = 0; k < s->samples(); ++k) y.push_back(std::hypot(s->data[2 * k], s->data[2 * k + 1]));
+      return y;
+    }, 1e-3, {}, contact_end);
+    overlay("chart_base_shear.png", "base shear (sum of the support forces Fx)", "shear [kN]",
+            [](const RunData& r) { return design::base_history(r.results, *r.frame, r.file).fx; }, 1e-3);
+    overlay("chart_base_moment.png", "base moment (about the centroid of the supports)", "moment [kN m]",
+            [](const RunData& r) { return design::base_history(r.results, *r.frame, r.file).m; }, 1e-3);
+    // The governing member check's demand at its station, with its capacity as a line.
+    if (const json* c = plotted_check(runs[0].design)) {
+      const std::string unit = (*c)["unit"];
+      const double scale = unit == "Pa" ? 1e-6 : unit == "N" ? 1e-3 : 1.0;
+      const std::string ul = unit == "Pa" ? "MPa" : unit == "N" ? "kN" : "-";
+      const std::string member = (*c)["member"], id = (*c)["id"];
+      const double pos = (*c)["position"].get<double>(), tmax = runs[0].results.time.back() * 1e3;
+      design::Limits L;  // the capacity line is the check's own; the demand needs only the shear option
+      if (design_doc.contains("limits") && design_doc["limits"]["concrete"]["shear_strength_Pa"].is_number())
+        L.concrete.shear_strength = design_doc["limits"]["concrete"]["shear_strength_Pa"].get<double>();
+      overlay("chart_governing_demand.png", (*c)["title"].get<std::string>() + ", " + member + " at s = " + std::to_string((*c)["s_m"].get<double>()).substr(0, 4) + " m",
+              (*c)["title"].get<std::string>() + " [" + ul + "]",
+              [&](const RunData& r) { return r.frame ? demand_history(r.results, *r.frame, member, pos, id, L) : std::vector<double>{}; }, scale,
+              {limit_line("capacity " + std::to_string((*c)["capacity"].get<double>() * scale).substr(0, 5) + " " + ul, (*c)["capacity"].get<double>() * scale, 0, tmax)});
+    }
+    // Stress envelope along the most utilised member (the dam's height for a concrete dam).
+    if (const json* c = plotted_check(runs[0].design)) {
+      const std::string member = (*c)["member"];
+      ChartSpec e;
+      e.title = "fibre stress envelope along " + member;
+      e.x_label = "stress [MPa] (tension +)", e.y_label = "distance from the member start [m]";
+      double smax = 0;
+      for (std::size_t i = 0; i < runs.size(); ++i)
+        for (const auto& m : runs[i].design["members"]) {
+          if (m["name"] != member) continue;
+          Curve t, cpr;
+          t.label = "max tension" + (runs[i].variant.empty() ? "" : ", " + nice_variant(runs[i].variant));
+          cpr.label = "max compression" + (runs[i].variant.empty() ? "" : ", " + nice_variant(runs[i].variant));
+          t.color = cpr.color = colour(i);
+          t.dashed = cpr.dashed = runs[i].variant == "without_buffer";
+          cpr.width = 2.0f;
+          for (const auto& s : m["stations"]) {
+            t.x.push_back(num(s, {"sigma_tension_max_Pa", "value"}, 0.0) * 1e-6), t.y.push_back(s["s_m"].get<double>());
+            cpr.x.push_back(num(s, {"sigma_compression_min_Pa", "value"}, 0.0) * 1e-6), cpr.y.push_back(s["s_m"].get<double>());
+            smax = std::max(smax, s["s_m"].get<double>());
+          }
+          e.curves.push_back(t), e.curves.push_back(cpr);
+        }
+      if ((*c)["material"] == "concrete" && design_doc.contains("limits")) {
+        const json& lc = design_doc["limits"]["concrete"];
+        const double ft = lc["phi_flexure"].get<double>() * lc["tensile_strength_Pa"].get<double>() * 1e-6;
+        e.curves.push_back(limit_line("tension limit", ft, 0, smax, true));
+      }
+      if (!e.curves.empty()) {
+        render_chart(e, (fs::path(image_dir) / "chart_envelope.png").string());
+        add("chart_envelope.png", "chart", "", e.title, e.width, e.height, nullptr);
+      }
+    }
+  }
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  json out{{"images", manifest}, {"quantity", o.quantity}, {"render_seconds", secs}};
+  std::ofstream(fs::path(image_dir) / "images.json") << out.dump(1) << "\n";
+  return out;
+}
+
+json render_main(const std::string& out_dir, const RenderOptions& o) {
+  json design_doc;
+  const std::vector<RunData> runs = load_runs(out_dir, design_doc);
+  std::error_code ec;
+  const fs::path d = fs::is_directory(out_dir, ec) ? fs::path(out_dir) : fs::path(out_dir).parent_path();
+  return render_runs(runs, design_doc, (d / "images").string(), o);
+}
+
+}  // namespace dmi::render

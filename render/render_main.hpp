@@ -1,0 +1,37 @@
+// `damimpact render OUT/`: the pictures of a finished run (or a with/without-buffer comparison) into OUT/images/,
+// with a manifest OUT/images/images.json (file, kind, title, caption, size, colour ranges) the report reads.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "design/members.hpp"
+#include "engine/io/results.hpp"
+
+namespace dmi::render {
+
+// One run as the pictures and the report see it.
+struct RunData {
+  std::string variant, file;             // "" | with_buffer | without_buffer; the results.h5 path
+  Results results;                       // with snapshots
+  nlohmann::json design;                 // its entry of design.json "runs"
+  std::optional<design::FrameInfo> frame;
+};
+
+// The runs of OUT (OUT/results.h5, or OUT/with_buffer and OUT/without_buffer) and design.json (OUT/design.json when
+// present, else computed with the default limits). Throws dmi::InputError naming the path.
+std::vector<RunData> load_runs(const std::string& out_dir, nlohmann::json& design_doc);
+
+struct RenderOptions {
+  std::string quantity = "von_mises";
+  bool quiet = false;
+};
+
+// Renders everything into OUT/images/ and returns the manifest (also written as images.json).
+nlohmann::json render_main(const std::string& out_dir, const RenderOptions& o);
+nlohmann::json render_runs(const std::vector<RunData>& runs, const nlohmann::json& design_doc, const std::string& image_dir,
+                           const RenderOptions& o);
+
+}  // namespace dmi::render

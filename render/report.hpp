@@ -1,0 +1,39 @@
+// The design report: HTML from the Mustache template templates/report.html.mustache (compiled in), filled from
+// design.json, the runs' metadata and the pictures (embedded, so the HTML is self-contained); PDF from the same
+// HTML with its print CSS through weasyprint, when weasyprint is installed.
+#pragma once
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "render/render_main.hpp"
+
+namespace dmi::render {
+
+struct ReportOptions {
+  std::string quantity = "von_mises";
+  bool quiet = false;
+  bool pdf = true;
+  std::string software_version;
+};
+
+struct ReportFiles {
+  std::string html, pdf;  // pdf "" when not made
+  std::string pdf_note;   // why not, or ""
+  double render_seconds = 0, html_seconds = 0, pdf_seconds = 0;
+};
+
+// `damimpact report OUT/`: renders the pictures (OUT/images/), writes OUT/report.html and OUT/report.pdf.
+ReportFiles report_main(const std::string& out_dir, const ReportOptions& o);
+
+// The template's data (a JSON object mirrored into Mustache data).
+nlohmann::json report_data(const std::vector<RunData>& runs, const nlohmann::json& design_doc, const nlohmann::json& manifest,
+                           const std::string& image_dir, const std::string& software_version);
+
+// Mustache rendering of the compiled-in template with `data` (CSS inserted as "css").
+std::string render_report_html(const nlohmann::json& data);
+
+std::string base64(const std::string& bytes);
+
+}  // namespace dmi::render

@@ -1,0 +1,344 @@
+// The report template's data: every value formatted for reading, units stated (templates/report.html.mustache).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <ctime>
+#include <functional>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "render/report.hpp"
+#include "render/sha256.hpp"
+
+namespace dmi::render {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string fmt(const char* f, double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+// Engineering units: Pa -> MPa, N -> kN, N m -> kN m, N s -> kN s, s -> ms.
+std::string eng(double v, const std::string& unit) {
+  if (unit == "Pa") return fmt("%.3g MPa", v / 1e6);
+  if (unit == "N") return fmt("%.4g kN", v / 1e3);
+  if (unit == "N m") return fmt("%.4g kN m", v / 1e3);
+  if (unit == "N s") return fmt("%.4g kN s", v / 1e3);
+  if (unit == "s") return fmt("%.4g ms", v * 1e3);
+  return fmt("%.3g", v);
+}
+
+double num(const json& j, std::initializer_list<const char*> path, double fallback = NAN) {
+  const json* p = &j;
+  for (const char* k : path) {
+    if (!p->is_object() || !p->contains(k) || (*p)[k].is_null()) return fallback;
+    p = &(*p)[k];
+  }
+  return p->is_number() ? p->get<double>() : fallback;
+}
+
+std::string label(const RunData& r) {
+  return r.variant == "with_buffer" ? "with buffer" : r.variant == "without_buffer" ? "without buffer" : "simulation";
+}
+
+std::string where(const json& c) {
+  std::string s;
+  if (c["s_m"].is_number()) s = "s = " + fmt("%.2f", c["s_m"].get<double>()) + " m";
+  else if (c["member"].get<std::string>().rfind("solid", 0) == 0) s = "(" + fmt("%.2f", c["location_m"][0].get<double>()) + ", " +
+                                                                      fmt("%.2f", c["location_m"][1].get<double>()) + ") m";
+  if (c["time_s"].is_number()) s += (s.empty() ? "" : ", ") + std::string("t = ") + eng(c["time_s"].get<double>(), "s");
+  return s.empty() ? "—" : s;
+}
+
+json scenario_rows(const RunData& r) {
+  json rows = json::array();
+  auto row = [&](const std::string& k, const std::string& v) { rows.push_back({{"key", k}, {"value", v}}); };
+  const auto it = r.results.info.documents.find("design_basis");
+  if (it == r.results.info.documents.end()) {
+    row("bodies", std::to_string(r.results.info.body_names.size()));
+    if (r.frame) row("members", std::to_string(r.frame->members.size()));
+    return rows;
+  }
+  const json b = json::parse(it->second);
+  const json& dam = b["dam"];
+  const std::string type = dam.value("type", "");
+  row("dam", type == "concrete_gravity" ? "concrete gravity check dam" : type == "steel_open" ? "steel open check dam (pipe frame)" : type);
+  row("height", fmt("%.3g m", num(dam, {"height_m"})));
+  row("width represented (out of plane)", fmt("%.3g m", num(dam, {"width_m"})));
+  if (type == "concrete_gravity")
+    row("crest / base thickness", fmt("%.3g m", num(dam, {"crest_thickness_m"})) + " / " + fmt("%.3g m", num(dam, {"base_thickness_m"})));
+  else
+    row("column pipe", fmt("D %.3g m", num(dam, {"column_diameter_m"})) + fmt(", t %.3g m", num(dam, {"column_wall_thickness_m"})));
+  row("dam material", fmt("E %.3g GPa", num(dam, {"youngs_modulus_Pa"}) / 1e9) + fmt(", ν %.2f", num(dam, {"poisson_ratio"})) +
+                          fmt(", ρ %.0f kg/m³", num(dam, {"density_kg_m3"})));
+  if (b.contains("boulder")) {
+    const json& k = b["boulder"];
+    row("boulder", fmt("%.4g kg", num(k, {"mass_kg"})) + fmt(" (sphere of %.3g m)", num(k, {"diameter_m"})) + fmt(" at %.3g m/s", num(k, {"speed_m_s"})) +
+                       fmt(", centre %.3g m above the base at impact", num(k, {"impact_height_m"})));
+    row("rock", fmt("E %.3g GPa", num(k, {"youngs_modulus_Pa"}) / 1e9) + fmt(", ν %.2f", num(k, {"poisson_ratio"})) +
+                    fmt(", ρ %.0f kg/m³", num(k, {"density_kg_m3"})));
+    row("impact energy", fmt("%.4g kJ", 0.5 * num(k, {"mass_kg"}) * std::pow(num(k, {"speed_m_s"}), 2) / 1e3));
+  }
+  if (b.contains("debris_surge")) {
+    const json& k = b["debris_surge"];
+    row("debris surge", fmt("depth %.3g m", num(k, {"depth_m"})) + fmt(", length %.3g m", num(k, {"length_m"})) + fmt(", front speed %.3g m/s", num(k, {"speed_m_s"})) +
+                            fmt(", ρ %.0f kg/m³", num(k, {"density_kg_m3"})) + fmt(", channel slope %.3g°", num(k, {"channel_slope_deg"})));
+  }
+  if (b.contains("tyre_buffer")) {
+    const json& k = b["tyre_buffer"];
+    row("tyre buffer", k.value("type", "") + fmt(", %.3g m thick", num(k, {"thickness_m"})) + fmt(", from %.3g m", num(k, {"bottom_m"})) +
+                           fmt(" to %.3g m", num(k, {"top_m"})) + fmt(", effective E %.3g MPa", num(k, {"youngs_modulus_Pa"}) / 1e6));
+  }
+  return rows;
+}
+
+json materials(const RunData& r) {
+  json out = json::array();
+  const std::string text = r.results.info.scenario_expanded_json.empty() ? r.results.info.scenario_json : r.results.info.scenario_expanded_json;
+  json s;
+  try {
+    s = json::parse(text);
+  } catch (const json::exception&) {
+    return out;
+  }
+  for (const auto& m : s.value("materials", json::array())) {
+    std::string other;
+    for (auto it = m.begin(); it != m.end(); ++it) {
+      const std::string k = it.key();
+      if (k == "name" || k == "model" || k == "density" || k == "youngs_modulus" || k == "poisson_ratio") continue;
+      other += (other.empty() ? "" : ", ") + k + " " + (it.value().is_number() ? fmt("%.4g", it.value().get<double>()) : it.value().dump());
+    }
+    out.push_back({{"name", m.value("name", "")}, {"model", m.value("model", "")}, {"density", fmt("%.0f", m.value("density", 0.0))},
+                   {"E", m.contains("youngs_modulus") ? fmt("%.4g", m["youngs_modulus"].get<double>() / 1e6) : "—"},
+                   {"nu", m.contains("poisson_ratio") ? fmt("%.3g", m["poisson_ratio"].get<double>()) : "—"}, {"other", other}});
+  }
+  return out;
+}
+
+// Rows of a per-run table: key, then one value per run.
+json per_run_rows(const std::vector<RunData>& runs, const std::vector<std::pair<std::string, std::function<std::string(const RunData&)>>>& rows) {
+  json out = json::array();
+  for (const auto& [k, f] : rows) {
+    json v = json::array();
+    for (const auto& r : runs) v.push_back(f(r));
+    out.push_back({{"key", k}, {"values", v}});
+  }
+  return out;
+}
+
+double series_max(const Results& r, const char* path, bool absolute) {
+  const Series* s = r.find(path);
+  double m = -1e300;
+  if (!s) return NAN;
+  for (double v : s->data) m = std::max(m, absolute ? std::abs(v) : v);
+  return m;
+}
+
+double reference_energy(const Results& r) {  // the largest kinetic + strain energy in the system (J)
+  double e = 0;
+  for (std::size_t k = 0; k < r.time.size(); ++k) {
+    double t = 0;
+    for (const char* p : {"energy/kinetic", "energy/strain", "energy/frame_kinetic", "energy/frame_strain"})
+      if (const Series* s = r.find(p)) t += s->data[k];
+    e = std::max(e, t);
+  }
+  return e;
+}
+
+bool all_finite(const Results& r) {
+  for (const auto& s : r.series)
+    for (double v : s.data)
+      if (!std::isfinite(v)) return false;
+  return true;
+}
+
+}  // namespace
+
+json report_data(const std::vector<RunData>& runs, const json& design_doc, const json& manifest, const std::string& image_dir,
+                 const std::string& software_version) {
+  const RunData& first = runs.front();
+  json d;
+  std::string name = first.results.info.scenario_name;
+  for (const char* suffix : {" (with buffer)", " (without buffer)"})
+    if (name.size() > std::strlen(suffix) && name.compare(name.size() - std::strlen(suffix), std::string::npos, suffix) == 0)
+      name.erase(name.size() - std::strlen(suffix));
+  d["scenario_name"] = name;
+  try {
+    d["description"] = json::parse(first.results.info.scenario_json).value("description", "");
+  } catch (const json::exception&) {
+    d["description"] = "";
+  }
+  d["software_version"] = software_version.empty() ? first.results.info.software_version : software_version;
+  d["input_file"] = first.results.info.scenario_file.empty() ? "(not recorded)" : first.results.info.scenario_file;
+  d["input_sha256"] = sha256_hex(first.results.info.scenario_json);
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  char when[64];
+  std::strftime(when, sizeof when, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  d["generated"] = when;
+  // Verdict.
+  const json& v = design_doc["verdict"];
+  const std::string status = v.value("status", "no_checks");
+  d["verdict_class"] = status == "pass" ? "pass" : status == "fail" ? "fail" : "none";
+  d["verdict_word"] = status == "pass" ? "PASS" : status == "fail" ? "FAIL" : "NO CHECKS";
+  std::string vt = std::to_string(v.value("failed", 0)) + " of " + std::to_string(v.value("checks", 0)) + " checks failed (judged: " +
+                   v.value("runs_judged", std::string()) + ").";
+  if (v.contains("governing") && v["governing"].is_object()) {
+    const json& g = v["governing"];
+    vt += " Governing: " + g["title"].get<std::string>() + (g["member"].get<std::string>().empty() ? "" : " in " + g["member"].get<std::string>()) +
+          ", utilisation " + fmt("%.2f", g["utilisation"].get<double>()) + " (" + eng(g["demand"], g["unit"]) + " against " + eng(g["capacity"], g["unit"]) +
+          "; " + where(g) + ").";
+  }
+  d["verdict_text"] = vt;
+  std::string rt, files;
+  for (const auto& r : runs) rt += (rt.empty() ? "" : ", ") + label(r), files += (files.empty() ? "" : ", ") + r.file;
+  d["runs_text"] = rt;
+  d["results_files"] = files;
+  d["scenario_rows"] = scenario_rows(first);
+  d["materials"] = materials(first);
+  // Model.
+  d["methods"] =
+      "Material Point Method for the boulder, debris and buffer (explicit, SEEDS.md A.1); beam-column finite elements for the dam "
+      "members, coupled to the particles by Lin & Yang's two-stage contact with Yang's equivalent force field (A.2-A.3); plane strain, "
+      "the out-of-plane width as given. Checks and estimates: docs/design-checks.md.";
+  json rl = json::array();
+  for (const auto& r : runs) {
+    bool reference = false;
+    if (r.variant == "without_buffer")
+      for (const auto& o : runs) reference = reference || o.variant == "with_buffer";
+    json checks = json::array();
+    for (const auto& c : r.design["checks"]) {
+      const double u = c["utilisation"];
+      checks.push_back({{"id", c["id"]}, {"title", c["title"]}, {"member", c["member"].get<std::string>().rfind("solid: ", 0) == 0 ? "solid FE, " + c["member"].get<std::string>().substr(7) : c["member"].get<std::string>()},
+                        {"demand", eng(c["demand"], c["unit"])}, {"capacity", eng(c["capacity"], c["unit"])}, {"util", fmt("%.2f", u)},
+                        {"bar_pct", fmt("%.0f", std::min(100.0, 100 * u))}, {"bar_class", u > 1 ? "over" : u > 0.8 ? "high" : "ok"},
+                        {"status", c["passed"].get<bool>() ? "pass" : "FAIL"}, {"status_class", c["passed"].get<bool>() ? "pass" : "fail"}, {"where", where(c)}});
+    }
+    std::string gov;
+    if (r.design["verdict"]["governing"].is_object()) {
+      const json& g = r.design["verdict"]["governing"];
+      gov = g["title"].get<std::string>() + (g["member"].get<std::string>().empty() ? "" : ", " + g["member"].get<std::string>()) + ": " +
+            eng(g["demand"], g["unit"]) + " against " + eng(g["capacity"], g["unit"]) + ", utilisation " + fmt("%.2f", g["utilisation"].get<double>()) +
+            " (" + where(g) + "). " + g["formula"].get<std::string>() + "; " + g["source"].get<std::string>() + ".";
+    }
+    rl.push_back({{"label", label(r)}, {"reference", reference}, {"checks", checks}, {"governing", gov}});
+  }
+  d["runs"] = rl;
+  d["checks_intro"] =
+      "Each check compares the largest demand over the whole run and along every member (or in the solid-FE model) with its factored "
+      "capacity; utilisation = demand / capacity. The bar turns orange above 0.8 and red above 1.";
+  std::set<std::string> seen;
+  json formulas = json::array();
+  for (const auto& r : runs)
+    for (const auto& c : r.design["checks"])
+      if (seen.insert(c["id"].get<std::string>() + c["title"].get<std::string>()).second)
+        formulas.push_back({{"title", c["title"]}, {"formula", c["formula"]}, {"source", c["source"]}});
+  d["formulas"] = formulas;
+  d["model_rows"] = per_run_rows(runs, {
+      {"cell size", [](const RunData& r) { return fmt("%.3g m", r.results.info.numbers.count("cell_size") ? r.results.info.numbers.at("cell_size") : NAN); }},
+      {"particles", [](const RunData& r) { return fmt("%.0f", r.results.info.numbers.count("particles") ? r.results.info.numbers.at("particles") : NAN); }},
+      {"members / elements", [](const RunData& r) { return r.frame ? std::to_string(r.frame->members.size()) + " / " + std::to_string(r.frame->elements.size()) : std::string("—"); }},
+      {"shape functions, transfer, stress update", [](const RunData& r) {
+         const auto& s = r.results.info.strings;
+         auto g = [&](const char* k) { return s.count(k) ? s.at(k) : std::string("?"); };
+         return g("shape_function") + ", " + g("transfer") + ", " + g("stress_update");
+       }},
+      {"simulated time", [](const RunData& r) { return r.results.time.empty() ? std::string("—") : eng(r.results.time.back(), "s"); }},
+      {"time steps", [](const RunData& r) { return fmt("%.0f", r.results.info.numbers.count("steps") ? r.results.info.numbers.at("steps") : NAN); }},
+      {"time step min / max", [](const RunData& r) {
+         const auto& n = r.results.info.numbers;
+         return n.count("dt_min") ? fmt("%.3g", n.at("dt_min") * 1e6) + " / " + fmt("%.3g µs", n.at("dt_max") * 1e6) : std::string("—");
+       }},
+      {"wall time", [](const RunData& r) { return fmt("%.1f s", r.results.info.numbers.count("wall_seconds") ? r.results.info.numbers.at("wall_seconds") : NAN); }},
+      {"threads", [](const RunData& r) { return fmt("%.0f", r.results.info.numbers.count("threads") ? r.results.info.numbers.at("threads") : NAN); }}});
+  // Comparison.
+  d["has_comparison"] = design_doc["comparison"].is_object();
+  json cmp = json::array();
+  if (d["has_comparison"].get<bool>()) {
+    for (const auto& q : design_doc["comparison"]["quantities"]) {
+      const double red = num(q, {"reduction_percent"});
+      cmp.push_back({{"title", q["title"]}, {"with", eng(q["with_buffer"], q["unit"])}, {"without", eng(q["without_buffer"], q["unit"])},
+                     {"reduction", std::isnan(red) ? "—" : fmt("%.0f %%", red)}, {"sign_class", red >= 0 ? "reduced" : "increased"}});
+    }
+    d["comparison_note"] = design_doc["comparison"].value("note", "");
+  }
+  d["comparison"] = cmp;
+  int section = d["has_comparison"].get<bool>() ? 5 : 4;
+  d["figures_number"] = std::to_string(section++);
+  d["estimates_number"] = std::to_string(section++);
+  d["health_number"] = std::to_string(section++);
+  d["software_number"] = std::to_string(section++);
+  // Figures, embedded: the comparison, the governing pictures, the charts, then the sequences.
+  json figs = json::array();
+  int n = 1;
+  for (const char* kind : {"field_comparison", "field_governing", "chart", "field_sequence"})
+    for (const auto& img : manifest.value("images", json::array())) {
+      if (img["kind"] != kind) continue;
+      std::ifstream in(fs::path(image_dir) / img["file"].get<std::string>(), std::ios::binary);
+      std::stringstream ss;
+      ss << in.rdbuf();
+      std::string caption = img["caption"];
+      if (img.contains("deform_scale") && img["deform_scale"].get<double>() > 0) caption += fmt("; members' centre line deformed × %g", img["deform_scale"].get<double>());
+      figs.push_back({{"n", std::to_string(n++)}, {"kind", img["kind"]}, {"caption", caption}, {"src", "data:image/png;base64," + base64(ss.str())}});
+    }
+  d["figures"] = figs;
+  d["no_figures_reason"] = manifest.value("error", std::string("the runs have no snapshots or members"));
+  // Estimates.
+  json est = json::array();
+  for (const auto& r : runs)
+    for (const auto& e : r.design["estimates"])
+      est.push_back({{"run", label(r)}, {"title", e["title"]}, {"formula", e["formula"]}, {"value", eng(e["value_N"], "N")},
+                     {"simulated", eng(e["simulated_N"], "N") + " (" + (e["compare_to"] == "peak_base_shear" ? std::string("base shear") : std::string("contact")) + ")"},
+                     {"ratio", fmt("%.2f", e["ratio"].get<double>())}, {"source", e["source"]}});
+  d["estimates"] = est;
+  d["estimates_intro"] =
+      "Simple design-practice formulas beside the simulation, as a sanity band (not checks): ratio = estimate / simulated. The 2D model "
+      "strikes with a cylinder of the boulder's mass, while Hertz assumes a sphere.";
+  // Health.
+  d["health_intro"] =
+      "Energy balance error = kinetic + strain (+ frame) − work of gravity and walls − initial energy; member contact is internal, so "
+      "its losses show as a negative error. Reference: the largest kinetic + strain energy of the run.";
+  d["health_rows"] = per_run_rows(runs, {
+      {"status", [](const RunData& r) { return r.results.complete ? std::string("complete") : std::string("incomplete"); }},
+      {"non-finite values in the histories", [](const RunData& r) { return all_finite(r.results) ? std::string("none") : std::string("FOUND"); }},
+      {"reference energy", [](const RunData& r) { return fmt("%.4g kJ", reference_energy(r.results) / 1e3); }},
+      {"largest energy created", [](const RunData& r) {
+         const double e = series_max(r.results, "energy/balance_error", false), ref = reference_energy(r.results);
+         return std::isnan(e) ? std::string("—") : fmt("%.3g J", std::max(0.0, e)) + fmt(" (%.2f %%)", 100 * std::max(0.0, e) / ref);
+       }},
+      {"largest |balance error|", [](const RunData& r) {
+         const double e = series_max(r.results, "energy/balance_error", true), ref = reference_energy(r.results);
+         return std::isnan(e) ? std::string("—") : fmt("%.3g J", e) + fmt(" (%.1f %%)", 100 * e / ref);
+       }},
+      {"energy dissipated by frame damping", [](const RunData& r) {
+         const Series* s = r.results.find("energy/frame_damping");
+         return s && !s->data.empty() ? fmt("%.4g J", s->data.back()) : std::string("—");
+       }},
+      {"contact projection iterations, max", [](const RunData& r) {
+         const auto& n = r.results.info.numbers;
+         return n.count("projection_iterations_max") ? fmt("%.0f", n.at("projection_iterations_max")) : std::string("—");
+       }}});
+  // Limits.
+  json lr = json::array();
+  if (design_doc.contains("limits")) {
+    const json& c = design_doc["limits"]["concrete"];
+    const json& s = design_doc["limits"]["steel"];
+    lr.push_back({{"key", "concrete f'c, f_t (rule)"}, {"value", eng(c["compressive_strength_Pa"], "Pa") + ", " + eng(c["tensile_strength_Pa"], "Pa") + " (" +
+                                                                     c["tensile_rule"].get<std::string>() + ")"}});
+    lr.push_back({{"key", "concrete φ flexure / compression / shear, α"},
+                  {"value", fmt("%.2f", c["phi_flexure"].get<double>()) + " / " + fmt("%.2f", c["phi_compression"].get<double>()) + " / " +
+                                fmt("%.2f", c["phi_shear"].get<double>()) + ", " + fmt("%.2f", c["compression_coefficient"].get<double>())}});
+    lr.push_back({{"key", "steel f_y, γ_M0"}, {"value", eng(s["yield_strength_Pa"], "Pa") + ", " + fmt("%.2f", s["gamma_M0"].get<double>())}});
+  }
+  d["limit_rows"] = lr;
+  return d;
+}
+
+}  // namespace dmi::render
