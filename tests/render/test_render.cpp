@@ -1,0 +1,164 @@
+// Off-screen pictures and the report, with no DISPLAY: right size, not blank, scalar bars on the data range, every
+// check in the HTML, the PDF's pages renderable, and the HTML still written without weasyprint.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+
+#include <vtkImageData.h>
+#include <vtkPNGReader.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnsignedCharArray.h>
+
+#include "design/design.hpp"
+#include "render/charts.hpp"
+#include "render/field.hpp"
+#include "render/render_main.hpp"
+#include "render/report.hpp"
+#include "render/sha256.hpp"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+struct Png {
+  int w = 0, h = 0;
+  std::size_t colours = 0;
+};
+
+Png read_png(const std::string& path) {
+  auto r = vtkSmartPointer<vtkPNGReader>::New();
+  r->SetFileName(path.c_str());
+  r->Update();
+  vtkImageData* img = r->GetOutput();
+  int dims[3];
+  img->GetDimensions(dims);
+  auto* px = vtkUnsignedCharArray::SafeDownCast(img->GetPointData()->GetScalars());
+  std::set<unsigned> seen;
+  const int nc = px ? px->GetNumberOfComponents() : 0;
+  for (vtkIdType i = 0; px && i < px->GetNumberOfTuples(); ++i) {
+    unsigned key = 0;
+    for (int c = 0; c < std::min(nc, 3); ++c) key = (key << 8) | px->GetValue(i * nc + c);
+    seen.insert(key);
+  }
+  return {dims[0], dims[1], seen.size()};
+}
+
+int sh(const std::string& cmd) {
+  const int rc = std::system(cmd.c_str());
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+}
+
+class Render : public ::testing::Test {
+ protected:
+  static fs::path dir;
+  static void SetUpTestSuite() {
+    unsetenv("DISPLAY");  // no X server, ever
+    dir = fs::temp_directory_path() / ("dmi_render_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    const std::string scenario = std::string(DMI_SOURCE_DIR) + "/tests/data/design/cantilever_self_weight.json";
+    ASSERT_EQ(sh(std::string(DMI_BINARY) + " simulate " + scenario + " -o " + dir.string() + " -q"), 0);
+    ASSERT_EQ(sh(std::string(DMI_BINARY) + " check " + dir.string() + " -q"), 0);
+  }
+  static void TearDownTestSuite() { fs::remove_all(dir); }
+};
+fs::path Render::dir;
+
+}  // namespace
+
+TEST(RenderBasics, Sha256AndBase64KnownVectors) {
+  // FIPS 180-4 examples.
+  EXPECT_EQ(dmi::render::sha256_hex("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+  EXPECT_EQ(dmi::render::sha256_hex(""), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+  EXPECT_EQ(dmi::render::sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"),
+            "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
+  // RFC 4648 section 10.
+  EXPECT_EQ(dmi::render::base64("f"), "Zg==");
+  EXPECT_EQ(dmi::render::base64("fo"), "Zm8=");
+  EXPECT_EQ(dmi::render::base64("foobar"), "Zm9vYmFy");
+}
+
+TEST_F(Render, FieldPictureHasTheSizeColoursAndTheDataRangeOnItsScalarBar) {
+  json doc;
+  const auto runs = dmi::render::load_runs(dir.string(), doc);
+  ASSERT_EQ(runs.size(), 1u);
+  ASSERT_TRUE(runs[0].frame.has_value());
+  const std::size_t snap = runs[0].results.snapshots.size() - 1;
+  dmi::render::FieldSpec spec;
+  spec.width = 1200, spec.height = 700, spec.title = "test";
+  for (const std::string q : {"von_mises", "sigma_yy"}) {
+    spec.quantity = q;
+    const fs::path png = dir / ("field_" + q + ".png");
+    const auto img = dmi::render::render_field({{&runs[0].results, &*runs[0].frame, snap, "t"}}, spec, png.string());
+    const Png p = read_png(png.string());
+    EXPECT_EQ(p.w, 1200);
+    EXPECT_EQ(p.h, 700);
+    EXPECT_GT(p.colours, 100u) << q;  // text, two colour bars, members, particles: far from blank
+    const auto field = dmi::render::particle_field(runs[0].results.snapshots[snap], q);
+    EXPECT_DOUBLE_EQ(img.particles.lo, *std::min_element(field.begin(), field.end()));
+    EXPECT_DOUBLE_EQ(img.particles.hi, *std::max_element(field.begin(), field.end()));
+    // The member bar spans +- the largest fibre stress: 981 kPa at the fixed end (static cantilever).
+    EXPECT_NEAR(img.members.hi, 981e3, 1.0);
+    EXPECT_DOUBLE_EQ(img.members.lo, -img.members.hi);
+    EXPECT_GT(img.deform_scale, 0.0);
+  }
+}
+
+TEST_F(Render, ChartIsDrawnAtItsSize) {
+  dmi::render::ChartSpec c;
+  c.title = "sine", c.x_label = "time [ms]", c.y_label = "force [kN]", c.width = 800, c.height = 500;
+  dmi::render::Curve s;
+  s.label = "sin";
+  for (int k = 0; k <= 100; ++k) s.x.push_back(k), s.y.push_back(std::sin(k / 10.0));
+  c.curves = {s, dmi::render::limit_line("limit", 0.8, 0, 100)};
+  const fs::path png = dir / "chart.png";
+  dmi::render::render_chart(c, png.string());
+  const Png p = read_png(png.string());
+  EXPECT_EQ(p.w, 800);
+  EXPECT_EQ(p.h, 500);
+  EXPECT_GT(p.colours, 20u);
+  EXPECT_THROW(dmi::render::render_chart({"empty", "x", "y", {}, 400, 300}, (dir / "empty.png").string()), std::runtime_error);
+}
+
+TEST_F(Render, ReportHoldsEveryCheckAndItsPdfPagesRender) {
+  const auto files = dmi::render::report_main(dir.string(), {"von_mises", true, true, "test"});
+  std::ifstream in(files.html);
+  const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::ifstream dj(dir / "design.json");
+  const json design = json::parse(dj);
+  std::size_t rows = 0;
+  for (std::size_t k = html.find("data-check-id="); k != std::string::npos; k = html.find("data-check-id=", k + 1)) ++rows;
+  ASSERT_EQ(rows, design["runs"][0]["checks"].size());
+  for (const auto& c : design["runs"][0]["checks"])
+    EXPECT_NE(html.find("data-check-id=\"" + c["id"].get<std::string>() + "\""), std::string::npos) << c["id"];
+  EXPECT_NE(html.find("data:image/png;base64,"), std::string::npos);  // self-contained
+  EXPECT_EQ(html.find("src=\"images/"), std::string::npos);
+  if (files.pdf.empty()) GTEST_SKIP() << files.pdf_note;  // weasyprint is optional
+  // pdftoppm renders every page; the report has at least the cover, the checks, figures, cross-checks.
+  const fs::path pages = dir / "pages";
+  fs::create_directories(pages);
+  ASSERT_EQ(sh("pdftoppm -r 20 -png " + files.pdf + " " + (pages / "p").string()), 0);
+  std::size_t n = 0;
+  for (const auto& e : fs::directory_iterator(pages)) n += e.path().extension() == ".png";
+  EXPECT_GE(n, 4u);
+  EXPECT_LE(n, 20u);
+}
+
+TEST_F(Render, WithoutWeasyprintTheHtmlIsStillWritten) {
+  const std::string path = std::getenv("PATH") ? std::getenv("PATH") : "";
+  setenv("PATH", "/nonexistent", 1);
+  const auto files = dmi::render::report_main(dir.string(), {"von_mises", true, true, "test"});
+  setenv("PATH", path.c_str(), 1);
+  EXPECT_TRUE(fs::exists(files.html));
+  EXPECT_TRUE(files.pdf.empty());
+  EXPECT_NE(files.pdf_note.find("weasyprint not found"), std::string::npos) << files.pdf_note;
+}
