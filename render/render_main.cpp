@@ -153,7 +153,8 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
     const double tg = governing_time(r);
     const std::size_t sg = nearest_snapshot(r.results, tg);
     const design::FrameInfo* fr = r.frame ? &*r.frame : nullptr;
-    Panel p{&r.results, fr, sg, "t = " + ms(r.results.snapshots[sg].time)};
+    const double ts = r.results.snapshots[sg].time;
+    Panel p{&r.results, fr, sg, "t = " + ms(ts) + (std::abs(ts - tg) > 1e-4 ? " (the snapshot nearest " + ms(tg) + ")" : "")};
     FieldSpec spec;
     spec.quantity = o.quantity;
     const json& g = r.design["verdict"]["governing"];
