@@ -1,6 +1,7 @@
 #include "render/charts.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include <vtkAxis.h>
@@ -20,6 +21,25 @@
 namespace dmi::render {
 
 namespace {
+
+// About `target` ticks at 1-2-5 x 10^k steps covering [lo, hi]; the axis range is rounded out to whole steps.
+void nice_axis(vtkAxis* a, double lo, double hi, int target = 6) {
+  if (!(hi > lo)) hi = lo + 1;
+  const double raw = (hi - lo) / target, p = std::pow(10.0, std::floor(std::log10(raw)));
+  double step = 10 * p;
+  for (double m : {1.0, 2.0, 5.0})
+    if (m * p >= raw) {
+      step = m * p;
+      break;
+    }
+  const double a0 = std::floor(lo / step + 1e-9) * step, a1 = std::ceil(hi / step - 1e-9) * step;
+  auto ticks = vtkSmartPointer<vtkDoubleArray>::New();
+  for (double t = a0; t <= a1 + 0.5 * step; t += step) ticks->InsertNextValue(std::abs(t) < 1e-12 * step ? 0.0 : t);
+  a->SetBehavior(vtkAxis::FIXED);
+  a->SetRange(a0, a1);
+  a->SetCustomTickPositions(ticks);
+}
+
 void font(vtkTextProperty* p, int size, bool bold = false) {
   p->SetFontFamily(VTK_FONT_FILE);
   p->SetFontFile(font_file());
@@ -51,7 +71,8 @@ void render_chart(const ChartSpec& spec, const std::string& path) {
   auto chart = vtkSmartPointer<vtkChartXY>::New();
   view->GetScene()->AddItem(chart);
   chart->SetAutoSize(false);
-  chart->SetSize(vtkRectf(0, 8, spec.width, spec.height - 8));  // a margin: large fonts clip the bottom title otherwise
+  // Margins: large fonts clip the bottom title, the top tick label and the last x label otherwise.
+  chart->SetSize(vtkRectf(0, 8, spec.width - 40, spec.height - 30));
   const int fs = std::max(18, spec.height / 30);
   chart->SetTitle(spec.title);
   font(chart->GetTitleProperties(), fs + 4, true);
@@ -62,7 +83,6 @@ void render_chart(const ChartSpec& spec, const std::string& path) {
     font(a->GetTitleProperties(), fs, true);
     font(a->GetLabelProperties(), fs);
     a->GetGridPen()->SetColor(220, 220, 220);
-    a->SetTickLabelAlgorithm(vtkAxis::TICK_WILKINSON_EXTENDED);  // 1-2-5 steps, few ticks
   }
   std::vector<vtkSmartPointer<vtkTable>> tables;
   for (const auto& c : spec.curves) {
@@ -81,13 +101,14 @@ void render_chart(const ChartSpec& spec, const std::string& path) {
     if (c.dashed) p->GetPen()->SetLineType(vtkPen::DASH_LINE);
     tables.push_back(t);
   }
-  if (spec.x_max > 0) {
-    double lo = 1e300;
-    for (const auto& c : spec.curves)
-      for (double x : c.x) lo = std::min(lo, x);
-    bottom->SetBehavior(vtkAxis::FIXED);
-    bottom->SetRange(lo, spec.x_max);
-  }
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  for (const auto& c : spec.curves)
+    for (std::size_t k = 0; k < c.x.size(); ++k) {
+      if (spec.x_max > 0 && c.x[k] > spec.x_max) continue;
+      x0 = std::min(x0, c.x[k]), x1 = std::max(x1, c.x[k]), y0 = std::min(y0, c.y[k]), y1 = std::max(y1, c.y[k]);
+    }
+  nice_axis(bottom, x0, x1, 8);
+  nice_axis(left, y0, y1, 6);
   chart->SetShowLegend(true);
   font(chart->GetLegend()->GetLabelProperties(), fs);
   chart->GetLegend()->SetInline(true);
