@@ -17,6 +17,7 @@
 #include "engine/common/error.hpp"
 #include "engine/scenario/scenario.hpp"
 #include "engine/sim/run.hpp"
+#include "engine/verify/bench.hpp"
 #include "engine/verify/validate.hpp"
 
 #ifndef DMI_VERSION
@@ -136,6 +137,12 @@ int main(int argc, char** argv) {
   rep->add_flag("--no-pdf", no_pdf, "HTML only");
   rep->add_flag("-q,--quiet", quiet, "no progress output");
   run->add_flag("--no-report", no_pdf, "skip the pictures and the report (simulation and checks only)");
+  std::vector<std::string> bench_cases;
+  bool quick = false;
+  CLI::App* bch = app.add_subcommand("bench", "performance figures (printed, not asserted): kernel throughput; docs/performance.md");
+  bch->add_option("cases", bench_cases, "cases (default: all): kernel");
+  bch->add_flag("--json", json, "print JSON instead of tables");
+  bch->add_flag("--quick", quick, "small problems (100 k particles), for a smoke test");
   CLI::App* sch = app.add_subcommand("schema", "print the scenario key reference (Markdown, as in docs/scenario.md)");
   sch->add_flag("--markdown", markdown, "Markdown tables (default)");
 
@@ -165,6 +172,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*chk) return dmi::design::check_main(check_paths, limits_file, json, design_out, quiet, DMI_VERSION);
+    if (*bch) return dmi::bench_main(bench_cases, json, quick);
     if (*val) return dmi::validate_main(cases, json, list, threads);
     if (*sch) {
       std::cout << dmi::scenario_reference_markdown();

@@ -1,0 +1,35 @@
+// `damimpact bench`: performance figures that are printed, never asserted (docs/performance.md).
+// Kernel throughput: a freely falling elastic block of N particles stepped in memory; per-step time is the
+// median over repeats of (time of S steps) / S after warm-up steps, so set-up and first-touch costs cancel.
+#pragma once
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace dmi {
+
+struct KernelBench {
+  std::string shape, transfer;
+  int threads = 1;
+  long particles = 0, active_nodes = 0;
+  double seconds_per_step = 0;   // median
+  double updates_per_second = 0; // particles / seconds_per_step
+  double spread = 0;             // (max - min) / median of the repeats
+  double bytes_per_particle = 0; // particle arrays (all fields, per particle)
+};
+
+struct BenchOptions {
+  long particles = 1000000;
+  int steps = 10, warmup = 3, repeats = 3;
+  std::vector<int> threads = {1, 2};
+  std::vector<std::string> shapes = {"linear", "gimp", "bspline2"}, transfers = {"flip", "apic"};
+};
+
+std::vector<KernelBench> kernel_bench(const BenchOptions& o, bool progress);
+nlohmann::json to_json(const KernelBench& b);
+
+// `damimpact bench [CASE...] [--json] [--quick]`; cases: kernel (default). Returns the exit code.
+int bench_main(const std::vector<std::string>& cases, bool json, bool quick);
+
+}  // namespace dmi
