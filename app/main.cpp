@@ -143,6 +143,12 @@ int main(int argc, char** argv) {
   bch->add_option("cases", bench_cases, "cases (default: all): kernel");
   bch->add_flag("--json", json, "print JSON instead of tables");
   bch->add_flag("--quick", quick, "small problems (100 k particles), for a smoke test");
+  dmi::BenchOptions bo;
+  bo.particles = 0, bo.shapes.clear(), bo.transfers.clear(), bo.threads.clear();
+  bch->add_option("--particles", bo.particles, "particles of the kernel block (default 1 M; --quick 100 k)");
+  bch->add_option("--shape", bo.shapes, "shape functions (default linear gimp bspline2)")->check(CLI::IsMember({"linear", "gimp", "bspline2"}));
+  bch->add_option("--transfer", bo.transfers, "transfers (default flip apic)")->check(CLI::IsMember({"flip", "apic"}));
+  bch->add_option("--threads", bo.threads, "thread counts (default 1 2)");
   CLI::App* sch = app.add_subcommand("schema", "print the scenario key reference (Markdown, as in docs/scenario.md)");
   sch->add_flag("--markdown", markdown, "Markdown tables (default)");
 
@@ -172,7 +178,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*chk) return dmi::design::check_main(check_paths, limits_file, json, design_out, quiet, DMI_VERSION);
-    if (*bch) return dmi::bench_main(bench_cases, json, quick);
+    if (*bch) return dmi::bench_main(bench_cases, json, quick, bo);
     if (*val) return dmi::validate_main(cases, json, list, threads);
     if (*sch) {
       std::cout << dmi::scenario_reference_markdown();

@@ -33,6 +33,7 @@ template <int D> class DruckerPrager final : public Material<D> {
   }
   double density() const override { return rho_; }
   double wave_speed() const override { return el_.wave_speed(rho_, plane_); }
+  void permute(const std::vector<Index>& perm) override { permute_array(power_, perm); }
   double dissipated() const override { return dissipated_; }
   void attach(const Particles<D>& p, Index, Index) override { power_.resize(p.size(), 0.0); }
 

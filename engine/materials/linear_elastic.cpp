@@ -26,6 +26,7 @@ template <int D> class LinearElastic final : public Material<D> {
   double density() const override { return rho_; }
   double wave_speed() const override { return el_.wave_speed(rho_, plane_); }
   double damping_time() const override { return beta_; }
+  void permute(const std::vector<Index>& perm) override { permute_array(elastic_, perm), permute_array(elastic_zz_, perm), permute_array(power_, perm); }
   double dissipated() const override { return dissipated_; }
   void attach(const Particles<D>& p, Index begin, Index end) override {
     if (beta_ <= 0) return;

@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "engine/mpm/particles.hpp"
 #include "engine/scenario/config.hpp"
@@ -31,7 +32,17 @@ template <int D> class Material {
   // Stiffness-proportional viscous time beta (s): the stress has a part beta C:D. It lowers the
   // explicit stable step to (2/omega)(sqrt(1 + zeta^2) - zeta), zeta = beta omega / 2.
   virtual double damping_time() const { return 0.0; }
+  // The solver reordered the particles: new[i] = old[perm[i]]; laws with per-particle arrays follow.
+  virtual void permute(const std::vector<Index>& /*perm*/) {}
 };
+
+// Reorders a per-particle array (new[i] = old[perm[i]]); arrays of another size are left alone.
+template <class T> void permute_array(std::vector<T>& v, const std::vector<Index>& perm) {
+  if (v.size() != perm.size()) return;
+  std::vector<T> o(v.size());
+  for (std::size_t i = 0; i < perm.size(); ++i) o[i] = v[perm[i]];
+  v.swap(o);
+}
 
 // Lamé constants from E and nu (3D / plane strain).
 struct Elastic {

@@ -24,6 +24,7 @@ template <int D> class NeoHookean final : public Material<D> {
   double density() const override { return rho_; }
   double wave_speed() const override { return el_.wave_speed(rho_, plane_); }
   double damping_time() const override { return beta_; }
+  void permute(const std::vector<Index>& perm) override { permute_array(power_, perm); }
   double dissipated() const override { return dissipated_; }
   void attach(const Particles<D>& p, Index, Index) override {
     if (beta_ > 0) power_.resize(p.size(), 0.0);

@@ -51,6 +51,7 @@ template <int D> class ViscousFluid final : public Material<D> {
   double density() const override { return rho_; }
   double wave_speed() const override { return std::sqrt(K_ / rho_); }
   double damping_time() const override { return (4.0 / 3.0) * max_viscosity() / K_; }
+  void permute(const std::vector<Index>& perm) override { permute_array(power_, perm); }
   double dissipated() const override { return dissipated_; }
   void attach(const Particles<D>& p, Index, Index) override { power_.resize(p.size(), 0.0); }
 

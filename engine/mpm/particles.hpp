@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "engine/common/types.hpp"
@@ -24,8 +25,23 @@ template <int D> struct Particles {
   std::vector<double> mass;       // kg
   std::vector<double> vol0, vol;  // initial and current volume (m^3)
   std::vector<int> body;          // body index
+  // The solver reorders particles by tile every few steps (locality): id[i] is particle i's index at creation,
+  // slot[k] the current index of the particle created k-th. Outputs and probes use creation order.
+  std::vector<Index> id, slot;
 
   std::size_t size() const { return x.size(); }
+
+  // new[i] = old[perm[i]] for every field; perm keeps each body inside its index range.
+  void permute(const std::vector<Index>& perm) {
+    auto apply = [&](auto& v) {
+      std::remove_reference_t<decltype(v)> o(v.size());
+      for (std::size_t i = 0; i < perm.size(); ++i) o[i] = v[perm[i]];
+      v.swap(o);
+    };
+    apply(x), apply(x0), apply(v), apply(half_size), apply(F), apply(L), apply(C), apply(stress), apply(stress_zz);
+    apply(mass), apply(vol0), apply(vol), apply(body), apply(id);
+    for (std::size_t i = 0; i < id.size(); ++i) slot[id[i]] = static_cast<Index>(i);
+  }
 
   // Appends one particle at rest state; fields that a material must set start as NaN-free zeros.
   void push(const Vec<D>& pos, const Vec<D>& vel, const Vec<D>& half, double m, double volume, int b) {
@@ -42,6 +58,8 @@ template <int D> struct Particles {
     vol0.push_back(volume);
     vol.push_back(volume);
     body.push_back(b);
+    id.push_back(static_cast<Index>(slot.size()));
+    slot.push_back(static_cast<Index>(slot.size()));
   }
 };
 

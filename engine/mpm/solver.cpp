@@ -26,6 +26,7 @@ template <int D> Solver<D>::Solver(Scene<D> scene) : scene_(std::move(scene)) {
 
 // The step as named phases (DESIGN.md "engine/").
 template <int D> void Solver<D>::step(double dt) {
+  if (steps_ % kSortInterval == 1) sort_particles();  // locality for the scatter (from the second step on)
   scene_.grid->bin(scene_.particles.x);      // tiles, active nodes, zeroed fields
   particles_to_grid();                         // m_i, p_i, f_i = f_int + f_ext (eqs. 5-8)
   member_boundary_forces(dt);                  // stage 1: members as velocity boundaries, reactions on the frame
@@ -38,6 +39,21 @@ template <int D> void Solver<D>::step(double dt) {
 }
 
 template <int D> void Solver<D>::particles_to_grid() { kernels_->p2g(scene_, false); }
+
+// Reorders each body's particles into the tile order of the last binning (a stable counting sort by tile,
+// so particles of one tile sit together in memory): the scatter then reads the particle arrays almost
+// sequentially instead of jumping across them (perf: the first particle load was 16 % of P2G). Bodies keep
+// their index ranges; materials follow the permutation; Particles::slot keeps creation order for outputs.
+template <int D> void Solver<D>::sort_particles() {
+  Particles<D>& P = scene_.particles;
+  const auto& order = scene_.grid->tile_particles();
+  if (order.size() != P.size()) return;  // not binned yet
+  std::vector<Index> next(scene_.bodies.size()), perm(P.size());
+  for (std::size_t b = 0; b < scene_.bodies.size(); ++b) next[b] = scene_.bodies[b].begin;
+  for (Index q : order) perm[next[P.body[q]]++] = q;
+  P.permute(perm);
+  for (auto& m : scene_.materials) m->permute(perm);
+}
 
 template <int D> void Solver<D>::member_boundary_forces(double dt) {
   if (members_) members_->apply(scene_, *kernels_, dt);
@@ -156,12 +172,17 @@ template <int D> void Solver<D>::fail(const std::string& what) const {
   const auto& P = scene_.particles;
   const Grid<D>& g = *scene_.grid;
   for (const Body& b : scene_.bodies) {
-    for (Index i = b.begin; i < b.end; ++i) {
+    // The offending particle with the lowest creation index (the solver reorders particles; P.id is stable).
+    Index i = -1;
+    for (Index k = b.begin; k < b.end; ++k) {
+      const bool finite = P.x[k].allFinite() && P.v[k].allFinite();
+      if (!(finite && g.interior(P.x[k])) && (i < 0 || P.id[k] < P.id[i])) i = k;
+    }
+    if (i >= 0) {
       const bool finite = P.x[i].allFinite() && P.v[i].allFinite();
-      if (finite && g.interior(P.x[i])) continue;
       std::ostringstream os;
       os << "run stopped at step " << steps_ + 1 << ", t = " << time_ << " s: body '" << b.name << "', particle "
-         << i - b.begin << " (global " << i << ") ";
+         << P.id[i] - b.begin << " (global " << P.id[i] << ") ";
       if (!finite) {
         os << "has a non-finite " << (P.x[i].allFinite() ? "velocity" : "position")
            << " (NaN/Inf): the time step may be too large or a material parameter unphysical";

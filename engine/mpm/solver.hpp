@@ -47,6 +47,8 @@ template <int D> class Solver {
   Scene<D>& scene() { return scene_; }
 
  private:
+  static constexpr long kSortInterval = 16;  // steps between particle reorderings (sort_particles)
+  void sort_particles();
   void particles_to_grid();
   void member_boundary_forces(double dt);
   void advance_members(double dt);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "engine/mpm/shape.hpp"
+#include "engine/mpm/transfer2d.hpp"
 
 namespace dmi {
 namespace {
@@ -27,6 +28,10 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
 
   // APIC: affine momentum; GRAD: mass gradient and volume per field (contact); MOMENTUM: MUSL remap only.
   template <bool APIC, bool GRAD, bool MOMENTUM> void scatter(Scene<D>& s) const {
+    if constexpr (D == 2) {
+      detail::scatter2d<Shape, APIC, GRAD, MOMENTUM>(s);
+      return;
+    }
     Grid<D>& g = *s.grid;
     const Particles<D>& P = s.particles;
     const Vec<D> grav = s.gravity;
@@ -101,6 +106,7 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
   }
 
   G2PResult g2p(Scene<D>& s, double dt, G2PMode mode) const override {
+    if constexpr (D == 2) return detail::g2p2d<Shape>(s, dt, mode);
     Grid<D>& g = *s.grid;
     Particles<D>& P = s.particles;
     const bool apic = s.options.transfer == TransferKind::apic;

@@ -58,7 +58,7 @@ template <int D> Recorder<D>::Recorder(const Solver<D>& solver, const Scenario& 
       for (int d = 0; d < D; ++d) x[d] = pc.point[d];
       double best = std::numeric_limits<double>::infinity();
       for (Index i = b.begin; i < b.end; ++i)
-        if ((P.x[i] - x).squaredNorm() < best) { best = (P.x[i] - x).squaredNorm(); p.index = i; }
+        if ((P.x[i] - x).squaredNorm() < best) { best = (P.x[i] - x).squaredNorm(); p.index = P.id[i]; }
     }
     const std::string base = "probes/" + p.name + "/";
     for (const auto& q : p.quantities) {
@@ -143,7 +143,7 @@ template <int D> void Recorder<D>::sample(const Solver<D>& solver, double dt) {
     }
     for (const auto& q : p.quantities) {
       Series& s = series_[k++];
-      const Index i = p.index;
+      const Index i = solver.scene().particles.slot[p.index];  // p.index: creation order
       if (q == "position") push<D>(s, p.particle ? P.x[i] : Vec<D>(mx / m));
       else if (q == "displacement") push<D>(s, p.particle ? Vec<D>(P.x[i] - P.x0[i]) : Vec<D>(mu / m));
       else if (q == "velocity") push<D>(s, p.particle ? P.v[i] : Vec<D>(mv / m));
@@ -253,7 +253,8 @@ template <int D> Snapshot Recorder<D>::snapshot(const Solver<D>& solver) const {
   s.step = solver.steps();
   s.dim = D;
   s.count = P.size();
-  for (std::size_t i = 0; i < P.size(); ++i) {
+  for (std::size_t k = 0; k < P.size(); ++k) {  // creation order, whatever the solver's current order
+    const std::size_t i = static_cast<std::size_t>(P.slot[k]);
     const Voigt6 v = voigt_stress(P, i);
     for (int d = 0; d < D; ++d) {
       s.position.push_back(P.x[i][d]);

@@ -87,12 +87,16 @@ std::vector<KernelBench> kernel_bench(const BenchOptions& o, bool progress) {
   return out;
 }
 
-int bench_main(const std::vector<std::string>& cases, bool as_json, bool quick) {
+int bench_main(const std::vector<std::string>& cases, bool as_json, bool quick, BenchOptions o) {
   const std::vector<std::string> all = {"kernel"};
   for (const auto& c : cases)
     if (std::find(all.begin(), all.end(), c) == all.end()) throw InputError("bench: unknown case '" + c + "' (known: kernel)");
-  BenchOptions o;
-  if (quick) o.particles = 100000, o.steps = 5, o.repeats = 3, o.warmup = 2;
+  const BenchOptions d;
+  if (o.shapes.empty()) o.shapes = d.shapes;
+  if (o.transfers.empty()) o.transfers = d.transfers;
+  if (o.threads.empty()) o.threads = d.threads;
+  if (o.particles <= 0) o.particles = quick ? 100000 : d.particles;
+  if (quick) o.steps = 5, o.repeats = 3, o.warmup = 2;
   json out = json::object();
   const auto results = kernel_bench(o, !as_json);
   json rows = json::array();

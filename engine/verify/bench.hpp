@@ -29,7 +29,8 @@ struct BenchOptions {
 std::vector<KernelBench> kernel_bench(const BenchOptions& o, bool progress);
 nlohmann::json to_json(const KernelBench& b);
 
-// `damimpact bench [CASE...] [--json] [--quick]`; cases: kernel (default). Returns the exit code.
-int bench_main(const std::vector<std::string>& cases, bool json, bool quick);
+// `damimpact bench [CASE...] [--json] [--quick] [--particles N] [--shape S]... [--transfer T]... [--threads N]...`;
+// cases: kernel (default). Empty lists keep the defaults of BenchOptions. Returns the exit code.
+int bench_main(const std::vector<std::string>& cases, bool json, bool quick, BenchOptions o);
 
 }  // namespace dmi
