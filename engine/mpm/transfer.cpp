@@ -34,7 +34,6 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
     }
     Grid<D>& g = *s.grid;
     const Particles<D>& P = s.particles;
-    const Vec<D> grav = s.gravity;
     const double h = g.h();
     const Index nn = g.nnodes();
     const auto& start = g.tile_start();
@@ -55,16 +54,12 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
           const Vec<D> mv = mp * P.v[i];
           const Index off = s.bodies[P.body[i]].field * nn;
           [[maybe_unused]] Mat<D> mC, vs;
-          [[maybe_unused]] Vec<D> mg;
           if constexpr (APIC) mC = mp * P.C[i];
           // In-plane volume for the contact fill test: plane-stress thinning (F_zz) must not switch
           // contact off, since the cell volume it is compared with has the initial thickness.
           [[maybe_unused]] double vol_in_plane = 0;
           if constexpr (GRAD) vol_in_plane = P.vol0[i] * P.F[i].determinant();
-          if constexpr (!MOMENTUM) {
-            vs = -P.vol[i] * P.stress[i];
-            mg = mp * grav;
-          }
+          if constexpr (!MOMENTUM) vs = -P.vol[i] * P.stress[i];
           for (int n = 0; n < St::NN; ++n) {
             const IVec<D> ijk = st.base + st.offset[n];
             const Index id = off + g.node_id(ijk);
@@ -77,7 +72,7 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
             }
             if constexpr (!MOMENTUM) {
               g.m[id] += N * mp;
-              g.f[id] += vs * st.dN[n] + N * mg;
+              g.f[id] += vs * st.dN[n];  // gravity m_i g is added on the grid (Solver::particles_to_grid)
             }
             if constexpr (GRAD) {
               g.grad_m[id] += mp * st.dN[n];

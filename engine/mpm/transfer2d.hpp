@@ -3,6 +3,7 @@
 // Eigen's small products were not inlined in the hot loops (perf: 8 % in one outer product alone). Each node
 // still receives its contributions in particle order, so sums do not depend on the thread count.
 #pragma once
+#include <algorithm>
 #include <cmath>
 
 #include "engine/mpm/scene.hpp"
@@ -45,13 +46,12 @@ template <class Shape, bool APIC, bool GRAD, bool MOMENTUM> inline void scatter_
     Shape::eval(xr, c.half[i][0] * c.ih, bx, wx, dwx);
     Shape::eval(yr, c.half[i][1] * c.ih, by, wy, dwy);
     const double mp = c.mass[i], mvx = mp * c.v[i][0], mvy = mp * c.v[i][1];
-    [[maybe_unused]] double c00 = 0, c01 = 0, c10 = 0, c11 = 0, s00 = 0, s01 = 0, s10 = 0, s11 = 0, mgx = 0, mgy = 0, vip = 0;
+    [[maybe_unused]] double c00 = 0, c01 = 0, c10 = 0, c11 = 0, s00 = 0, s01 = 0, s10 = 0, s11 = 0, vip = 0;
     if constexpr (APIC) c00 = mp * c.C[i](0, 0), c01 = mp * c.C[i](0, 1), c10 = mp * c.C[i](1, 0), c11 = mp * c.C[i](1, 1);
     if constexpr (!MOMENTUM) {
       const double vol = c.vol[i];
       const Mat<2>& S = c.stress[i];
       s00 = -vol * S(0, 0), s01 = -vol * S(0, 1), s10 = -vol * S(1, 0), s11 = -vol * S(1, 1);
-      mgx = mp * c.gx, mgy = mp * c.gy;
     }
     // In-plane volume for the contact fill test (plane-stress thinning must not switch contact off).
     if constexpr (GRAD) vip = c.vol0[i] * c.F[i].determinant();
@@ -73,8 +73,8 @@ template <class Shape, bool APIC, bool GRAD, bool MOMENTUM> inline void scatter_
         }
         if constexpr (!MOMENTUM) {
           c.gm[id] += N * mp;
-          c.gf[2 * id] += s00 * dNx + s01 * dNy + N * mgx;
-          c.gf[2 * id + 1] += s10 * dNx + s11 * dNy + N * mgy;
+          c.gf[2 * id] += s00 * dNx + s01 * dNy;  // gravity m_i g is added on the grid (Solver::particles_to_grid)
+          c.gf[2 * id + 1] += s10 * dNx + s11 * dNy;
         }
         if constexpr (GRAD) {
           c.gg[2 * id] += mp * dNx;
@@ -103,71 +103,106 @@ template <class Shape, bool APIC, bool GRAD, bool MOMENTUM> void scatter2d(Scene
   }
 }
 
-template <class Shape> G2PResult g2p2d(Scene<2>& s, double dt, G2PMode mode) {
+// G2P context, by value for the same reason as ScatterCtx.
+struct GatherCtx {
+  Vec<2>* __restrict x;
+  Vec<2>* __restrict v;
+  const Vec<2>* __restrict half;
+  Mat<2>* __restrict C;
+  Mat<2>* __restrict F;
+  Mat<2>* __restrict L;
+  const int* __restrict body;
+  const Body* bodies;
+  const double* __restrict gvl;
+  const double* __restrict gv;
+  double h, ih, ox, oy, blend, dt, lo_x, hi_x, lo_y, hi_y;  // lo/hi: the grid interior in grid coordinates
+  Index nx, nn;
+};
+
+// MODE: 0 full (USL), 1 velocity only (MUSL pass 1), 2 kinematics (MUSL pass 2). Returns 1 for a bad particle.
+template <class Shape, bool APIC, int MODE> inline int gather_range(const GatherCtx c, Index i0, Index i1) {
   constexpr int K = Shape::K;
-  Grid<2>& g = *s.grid;
-  Particles<2>& P = s.particles;
-  const bool apic = s.options.transfer == TransferKind::apic;
-  const double blend = s.options.flip_blend;
-  const double h = g.h(), ih = g.inv_h(), ox = g.origin()[0], oy = g.origin()[1];
-  const Index nx = g.nodes()[0], nn = g.nnodes();
-  const double* gvl = g.vL.data()->data();
-  const double* gv = g.v.data()->data();
-  const double* gu = mode == G2PMode::kinematics ? gv : gvl;  // the velocity the gradient is taken of
-  const Index np = static_cast<Index>(P.size());
   int bad = 0;
-#pragma omp parallel for schedule(static) reduction(| : bad) if (np > kParallelMin)
-  for (Index i = 0; i < np; ++i) {
-    const double xr = (P.x[i][0] - ox) * ih, yr = (P.x[i][1] - oy) * ih;
+  for (Index i = i0; i < i1; ++i) {
+    const double xr = (c.x[i][0] - c.ox) * c.ih, yr = (c.x[i][1] - c.oy) * c.ih;
     int bx, by;
     double wx[K], dwx[K], wy[K], dwy[K];
-    Shape::eval(xr, P.half_size[i][0] * ih, bx, wx, dwx);
-    Shape::eval(yr, P.half_size[i][1] * ih, by, wy, dwy);
-    const Index off = s.bodies[P.body[i]].field * nn;
+    Shape::eval(xr, c.half[i][0] * c.ih, bx, wx, dwx);
+    Shape::eval(yr, c.half[i][1] * c.ih, by, wy, dwy);
+    const Index off = c.bodies[c.body[i]].field * c.nn;
+    const double* gu = MODE == 2 ? c.gv : c.gvl;  // the velocity the gradient is taken of
     double vpx = 0, vpy = 0, dvx = 0, dvy = 0, l00 = 0, l01 = 0, l10 = 0, l11 = 0;
     double b00 = 0, b01 = 0, b10 = 0, b11 = 0, d00 = 0, d01 = 0, d11 = 0;
     for (int b = 0; b < K; ++b) {
-      const Index row = off + static_cast<Index>(by + b) * nx + bx;
-      const double Wy = wy[b], dWy = dwy[b] * ih, dy = (by + b - yr) * h;
+      const Index row = off + static_cast<Index>(by + b) * c.nx + bx;
+      const double Wy = wy[b], dWy = dwy[b] * c.ih, dy = (by + b - yr) * c.h;
       for (int a = 0; a < K; ++a) {
         const Index id = row + a;
-        const double N = wx[a] * Wy, dNx = dwx[a] * ih * Wy, dNy = wx[a] * dWy;
-        const double vlx = gvl[2 * id], vly = gvl[2 * id + 1];
-        if (mode != G2PMode::kinematics) {
-          if (apic) {
-            const double dx = (bx + a - xr) * h;
+        const double N = wx[a] * Wy, dNx = dwx[a] * c.ih * Wy, dNy = wx[a] * dWy;
+        const double vlx = c.gvl[2 * id], vly = c.gvl[2 * id + 1];
+        if constexpr (MODE != 2) {
+          if constexpr (APIC) {
+            const double dx = (bx + a - xr) * c.h;
             b00 += N * vlx * dx, b01 += N * vlx * dy, b10 += N * vly * dx, b11 += N * vly * dy;
             d00 += N * dx * dx, d01 += N * dx * dy, d11 += N * dy * dy;
           } else {
-            dvx += N * (vlx - gv[2 * id]), dvy += N * (vly - gv[2 * id + 1]);
+            dvx += N * (vlx - c.gv[2 * id]), dvy += N * (vly - c.gv[2 * id + 1]);
           }
         }
         vpx += N * vlx, vpy += N * vly;
-        const double ux = gu[2 * id], uy = gu[2 * id + 1];
-        l00 += ux * dNx, l01 += ux * dNy, l10 += uy * dNx, l11 += uy * dNy;
+        if constexpr (MODE != 1) {
+          const double ux = gu[2 * id], uy = gu[2 * id + 1];
+          l00 += ux * dNx, l01 += ux * dNy, l10 += uy * dNx, l11 += uy * dNy;
+        }
       }
     }
-    if (mode != G2PMode::kinematics) {
-      if (apic) {
-        P.v[i] = Vec<2>(vpx, vpy);
+    if constexpr (MODE != 2) {
+      if constexpr (APIC) {
+        c.v[i] = Vec<2>(vpx, vpy);
         const double det = d00 * d11 - d01 * d01;  // D_p > 0 for GIMP and B-splines; linear APIC is refused (Solver)
         const double i00 = d11 / det, i01 = -d01 / det, i11 = d00 / det;
-        P.C[i] << b00 * i00 + b01 * i01, b00 * i01 + b01 * i11, b10 * i00 + b11 * i01, b10 * i01 + b11 * i11;
+        c.C[i] << b00 * i00 + b01 * i01, b00 * i01 + b01 * i11, b10 * i00 + b11 * i01, b10 * i01 + b11 * i11;
       } else {
-        P.v[i] = Vec<2>(blend * (P.v[i][0] + dvx) + (1 - blend) * vpx, blend * (P.v[i][1] + dvy) + (1 - blend) * vpy);
+        c.v[i] = Vec<2>(c.blend * (c.v[i][0] + dvx) + (1 - c.blend) * vpx, c.blend * (c.v[i][1] + dvy) + (1 - c.blend) * vpy);
       }
     }
-    if (mode != G2PMode::velocity_only) {
-      P.x[i] += dt * Vec<2>(vpx, vpy);
+    if constexpr (MODE != 1) {
+      const double x = c.x[i][0] + c.dt * vpx, y = c.x[i][1] + c.dt * vpy;
+      c.x[i] = Vec<2>(x, y);
       Mat<2> L;
       L << l00, l01, l10, l11;
-      P.L[i] = L;
-      P.F[i] = (Mat<2>::Identity() + dt * L) * P.F[i];
-      if (!g.interior(P.x[i]) || !std::isfinite(l00 + l01 + l10 + l11)) bad = 1;
+      c.L[i] = L;
+      const Mat<2> F = c.F[i];
+      c.F[i] << F(0, 0) + c.dt * (l00 * F(0, 0) + l01 * F(1, 0)), F(0, 1) + c.dt * (l00 * F(0, 1) + l01 * F(1, 1)),
+          F(1, 0) + c.dt * (l10 * F(0, 0) + l11 * F(1, 0)), F(1, 1) + c.dt * (l10 * F(0, 1) + l11 * F(1, 1));
+      const double gxr = (x - c.ox) * c.ih, gyr = (y - c.oy) * c.ih;  // Grid::interior
+      if (!(gxr >= c.lo_x && gxr < c.hi_x && gyr >= c.lo_y && gyr < c.hi_y) || !std::isfinite(l00 + l01 + l10 + l11)) bad = 1;
     }
-    if (!std::isfinite(P.v[i][0] + P.v[i][1])) bad = 1;
+    if (!std::isfinite(c.v[i][0] + c.v[i][1])) bad = 1;
   }
+  return bad;
+}
+
+template <class Shape, bool APIC, int MODE> G2PResult gather2d(Scene<2>& s, double dt) {
+  Grid<2>& g = *s.grid;
+  Particles<2>& P = s.particles;
+  const GatherCtx c{P.x.data(), P.v.data(), P.half_size.data(), P.C.data(), P.F.data(), P.L.data(), P.body.data(), s.bodies.data(),
+                    g.vL.data()->data(), g.v.data()->data(), g.h(), g.inv_h(), g.origin()[0], g.origin()[1], s.options.flip_blend, dt,
+                    0.5, g.cells()[0] - 0.5, 0.5, g.cells()[1] - 0.5, g.nodes()[0], g.nnodes()};
+  const Index np = static_cast<Index>(P.size());
+  constexpr Index kChunk = 1024;
+  const Index nchunks = (np + kChunk - 1) / kChunk;
+  int bad = 0;
+#pragma omp parallel for schedule(static) reduction(| : bad) firstprivate(c) if (np > kParallelMin)
+  for (Index k = 0; k < nchunks; ++k) bad |= gather_range<Shape, APIC, MODE>(c, k * kChunk, std::min(np, (k + 1) * kChunk));
   return G2PResult{bad == 0};
+}
+
+template <class Shape> G2PResult g2p2d(Scene<2>& s, double dt, G2PMode mode) {
+  const bool apic = s.options.transfer == TransferKind::apic;
+  const int m = mode == G2PMode::full ? 0 : mode == G2PMode::velocity_only ? 1 : 2;
+  if (apic) return m == 0 ? gather2d<Shape, true, 0>(s, dt) : m == 1 ? gather2d<Shape, true, 1>(s, dt) : gather2d<Shape, true, 2>(s, dt);
+  return m == 0 ? gather2d<Shape, false, 0>(s, dt) : m == 1 ? gather2d<Shape, false, 1>(s, dt) : gather2d<Shape, false, 2>(s, dt);
 }
 
 }  // namespace dmi::detail

@@ -75,8 +75,9 @@ std::vector<KernelBench> kernel_bench(const BenchOptions& o, bool progress) {
         b.seconds_per_step = median(per_step);
         b.updates_per_second = b.particles / b.seconds_per_step;
         b.spread = (*std::max_element(per_step.begin(), per_step.end()) - *std::min_element(per_step.begin(), per_step.end())) / b.seconds_per_step;
-        // Particle arrays: x, x0, v, half_size (4 vectors), F, L, C, stress (4 matrices), stress_zz, mass, vol0, vol, body.
-        b.bytes_per_particle = 4 * 2 * 8 + 4 * 4 * 8 + 4 * 8 + 4;
+        // Particle arrays: x, x0, v, half_size (4 vectors), F, L, C, stress (4 matrices), stress_zz, mass, vol0, vol, body,
+        // id, slot; plus the material's own arrays (none for undamped linear elasticity).
+        b.bytes_per_particle = 4 * sizeof(Vec<2>) + 4 * sizeof(Mat<2>) + 4 * sizeof(double) + sizeof(int) + 2 * sizeof(Index);
         out.push_back(b);
         if (progress)
           std::fprintf(stderr, "kernel %-8s %-4s %d thread(s): %.3f s/step, %.2f M updates/s (spread %.0f %%)\n", shape.c_str(), transfer.c_str(), t,
@@ -107,6 +108,7 @@ int bench_main(const std::vector<std::string>& cases, bool as_json, bool quick, 
     return 0;
   }
   std::printf("\nMPM kernel throughput (2D, linear elastic, %ld particles, median of %d x %d steps)\n", o.particles, o.repeats, o.steps);
+  if (!results.empty()) std::printf("particle arrays: %.0f bytes per particle\n", results.front().bytes_per_particle);
   std::printf("%-9s %-9s %7s %12s %14s %10s %8s\n", "shape", "transfer", "threads", "s/step", "M updates/s", "speed-up", "spread");
   for (const auto& b : results) {
     double one = 0;
