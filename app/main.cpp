@@ -140,7 +140,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> bench_cases;
   bool quick = false;
   CLI::App* bch = app.add_subcommand("bench", "performance figures (printed, not asserted): kernel throughput; docs/performance.md");
-  bch->add_option("cases", bench_cases, "cases (default: all): kernel");
+  bch->add_option("cases", bench_cases, "cases (default: all): kernel | a5 (run time vs error) | a6 (cost vs depth) | skip");
   bch->add_flag("--json", json, "print JSON instead of tables");
   bch->add_flag("--quick", quick, "small problems (100 k particles), for a smoke test");
   dmi::BenchOptions bo;

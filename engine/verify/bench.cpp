@@ -21,7 +21,12 @@ namespace {
 
 // A square elastic block of about n particles (2 x 2 per cell), falling freely with a small drift: every
 // particle goes through P2G, the grid update, G2P and the stress update each step, with no walls or contact.
-Scenario block_scenario(long n, const std::string& shape, const std::string& transfer) {
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+json block_json(long n, const std::string& shape, const std::string& transfer) {
   const double h = 0.05;
   const double side = std::sqrt(static_cast<double>(n) / 4.0) * h;  // 4 particles per cell
   json j{{"schema_version", 1},
@@ -33,13 +38,28 @@ Scenario block_scenario(long n, const std::string& shape, const std::string& tra
          {"bodies", {{{"name", "block"}, {"material", "soft"}, {"particles_per_cell", 2}, {"shape", {{"type", "box"}, {"min", {0, 0}}, {"max", {side, side}}}},
                       {"velocity", {0.1, 0.2}}}}},
          {"output", {{"vtk", false}}}};
-  return parse_scenario(j, "<kernel benchmark>");
+  return j;
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
+Scenario block_scenario(long n, const std::string& shape, const std::string& transfer) {
+  return parse_scenario(block_json(n, shape, transfer), "<kernel benchmark>");
 }
+
+// Median per-step wall time of a scene (s): warm-up steps, then 3 repeats of `steps` steps.
+double step_time(const Scenario& s, int steps) {
+  using clock = std::chrono::steady_clock;
+  Solver<2> solver(build_scene<2>(s));
+  const double dt = solver.stable_time_step(1e-3);
+  for (int k = 0; k < 3; ++k) solver.step(dt);
+  std::vector<double> v;
+  for (int r = 0; r < 3; ++r) {
+    const auto t0 = clock::now();
+    for (int k = 0; k < steps; ++k) solver.step(dt);
+    v.push_back(std::chrono::duration<double>(clock::now() - t0).count() / steps);
+  }
+  return median(v);
+}
+
 
 }  // namespace
 
@@ -47,6 +67,29 @@ json to_json(const KernelBench& b) {
   return json{{"shape", b.shape}, {"transfer", b.transfer}, {"threads", b.threads}, {"particles", b.particles}, {"active_nodes", b.active_nodes},
               {"seconds_per_step", b.seconds_per_step}, {"updates_per_second", b.updates_per_second}, {"spread", b.spread},
               {"bytes_per_particle", b.bytes_per_particle}};
+}
+
+// The block with a small frame out of the particles' reach (member contact culls it), or on a grid 10 times wider
+// and taller (the active grid: empty space must not cost steps).
+json skip_block_bench(bool progress) {
+  const long n = 100000;
+  const json base = block_json(n, "bspline2", "flip");
+  const double side = std::sqrt(n / 4.0) * 0.05;
+  json framed = base;
+  framed["materials"].push_back({{"name", "steel"}, {"model", "linear_elastic"}, {"density", 7850}, {"youngs_modulus", 2e11}, {"poisson_ratio", 0.3}});
+  framed["structure"] = {{"self_weight", false}, {"integrator", "newmark"},
+                         {"nodes", {{{"name", "A"}, {"position", {side + 0.8, -0.8}}}, {{"name", "B"}, {"position", {side + 0.8, 0.2}}}}},
+                         {"members", {{{"name", "post"}, {"start", "A"}, {"end", "B"}, {"material", "steel"}, {"elements", 4},
+                                       {"section", {{"type", "rectangle"}, {"width", 0.1}, {"depth", 0.1}}}}}},
+                         {"supports", {{{"node", "A"}, {"type", "fixed"}}}}};
+  json wide = base;
+  wide["grid"]["size"] = {10 * (side + 2.0), 10 * (side + 2.0)};
+  const double t0 = step_time(parse_scenario(base, "<bench>"), 10);
+  const double tf = step_time(parse_scenario(framed, "<bench>"), 10);
+  const double tw = step_time(parse_scenario(wide, "<bench>"), 10);
+  if (progress) std::fprintf(stderr, "skip: block %.4f s/step, with an idle frame %.4f, on a 10x wider grid %.4f\n", t0, tf, tw);
+  return json{{"particles", n}, {"block_s_per_step", t0}, {"idle_frame_s_per_step", tf}, {"idle_frame_ratio", tf / t0},
+              {"grid_10x_s_per_step", tw}, {"grid_10x_ratio", tw / t0}};
 }
 
 std::vector<KernelBench> kernel_bench(const BenchOptions& o, bool progress) {
@@ -89,9 +132,10 @@ std::vector<KernelBench> kernel_bench(const BenchOptions& o, bool progress) {
 }
 
 int bench_main(const std::vector<std::string>& cases, bool as_json, bool quick, BenchOptions o) {
-  const std::vector<std::string> all = {"kernel"};
+  const std::vector<std::string> all = {"kernel", "a5", "a6", "skip"};
   for (const auto& c : cases)
-    if (std::find(all.begin(), all.end(), c) == all.end()) throw InputError("bench: unknown case '" + c + "' (known: kernel)");
+    if (std::find(all.begin(), all.end(), c) == all.end()) throw InputError("bench: unknown case '" + c + "' (known: kernel, a5, a6, skip)");
+  auto wanted = [&](const char* c) { return cases.empty() || std::find(cases.begin(), cases.end(), c) != cases.end(); };
   const BenchOptions d;
   if (o.shapes.empty()) o.shapes = d.shapes;
   if (o.transfers.empty()) o.transfers = d.transfers;
@@ -99,23 +143,67 @@ int bench_main(const std::vector<std::string>& cases, bool as_json, bool quick, 
   if (o.particles <= 0) o.particles = quick ? 100000 : d.particles;
   if (quick) o.steps = 5, o.repeats = 3, o.warmup = 2;
   json out = json::object();
-  const auto results = kernel_bench(o, !as_json);
-  json rows = json::array();
-  for (const auto& b : results) rows.push_back(to_json(b));
-  out["kernel"] = rows;
+  out["threads_available"] = omp_get_max_threads();
+  std::vector<KernelBench> results;
+  if (wanted("kernel")) {
+    results = kernel_bench(o, !as_json);
+    json rows = json::array();
+    for (const auto& b : results) rows.push_back(to_json(b));
+    out["kernel"] = rows;
+  }
+  if (wanted("a5")) out["a5"] = bench_a5(!as_json);
+  if (wanted("a6")) out["a6"] = bench_a6(!as_json);
+  if (wanted("skip")) {
+    out["skip"] = bench_skip(!as_json);
+    out["skip"]["block"] = skip_block_bench(!as_json);
+  }
   if (as_json) {
     std::cout << out.dump(1) << "\n";
     return 0;
   }
-  std::printf("\nMPM kernel throughput (2D, linear elastic, %ld particles, median of %d x %d steps)\n", o.particles, o.repeats, o.steps);
-  if (!results.empty()) std::printf("particle arrays: %.0f bytes per particle\n", results.front().bytes_per_particle);
-  std::printf("%-9s %-9s %7s %12s %14s %10s %8s\n", "shape", "transfer", "threads", "s/step", "M updates/s", "speed-up", "spread");
-  for (const auto& b : results) {
-    double one = 0;
-    for (const auto& c : results)
-      if (c.shape == b.shape && c.transfer == b.transfer && c.threads == 1) one = c.seconds_per_step;
-    std::printf("%-9s %-9s %7d %12.4f %14.2f %10.2f %7.0f%%\n", b.shape.c_str(), b.transfer.c_str(), b.threads, b.seconds_per_step,
-                b.updates_per_second / 1e6, one > 0 ? one / b.seconds_per_step : 0.0, 100 * b.spread);
+  if (!results.empty()) {
+    std::printf("\nMPM kernel throughput (2D, linear elastic, %ld particles, median of %d x %d steps)\n", o.particles, o.repeats, o.steps);
+    std::printf("particle arrays: %.0f bytes per particle\n", results.front().bytes_per_particle);
+    std::printf("%-9s %-9s %7s %12s %14s %10s %8s\n", "shape", "transfer", "threads", "s/step", "M updates/s", "speed-up", "spread");
+    for (const auto& b : results) {
+      double one = 0;
+      for (const auto& c : results)
+        if (c.shape == b.shape && c.transfer == b.transfer && c.threads == 1) one = c.seconds_per_step;
+      std::printf("%-9s %-9s %7d %12.4f %14.2f %10.2f %7.0f%%\n", b.shape.c_str(), b.transfer.c_str(), b.threads, b.seconds_per_step,
+                  b.updates_per_second / 1e6, one > 0 ? one / b.seconds_per_step : 0.0, 100 * b.spread);
+    }
+  }
+  if (out.contains("a5")) {
+    const json& a = out["a5"];
+    std::printf("\nPaper A.5: error (NRMS vs %s) against wall time; * = Pareto front\n", a["reference"].get<std::string>().c_str());
+    std::printf("%-15s %8s %-17s %10s %10s\n", "frame", "elements", "time step", "error", "wall s");
+    for (const auto& p : a["points"])
+      std::printf("%-15s %8d %-17s %10.4f %10.3f %s%s\n", p["integrator"].get<std::string>().c_str(), p["elements"].get<int>(),
+                  p["time_step"].get<std::string>().c_str(), p["error"].get<double>(), p["wall_seconds"].get<double>(), p["front"].get<bool>() ? "*" : "",
+                  p["paper_setup"].get<bool>() ? "  (paper set-up)" : "");
+    std::printf("paper set-up %.3f s, fastest as accurate (%s, %d elements, %s) %.3f s (medians of 3): speed-up %.1fx\n",
+                a["paper_wall_median_s"].get<double>(), a["fastest_as_accurate"]["integrator"].get<std::string>().c_str(),
+                a["fastest_as_accurate"]["elements"].get<int>(), a["fastest_as_accurate"]["time_step"].get<std::string>().c_str(),
+                a["fastest_wall_median_s"].get<double>(), a["speed_up"].get<double>());
+  }
+  if (out.contains("a6")) {
+    std::printf("\nPaper A.6, beam-column members: wall time vs depth (median of 3)\n%8s %10s %8s %12s\n", "h/L", "wall s", "steps", "proj. iter.");
+    for (const auto& r : out["a6"]["rows"])
+      std::printf("%8.3f %10.3f %8ld %12.0f\n", r["h_over_L"].get<double>(), r["wall_seconds"].get<double>(), r["steps"].get<long>(),
+                  r["projection_iterations_max"].get<double>());
+    std::printf("ratio h/L 0.025 : 0.2 = %.2f\n", out["a6"]["ratio_slender_to_thick"].get<double>());
+  }
+  if (out.contains("skip")) {
+    const json& s = out["skip"];
+    std::printf("\nSkip what a scene does not need (medians of 3)\n");
+    std::printf("frame on the dam: Newmark %ld steps %.2f s, explicit %ld steps %.2f s (x%.1f); peak base shear differs by %.2f %%\n",
+                s["implicit_frame"]["newmark_steps"].get<long>(), s["implicit_frame"]["newmark_wall_s"].get<double>(),
+                s["implicit_frame"]["explicit_steps"].get<long>(), s["implicit_frame"]["explicit_wall_s"].get<double>(),
+                s["implicit_frame"]["wall_ratio_explicit_to_newmark"].get<double>(), 100 * s["implicit_frame"]["peak_difference"].get<double>());
+    std::printf("files: no snapshots %.2f s, 15 snapshots + .vtu %.2f s (ratio %.3f)\n", s["output_cost"]["no_snapshots_wall_s"].get<double>(),
+                s["output_cost"]["snapshots_every_10ms_wall_s"].get<double>(), s["output_cost"]["ratio"].get<double>());
+    std::printf("100 k-particle block: idle frame out of reach x%.3f per step, grid 10x wider and taller x%.3f per step\n",
+                s["block"]["idle_frame_ratio"].get<double>(), s["block"]["grid_10x_ratio"].get<double>());
   }
   return 0;
 }

@@ -29,8 +29,15 @@ struct BenchOptions {
 std::vector<KernelBench> kernel_bench(const BenchOptions& o, bool progress);
 nlohmann::json to_json(const KernelBench& b);
 
+// Paper A.5 run time vs error (a Pareto front), paper A.6 cost vs depth, scene costs that should vanish
+// (bench_cases.cpp), and the block with an idle frame or a 10x grid (bench.cpp).
+nlohmann::json bench_a5(bool progress);
+nlohmann::json bench_a6(bool progress);
+nlohmann::json bench_skip(bool progress);
+nlohmann::json skip_block_bench(bool progress);
+
 // `damimpact bench [CASE...] [--json] [--quick] [--particles N] [--shape S]... [--transfer T]... [--threads N]...`;
-// cases: kernel (default). Empty lists keep the defaults of BenchOptions. Returns the exit code.
+// cases: kernel, a5, a6, skip (default all). Empty lists keep the defaults of BenchOptions. Returns the exit code.
 int bench_main(const std::vector<std::string>& cases, bool json, bool quick, BenchOptions o);
 
 }  // namespace dmi
