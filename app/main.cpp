@@ -8,11 +8,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 
 #include "design/design.hpp"
 #include "render/field.hpp"
 #include "render/render_main.hpp"
+#include "render/charts.hpp"
 #include "render/report.hpp"
 #include "engine/common/error.hpp"
 #include "engine/scenario/scenario.hpp"
@@ -74,6 +77,51 @@ int simulate(const std::string& file, const std::string& out, int threads, bool 
                             r.results.info.numbers.at("wall_seconds"));
   }
   return 0;
+}
+
+// `bench`, plus with --out the JSON and the Pareto chart of paper A.5 (error against wall time, the front joined).
+int bench_command(const std::vector<std::string>& cases, bool as_json, bool quick, const dmi::BenchOptions& o, const std::string& out) {
+  if (out.empty()) return dmi::bench_main(cases, as_json, quick, o);
+  std::stringstream captured;
+  std::streambuf* old = std::cout.rdbuf(captured.rdbuf());
+  int rc = 0;
+  try {
+    rc = dmi::bench_main(cases, true, quick, o);
+  } catch (...) {
+    std::cout.rdbuf(old);
+    throw;
+  }
+  std::cout.rdbuf(old);
+  const nlohmann::json j = nlohmann::json::parse(captured.str());
+  std::filesystem::create_directories(out);
+  std::ofstream(std::filesystem::path(out) / "bench.json") << j.dump(1) << "\n";
+  if (j.contains("a5")) {
+    dmi::render::ChartSpec c;
+    c.title = "paper A.5: error against run time";
+    c.x_label = "wall time [s]", c.y_label = "NRMS error vs converged FE [-]";
+    for (const char* integ : {"explicit", "newmark"}) {
+      dmi::render::Curve pts;
+      pts.label = std::string(integ) + " frame";
+      pts.points = true;
+      pts.color = std::string(integ) == "explicit" ? std::array<unsigned char, 3>{31, 119, 180} : std::array<unsigned char, 3>{255, 127, 14};
+      for (const auto& p : j["a5"]["points"])
+        if (p["integrator"] == integ) pts.x.push_back(p["wall_seconds"]), pts.y.push_back(p["error"]);
+      c.curves.push_back(pts);
+    }
+    std::vector<std::pair<double, double>> front;
+    for (const auto& p : j["a5"]["points"])
+      if (p["front"].get<bool>()) front.push_back({p["wall_seconds"], p["error"]});
+    std::sort(front.begin(), front.end());
+    dmi::render::Curve f;
+    f.label = "Pareto front";
+    f.color = {60, 60, 60};
+    for (const auto& [x, y] : front) f.x.push_back(x), f.y.push_back(y);
+    c.curves.push_back(f);
+    dmi::render::render_chart(c, (std::filesystem::path(out) / "pareto_a5.png").string());
+  }
+  if (!as_json) std::printf("wrote %s/bench.json%s\n", out.c_str(), j.contains("a5") ? " and pareto_a5.png" : "");
+  else std::cout << j.dump(1) << "\n";
+  return rc;
 }
 
 }  // namespace
@@ -149,6 +197,8 @@ int main(int argc, char** argv) {
   bch->add_option("--shape", bo.shapes, "shape functions (default linear gimp bspline2)")->check(CLI::IsMember({"linear", "gimp", "bspline2"}));
   bch->add_option("--transfer", bo.transfers, "transfers (default flip apic)")->check(CLI::IsMember({"flip", "apic"}));
   bch->add_option("--threads", bo.threads, "thread counts (default 1 2)");
+  std::string bench_out;
+  bch->add_option("-o,--out", bench_out, "also write DIR/bench.json and, for a5, DIR/pareto_a5.png (a VTK chart)");
   CLI::App* sch = app.add_subcommand("schema", "print the scenario key reference (Markdown, as in docs/scenario.md)");
   sch->add_flag("--markdown", markdown, "Markdown tables (default)");
 
@@ -178,7 +228,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*chk) return dmi::design::check_main(check_paths, limits_file, json, design_out, quiet, DMI_VERSION);
-    if (*bch) return dmi::bench_main(bench_cases, json, quick, bo);
+    if (*bch) return bench_command(bench_cases, json, quick, bo, bench_out);
     if (*val) return dmi::validate_main(cases, json, list, threads);
     if (*sch) {
       std::cout << dmi::scenario_reference_markdown();

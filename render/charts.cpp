@@ -93,7 +93,7 @@ void render_chart(const ChartSpec& spec, const std::string& path) {
     x->SetName("x"), y->SetName(c.label.c_str());
     for (std::size_t k = 0; k < c.x.size(); ++k) x->InsertNextValue(c.x[k]), y->InsertNextValue(c.y[k]);
     t->AddColumn(x), t->AddColumn(y);
-    vtkPlot* p = chart->AddPlot(vtkChart::LINE);
+    vtkPlot* p = chart->AddPlot(c.points ? vtkChart::POINTS : vtkChart::LINE);
     p->SetInputData(t, 0, 1);
     p->SetColor(c.color[0], c.color[1], c.color[2], 255);
     p->SetWidth(c.width);

@@ -11,6 +11,7 @@ struct Curve {
   std::vector<double> x, y;
   std::array<unsigned char, 3> color{31, 119, 180};
   bool dashed = false;
+  bool points = false;  // markers only (a scatter plot), no line
   float width = 3.0f;
 };
 
