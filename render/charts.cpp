@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
+#include <vector>
 
 #include <vtkAxis.h>
 #include <vtkChartLegend.h>
@@ -13,6 +15,7 @@
 #include <vtkPen.h>
 #include <vtkPlot.h>
 #include <vtkRenderer.h>
+#include <vtkStringArray.h>
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
 
@@ -38,6 +41,26 @@ void nice_axis(vtkAxis* a, double lo, double hi, int target = 6) {
   a->SetBehavior(vtkAxis::FIXED);
   a->SetRange(a0, a1);
   a->SetCustomTickPositions(ticks);
+}
+
+// A logarithmic axis drawn on log10 data: ticks at the powers of ten (and 2, 5 between them when the range is short),
+// labelled with the original values. (VTK 9.1's SetLogScale left the plots unscaled.)
+void log_axis(vtkAxis* a, double lo, double hi) {
+  const double a0 = std::floor(lo), a1 = std::ceil(hi);
+  auto pos = vtkSmartPointer<vtkDoubleArray>::New();
+  auto lab = vtkSmartPointer<vtkStringArray>::New();
+  const bool fine = a1 - a0 <= 3;
+  for (double e = a0; e <= a1 + 1e-9; e += 1)
+    for (double m : fine ? std::vector<double>{1, 2, 5} : std::vector<double>{1}) {
+      const double v = std::log10(m) + e;
+      if (v > a1 + 1e-9) continue;
+      char b[32];
+      std::snprintf(b, sizeof b, "%g", m * std::pow(10.0, e));
+      pos->InsertNextValue(v), lab->InsertNextValue(b);
+    }
+  a->SetBehavior(vtkAxis::FIXED);
+  a->SetRange(a0, a1);
+  a->SetCustomTickPositions(pos, lab);
 }
 
 void font(vtkTextProperty* p, int size, bool bold = false) {
@@ -91,7 +114,10 @@ void render_chart(const ChartSpec& spec, const std::string& path) {
     auto x = vtkSmartPointer<vtkDoubleArray>::New();
     auto y = vtkSmartPointer<vtkDoubleArray>::New();
     x->SetName("x"), y->SetName(c.label.c_str());
-    for (std::size_t k = 0; k < c.x.size(); ++k) x->InsertNextValue(c.x[k]), y->InsertNextValue(c.y[k]);
+    for (std::size_t k = 0; k < c.x.size(); ++k) {
+      if ((spec.log_x && !(c.x[k] > 0)) || (spec.log_y && !(c.y[k] > 0))) continue;  // not on a log axis
+      x->InsertNextValue(spec.log_x ? std::log10(c.x[k]) : c.x[k]), y->InsertNextValue(spec.log_y ? std::log10(c.y[k]) : c.y[k]);
+    }
     t->AddColumn(x), t->AddColumn(y);
     vtkPlot* p = chart->AddPlot(c.points ? vtkChart::POINTS : vtkChart::LINE);
     p->SetInputData(t, 0, 1);
@@ -105,10 +131,14 @@ void render_chart(const ChartSpec& spec, const std::string& path) {
   for (const auto& c : spec.curves)
     for (std::size_t k = 0; k < c.x.size(); ++k) {
       if (spec.x_max > 0 && c.x[k] > spec.x_max) continue;
-      x0 = std::min(x0, c.x[k]), x1 = std::max(x1, c.x[k]), y0 = std::min(y0, c.y[k]), y1 = std::max(y1, c.y[k]);
+      if ((spec.log_x && !(c.x[k] > 0)) || (spec.log_y && !(c.y[k] > 0))) continue;
+      const double x = spec.log_x ? std::log10(c.x[k]) : c.x[k], y = spec.log_y ? std::log10(c.y[k]) : c.y[k];
+      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
     }
-  nice_axis(bottom, x0, x1, 8);
-  nice_axis(left, y0, y1, 6);
+  if (spec.log_x) log_axis(bottom, x0, x1);
+  else nice_axis(bottom, x0, x1, 8);
+  if (spec.log_y) log_axis(left, y0, y1);
+  else nice_axis(left, y0, y1, 6);
   chart->SetShowLegend(true);
   font(chart->GetLegend()->GetLabelProperties(), fs);
   chart->GetLegend()->SetInline(true);

@@ -20,6 +20,7 @@ struct ChartSpec {
   std::vector<Curve> curves;
   int width = 1600, height = 900;
   double x_max = 0;  // > 0: the x axis ends here (e.g. shortly after the contact)
+  bool log_x = false, log_y = false;  // logarithmic axes (VTK's own ticks)
 };
 
 // Writes the chart as PNG; throws std::runtime_error when no curve has two points.

@@ -132,9 +132,9 @@ std::vector<KernelBench> kernel_bench(const BenchOptions& o, bool progress) {
 }
 
 int bench_main(const std::vector<std::string>& cases, bool as_json, bool quick, BenchOptions o) {
-  const std::vector<std::string> all = {"kernel", "a5", "a6", "skip"};
+  const std::vector<std::string> all = {"kernel", "a5", "a6", "bar", "disks", "skip"};
   for (const auto& c : cases)
-    if (std::find(all.begin(), all.end(), c) == all.end()) throw InputError("bench: unknown case '" + c + "' (known: kernel, a5, a6, skip)");
+    if (std::find(all.begin(), all.end(), c) == all.end()) throw InputError("bench: unknown case '" + c + "' (known: kernel, a5, a6, bar, disks, skip)");
   auto wanted = [&](const char* c) { return cases.empty() || std::find(cases.begin(), cases.end(), c) != cases.end(); };
   const BenchOptions d;
   if (o.shapes.empty()) o.shapes = d.shapes;
@@ -153,6 +153,8 @@ int bench_main(const std::vector<std::string>& cases, bool as_json, bool quick, 
   }
   if (wanted("a5")) out["a5"] = bench_a5(!as_json);
   if (wanted("a6")) out["a6"] = bench_a6(!as_json);
+  if (wanted("bar")) out["bar"] = bench_bar(!as_json);
+  if (wanted("disks")) out["disks"] = bench_disks(!as_json);
   if (wanted("skip")) {
     out["skip"] = bench_skip(!as_json);
     out["skip"]["block"] = skip_block_bench(!as_json);
@@ -192,6 +194,18 @@ int bench_main(const std::vector<std::string>& cases, bool as_json, bool quick, 
       std::printf("%8.3f %10.3f %8ld %12.0f\n", r["h_over_L"].get<double>(), r["wall_seconds"].get<double>(), r["steps"].get<long>(),
                   r["projection_iterations_max"].get<double>());
     std::printf("ratio h/L 0.025 : 0.2 = %.2f\n", out["a6"]["ratio_slender_to_thick"].get<double>());
+  }
+  for (const char* c : {"bar", "disks"}) {
+    if (!out.contains(c)) continue;
+    std::printf("\n%s: error (%s) against wall time, Pareto front only (all points: --json)\n", c, out[c]["reference"].get<std::string>().c_str());
+    std::vector<const json*> front;
+    for (const auto& p : out[c]["points"])
+      if (p["front"].get<bool>()) front.push_back(&p);
+    std::sort(front.begin(), front.end(), [](const json* a, const json* b) { return (*a)["wall_seconds"] < (*b)["wall_seconds"]; });
+    for (const json* p : front)
+      std::printf("%-22s h %-7g %s error %.3e  wall %.3f s\n", (*p)["group"].get<std::string>().c_str(), (*p)["cell_size"].get<double>(),
+                  p->contains("cfl") ? ("cfl " + std::to_string((*p)["cfl"].get<double>()).substr(0, 3)).c_str() : "", (*p)["error"].get<double>(),
+                  (*p)["wall_seconds"].get<double>());
   }
   if (out.contains("skip")) {
     const json& s = out["skip"];

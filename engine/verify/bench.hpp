@@ -33,6 +33,8 @@ nlohmann::json to_json(const KernelBench& b);
 // (bench_cases.cpp), and the block with an idle frame or a 10x grid (bench.cpp).
 nlohmann::json bench_a5(bool progress);
 nlohmann::json bench_a6(bool progress);
+nlohmann::json bench_bar(bool progress);
+nlohmann::json bench_disks(bool progress);
 nlohmann::json bench_skip(bool progress);
 nlohmann::json skip_block_bench(bool progress);
 
