@@ -57,6 +57,7 @@ template <int D> void Grid<D>::bin(const std::vector<Vec<D>>& x) {
   tile_of_.resize(x.size());
   tile_particles_.resize(x.size());
   occupied_.clear();
+#pragma omp parallel for schedule(static) if (np > kParallelMin)
   for (Index i = 0; i < np; ++i) {
     const Vec<D> xr = grid_coord(x[i]);
     Index t = 0;
@@ -65,8 +66,9 @@ template <int D> void Grid<D>::bin(const std::vector<Vec<D>>& x) {
       t = t * tiles_[d] + c / T;
     }
     tile_of_[i] = t;
-    if (tile_count_[t]++ == 0) occupied_.push_back(t);
   }
+  for (Index i = 0; i < np; ++i)
+    if (tile_count_[tile_of_[i]]++ == 0) occupied_.push_back(tile_of_[i]);
   std::sort(occupied_.begin(), occupied_.end());
   const Index nocc = static_cast<Index>(occupied_.size());
   tile_start_.resize(static_cast<std::size_t>(nocc + 1));
@@ -112,6 +114,7 @@ template <int D> void Grid<D>::bin(const std::vector<Vec<D>>& x) {
       if (d == D) break;
     }
   }
+  // Ascending node ids: grid loops then stream memory row by row (in tile order a 10x wider grid cost 1.9x per step).
   std::sort(active_.begin(), active_.end());
   for (Index id : active_) flag_[id] = 0;
 }
