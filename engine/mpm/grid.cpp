@@ -26,6 +26,7 @@ Grid<D>::Grid(const Vec<D>& origin, const IVec<D>& cells, double h, int nfields)
     grad_m.assign(n, Vec<D>::Zero());
     vol.assign(n, 0.0);
   }
+  if (D == 2) mpf.assign(5 * n, 0.0);
   flag_.assign(static_cast<std::size_t>(nnodes_), 0);
   tile_count_.assign(static_cast<std::size_t>(ntiles_), 0);
 }

@@ -30,6 +30,7 @@ struct ScatterCtx {
   double* __restrict gm;
   double* __restrict gp;
   double* __restrict gf;
+  double* __restrict mpf;  // interleaved (m, px, py, fx, fy) records
   double* __restrict gg;
   double* __restrict gvol;
   double h, ih, ox, oy, gx, gy;
@@ -63,18 +64,21 @@ template <class Shape, bool APIC, bool GRAD, bool MOMENTUM> inline void scatter_
       for (int a = 0; a < K; ++a) {
         const Index id = row + a;
         const double N = wx[a] * Wy, dNx = dwx[a] * c.ih * Wy, dNy = wx[a] * dWy;
+        double px = N * mvx, py = N * mvy;
         if constexpr (APIC) {
           const double dx = (bx + a - xr) * c.h;
-          c.gp[2 * id] += N * (mvx + c00 * dx + c01 * dy);
-          c.gp[2 * id + 1] += N * (mvy + c10 * dx + c11 * dy);
-        } else {
-          c.gp[2 * id] += N * mvx;
-          c.gp[2 * id + 1] += N * mvy;
+          px += N * (c00 * dx + c01 * dy), py += N * (c10 * dx + c11 * dy);
         }
-        if constexpr (!MOMENTUM) {
-          c.gm[id] += N * mp;
-          c.gf[2 * id] += s00 * dNx + s01 * dNy;  // gravity m_i g is added on the grid (Solver::particles_to_grid)
-          c.gf[2 * id + 1] += s10 * dNx + s11 * dNy;
+        if constexpr (MOMENTUM) {
+          c.gp[2 * id] += px;
+          c.gp[2 * id + 1] += py;
+        } else {
+          double* r = c.mpf + 5 * id;
+          r[0] += N * mp;
+          r[1] += px;
+          r[2] += py;
+          r[3] += s00 * dNx + s01 * dNy;  // gravity m_i g is added on the grid (Solver::particles_to_grid)
+          r[4] += s10 * dNx + s11 * dNy;
         }
         if constexpr (GRAD) {
           c.gg[2 * id] += mp * dNx;
@@ -91,6 +95,7 @@ template <class Shape, bool APIC, bool GRAD, bool MOMENTUM> void scatter2d(Scene
   const Particles<2>& P = s.particles;
   ScatterCtx c{P.x.data(), P.v.data(), P.half_size.data(), P.C.data(), P.F.data(), P.stress.data(), P.mass.data(), P.vol.data(),
                P.vol0.data(), P.body.data(), s.bodies.data(), g.tile_particles().data(), g.m.data(), g.p.data()->data(), g.f.data()->data(),
+               g.mpf.data(),
                GRAD ? g.grad_m.data()->data() : nullptr, GRAD ? g.vol.data() : nullptr, g.h(), g.inv_h(), g.origin()[0], g.origin()[1],
                s.gravity[0], s.gravity[1], g.nodes()[0], g.nnodes()};
   const Index* start = g.tile_start().data();
@@ -100,6 +105,20 @@ template <class Shape, bool APIC, bool GRAD, bool MOMENTUM> void scatter2d(Scene
     const Index nt = static_cast<Index>(g.color_tiles(col).size());
 #pragma omp parallel for schedule(dynamic, 1) firstprivate(c) if (parallel)
     for (Index k = 0; k < nt; ++k) scatter_range<Shape, APIC, GRAD, MOMENTUM>(c, start[tiles[k]], start[tiles[k] + 1]);
+  }
+  if constexpr (!MOMENTUM) {  // unpack the records into m, p, f and zero them for the next step
+    const auto& active = g.active();
+    const Index na = static_cast<Index>(active.size()), nn = g.nnodes();
+#pragma omp parallel for schedule(static) if (na > kParallelMin)
+    for (Index a = 0; a < na; ++a)
+      for (int fld = 0; fld < g.nfields(); ++fld) {
+        const Index k = fld * nn + active[a];
+        double* r = g.mpf.data() + 5 * k;
+        g.m[k] = r[0];
+        g.p[k] = Vec<2>(r[1], r[2]);
+        g.f[k] = Vec<2>(r[3], r[4]);
+        r[0] = r[1] = r[2] = r[3] = r[4] = 0.0;
+      }
   }
 }
 
