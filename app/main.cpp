@@ -265,6 +265,9 @@ int main(int argc, char** argv) {
   } catch (const dmi::InputError& e) {
     std::fprintf(stderr, "damimpact: error: %s\n", e.what());
     return 2;
+  } catch (const dmi::Interrupted& e) {
+    std::fprintf(stderr, "damimpact: %s\n", e.what());
+    return 128 + e.signal();
   } catch (const dmi::RunError& e) {
     std::fprintf(stderr, "damimpact: run failed: %s\n", e.what());
     return 2;

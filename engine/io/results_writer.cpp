@@ -284,6 +284,15 @@ void ResultsWriter::write_snapshot(const Snapshot& s) {
 
 void ResultsWriter::finish(const std::vector<double>& time, const std::vector<Series>& series,
                            const RunInfo& info) {
+  close_file(time, series, info, true);
+}
+
+void ResultsWriter::abandon(const std::vector<double>& time, const std::vector<Series>& series, const RunInfo& info) {
+  close_file(time, series, info, false);
+}
+
+void ResultsWriter::close_file(const std::vector<double>& time, const std::vector<Series>& series, const RunInfo& info,
+                               bool complete) {
   Impl& m = *impl_;
   const std::string& f = m.partial;
   if (m.finished) throw std::runtime_error(f + ": finish() called twice");
@@ -314,11 +323,15 @@ void ResultsWriter::finish(const std::vector<double>& time, const std::vector<Se
   }
   hist.close();
   m.write_info(info);
-  attr_int(m.file, "complete", 1, f);
+  attr_int(m.file, "complete", complete ? 1 : 0, f);
 
   m.snapshots.close();
   check_ok(H5Fflush(m.file, H5F_SCOPE_GLOBAL), f, "cannot flush results file");
   check_ok(m.file.close(), f, "cannot close results file");
+  if (!complete) {
+    m.finished = true;
+    return;
+  }
   // Only now does <path> appear (or an older complete file get replaced), atomically on POSIX.
   if (std::rename(m.partial.c_str(), m.path.c_str()) != 0)
     throw std::runtime_error(f + ": cannot rename to " + m.path + ": " + std::strerror(errno));

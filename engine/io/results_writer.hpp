@@ -18,8 +18,12 @@ class ResultsWriter {
   void write_snapshot(const Snapshot& s);  // /snapshots/<index> as the run goes
   // Histories, run info numbers/strings (updated), then complete=1, close, rename.
   void finish(const std::vector<double>& time, const std::vector<Series>& series, const RunInfo& info);
+  // An interrupted run: the histories so far and the run info go into the .partial file, which keeps complete = 0
+  // and its .partial name (an older complete <path> is left as it was).
+  void abandon(const std::vector<double>& time, const std::vector<Series>& series, const RunInfo& info);
 
  private:
+  void close_file(const std::vector<double>& time, const std::vector<Series>& series, const RunInfo& info, bool complete);
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

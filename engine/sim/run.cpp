@@ -5,11 +5,13 @@
 #include <omp.h>
 
 #include <chrono>
+#include <csignal>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 
+#include "engine/common/error.hpp"
 #include "engine/io/results_writer.hpp"
 #include "engine/io/vtu.hpp"
 #include "engine/mpm/solver.hpp"
@@ -19,6 +21,20 @@
 
 namespace dmi {
 namespace {
+
+// SIGINT / SIGTERM during a run: the handler only records the signal; the step loop stops after the step in hand,
+// writes what it has into results.h5.partial (complete = 0) and throws Interrupted. Previous handlers come back after.
+volatile std::sig_atomic_t g_signal = 0;
+extern "C" void on_signal(int sig) { g_signal = sig; }
+struct SignalGuard {
+  using Handler = void (*)(int);
+  Handler old_int, old_term;
+  SignalGuard() : old_int(std::signal(SIGINT, on_signal)), old_term(std::signal(SIGTERM, on_signal)) { g_signal = 0; }
+  ~SignalGuard() {
+    std::signal(SIGINT, old_int);
+    std::signal(SIGTERM, old_term);
+  }
+};
 
 const char* name_of(ShapeKind k) { return k == ShapeKind::linear ? "linear" : k == ShapeKind::gimp ? "gimp" : "bspline2"; }
 
@@ -90,7 +106,22 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   double next_sample = s.output.history_interval, next_snap = s.output.snapshot_interval;
   double dt_min = std::numeric_limits<double>::infinity(), dt_max = 0;
   Progress progress(o.progress, end, s.name);
+  const SignalGuard signals;
   while (solver.time() < end - eps) {
+    if (g_signal != 0) {  // stopped by the user: keep what is done, never as a complete result
+      const int sig = g_signal;
+      if (rec.time().empty() || rec.time().back() < solver.time()) rec.sample(solver, 0.0);
+      info.strings["status"] = sig == SIGINT ? "interrupted (SIGINT)" : "interrupted (SIGTERM)";
+      info.numbers["steps"] = static_cast<double>(solver.steps());
+      info.numbers["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      std::string where = "nothing written (no output folder)";
+      if (files) {
+        writer->abandon(rec.time(), rec.series(), info);
+        where = "partial results in " + results_path + ".partial (complete = 0)";
+      }
+      throw Interrupted(sig, "run interrupted by " + std::string(sig == SIGINT ? "SIGINT" : "SIGTERM") + " at step " +
+                                 std::to_string(solver.steps()) + ", t = " + std::to_string(solver.time()) + " s: " + where);
+    }
     const double dt = solver.stable_time_step(end - solver.time());
     solver.step(dt);
     rec.accumulate(solver, dt);

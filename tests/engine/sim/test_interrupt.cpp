@@ -1,0 +1,78 @@
+// SIGINT / SIGTERM during a run: the run stops after the step in hand, keeps its histories in
+// results.h5.partial (complete = 0), exits 128 + signal, and never replaces an older complete results.h5.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "engine/io/results_writer.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Starts damimpact with args (stdout/stderr to files in dir) and returns its pid.
+pid_t spawn(const std::vector<std::string>& args, const fs::path& dir) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const std::string out = (dir / "stdout.txt").string(), err = (dir / "stderr.txt").string();
+    if (!freopen(out.c_str(), "w", stdout) || !freopen(err.c_str(), "w", stderr)) _exit(99);
+    std::vector<char*> argv;
+    std::string bin = DMI_BINARY;
+    argv.push_back(bin.data());
+    std::vector<std::string> copy = args;
+    for (auto& a : copy) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    execv(DMI_BINARY, argv.data());
+    _exit(98);
+  }
+  return pid;
+}
+
+}  // namespace
+
+TEST(Interrupt, SigtermKeepsPartialHistoriesAndTheOlderCompleteResult) {
+  const fs::path dir = fs::temp_directory_path() / ("dmi_interrupt_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string source = std::string(DMI_SOURCE_DIR) + "/tests/data/design/cantilever_self_weight.json";
+  // A complete result first (0.01 s).
+  pid_t pid = spawn({"simulate", source, "-o", dir.string(), "-q"}, dir);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  const dmi::Results before = dmi::read_results((dir / "results.h5").string(), false);
+  ASSERT_TRUE(before.complete);
+  // The same scene for 100 s, stopped after half a second.
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(source));
+  j["analysis"]["end_time"] = 100.0;
+  const fs::path long_run = dir / "long.json";
+  std::ofstream(long_run) << j.dump();
+  pid = spawn({"simulate", long_run.string(), "-o", dir.string(), "-q"}, dir);
+  std::this_thread::sleep_for(std::chrono::milliseconds(700));
+  kill(pid, SIGTERM);
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 128 + SIGTERM);
+  std::ifstream err(dir / "stderr.txt");
+  const std::string msg((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+  EXPECT_NE(msg.find("run interrupted by SIGTERM at step"), std::string::npos) << msg;
+  // The older complete file is untouched; the partial one holds the histories so far and says it is incomplete.
+  const dmi::Results after = dmi::read_results((dir / "results.h5").string(), false);
+  EXPECT_TRUE(after.complete);
+  EXPECT_EQ(after.time.size(), before.time.size());
+  EXPECT_DOUBLE_EQ(after.info.numbers.at("end_time"), 0.01);
+  const dmi::Results partial = dmi::read_results((dir / "results.h5.partial").string(), false);
+  EXPECT_FALSE(partial.complete);
+  ASSERT_GT(partial.time.size(), 2u);
+  EXPECT_LT(partial.time.back(), 100.0);
+  for (const auto& s : partial.series) EXPECT_EQ(s.samples(), partial.time.size()) << s.path;
+  EXPECT_EQ(partial.info.strings.at("status"), "interrupted (SIGTERM)");
+  fs::remove_all(dir);
+}
