@@ -50,6 +50,23 @@ json material_object(Obj& o, const char* key, const json& defaults, const std::s
   return m;
 }
 
+// Plausibility of a preset material's modulus and density (SI units): E = 25 for concrete is 25 Pa, not 25 GPa. The
+// ranges are wide (any real concrete, steel, rock or tyre stack lies inside); a lab-scale or scaled model can use the
+// low-level scenario, which has no such check.
+void plausible(Obj& o, const std::string& key, const json& m, const char* what, double e_lo, double e_hi, double rho_lo, double rho_hi) {
+  if (o.documenting()) return;
+  const double E = m.value("youngs_modulus", 0.0), rho = m.value("density", 0.0);
+  char buf[256];
+  if (m.contains("youngs_modulus") && !(E >= e_lo && E <= e_hi)) {
+    std::snprintf(buf, sizeof buf, "a Young's modulus in Pa between %.0e and %.0e for %s (units: Pa, e.g. 25e9 for 25 GPa)", e_lo, e_hi, what);
+    o.fail(key.empty() ? "youngs_modulus" : key + "/youngs_modulus", &m.at("youngs_modulus"), buf);
+  }
+  if (m.contains("density") && !(rho >= rho_lo && rho <= rho_hi)) {
+    std::snprintf(buf, sizeof buf, "a density in kg/m^3 between %.0f and %.0f for %s", rho_lo, rho_hi, what);
+    o.fail(key.empty() ? "density" : key + "/density", &m.at("density"), buf);
+  }
+}
+
 void read_dam(Obj o, DamPreset& d) {
   o.string("type", d.type, Spec{.doc = "concrete_gravity (a tapered concrete wall) | steel_open (a frame of steel pipes: columns in rows "
                                        "along the flow, beams between them)", .required = true});
@@ -73,6 +90,7 @@ void read_dam(Obj o, DamPreset& d) {
                                       "continuum: an MPM body stuck to the ground along its base (for comparison)"});
     d.concrete = material_object(o, "concrete", json{{"model", "linear_elastic"}, {"density", 2400}, {"youngs_modulus", 25e9}, {"poisson_ratio", 0.2}},
                                  "concrete (paper B uses E 25 GPa, rho 2300)", "concrete");
+    plausible(o, "concrete", d.concrete, "concrete", 5e9, 1e11, 1500, 3500);
     if (!o.documenting() && d.base_thickness < d.crest)
       o.fail("base_thickness", nullptr, "a base thickness >= crest_thickness = " + std::to_string(d.crest) + " m");
   }
@@ -92,6 +110,7 @@ void read_dam(Obj o, DamPreset& d) {
     b.finish();
     d.steel = material_object(o, "steel", json{{"model", "linear_elastic"}, {"density", 7850}, {"youngs_modulus", 205e9}, {"poisson_ratio", 0.3}},
                               "steel", "steel");
+    plausible(o, "steel", d.steel, "steel", 1e11, 3e11, 7000, 8500);
   }
   o.end_when();
   o.finish();
@@ -102,6 +121,7 @@ void read_boulder(Obj o, BoulderPreset& b) {
   o.number("mass", b.mass, positive("kg", "boulder mass; give this or diameter"));
   o.number("density", b.density, positive("kg/m^3", "rock density"));
   o.number("youngs_modulus", b.youngs_modulus, positive("Pa", "rock Young's modulus (stiffness)"));
+  if (!o.documenting()) plausible(o, "", json{{"youngs_modulus", b.youngs_modulus}, {"density", b.density}}, "rock", 1e9, 2e11, 1500, 4000);
   o.number("poisson_ratio", b.poisson_ratio, Spec{.doc = "rock Poisson's ratio", .min = 0, .max = 0.5, .max_open = true});
   o.vector("velocity", b.velocity, Spec{.unit = "m/s", .doc = "velocity at release; give this or release_height"});
   o.number("release_height", b.release_height, positive("m", "drop height converted to a horizontal speed sqrt(2 g h) towards the dam"));
