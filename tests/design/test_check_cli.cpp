@@ -116,6 +116,20 @@ TEST_F(CheckCli, BadInputExitsTwoWithOneClearMessage) {
   c = cli("check " + junk.string());
   EXPECT_EQ(c.status, 2);
   EXPECT_NE(c.err.find("junk.h5: cannot open as HDF5"), std::string::npos) << c.err;
+  // A truncated results file in a run folder: check, render and report all refuse it the same way.
+  const fs::path trunc = dir / "trunc";
+  fs::create_directories(trunc);
+  {
+    std::ifstream in(dir / "results.h5", std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::ofstream(trunc / "results.h5", std::ios::binary) << bytes.substr(0, bytes.size() / 3);
+  }
+  for (const char* cmd : {"check", "render", "report"}) {
+    c = cli(std::string(cmd) + " " + trunc.string());
+    EXPECT_EQ(c.status, 2) << cmd;
+    EXPECT_NE(c.err.find("results.h5: cannot open as HDF5 (not an HDF5 file, or truncated or corrupt)"), std::string::npos) << cmd << ": " << c.err;
+  }
+  EXPECT_FALSE(fs::exists(trunc / "report.html"));
   const fs::path bad = write("bad_limits.json", R"({"concrete": {"fc": 28e6}})");
   c = cli("check " + dir.string() + " --limits " + bad.string());
   EXPECT_EQ(c.status, 2);
