@@ -321,6 +321,14 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
          const Series* s = r.results.find("energy/frame_damping");
          return s && !s->data.empty() ? fmt("%.4g J", s->data.back()) : std::string("—");
        }},
+      {"largest Courant number used", [](const RunData& r) {
+         const auto& n = r.results.info.numbers;
+         return n.count("courant_max") ? fmt("%.3f", n.at("courant_max")) : std::string("—");
+       }},
+      {"smallest particle J = V/V0", [](const RunData& r) {
+         const auto& n = r.results.info.numbers;
+         return n.count("jacobian_min") ? fmt("%.4f", n.at("jacobian_min")) : std::string("—");
+       }},
       {"contact projection iterations, max", [](const RunData& r) {
          const auto& n = r.results.info.numbers;
          return n.count("projection_iterations_max") ? fmt("%.0f", n.at("projection_iterations_max")) : std::string("—");

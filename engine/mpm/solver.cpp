@@ -1,5 +1,8 @@
 #include "engine/mpm/solver.hpp"
 
+#include <limits>
+#include <vector>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -143,6 +146,7 @@ template <int D> double Solver<D>::stable_time_step(double limit) const {
   const auto& P = scene_.particles;
   double dt = limit;
   if (scene_.options.dt_max > 0) dt = std::min(dt, scene_.options.dt_max);
+  std::vector<double> dt_bodies;  // each body's stable step h / (c + |v|) (damping included)
   for (const Body& b : scene_.bodies) {
     double vmax = 0;
 #pragma omp parallel for schedule(static) reduction(max : vmax) if (b.end - b.begin > kParallelMin)
@@ -157,8 +161,11 @@ template <int D> double Solver<D>::stable_time_step(double limit) const {
       const double w = 2 * std::sqrt(double(D)) / dt_b, zeta = 0.5 * beta * w;
       dt_b = (2 / w) * (std::sqrt(1 + zeta * zeta) - zeta);
     }
+    dt_bodies.push_back(dt_b);
     dt = std::min(dt, scene_.options.cfl * dt_b);
   }
+  courant_ = 0;
+  for (double d : dt_bodies) courant_ = std::max(courant_, dt / d);
   // An explicit frame limits the step (2 / omega_max, scaled by the same fraction); Newmark does not.
   if (scene_.frame) dt = std::min(dt, scene_.options.cfl * scene_.frame->stable_time_step());
   return dt;
@@ -182,6 +189,15 @@ template <int D> Diagnostics<D> Solver<D>::diagnostics() const {
     d.frame_damping = f->damping_work();
   }
   return d;
+}
+
+template <int D> double Solver<D>::min_jacobian() const {
+  const auto& P = scene_.particles;
+  const Index np = static_cast<Index>(P.size());
+  double j = std::numeric_limits<double>::infinity();
+#pragma omp parallel for schedule(static) reduction(min : j) if (np > kParallelMin)
+  for (Index i = 0; i < np; ++i) j = std::min(j, P.vol[i] / P.vol0[i]);
+  return j;
 }
 
 template <int D> void Solver<D>::fail(const std::string& what) const {

@@ -42,6 +42,11 @@ template <int D> class Solver {
   Diagnostics<D> diagnostics() const;
   double time() const { return time_; }
   long steps() const { return steps_; }
+  // Courant number of the step last returned by stable_time_step: max over bodies of dt (c + |v|_max) / h (the
+  // dt_max or end-of-run limits can make it smaller than the cfl factor; never larger).
+  double courant() const { return courant_; }
+  // Smallest J = V / V0 over the particles now (a collapse of particles shows as J -> 0).
+  double min_jacobian() const;
   const Scene<D>& scene() const { return scene_; }
   const MemberContact<D>* member_contact() const { return members_.get(); }
   Scene<D>& scene() { return scene_; }
@@ -64,6 +69,7 @@ template <int D> class Solver {
   long steps_ = 0;
   double boundary_work_ = 0.0;
   double mass_eps_ = 0.0;  // nodal masses below this are treated as empty
+  mutable double courant_ = 0.0;
 };
 
 }  // namespace dmi

@@ -104,7 +104,7 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   rec.sample(solver, 0.0);
   snapshot();
   double next_sample = s.output.history_interval, next_snap = s.output.snapshot_interval;
-  double dt_min = std::numeric_limits<double>::infinity(), dt_max = 0;
+  double dt_min = std::numeric_limits<double>::infinity(), dt_max = 0, courant_max = 0, j_min = solver.min_jacobian();
   Progress progress(o.progress, end, s.name);
   const SignalGuard signals;
   while (solver.time() < end - eps) {
@@ -123,6 +123,7 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
                                  std::to_string(solver.steps()) + ", t = " + std::to_string(solver.time()) + " s: " + where);
     }
     const double dt = solver.stable_time_step(end - solver.time());
+    courant_max = std::max(courant_max, solver.courant());
     solver.step(dt);
     rec.accumulate(solver, dt);
     dt_min = std::min(dt_min, dt);
@@ -130,6 +131,7 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
     const bool last = solver.time() >= end - eps;
     if (last || s.output.history_interval <= 0 || solver.time() >= next_sample - eps) {
       rec.sample(solver, dt);
+      j_min = std::min(j_min, solver.min_jacobian());
       if (s.output.history_interval > 0) next_sample = next_after(solver.time(), s.output.history_interval);
     }
     if (!last && s.output.snapshot_interval > 0 && solver.time() >= next_snap - eps) {
@@ -146,6 +148,8 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   info.numbers["wall_seconds"] = wall;
   info.numbers["dt_min"] = dt_min;
   info.numbers["dt_max"] = dt_max;
+  info.numbers["courant_max"] = courant_max;   // numerical health (docs/results.md)
+  info.numbers["jacobian_min"] = std::isfinite(j_min) ? j_min : 1.0;
   info.numbers["threads"] = omp_get_max_threads();
   if (solver.scene().frame) {
     info.documents["structure"] = structure_document(s, solver.scene().frame->model());

@@ -10,6 +10,8 @@
 #include <string>
 
 #include "engine/io/results_writer.hpp"
+#include "engine/scenario/scenario.hpp"
+#include "engine/sim/run.hpp"
 
 namespace fs = std::filesystem;
 
@@ -91,3 +93,17 @@ TEST(RunCli, MissingScenarioFileIsOneClearError) {
 }
 
 }  // namespace
+
+// Numerical health in /run: the Courant number never exceeds the cfl factor (the automatic step), and the smallest
+// particle J stays positive (the disks compress where they meet, then recover).
+TEST(RunHealth, CourantAndJacobianAreRecorded) {
+  dmi::Scenario s = dmi::load_scenario(std::string(DMI_SOURCE_DIR) + "/examples/colliding_disks.json");
+  dmi::RunOptions o;
+  o.progress = dmi::ProgressMode::quiet;
+  const dmi::RunOutput r = dmi::run_scenario(s, o);
+  const double c = r.results.info.numbers.at("courant_max"), j = r.results.info.numbers.at("jacobian_min");
+  EXPECT_GT(c, 0.9 * s.analysis.cfl);
+  EXPECT_LE(c, s.analysis.cfl + 1e-12);
+  EXPECT_GT(j, 0.3);
+  EXPECT_LT(j, 1.0);
+}
