@@ -59,9 +59,27 @@ int dry_run_report(const std::string& file, const std::vector<dmi::ScenarioVaria
   return 0;
 }
 
+// Checkpoint and restart options of simulate/run (docs/reliability.md).
+struct RestartFlags {
+  double checkpoint_every = 600;  // wall seconds
+  long stop_after = 0;
+  bool restart = false;
+};
+
+// With --restart, a variant that has a checkpoint continues from it; one whose results.h5 is complete (and has no
+// checkpoint) is kept as it is; any other starts afresh.
+enum class Resume { fresh, from_checkpoint, done };
+Resume resume_mode(const RestartFlags& rf, const std::string& dir) {
+  namespace fs = std::filesystem;
+  if (!rf.restart) return Resume::fresh;
+  if (fs::exists(fs::path(dir) / "checkpoint.dmi")) return Resume::from_checkpoint;
+  if (fs::exists(fs::path(dir) / "results.h5") && !fs::exists(fs::path(dir) / "results.h5.partial")) return Resume::done;
+  return Resume::fresh;
+}
+
 // Simulates every variant; `written` receives the results files.
 int simulate(const std::string& file, const std::string& out, int threads, bool quiet, const std::string& progress, bool dry_run,
-             bool expand, std::vector<std::string>* written = nullptr) {
+             bool expand, const RestartFlags& rf, std::vector<std::string>* written = nullptr) {
   const std::vector<dmi::ScenarioVariant> variants = dmi::load_scenario_variants(file);
   if (dry_run || expand) return dry_run_report(file, variants, expand);
   for (const auto& v : variants) {
@@ -70,7 +88,17 @@ int simulate(const std::string& file, const std::string& out, int threads, bool 
     o.threads = threads;
     o.progress = progress_mode(quiet, progress);
     o.software_version = DMI_VERSION;
+    o.checkpoint_every = rf.checkpoint_every;
+    o.stop_after_steps = rf.stop_after;
+    const Resume mode = resume_mode(rf, o.out_dir);
+    o.restart = mode == Resume::from_checkpoint;
     if (!quiet && !v.label.empty()) std::printf("variant %s -> %s\n", v.label.c_str(), o.out_dir.c_str());
+    if (mode == Resume::done) {  // finished before the interruption
+      if (!quiet) std::printf("kept %s/results.h5 (complete; nothing to restart)\n", o.out_dir.c_str());
+      if (written) written->push_back((std::filesystem::path(o.out_dir) / "results.h5").string());
+      continue;
+    }
+    if (!quiet && o.restart) std::printf("restarting from %s/checkpoint.dmi\n", o.out_dir.c_str());
     const dmi::RunOutput r = dmi::run_scenario(v.scenario, o);
     if (written) written->push_back(r.results_path);
     if (!quiet) std::printf("wrote %s (%.0f steps, %.2f s wall)\n", r.results_path.c_str(), r.results.info.numbers.at("steps"),
@@ -169,12 +197,18 @@ int main(int argc, char** argv) {
   std::string file, out = "out", progress = "auto";
   int threads = 0;
   bool quiet = false, dry_run = false, expand = false, json = false, list = false, markdown = false;
+  RestartFlags restart;
   auto add_run_options = [&](CLI::App* c) {
     c->add_option("scenario", file, "scenario JSON file (docs/scenario.md)")->required();
     c->add_option("-o,--out", out, "output folder (results.h5, fields/)")->capture_default_str();
     c->add_option("-t,--threads", threads, "OpenMP threads (0 = all cores)")->capture_default_str();
     c->add_flag("-q,--quiet", quiet, "no progress output");
     c->add_option("--progress", progress, "progress display: auto | terminal | lines")->check(CLI::IsMember({"auto", "terminal", "lines"}));
+    c->add_flag("--restart", restart.restart, "continue an interrupted run from OUT/checkpoint.dmi (bit for bit; same scenario file)");
+    c->add_option("--checkpoint-every", restart.checkpoint_every, "wall seconds between checkpoints (0 = only when interrupted)")
+        ->capture_default_str()->check(CLI::NonNegativeNumber);
+    c->add_option("--stop-after", restart.stop_after, "stop after this many steps with a checkpoint (exit 3; continue with --restart)")
+        ->check(CLI::PositiveNumber);
   };
   CLI::App* run = app.add_subcommand("run", "simulate a scenario and write results (the whole chain)");
   add_run_options(run);
@@ -237,11 +271,11 @@ int main(int argc, char** argv) {
     return rc == 0 ? 0 : 2;
   }
   try {
-    if (*sim) return simulate(file, out, threads, quiet, progress, dry_run, expand);
+    if (*sim) return simulate(file, out, threads, quiet, progress, dry_run, expand, restart);
     if (*run) {  // the whole chain: simulation, then the design checks of what it wrote
       if (!limits_file.empty()) dmi::design::read_limits(limits_file);  // a bad limits file fails before the simulation
       std::vector<std::string> written;
-      simulate(file, out, threads, quiet, progress, false, false, &written);
+      simulate(file, out, threads, quiet, progress, false, false, restart, &written);
       const std::string design = (std::filesystem::path(out) / "design.json").string();
       const int verdict = dmi::design::check_main(written, limits_file, false, design, quiet, DMI_VERSION);
       if (!no_pdf) dmi::render::report_main(out, {quantity, quiet, true, DMI_VERSION});
@@ -267,7 +301,7 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const dmi::Interrupted& e) {
     std::fprintf(stderr, "damimpact: %s\n", e.what());
-    return 128 + e.signal();
+    return e.signal() == 0 ? 3 : 128 + e.signal();  // 3: stopped on request (--stop-after)
   } catch (const dmi::RunError& e) {
     std::fprintf(stderr, "damimpact: run failed: %s\n", e.what());
     return 2;

@@ -43,6 +43,16 @@ struct ContactLoad {
   double xi = 0;     // local coordinate on the element, 0 at its start node, 1 at its end
   Vec2 point, force;  // surface point (m) and force (N)
 };
+inline void save_loads(StateWriter& w, const std::vector<ContactLoad>& v) {
+  w.put<std::uint64_t>(v.size());
+  for (const auto& c : v) w.put(c.element), w.put(c.xi), w.put(c.point), w.put(c.force);
+}
+inline void load_loads(StateReader& r, std::vector<ContactLoad>& v) {
+  const auto n = r.get<std::uint64_t>();
+  if (n > (std::uint64_t{1} << 32)) r.fail("contact load count " + std::to_string(n) + " out of range");
+  v.resize(static_cast<std::size_t>(n));
+  for (auto& c : v) r.get(c.element), r.get(c.xi), r.get(c.point), r.get(c.force);
+}
 
 template <int D> class MemberContact {
  public:
@@ -59,6 +69,17 @@ template <int D> class MemberContact {
   const Vec2& force() const { return force_; }
   // The individual reactions of the last step (they sum to force()).
   const std::vector<ContactLoad>& loads() const { return loads_; }
+  // Counters and the last step's reactions, for checkpoints (the rest is rebuilt every step).
+  void save_state(StateWriter& w) const {
+    w.tag("member_contact");
+    w.put(stats_), w.put(force_);
+    save_loads(w, loads_);
+  }
+  void load_state(StateReader& r) {
+    r.tag("member_contact");
+    r.get(stats_), r.get(force_);
+    load_loads(r, loads_);
+  }
 
  private:
   struct Candidate {

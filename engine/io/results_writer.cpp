@@ -246,6 +246,34 @@ ResultsWriter::ResultsWriter(const std::string& path, const RunInfo& info)
   check_ok(H5Fflush(m.file, H5F_SCOPE_GLOBAL), f, "cannot flush results file");
 }
 
+ResultsWriter::ResultsWriter(const std::string& path, const RunInfo& info, Resume resume) : impl_(std::make_unique<Impl>()) {
+  h5::silence_errors();
+  Impl& m = *impl_;
+  m.path = path;
+  m.partial = path + ".partial";
+  const std::string& f = m.partial;
+  Handle fapl(check_id(H5Pcreate(H5P_FILE_ACCESS), f, "cannot create property list"), H5Pclose);
+  check_ok(H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG), f, "cannot create property list");
+  m.file = Handle(check_id(H5Fopen(f.c_str(), H5F_ACC_RDWR, fapl), f, "cannot reopen the partial results of the run to restart"),
+                  H5Fclose);
+  m.snapshots = Handle(check_id(H5Gopen2(m.file, "snapshots", H5P_DEFAULT), f, "cannot open group /snapshots"), H5Gclose);
+  H5G_info_t gi;
+  check_ok(H5Gget_info(m.snapshots, &gi), f, "cannot read /snapshots");
+  if (gi.nlinks < resume.snapshots)
+    throw std::runtime_error(f + ": holds " + std::to_string(gi.nlinks) + " snapshots, the checkpoint expects " +
+                             std::to_string(resume.snapshots));
+  for (std::size_t k = resume.snapshots; k < gi.nlinks; ++k) {  // written after the checkpoint: the restart redoes them
+    char name[32];
+    std::snprintf(name, sizeof name, "%04zu", k);
+    remove_link(m.snapshots, name, f);
+  }
+  m.next_snapshot = resume.snapshots;
+  remove_link(m.file, "history", f);
+  attr_int(m.file, "complete", 0, f);
+  m.write_info(info);
+  check_ok(H5Fflush(m.file, H5F_SCOPE_GLOBAL), f, "cannot flush results file");
+}
+
 ResultsWriter::~ResultsWriter() {
   if (!impl_) return;
   impl_->snapshots.close();

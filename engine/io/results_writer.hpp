@@ -11,6 +11,13 @@ namespace dmi {
 class ResultsWriter {
  public:
   ResultsWriter(const std::string& path, const RunInfo& info);  // throws std::runtime_error on I/O failure
+  // A restarted run: reopens <path>.partial, keeps its first `snapshots` snapshots (those written before the
+  // checkpoint), drops any later ones and the histories, and goes on from there. Throws std::runtime_error when the
+  // partial file is missing, unreadable, complete, or has fewer snapshots.
+  struct Resume {
+    std::size_t snapshots = 0;
+  };
+  ResultsWriter(const std::string& path, const RunInfo& info, Resume resume);
   ~ResultsWriter();  // without finish(): closes the partial file and leaves it under its .partial name
   ResultsWriter(const ResultsWriter&) = delete;
   ResultsWriter& operator=(const ResultsWriter&) = delete;

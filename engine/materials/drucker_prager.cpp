@@ -35,6 +35,8 @@ template <int D> class DruckerPrager final : public Material<D> {
   double wave_speed() const override { return el_.wave_speed(rho_, plane_); }
   void permute(const std::vector<Index>& perm) override { permute_array(power_, perm); }
   double dissipated() const override { return dissipated_; }
+  void save_state(StateWriter& w) const override { w.put(power_), w.put(dissipated_); }
+  void load_state(StateReader& r) override { r.get(power_), r.get(dissipated_); }
   void attach(const Particles<D>& p, Index, Index) override { power_.resize(p.size(), 0.0); }
 
   // Full 3D stress of a particle, and back.

@@ -28,6 +28,8 @@ template <int D> class LinearElastic final : public Material<D> {
   double damping_time() const override { return beta_; }
   void permute(const std::vector<Index>& perm) override { permute_array(elastic_, perm), permute_array(elastic_zz_, perm), permute_array(power_, perm); }
   double dissipated() const override { return dissipated_; }
+  void save_state(StateWriter& w) const override { w.put(elastic_), w.put(elastic_zz_), w.put(power_), w.put(dissipated_); }
+  void load_state(StateReader& r) override { r.get(elastic_), r.get(elastic_zz_), r.get(power_), r.get(dissipated_); }
   void attach(const Particles<D>& p, Index begin, Index end) override {
     if (beta_ <= 0) return;
     elastic_.resize(p.size(), Mat<D>::Zero());

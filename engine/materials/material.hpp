@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/common/state_io.hpp"
 #include "engine/mpm/particles.hpp"
 #include "engine/scenario/config.hpp"
 
@@ -34,6 +35,9 @@ template <int D> class Material {
   virtual double damping_time() const { return 0.0; }
   // The solver reordered the particles: new[i] = old[perm[i]]; laws with per-particle arrays follow.
   virtual void permute(const std::vector<Index>& /*perm*/) {}
+  // Internal variables (per-particle arrays, dissipated energy) for checkpoints; laws without any write nothing.
+  virtual void save_state(StateWriter& /*w*/) const {}
+  virtual void load_state(StateReader& /*r*/) {}
 };
 
 // Reorders a per-particle array (new[i] = old[perm[i]]); arrays of another size are left alone.

@@ -26,6 +26,8 @@ template <int D> class NeoHookean final : public Material<D> {
   double damping_time() const override { return beta_; }
   void permute(const std::vector<Index>& perm) override { permute_array(power_, perm); }
   double dissipated() const override { return dissipated_; }
+  void save_state(StateWriter& w) const override { w.put(power_), w.put(dissipated_); }
+  void load_state(StateReader& r) override { r.get(power_), r.get(dissipated_); }
   void attach(const Particles<D>& p, Index, Index) override {
     if (beta_ > 0) power_.resize(p.size(), 0.0);
   }

@@ -74,6 +74,8 @@ template <int D> class Grid {
   // Particles of occupied tile k: tile_particles()[tile_start()[k] .. tile_start()[k+1]).
   const std::vector<Index>& tile_start() const { return tile_start_; }
   const std::vector<Index>& tile_particles() const { return tile_particles_; }
+  // Checkpoint restart: the particle order of the last binning, which the next particle sort uses.
+  void restore_tile_particles(std::vector<Index> order) { tile_particles_ = std::move(order); }
 
   // Nodal fields, size nfields * nnodes.
   std::vector<double> m;        // mass (kg)

@@ -8,6 +8,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "engine/common/state_io.hpp"
 #include "engine/common/types.hpp"
 
 namespace dmi {
@@ -41,6 +42,23 @@ template <int D> struct Particles {
     apply(x), apply(x0), apply(v), apply(half_size), apply(F), apply(L), apply(C), apply(stress), apply(stress_zz);
     apply(mass), apply(vol0), apply(vol), apply(body), apply(id);
     for (std::size_t i = 0; i < id.size(); ++i) slot[id[i]] = static_cast<Index>(i);
+  }
+
+  // Every field, for checkpoints. load_state() requires the particle count the scenario built.
+  void save_state(StateWriter& w) const {
+    w.tag("particles");
+    w.put(x), w.put(x0), w.put(v), w.put(half_size), w.put(F), w.put(L), w.put(C), w.put(stress), w.put(stress_zz);
+    w.put(mass), w.put(vol0), w.put(vol), w.put(body), w.put(id), w.put(slot);
+  }
+  void load_state(StateReader& r) {
+    r.tag("particles");
+    const std::size_t n = size();
+    r.get(x), r.get(x0), r.get(v), r.get(half_size), r.get(F), r.get(L), r.get(C), r.get(stress), r.get(stress_zz);
+    r.get(mass), r.get(vol0), r.get(vol), r.get(body), r.get(id), r.get(slot);
+    for (std::size_t k : {x0.size(), v.size(), half_size.size(), F.size(), L.size(), C.size(), stress.size(),
+                          stress_zz.size(), mass.size(), vol0.size(), vol.size(), body.size(), id.size(), slot.size()})
+      r.expect_size("a particle array", k, n);
+    r.expect_size("particles", x.size(), n);
   }
 
   // Appends one particle at rest state; fields that a material must set start as NaN-free zeros.

@@ -171,6 +171,37 @@ template <int D> double Solver<D>::stable_time_step(double limit) const {
   return dt;
 }
 
+template <int D> void Solver<D>::save_state(StateWriter& w) const {
+  w.tag("solver");
+  w.put(time_), w.put(steps_), w.put(boundary_work_), w.put(courant_);
+  scene_.particles.save_state(w);
+  w.put(scene_.grid->tile_particles());
+  w.put<std::uint64_t>(scene_.materials.size());
+  for (const auto& m : scene_.materials) m->save_state(w);
+  for (const auto& wall : scene_.walls) w.put(wall.force);
+  for (const auto& reg : scene_.regions) w.put(reg.force);
+  w.put<std::uint8_t>(scene_.frame ? 1 : 0);
+  if (scene_.frame) scene_.frame->save_state(w);
+  if (members_) members_->save_state(w);
+}
+
+template <int D> void Solver<D>::load_state(StateReader& r) {
+  r.tag("solver");
+  r.get(time_), r.get(steps_), r.get(boundary_work_), r.get(courant_);
+  scene_.particles.load_state(r);
+  std::vector<Index> order;
+  r.get(order);
+  if (!order.empty()) r.expect_size("the particle order", order.size(), scene_.particles.size());
+  scene_.grid->restore_tile_particles(std::move(order));
+  r.expect_size("materials", r.get<std::uint64_t>(), scene_.materials.size());
+  for (auto& m : scene_.materials) m->load_state(r);
+  for (auto& wall : scene_.walls) r.get(wall.force);
+  for (auto& reg : scene_.regions) r.get(reg.force);
+  r.expect_size("frames", r.get<std::uint8_t>(), scene_.frame ? 1 : 0);
+  if (scene_.frame) scene_.frame->load_state(r);
+  if (members_) members_->load_state(r);
+}
+
 template <int D> Diagnostics<D> Solver<D>::diagnostics() const {
   const auto& P = scene_.particles;
   Diagnostics<D> d;

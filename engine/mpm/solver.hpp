@@ -50,6 +50,10 @@ template <int D> class Solver {
   const Scene<D>& scene() const { return scene_; }
   const MemberContact<D>* member_contact() const { return members_.get(); }
   Scene<D>& scene() { return scene_; }
+  // The whole dynamic state (time, step count, particles, material history, members, the last binning's order),
+  // for checkpoints: a solver built from the same scenario and given load_state() steps on bit for bit.
+  void save_state(StateWriter& w) const;
+  void load_state(StateReader& r);
 
  private:
   static constexpr long kSortInterval = 16;  // steps between particle reorderings (sort_particles)

@@ -270,6 +270,33 @@ template <int D> Snapshot Recorder<D>::snapshot(const Solver<D>& solver) const {
   return s;
 }
 
+template <int D> void Recorder<D>::save_state(StateWriter& w) const {
+  w.tag("recorder");
+  w.put(time_);
+  w.put<std::uint64_t>(series_.size());
+  for (const Series& s : series_) w.put(s.path), w.put(s.data);
+  w.put(impulse_), w.put(member_impulse_), w.put(elapsed_), w.put(peak_contact_), w.put(peak_contact_time_), w.put(e0_);
+  save_loads(w, peak_loads_);
+}
+
+template <int D> void Recorder<D>::load_state(StateReader& r) {
+  r.tag("recorder");
+  r.get(time_);
+  r.expect_size("history series", r.get<std::uint64_t>(), series_.size());
+  for (Series& s : series_) {
+    std::string path;
+    r.get(path);
+    if (path != s.path) r.fail("history series '" + path + "' where the scenario gives '" + s.path + "'");
+    r.get(s.data);
+    r.expect_size(("history '" + s.path + "'").c_str(), s.data.size(), time_.size() * s.components.size());
+  }
+  const std::size_t ni = impulse_.size();
+  r.get(impulse_);
+  r.expect_size("wall and region impulses", impulse_.size(), ni);
+  r.get(member_impulse_), r.get(elapsed_), r.get(peak_contact_), r.get(peak_contact_time_), r.get(e0_);
+  load_loads(r, peak_loads_);
+}
+
 template class Recorder<2>;
 template class Recorder<3>;
 

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <memory>
 
 #include "engine/common/error.hpp"
@@ -17,6 +18,7 @@
 #include "engine/mpm/solver.hpp"
 #include "engine/sim/build_frame.hpp"
 #include "engine/sim/build_scene.hpp"
+#include "engine/sim/checkpoint.hpp"
 #include "engine/sim/recorder.hpp"
 
 namespace dmi {
@@ -35,6 +37,51 @@ struct SignalGuard {
     std::signal(SIGTERM, old_term);
   }
 };
+
+constexpr const char* kCheckpointName = "checkpoint.dmi";
+
+// Stops the run between steps (a signal, or --stop-after): first the checkpoint (the state exactly as the next step
+// would read it), then the histories so far into results.h5.partial (complete = 0), then Interrupted. An older
+// complete results.h5 in the folder is never replaced.
+template <int D>
+[[noreturn]] void stop_run(int sig, const Solver<D>& solver, Recorder<D>& rec, RunInfo& info, ResultsWriter* writer,
+                           const std::string& results_path, double wall, const std::function<void()>& checkpoint,
+                           const std::string& ckpt) {
+  const std::string why = sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : "--stop-after " + std::to_string(solver.steps());
+  std::string where = "nothing written (no output folder)";
+  if (writer) {
+    checkpoint();
+    if (rec.time().empty() || rec.time().back() < solver.time()) rec.sample(solver, 0.0);
+    info.strings["status"] = sig == 0 ? "stopped (" + why + ")" : "interrupted (" + why + ")";
+    info.numbers["steps"] = static_cast<double>(solver.steps());
+    info.numbers["wall_seconds"] = wall;
+    writer->abandon(rec.time(), rec.series(), info);
+    where = "partial results in " + results_path + ".partial (complete = 0), checkpoint " + ckpt +
+            "; continue with the same command and --restart";
+  }
+  throw Interrupted(sig, std::string(sig == 0 ? "run stopped by " : "run interrupted by ") + why + " at step " +
+                             std::to_string(solver.steps()) + ", t = " + std::to_string(solver.time()) + " s: " + where);
+}
+
+// Disk full: refuse before the long run when the folder cannot hold the snapshots (HDF5 + .vtu copies) and a
+// checkpoint, estimated from the particle count. Bytes per particle and snapshot: position, displacement, velocity
+// (3 D doubles), stress (6), von Mises, volume (2), body and material (2 x 4 bytes); the .vtu copy about the same.
+void check_disk_space(const Scenario& s, std::size_t particles, const std::string& dir) {
+  const double snaps = s.output.snapshot_interval > 0 ? std::floor(s.analysis.end_time / s.output.snapshot_interval) + 2 : 2;
+  const double d = s.analysis.dimension, per = (3 * d + 8) * 8 + 8;
+  const double ckpt = particles * (8 * d * d + 6 * d + 12) * 8.0;
+  const double need = snaps * particles * per * (s.output.vtk ? 2 : 1) + ckpt + (1 << 20);
+  std::error_code ec;
+  const auto sp = std::filesystem::space(dir, ec);
+  if (ec) return;  // unknown: the writes themselves report a full disk
+  if (static_cast<double>(sp.available) < need) {
+    char msg[256];
+    std::snprintf(msg, sizeof msg, "needs about %.0f MB (%.0f snapshots of %zu particles%s and a checkpoint), %.0f MB free",
+                  need / 1048576, snaps, particles, s.output.vtk ? ", HDF5 and .vtu" : "", double(sp.available) / 1048576);
+    throw InputError(dir + ": not enough disk space for the run's output: " + msg +
+                     " (free space, or raise /output/snapshot_interval)");
+  }
+}
 
 const char* name_of(ShapeKind k) { return k == ShapeKind::linear ? "linear" : k == ShapeKind::gimp ? "gimp" : "bspline2"; }
 
@@ -71,81 +118,107 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   info.numbers["particles"] = static_cast<double>(solver.scene().particles.size());
 
   std::unique_ptr<ResultsWriter> writer;
-  std::vector<std::pair<double, std::string>> vtk_files, member_files;
   const bool files = !o.out_dir.empty();
-  std::string results_path;
+  std::string results_path, ckpt;
+  const std::uint64_t fingerprint = scenario_fingerprint(s);
+  LoopState loop;
+  if (o.restart && !files) throw InputError("--restart needs the output folder of the run to continue (-o)");
   if (files) {
     fs::create_directories(o.out_dir);
     if (s.output.vtk) fs::create_directories(fs::path(o.out_dir) / "fields");
     results_path = (fs::path(o.out_dir) / "results.h5").string();
+    ckpt = (fs::path(o.out_dir) / kCheckpointName).string();
+    if (!o.restart) check_disk_space(s, solver.scene().particles.size(), o.out_dir);
+  }
+  if (o.restart) {  // the state of the checkpoint, and the partial results up to it
+    StateReader r(read_checkpoint(ckpt, D, fingerprint), ckpt);
+    solver.load_state(r);
+    rec.load_state(r);
+    loop.load(r);
+    if (!r.at_end()) r.fail("unread bytes after the step-loop state");
+    writer = std::make_unique<ResultsWriter>(results_path, info, ResultsWriter::Resume{loop.snapshots});
+  } else if (files) {
+    std::error_code ec;
+    fs::remove(ckpt, ec);  // a checkpoint of an earlier run in this folder no longer matches its partial results
     writer = std::make_unique<ResultsWriter>(results_path, info);
   }
   auto snapshot = [&]() {
     if (!files) return;
     const Snapshot snap = rec.snapshot(solver);
     writer->write_snapshot(snap);
+    ++loop.snapshots;
     if (s.output.vtk) {
       char name[64];
-      std::snprintf(name, sizeof name, "particles_%04zu.vtu", vtk_files.size());
+      std::snprintf(name, sizeof name, "particles_%04zu.vtu", loop.vtk_files.size());
       write_vtu((fs::path(o.out_dir) / "fields" / name).string(), snap);
-      vtk_files.emplace_back(snap.time, name);
+      loop.vtk_files.emplace_back(snap.time, name);
       if (const Frame* f = solver.scene().frame.get()) {
-        std::snprintf(name, sizeof name, "members_%04zu.vtu", member_files.size());
+        std::snprintf(name, sizeof name, "members_%04zu.vtu", loop.member_files.size());
         write_lines_vtu((fs::path(o.out_dir) / "fields" / name).string(), Recorder<D>::member_snapshot(*f));
-        member_files.emplace_back(snap.time, name);
+        loop.member_files.emplace_back(snap.time, name);
       }
     }
+  };
+  auto wall_now = [&]() { return loop.wall_seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  auto checkpoint = [&]() {  // between steps: everything the next step reads
+    StateWriter w;
+    solver.save_state(w);
+    rec.save_state(w);
+    LoopState l = loop;
+    l.wall_seconds = wall_now();
+    l.save(w);
+    write_checkpoint(ckpt, D, fingerprint, w.bytes());
   };
 
   const double end = s.analysis.end_time;
   const double eps = 1e-12 * end;
   // The first multiple of `interval` after t (one division, whatever dt / interval is).
   auto next_after = [eps](double t, double interval) { return interval * (std::floor((t + eps) / interval) + 1); };
-  rec.sample(solver, 0.0);
-  snapshot();
-  double next_sample = s.output.history_interval, next_snap = s.output.snapshot_interval;
-  double dt_min = std::numeric_limits<double>::infinity(), dt_max = 0, courant_max = 0, j_min = solver.min_jacobian();
+  if (!o.restart) {
+    rec.sample(solver, 0.0);
+    snapshot();
+    loop.next_sample = s.output.history_interval, loop.next_snap = s.output.snapshot_interval;
+    loop.dt_min = std::numeric_limits<double>::infinity(), loop.dt_max = 0, loop.courant_max = 0, loop.j_min = solver.min_jacobian();
+  }
   Progress progress(o.progress, end, s.name);
   const SignalGuard signals;
+  const long first_step = solver.steps();
+  auto last_ckpt = std::chrono::steady_clock::now();
   while (solver.time() < end - eps) {
-    if (g_signal != 0) {  // stopped by the user: keep what is done, never as a complete result
-      const int sig = g_signal;
-      if (rec.time().empty() || rec.time().back() < solver.time()) rec.sample(solver, 0.0);
-      info.strings["status"] = sig == SIGINT ? "interrupted (SIGINT)" : "interrupted (SIGTERM)";
-      info.numbers["steps"] = static_cast<double>(solver.steps());
-      info.numbers["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      std::string where = "nothing written (no output folder)";
-      if (files) {
-        writer->abandon(rec.time(), rec.series(), info);
-        where = "partial results in " + results_path + ".partial (complete = 0)";
-      }
-      throw Interrupted(sig, "run interrupted by " + std::string(sig == SIGINT ? "SIGINT" : "SIGTERM") + " at step " +
-                                 std::to_string(solver.steps()) + ", t = " + std::to_string(solver.time()) + " s: " + where);
-    }
+    const bool stop = o.stop_after_steps > 0 && solver.steps() >= o.stop_after_steps && solver.steps() > first_step;
+    if (g_signal != 0 || stop) stop_run(g_signal, solver, rec, info, files ? writer.get() : nullptr, results_path, wall_now(),
+                                        files ? std::function<void()>(checkpoint) : nullptr, ckpt);
     const double dt = solver.stable_time_step(end - solver.time());
-    courant_max = std::max(courant_max, solver.courant());
+    loop.courant_max = std::max(loop.courant_max, solver.courant());
     solver.step(dt);
     rec.accumulate(solver, dt);
-    dt_min = std::min(dt_min, dt);
-    dt_max = std::max(dt_max, dt);
+    loop.dt_min = std::min(loop.dt_min, dt);
+    loop.dt_max = std::max(loop.dt_max, dt);
     const bool last = solver.time() >= end - eps;
-    if (last || s.output.history_interval <= 0 || solver.time() >= next_sample - eps) {
+    if (last || s.output.history_interval <= 0 || solver.time() >= loop.next_sample - eps) {
       rec.sample(solver, dt);
-      j_min = std::min(j_min, solver.min_jacobian());
-      if (s.output.history_interval > 0) next_sample = next_after(solver.time(), s.output.history_interval);
+      loop.j_min = std::min(loop.j_min, solver.min_jacobian());
+      if (s.output.history_interval > 0) loop.next_sample = next_after(solver.time(), s.output.history_interval);
     }
-    if (!last && s.output.snapshot_interval > 0 && solver.time() >= next_snap - eps) {
+    if (!last && s.output.snapshot_interval > 0 && solver.time() >= loop.next_snap - eps) {
       snapshot();
-      next_snap = next_after(solver.time(), s.output.snapshot_interval);
+      loop.next_snap = next_after(solver.time(), s.output.snapshot_interval);
     }
     progress.update(solver.time(), solver.steps(), dt);
+    if (files && !last && o.checkpoint_every > 0 &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - last_ckpt).count() >= o.checkpoint_every) {
+      checkpoint();
+      last_ckpt = std::chrono::steady_clock::now();
+    }
   }
   snapshot();
   progress.finish(solver.time(), solver.steps());
+  const double dt_min = loop.dt_min, dt_max = loop.dt_max, courant_max = loop.courant_max, j_min = loop.j_min;
+  const auto& vtk_files = loop.vtk_files;
+  const auto& member_files = loop.member_files;
 
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   info.numbers["steps"] = static_cast<double>(solver.steps());
-  info.numbers["wall_seconds"] = wall;
+  info.numbers["wall_seconds"] = wall_now();
   info.numbers["dt_min"] = dt_min;
   info.numbers["dt_max"] = dt_max;
   info.numbers["courant_max"] = courant_max;   // numerical health (docs/results.md)
@@ -180,6 +253,8 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
     if (s.output.vtk && !member_files.empty()) write_pvd((fs::path(o.out_dir) / "fields" / "members.pvd").string(), member_files);
     writer->finish(out.results.time, out.results.series, info);
     out.results_path = results_path;
+    std::error_code ec;
+    fs::remove(ckpt, ec);  // the run is complete: nothing to restart
   }
   return out;
 }

@@ -14,6 +14,11 @@ struct RunOptions {
   ProgressMode progress = ProgressMode::automatic;
   int threads = 0;              // 0: OpenMP default
   std::string software_version;
+  // Checkpoints (OUT/checkpoint.dmi): every `checkpoint_every` wall seconds (0: never), and always when a signal or
+  // stop_after_steps stops the run. restart: continue from OUT/checkpoint.dmi, bit for bit.
+  double checkpoint_every = 0;
+  long stop_after_steps = 0;    // > 0: stop (checkpoint + partial results, Interrupted with signal 0) after this step
+  bool restart = false;
 };
 
 struct RunOutput {

@@ -263,4 +263,28 @@ double Frame::external_work() const { return impl_->work_ext; }
 double Frame::applied_work() const { return impl_->work_applied; }
 double Frame::damping_work() const { return impl_->work_damp; }
 
+void Frame::save_state(StateWriter& w) const {
+  const Impl& m = *impl_;
+  w.tag("frame");
+  w.put(m.state.d), w.put(m.state.v), w.put(m.state.a), w.put(m.state.t), w.put(m.state.a_current);
+  w.put(m.nodal), w.put(m.f), w.put(m.d_prev), w.put(m.v_prev), w.put(m.cv), w.put(m.w);
+  w.put(m.f_current), w.put(m.work_ext), w.put(m.work_damp), w.put(m.work_applied);
+  m.integrator->save_state(w);
+}
+
+void Frame::load_state(StateReader& r) {
+  Impl& m = *impl_;
+  r.tag("frame");
+  const auto n = static_cast<std::size_t>(m.sys.ndof());
+  const std::size_t ne = m.w.size();
+  r.get(m.state.d), r.get(m.state.v), r.get(m.state.a), r.get(m.state.t), r.get(m.state.a_current);
+  r.get(m.nodal), r.get(m.f), r.get(m.d_prev), r.get(m.v_prev), r.get(m.cv), r.get(m.w);
+  for (const Eigen::VectorXd* x : {&m.state.d, &m.state.v, &m.state.a, &m.nodal, &m.f})
+    r.expect_size("frame DOFs", static_cast<std::size_t>(x->size()), n);
+  r.expect_size("frame elements", m.w.size(), ne);
+  r.get(m.f_current), r.get(m.work_ext), r.get(m.work_damp), r.get(m.work_applied);
+  m.added.clear();
+  m.integrator->load_state(r);
+}
+
 }  // namespace dmi

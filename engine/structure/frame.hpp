@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/common/state_io.hpp"
 #include "engine/structure/fibre.hpp"
 #include "engine/structure/section.hpp"
 
@@ -161,6 +162,10 @@ class Frame {
   double applied_work() const;
   // Energy dissipated by Rayleigh damping since t = 0 (J), accumulated by advance().
   double damping_work() const;
+  // Dynamic state (displacements, velocities, accelerations, loads, integrator history, work counters) for
+  // checkpoints; load_state() requires the same model.
+  void save_state(StateWriter& w) const;
+  void load_state(StateReader& r);
 
  private:
   struct Impl;

@@ -24,6 +24,10 @@ class FrameTimeIntegrator {
   virtual ~FrameTimeIntegrator() = default;
   virtual double stable_time_step() const = 0;
   virtual void step(FrameState& s, const Eigen::VectorXd& f, double dt, const SpMat* Ma) = 0;
+  // History vectors carried from one step to the next (checkpoints). Factorisations are rebuilt: they are a
+  // deterministic function of the matrices, so a restarted run refactorises to the same bits.
+  virtual void save_state(StateWriter& w) const = 0;
+  virtual void load_state(StateReader& r) = 0;
 };
 
 // SEEDS.md A.3 eqs. (27)-(29) (symplectic Euler): a_n = M^-1 (f - f_int(d_n) - C v_n),
@@ -38,6 +42,8 @@ class ExplicitEuler final : public FrameTimeIntegrator {
   explicit ExplicitEuler(const FrameSystem& sys);
   double stable_time_step() const override { return dt_stable_; }
   void step(FrameState& s, const Eigen::VectorXd& f, double dt, const SpMat* Ma) override;
+  void save_state(StateWriter& w) const override { w.put(fint_), w.put(cv_), w.put(r_); }
+  void load_state(StateReader& r) override { r.get(fint_), r.get(cv_), r.get(r_); }
 
  private:
   const FrameSystem& sys_;
@@ -62,6 +68,11 @@ class Newmark final : public FrameTimeIntegrator {
   explicit Newmark(const FrameSystem& sys);
   double stable_time_step() const override;
   void step(FrameState& s, const Eigen::VectorXd& f, double dt, const SpMat* Ma) override;
+  void save_state(StateWriter& w) const override { w.put(fint_), w.put(fint0_), w.put(tmp_), w.put(rhs_), w.put(dd_); }
+  void load_state(StateReader& r) override {
+    r.get(fint_), r.get(fint0_), r.get(tmp_), r.get(rhs_), r.get(dd_);
+    dt_factored_ = 0;  // refactorise on the next step
+  }
 
  private:
   void initial_acceleration(FrameState& s, const Eigen::VectorXd& f);
