@@ -119,3 +119,20 @@ TEST(Restart, RefusesAMissingCorruptOrForeignCheckpoint) {
   }
   fs::remove_all(dir);
 }
+
+// Disk full: a run whose snapshots cannot fit in the output folder's free space is refused before it starts,
+// naming the folder and the estimate; an output folder that cannot be created fails before the run too.
+TEST(Restart, RefusesARunWhoseOutputCannotFit) {
+  const dmi::Scenario s = dmi::example_scenario("free_fall.json", {{"/output/snapshot_interval", 1e-12}});
+  const fs::path dir = fresh_dir("space");
+  try {
+    dmi::run_scenario(s, options(dir));
+    FAIL() << "a run needing more than the free disk space was started";
+  } catch (const dmi::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("not enough disk space"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(dir.string()), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir / "results.h5.partial"));
+  EXPECT_THROW(dmi::run_scenario(dmi::example_scenario("free_fall.json"), options("/proc/dmi_no_such_folder")), std::exception);
+  fs::remove_all(dir);
+}
