@@ -22,6 +22,7 @@
 #include "engine/sim/run.hpp"
 #include "engine/verify/bench.hpp"
 #include "engine/verify/validate.hpp"
+#include "sweep/sweep_main.hpp"
 
 #ifndef DMI_VERSION
 #define DMI_VERSION "0.0.0"
@@ -221,6 +222,8 @@ int main(int argc, char** argv) {
   val->add_option("cases", cases, "case names (default: all; see --list)");
   val->add_flag("--json", json, "print a JSON array of {case, metric, value, reference, error, tolerance, passed, wall_seconds}");
   val->add_flag("--list", list, "list the cases and exit");
+  bool stress = false;
+  val->add_flag("--stress", stress, "run the stability stress suite instead (docs/reliability.md)");
   val->add_option("-t,--threads", threads, "OpenMP threads (0 = all cores)");
   std::vector<std::string> check_paths;
   std::string limits_file, design_out;
@@ -261,6 +264,19 @@ int main(int argc, char** argv) {
   bch->add_option("--threads", bo.threads, "thread counts (default 1 2)");
   std::string bench_out;
   bch->add_option("-o,--out", bench_out, "also write DIR/bench.json and the Pareto charts DIR/pareto_<case>.png (VTK charts)");
+  std::string sweep_file;
+  dmi::sweep::SweepOptions so;
+  so.out_dir = "out/sweep";
+  bool no_case_reports = false;
+  CLI::App* swp = app.add_subcommand("sweep", "parametric study: every case of a sweep file (over MPI ranks under mpirun) -> "
+                                              "OUT/cases/*, summary.csv/.json/.html/.pdf (docs/sweep.md)");
+  swp->add_option("study", sweep_file, "sweep JSON file")->required();
+  swp->add_option("-o,--out", so.out_dir, "output folder")->capture_default_str();
+  swp->add_option("-t,--threads", so.threads, "OpenMP threads per case (per MPI rank; 0 = all cores)");
+  swp->add_option("--limits", so.limits_file, "design limits file (docs/design-checks.md)");
+  swp->add_flag("--no-case-reports", no_case_reports, "no HTML report per case (faster; the summary report is still written)");
+  swp->add_flag("--no-pdf", no_pdf, "HTML only (no weasyprint)");
+  swp->add_flag("-q,--quiet", so.quiet, "no progress output");
   CLI::App* sch = app.add_subcommand("schema", "print the scenario key reference (Markdown, as in docs/scenario.md)");
   sch->add_flag("--markdown", markdown, "Markdown tables (default)");
 
@@ -291,7 +307,13 @@ int main(int argc, char** argv) {
     }
     if (*chk) return dmi::design::check_main(check_paths, limits_file, json, design_out, quiet, DMI_VERSION);
     if (*bch) return bench_command(bench_cases, json, quick, bo, bench_out);
-    if (*val) return dmi::validate_main(cases, json, list, threads);
+    if (*val) return dmi::validate_main(cases, json, list, threads, stress);
+    if (*swp) {
+      so.case_reports = !no_case_reports;
+      so.pdf = !no_pdf;
+      so.software_version = DMI_VERSION;
+      return dmi::sweep::sweep_main(sweep_file, so);
+    }
     if (*sch) {
       std::cout << dmi::scenario_reference_markdown();
       return 0;

@@ -24,6 +24,7 @@ struct CaseResult {
 struct ValidationCase {
   std::string name, description;
   std::function<std::vector<CaseResult>()> run;
+  bool by_default = true;  // false: run only when named (a stress case that fails for a known solver defect)
 };
 
 const std::map<std::string, std::string>& embedded_examples();  // file name -> JSON text
@@ -55,7 +56,12 @@ struct BarResult {
   double period = 0, period_exact = 0, amplitude = 0, amplitude_exact = 0, wall = 0;
 };
 BarResult bar_vibration_run(double h, ShapeKind shape, TransferKind transfer);
-int validate_main(const std::vector<std::string>& cases, bool json, bool list, int threads);
+// The stability stress suite (cases_stress.cpp, `damimpact validate --stress`).
+std::vector<ValidationCase> stress_cases();
+// stress = true runs stress_cases() instead of validation_cases(); same output.
+int validate_main(const std::vector<std::string>& cases, bool json, bool list, int threads, bool stress = false);
+// True while validate_main runs without --json: cases may print per-run details to stderr.
+bool& validate_verbose();
 
 // Helpers for cases and tests.
 const Series& series(const Results& r, const std::string& path);
