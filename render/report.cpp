@@ -104,6 +104,35 @@ std::string render_report_html(const json& data) {
   return tmpl.render(to_data(d));
 }
 
+std::string html_to_pdf(const std::string& html, const std::string& pdf_path, std::string* note) {
+  const std::string wp = find_weasyprint();
+  if (wp.empty()) {
+    *note = "weasyprint not found on PATH: wrote the HTML report only (install it: apt-get install weasyprint)";
+    return "";
+  }
+  std::error_code ec;
+  const fs::path pdf = pdf_path, d = pdf.parent_path().empty() ? fs::path(".") : pdf.parent_path();
+  const std::string stem = pdf.stem().string() + "." + std::to_string(::getpid());
+  const fs::path tmp = d / (stem + ".pdf.tmp"), log = d / (stem + ".weasyprint.log");
+  const std::string cmd = shell_quote(wp) + " -q " + shell_quote(html) + " " + shell_quote(tmp.string()) + " > " + shell_quote(log.string()) + " 2>&1";
+  const int rc = std::system(cmd.c_str());
+  std::string msg;
+  {
+    std::ifstream in(log);
+    std::getline(in, msg);
+  }
+  fs::remove(log, ec);
+  if (rc != 0 || !fs::exists(tmp)) {
+    fs::remove(tmp, ec);
+    *note = "weasyprint failed (" + (msg.empty() ? "exit " + std::to_string(rc) : msg) + "): wrote the HTML report only";
+    return "";
+  }
+  fs::rename(tmp, pdf);
+  return pdf.string();
+}
+
+void write_text_atomic(const std::string& path, const std::string& text) { write_atomic(path, text); }
+
 ReportFiles report_main(const std::string& out_dir, const ReportOptions& o) {
   using clock = std::chrono::steady_clock;
   ReportFiles files;
@@ -128,31 +157,12 @@ ReportFiles report_main(const std::string& out_dir, const ReportOptions& o) {
   files.html_seconds = std::chrono::duration<double>(clock::now() - t0).count();
   if (!o.quiet) std::printf("wrote %s\n", files.html.c_str());
   if (!o.pdf) return files;
-  const std::string wp = find_weasyprint();
-  if (wp.empty()) {
-    files.pdf_note = "weasyprint not found on PATH: wrote the HTML report only (install it: apt-get install weasyprint)";
-    std::fprintf(stderr, "damimpact: %s\n", files.pdf_note.c_str());
-    return files;
-  }
   t0 = clock::now();
-  const fs::path pdf = d / "report.pdf", tmp = d / ("report." + std::to_string(::getpid()) + ".pdf.tmp");
-  const fs::path log = d / ("report." + std::to_string(::getpid()) + ".weasyprint.log");
-  const std::string cmd = shell_quote(wp) + " -q " + shell_quote(files.html) + " " + shell_quote(tmp.string()) + " > " + shell_quote(log.string()) + " 2>&1";
-  const int rc = std::system(cmd.c_str());
-  std::string msg;
-  {
-    std::ifstream in(log);
-    std::getline(in, msg);
-  }
-  fs::remove(log, ec);
-  if (rc != 0 || !fs::exists(tmp)) {
-    fs::remove(tmp, ec);
-    files.pdf_note = "weasyprint failed (" + (msg.empty() ? "exit " + std::to_string(rc) : msg) + "): wrote the HTML report only";
+  files.pdf = html_to_pdf(files.html, (d / "report.pdf").string(), &files.pdf_note);
+  if (files.pdf.empty()) {
     std::fprintf(stderr, "damimpact: %s\n", files.pdf_note.c_str());
     return files;
   }
-  fs::rename(tmp, pdf);
-  files.pdf = pdf.string();
   files.pdf_seconds = std::chrono::duration<double>(clock::now() - t0).count();
   if (!o.quiet) std::printf("wrote %s\n", files.pdf.c_str());
   return files;

@@ -36,4 +36,12 @@ std::string render_report_html(const nlohmann::json& data);
 
 std::string base64(const std::string& bytes);
 
+// HTML -> PDF through weasyprint (written under a temporary name, renamed when whole). Returns the PDF path, or ""
+// with *note saying why not (weasyprint missing or failed).
+std::string html_to_pdf(const std::string& html_path, const std::string& pdf_path, std::string* note);
+// Writes under a temporary name and renames; throws std::runtime_error naming the file.
+void write_text_atomic(const std::string& path, const std::string& text);
+// The report's print CSS (templates/report.css, compiled in).
+extern const char kReportCss[];
+
 }  // namespace dmi::render

@@ -1,0 +1,121 @@
+#include "sweep/case_runner.hpp"
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "design/design.hpp"
+#include "engine/common/error.hpp"
+#include "engine/io/results_writer.hpp"
+#include "engine/scenario/scenario.hpp"
+#include "engine/sim/run.hpp"
+#include "render/report.hpp"
+
+namespace dmi::sweep {
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+namespace {
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return in ? ss.str() : std::string();
+}
+
+void write_text(const fs::path& p, const std::string& text) {
+  const fs::path tmp = p.string() + ".tmp";
+  std::ofstream(tmp, std::ios::binary) << text;
+  fs::rename(tmp, p);
+}
+
+json at(const json& j, std::initializer_list<const char*> path) {  // null when any step is missing or null
+  const json* c = &j;
+  for (const char* k : path) {
+    if (!c->is_object() || !c->contains(k) || (*c)[k].is_null()) return nullptr;
+    c = &(*c)[k];
+  }
+  return *c;
+}
+
+// The design's figures for the summary: per variant, the largest utilisation and the peaks engineers size with.
+void fill_from_design(json& row, const json& design) {
+  row["verdict"] = at(design, {"verdict", "status"});
+  const json gov = at(design, {"verdict", "governing"});
+  row["max_utilisation"] = at(gov, {"utilisation"});
+  row["governing"] = gov.is_null() ? json(nullptr)
+                                   : json{{"id", gov.value("id", "")}, {"member", gov.value("member", "")}, {"variant", gov.value("variant", "")}};
+  json vars = json::object();
+  for (const json& r : design.value("runs", json::array())) {
+    const std::string label = r.value("variant", "");
+    vars[label.empty() ? "run" : label] = {
+        {"max_utilisation", at(r, {"verdict", "max_utilisation"})},
+        {"passed", at(r, {"verdict", "passed"})},
+        {"contact_peak_N", at(r, {"contact", "peak_force_N"})},
+        {"base_shear_N", at(r, {"base_total", "Fx_N", "abs_max", "value"})},
+        {"base_moment_Nm", at(r, {"base_total", "M_Nm", "abs_max", "value"})}};
+  }
+  row["variants"] = vars;
+}
+
+}  // namespace
+
+json run_case(const SweepSpec& spec, std::size_t k, const SweepOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const fs::path dir = fs::path(o.out_dir) / "cases" / case_id(k);
+  json row = {{"case", case_id(k)}, {"index", k + 1}, {"status", "ok"}, {"error", nullptr}, {"wall_seconds", 0.0},
+              {"simulated_seconds", 0.0}, {"verdict", nullptr}, {"max_utilisation", nullptr}, {"governing", nullptr},
+              {"variants", json::object()}};
+  json params = json::object();
+  for (std::size_t p = 0; p < spec.parameters.size(); ++p) params[spec.parameters[p]] = spec.cases[k][p];
+  row["parameters"] = params;
+  try {
+    fs::create_directories(dir);
+    const std::string text = case_scenario(spec, k).dump(1) + "\n";
+    const fs::path scen = dir / "scenario.json";
+    const bool same_scenario = read_text(scen) == text;
+    if (!same_scenario) write_text(scen, text);
+    const auto variants = parse_scenario_variants(text, scen.string());
+    std::vector<std::string> written;
+    bool reused = same_scenario;
+    for (const auto& v : variants) {
+      const fs::path vd = v.label.empty() ? dir : dir / v.label, res = vd / "results.h5";
+      reused = reused && fs::exists(res) && !fs::exists(res.string() + ".partial");
+      written.push_back(res.string());
+    }
+    double sim_wall = 0;
+    if (reused) {  // resumable: a finished case is kept (its scenario unchanged)
+      for (const auto& w : written) sim_wall += read_results(w, false).info.numbers.at("wall_seconds");
+      row["status"] = "reused";
+    } else {
+      for (const auto& v : variants) {
+        RunOptions ro;
+        ro.out_dir = (v.label.empty() ? dir : dir / v.label).string();
+        ro.threads = o.threads;
+        ro.progress = ProgressMode::quiet;
+        ro.software_version = o.software_version;
+        sim_wall += run_scenario(v.scenario, ro).results.info.numbers.at("wall_seconds");
+      }
+    }
+    row["simulated_seconds"] = sim_wall;
+    design::check_main(written, o.limits_file, false, (dir / "design.json").string(), true, o.software_version);
+    fill_from_design(row, json::parse(read_text(dir / "design.json")));
+    if (o.case_reports && (!reused || !fs::exists(dir / "report.html"))) {
+      const auto rf = render::report_main(dir.string(), {"von_mises", true, o.pdf, o.software_version});
+      row["report"] = fs::relative(rf.html, o.out_dir).string();
+    } else if (fs::exists(dir / "report.html")) {
+      row["report"] = fs::relative(dir / "report.html", o.out_dir).string();
+    }
+  } catch (const Interrupted&) {
+    throw;
+  } catch (const std::exception& e) {
+    row["status"] = "failed";
+    row["error"] = e.what();
+  }
+  row["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return row;
+}
+
+}  // namespace dmi::sweep
