@@ -194,6 +194,16 @@ int bench_main(const std::vector<std::string>& cases, bool as_json, bool quick, 
       std::printf("%8.3f %10.3f %8ld %12.0f\n", r["h_over_L"].get<double>(), r["wall_seconds"].get<double>(), r["steps"].get<long>(),
                   r["projection_iterations_max"].get<double>());
     std::printf("ratio h/L 0.025 : 0.2 = %.2f\n", out["a6"]["ratio_slender_to_thick"].get<double>());
+    std::printf("\nPaper A.6 at h/L 0.025: error against wall time (reference: %s), Pareto front\n%-9s %4s %8s %-16s %10s %10s\n",
+                out["a6"]["reference"].get<std::string>().c_str(), "frame", "el.", "cell m", "time step", "NRMS err", "wall s");
+    std::vector<const json*> front;
+    for (const auto& p : out["a6"]["points"])
+      if (p["front"].get<bool>()) front.push_back(&p);
+    std::sort(front.begin(), front.end(), [](const json* a, const json* b) { return (*a)["wall_seconds"] < (*b)["wall_seconds"]; });
+    for (const json* p : front)
+      std::printf("%-9s %4d %8.4f %-16s %10.4f %10.3f\n", (*p)["integrator"].get<std::string>().c_str(), (*p)["elements"].get<int>(),
+                  (*p)["cell_size"].get<double>(), (*p)["time_step"].get<std::string>().c_str(), (*p)["error"].get<double>(),
+                  (*p)["wall_seconds"].get<double>());
   }
   for (const char* c : {"bar", "disks"}) {
     if (!out.contains(c)) continue;
