@@ -3,6 +3,7 @@
 // Eigen's small products were not inlined in the hot loops (perf: 8 % in one outer product alone). Each node
 // still receives its contributions in particle order, so sums do not depend on the thread count.
 #pragma once
+#include <type_traits>
 #include <algorithm>
 #include <cmath>
 
@@ -134,6 +135,7 @@ struct GatherCtx {
   const Body* bodies;
   const double* __restrict gvl;
   const double* __restrict gv;
+  const double* __restrict gm;  // nodal mass, field layout (0 on empty nodes after the grid update)
   double h, ih, ox, oy, blend, dt, lo_x, hi_x, lo_y, hi_y;  // lo/hi: the grid interior in grid coordinates
   Index nx, nn;
 };
@@ -152,6 +154,12 @@ template <class Shape, bool APIC, int MODE> inline int gather_range(const Gather
     const double* gu = MODE == 2 ? c.gv : c.gvl;  // the velocity the gradient is taken of
     double vpx = 0, vpy = 0, dvx = 0, dvy = 0, l00 = 0, l01 = 0, l10 = 0, l11 = 0;
     double b00 = 0, b01 = 0, b10 = 0, b11 = 0, d00 = 0, d01 = 0, d11 = 0;
+    // Linear shapes: a particle exactly on a grid line has weight 0 but slope 1/h at the node beyond it; at a body's
+    // leading face that node is empty (v = 0), which read as a velocity gradient -v/h (stress in a rigid translation,
+    // docs/reliability.md). An empty node is given the particle's interpolated velocity instead: with sum grad N = 0,
+    // L += u_bar (x) sum over empty nodes of grad N.
+    constexpr bool kEmptyFix = std::is_same_v<Shape, LinearShape> && MODE != 1;
+    double ubx = 0, uby = 0, gex = 0, gey = 0;
     for (int b = 0; b < K; ++b) {
       const Index row = off + static_cast<Index>(by + b) * c.nx + bx;
       const double Wy = wy[b], dWy = dwy[b] * c.ih, dy = (by + b - yr) * c.h;
@@ -172,9 +180,14 @@ template <class Shape, bool APIC, int MODE> inline int gather_range(const Gather
         if constexpr (MODE != 1) {
           const double ux = gu[2 * id], uy = gu[2 * id + 1];
           l00 += ux * dNx, l01 += ux * dNy, l10 += uy * dNx, l11 += uy * dNy;
+          if constexpr (kEmptyFix) {
+            ubx += N * ux, uby += N * uy;
+            if (c.gm[id] == 0) gex += dNx, gey += dNy;
+          }
         }
       }
     }
+    if constexpr (kEmptyFix) l00 += ubx * gex, l01 += ubx * gey, l10 += uby * gex, l11 += uby * gey;
     if constexpr (MODE != 2) {
       if constexpr (APIC) {
         c.v[i] = Vec<2>(vpx, vpy);
@@ -206,7 +219,7 @@ template <class Shape, bool APIC, int MODE> G2PResult gather2d(Scene<2>& s, doub
   Grid<2>& g = *s.grid;
   Particles<2>& P = s.particles;
   const GatherCtx c{P.x.data(), P.v.data(), P.half_size.data(), P.C.data(), P.F.data(), P.L.data(), P.body.data(), s.bodies.data(),
-                    g.vL.data()->data(), g.v.data()->data(), g.h(), g.inv_h(), g.origin()[0], g.origin()[1], s.options.flip_blend, dt,
+                    g.vL.data()->data(), g.v.data()->data(), g.m.data(), g.h(), g.inv_h(), g.origin()[0], g.origin()[1], s.options.flip_blend, dt,
                     0.5, g.cells()[0] - 0.5, 0.5, g.cells()[1] - 0.5, g.nodes()[0], g.nnodes()};
   const Index np = static_cast<Index>(P.size());
   constexpr Index kChunk = 1024;
