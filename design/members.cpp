@@ -71,7 +71,8 @@ FrameInfo parse_structure(const std::string& doc, const std::string& where, cons
   } catch (const std::exception& e) {
     throw std::runtime_error(where + ": /documents/structure is malformed (" + e.what() + ")");
   }
-  for (const auto& [name, cls] : L.member_material) {
+  for (const auto& entry : L.member_material) {  // not a structured binding: clang < 16 cannot capture one (fuzz build)
+    const std::string& name = entry.first;
     if (std::none_of(f.members.begin(), f.members.end(), [&](const FrameInfo::Member& m) { return m.name == name; }))
       throw std::runtime_error(where + ": the limits name member '" + name + "', which the structure does not have");
   }

@@ -842,9 +842,34 @@ std::string read_file_text(const std::string& path) {
   return ss.str();
 }
 
+// An input error is one line (README; the CLI prints it as one): keys and names taken from the input may hold
+// control characters (a JSON "\n" in a key or a name), which messages show escaped, as JSON writes them.
+template <class F>
+auto one_line_errors(F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    auto control = [](unsigned char c) { return c < 0x20; };
+    if (std::none_of(m.begin(), m.end(), control)) throw;
+    std::string r;
+    for (const char c : m) {
+      if (!control(static_cast<unsigned char>(c))) {
+        r += c;
+        continue;
+      }
+      const std::string esc = json(std::string(1, c)).dump();  // "\n", "\t", "\u001f", ...
+      r += esc.substr(1, esc.size() - 2);
+    }
+    throw InputError(r);
+  }
+}
+
 }  // namespace
 
-Scenario parse_scenario(const json& j, const std::string& file) { return parse_variant(j, file, preset_variants(j, file).front()); }
+Scenario parse_scenario(const json& j, const std::string& file) {
+  return one_line_errors([&] { return parse_variant(j, file, preset_variants(j, file).front()); });
+}
 
 Scenario parse_scenario(const std::string& text, const std::string& file) {
   Scenario s = parse_scenario(parse_json_text(text, file), file);
@@ -856,12 +881,14 @@ Scenario load_scenario(const std::string& path) { return parse_scenario(read_fil
 
 std::vector<ScenarioVariant> parse_scenario_variants(const std::string& text, const std::string& file) {
   const json j = parse_json_text(text, file);
-  std::vector<ScenarioVariant> out;
-  for (const auto& v : preset_variants(j, file)) {
-    out.push_back({v, parse_variant(j, file, v)});
-    out.back().scenario.source_text = text;
-  }
-  return out;
+  return one_line_errors([&] {
+    std::vector<ScenarioVariant> out;
+    for (const auto& v : preset_variants(j, file)) {
+      out.push_back({v, parse_variant(j, file, v)});
+      out.back().scenario.source_text = text;
+    }
+    return out;
+  });
 }
 
 std::vector<ScenarioVariant> load_scenario_variants(const std::string& path) { return parse_scenario_variants(read_file_text(path), path); }
