@@ -7,5 +7,8 @@ namespace dmi {
 
 // Throws InputError (e.g. a body too small to hold a particle).
 template <int D> Scene<D> build_scene(const Scenario& s);
+// Builds the scene and drops it: the checks only a built scene can make (bodies overlapping each other or a member,
+// a body too small for a particle, an unstable frame), for `simulate --dry-run`. Throws InputError.
+void check_scene(const Scenario& s);
 
 }  // namespace dmi

@@ -17,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/sim/build_scene.hpp"
 #include "engine/common/error.hpp"
 #include "engine/scenario/scenario.hpp"
 
@@ -116,7 +117,7 @@ TEST(BadInputCorpus, EveryFileHasAnExpectation) {
   EXPECT_EQ(files, listed) << "tests/data/bad/*.json and tests/data/bad/expected.json disagree";
 }
 
-// In-process first: a failure here points at the parser rather than at the command line.
+// In-process first: a failure here points at the parser (or the scene checks) rather than at the command line.
 TEST(BadInputCorpus, LoadScenarioRejectsEachFile) {
   const json exp = expectations();
   for (const auto& f : corpus()) {
@@ -124,7 +125,7 @@ TEST(BadInputCorpus, LoadScenarioRejectsEachFile) {
     const std::string name = f.filename().string();
     if (!exp.contains(name)) continue;  // reported by EveryFileHasAnExpectation
     try {
-      load_scenario(f.string());
+      check_scene(load_scenario(f.string()));  // some checks need the built scene (overlaps)
       ADD_FAILURE() << "accepted";
     } catch (const InputError& e) {
       check_message(e.what(), f.string(), exp[name]);
