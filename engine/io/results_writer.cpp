@@ -174,6 +174,16 @@ void check_size(const std::string& f, const std::string& what, std::size_t got, 
                              " values, expected " + std::to_string(want));
 }
 
+// File access for writing and for reopening a partial file: STRONG close (closing the file also closes anything
+// still open in it, the destructor path) and the HDF5 1.8 format, readable by any HDF5 >= 1.8, whose metadata
+// (superblock, object headers, attribute heaps) carries checksums, so corruption is reported instead of parsed.
+Handle file_access(const std::string& f) {
+  Handle fapl(check_id(H5Pcreate(H5P_FILE_ACCESS), f, "cannot create property list"), H5Pclose);
+  check_ok(H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG), f, "cannot create property list");
+  check_ok(H5Pset_libver_bounds(fapl, H5F_LIBVER_V18, H5F_LIBVER_V18), f, "cannot create property list");
+  return fapl;
+}
+
 }  // namespace
 
 struct ResultsWriter::Impl {
@@ -181,6 +191,13 @@ struct ResultsWriter::Impl {
   Handle file, snapshots;
   std::size_t next_snapshot = 0;
   bool finished = false;
+
+  Impl& start(const std::string& p) {  // both constructors: the file is written as <path>.partial
+    h5::silence_errors();
+    path = p;
+    partial = p + ".partial";
+    return *this;
+  }
 
   // Root attributes (except format/format_version/complete), /scenario and /run; replaces any
   // previous version so finish() can update what the constructor wrote.
@@ -220,18 +237,9 @@ struct ResultsWriter::Impl {
 
 ResultsWriter::ResultsWriter(const std::string& path, const RunInfo& info)
     : impl_(std::make_unique<Impl>()) {
-  h5::silence_errors();
-  Impl& m = *impl_;
-  m.path = path;
-  m.partial = path + ".partial";
+  Impl& m = impl_->start(path);
   const std::string& f = m.partial;
-  Handle fapl(check_id(H5Pcreate(H5P_FILE_ACCESS), f, "cannot create property list"), H5Pclose);
-  // STRONG: closing the file also closes anything still open in it (destructor path).
-  check_ok(H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG), f, "cannot create property list");
-  // HDF5 1.8 file format: readable by any HDF5 >= 1.8, and its metadata (superblock, object
-  // headers, attribute heaps) carries checksums, so corruption is reported instead of parsed.
-  check_ok(H5Pset_libver_bounds(fapl, H5F_LIBVER_V18, H5F_LIBVER_V18), f,
-           "cannot create property list");
+  const Handle fapl = file_access(f);
   m.file = Handle(check_id(H5Fcreate(f.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), f,
                            "cannot create results file"),
                   H5Fclose);
@@ -247,13 +255,9 @@ ResultsWriter::ResultsWriter(const std::string& path, const RunInfo& info)
 }
 
 ResultsWriter::ResultsWriter(const std::string& path, const RunInfo& info, Resume resume) : impl_(std::make_unique<Impl>()) {
-  h5::silence_errors();
-  Impl& m = *impl_;
-  m.path = path;
-  m.partial = path + ".partial";
+  Impl& m = impl_->start(path);
   const std::string& f = m.partial;
-  Handle fapl(check_id(H5Pcreate(H5P_FILE_ACCESS), f, "cannot create property list"), H5Pclose);
-  check_ok(H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG), f, "cannot create property list");
+  const Handle fapl = file_access(f);
   m.file = Handle(check_id(H5Fopen(f.c_str(), H5F_ACC_RDWR, fapl), f, "cannot reopen the partial results of the run to restart"),
                   H5Fclose);
   m.snapshots = Handle(check_id(H5Gopen2(m.file, "snapshots", H5P_DEFAULT), f, "cannot open group /snapshots"), H5Gclose);
