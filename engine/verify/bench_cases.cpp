@@ -105,12 +105,7 @@ json bench_bar(bool progress) {
             if (progress) std::fprintf(stderr, "bar %-8s %-4s h %.3f cfl %.1f: FAILED (%s)\n", shape, transfer, h, cfl, e.what());
             continue;
           }
-          const Series* v = out.results.find("probes/end/velocity");
-          std::vector<double> z;  // upward zero crossings of the end velocity
-          for (std::size_t k = 1; v && k < out.results.time.size(); ++k) {
-            const double a = v->data[2 * (k - 1)], b = v->data[2 * k];
-            if ((a < 0) != (b < 0)) z.push_back(out.results.time[k - 1] + (out.results.time[k] - out.results.time[k - 1]) * a / (a - b));
-          }
+          const auto z = zero_crossings(out.results.time, series(out.results, "probes/end/velocity"), 0);
           const double period = z.size() >= 3 ? z[2] - z[0] : NAN;
           const double err = std::abs(period - 10.0) / 10.0;
           points.push_back({{"group", std::string(shape) + " " + transfer}, {"shape", shape}, {"transfer", transfer}, {"cell_size", h}, {"cfl", cfl},
