@@ -25,12 +25,6 @@ std::string read_text(const fs::path& p) {
   return in ? ss.str() : std::string();
 }
 
-void write_text(const fs::path& p, const std::string& text) {
-  const fs::path tmp = p.string() + ".tmp";
-  std::ofstream(tmp, std::ios::binary) << text;
-  fs::rename(tmp, p);
-}
-
 json at(const json& j, std::initializer_list<const char*> path) {  // null when any step is missing or null
   const json* c = &j;
   for (const char* k : path) {
@@ -76,7 +70,7 @@ json run_case(const SweepSpec& spec, std::size_t k, const SweepOptions& o) {
     const std::string text = case_scenario(spec, k).dump(1) + "\n";
     const fs::path scen = dir / "scenario.json";
     const bool same_scenario = read_text(scen) == text;
-    if (!same_scenario) write_text(scen, text);
+    if (!same_scenario) render::write_text_atomic(scen.string(), text);
     const auto variants = parse_scenario_variants(text, scen.string());
     std::vector<std::string> written;
     bool reused = same_scenario;

@@ -131,27 +131,27 @@ std::vector<std::pair<std::string, std::string>> charts(const json& s, const fs:
           const json y = row["variants"].value(labels[l], json::object()).value(q.key, json());
           if (!y.is_number()) continue;
           const std::string key = labels[l] + (group.empty() ? "" : ", " + group);
-          if (!series.count(key)) {
+          auto [it, fresh] = series.try_emplace(key);
+          render::Curve& cv = it->second;
+          if (fresh) {
             keys.push_back(key);
             colour.emplace(group, colour.size());
-            series[key].color = pal[colour[group] % 8];
-            render::Curve& cv = series[key];
+            cv.color = pal[colour[group] % 8];
             cv.label = labels.size() == 1 && labels[0] == "run" ? (group.empty() ? "simulation" : group) : key;
             cv.dashed = labels[l] == "without_buffer";
           }
-          series[key].x.push_back(x), series[key].y.push_back(y.get<double>() * q.scale);
+          cv.x.push_back(x), cv.y.push_back(y.get<double>() * q.scale);
           lo = std::min(lo, x), hi = std::max(hi, x);
         }
       }
       for (std::size_t i = 0; i < keys.size() && i < 12; ++i) {
-        render::Curve cv = series[keys[i]];
-        std::vector<std::size_t> ord(cv.x.size());
-        for (std::size_t k = 0; k < ord.size(); ++k) ord[k] = k;
-        std::sort(ord.begin(), ord.end(), [&](std::size_t a, std::size_t b) { return cv.x[a] < cv.x[b]; });
-        render::Curve sorted = cv;
-        for (std::size_t k = 0; k < ord.size(); ++k) sorted.x[k] = cv.x[ord[k]], sorted.y[k] = cv.y[ord[k]];
-        sorted.points = sorted.x.size() < 2;
-        c.curves.push_back(sorted);
+        render::Curve& cv = series[keys[i]];  // points in x order, a line through them
+        std::vector<std::pair<double, double>> xy;
+        for (std::size_t k = 0; k < cv.x.size(); ++k) xy.emplace_back(cv.x[k], cv.y[k]);
+        std::sort(xy.begin(), xy.end());
+        for (std::size_t k = 0; k < xy.size(); ++k) cv.x[k] = xy[k].first, cv.y[k] = xy[k].second;
+        cv.points = cv.x.size() < 2;
+        c.curves.push_back(std::move(cv));
       }
       if (c.curves.empty() || !(hi > lo)) continue;
       if (std::string(q.key) == "max_utilisation") c.curves.push_back(render::limit_line("limit 1.0", 1.0, lo, hi));

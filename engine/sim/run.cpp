@@ -208,8 +208,8 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   auto last_ckpt = std::chrono::steady_clock::now();
   while (solver.time() < end - eps) {
     const bool stop = o.stop_after_steps > 0 && solver.steps() >= o.stop_after_steps && solver.steps() > first_step;
-    if (g_signal != 0 || stop) stop_run(g_signal, solver, rec, info, files ? writer.get() : nullptr, results_path, wall_now(),
-                                        files ? std::function<void()>(checkpoint) : nullptr, ckpt);
+    if (g_signal != 0 || stop) stop_run(g_signal, solver, rec, info, writer.get(), results_path, wall_now(),
+                                        checkpoint, ckpt);
     const double dt = solver.stable_time_step(end - solver.time());
     loop.courant_max = std::max(loop.courant_max, solver.courant());
     solver.step(dt);
@@ -235,16 +235,13 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   }
   snapshot();
   progress.finish(solver.time(), solver.steps());
-  const double dt_min = loop.dt_min, dt_max = loop.dt_max, courant_max = loop.courant_max, j_min = loop.j_min;
-  const auto& vtk_files = loop.vtk_files;
-  const auto& member_files = loop.member_files;
 
   info.numbers["steps"] = static_cast<double>(solver.steps());
   info.numbers["wall_seconds"] = wall_now();
-  info.numbers["dt_min"] = dt_min;
-  info.numbers["dt_max"] = dt_max;
-  info.numbers["courant_max"] = courant_max;   // numerical health (docs/results.md)
-  info.numbers["jacobian_min"] = std::isfinite(j_min) ? j_min : 1.0;
+  info.numbers["dt_min"] = loop.dt_min;
+  info.numbers["dt_max"] = loop.dt_max;
+  info.numbers["courant_max"] = loop.courant_max;   // numerical health (docs/results.md)
+  info.numbers["jacobian_min"] = std::isfinite(loop.j_min) ? loop.j_min : 1.0;
   info.numbers["threads"] = omp_get_max_threads();
   if (solver.scene().frame) {
     info.documents["structure"] = structure_document(s, solver.scene().frame->model());
@@ -271,8 +268,9 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   out.results.series = rec.series();
   out.results.complete = true;
   if (files) {
-    if (s.output.vtk) write_pvd((fs::path(o.out_dir) / "fields" / "particles.pvd").string(), vtk_files);
-    if (s.output.vtk && !member_files.empty()) write_pvd((fs::path(o.out_dir) / "fields" / "members.pvd").string(), member_files);
+    if (s.output.vtk) write_pvd((fs::path(o.out_dir) / "fields" / "particles.pvd").string(), loop.vtk_files);
+    if (s.output.vtk && !loop.member_files.empty())
+      write_pvd((fs::path(o.out_dir) / "fields" / "members.pvd").string(), loop.member_files);
     writer->finish(out.results.time, out.results.series, info);
     out.results_path = results_path;
     std::error_code ec;
