@@ -84,6 +84,16 @@ void style(vtkTextProperty* p, int size, bool bold = false) {
   p->SetBold(bold);
 }
 
+// The actor drawing `pd`; with a lookup table its point scalars are coloured through it (the table's range).
+vtkSmartPointer<vtkActor> actor_of(vtkPolyData* pd, vtkLookupTable* t = nullptr) {
+  auto m = make<vtkPolyDataMapper>();
+  m->SetInputData(pd);
+  if (t) m->SetLookupTable(t), m->UseLookupTableScalarRangeOn();
+  auto a = make<vtkActor>();
+  a->SetMapper(m);
+  return a;
+}
+
 vtkSmartPointer<vtkActor> particles_actor(const Snapshot& s, const std::vector<double>& field, vtkLookupTable* t, double point_px) {
   auto pts = make<vtkPoints>();
   auto verts = make<vtkCellArray>();
@@ -96,10 +106,7 @@ vtkSmartPointer<vtkActor> particles_actor(const Snapshot& s, const std::vector<d
   }
   auto pd = make<vtkPolyData>();
   pd->SetPoints(pts), pd->SetVerts(verts), pd->GetPointData()->SetScalars(val);
-  auto m = make<vtkPolyDataMapper>();
-  m->SetInputData(pd), m->SetLookupTable(t), m->UseLookupTableScalarRangeOn();
-  auto a = make<vtkActor>();
-  a->SetMapper(m);
+  auto a = actor_of(pd, t);
   a->GetProperty()->SetPointSize(static_cast<float>(point_px));
   return a;
 }
@@ -122,11 +129,8 @@ vtkSmartPointer<vtkActor> members_actor(const FrameState& fs, vtkLookupTable* t)
   }
   auto pd = make<vtkPolyData>();
   pd->SetPoints(pts), pd->SetPolys(polys), pd->GetPointData()->SetScalars(val);
-  auto m = make<vtkPolyDataMapper>();
-  m->SetInputData(pd), m->SetLookupTable(t), m->UseLookupTableScalarRangeOn();
-  m->InterpolateScalarsBeforeMappingOn();
-  auto a = make<vtkActor>();
-  a->SetMapper(m);
+  auto a = actor_of(pd, t);
+  a->GetMapper()->InterpolateScalarsBeforeMappingOn();
   a->GetProperty()->EdgeVisibilityOn();
   a->GetProperty()->SetEdgeColor(0.15, 0.15, 0.15);
   a->GetProperty()->SetLineWidth(1.5f);
@@ -142,10 +146,7 @@ vtkSmartPointer<vtkActor> lines_actor(const std::vector<std::vector<std::array<d
   }
   auto pd = make<vtkPolyData>();
   pd->SetPoints(pts), pd->SetLines(cells);
-  auto m = make<vtkPolyDataMapper>();
-  m->SetInputData(pd);
-  auto a = make<vtkActor>();
-  a->SetMapper(m);
+  auto a = actor_of(pd);
   a->GetProperty()->SetColor(r, g, b);
   a->GetProperty()->SetLineWidth(width);
   return a;
@@ -165,10 +166,7 @@ vtkSmartPointer<vtkActor> supports_actor(const design::FrameInfo& f, double size
   }
   auto pd = make<vtkPolyData>();
   pd->SetPoints(pts), pd->SetPolys(polys);
-  auto m = make<vtkPolyDataMapper>();
-  m->SetInputData(pd);
-  auto act = make<vtkActor>();
-  act->SetMapper(m);
+  auto act = actor_of(pd);
   act->GetProperty()->SetColor(0.2, 0.2, 0.2);
   return act;
 }
