@@ -13,6 +13,7 @@
 #include <memory>
 #include <vector>
 
+#include "engine/common/parallel.hpp"
 #include "engine/materials/material.hpp"
 #include "engine/mpm/reduce.hpp"
 
@@ -70,8 +71,7 @@ template <int D> class DruckerPrager final : public Material<D> {
 
   void update(Particles<D>& p, Index begin, Index end, double dt) override {
     const double lam = el_.lambda, mu = el_.mu;
-#pragma omp parallel for schedule(static) if (end - begin > kParallelMin)
-    for (Index i = begin; i < end; ++i) {
+    parallel_for(begin, end, [&](Index i) {
       Mat3 L = Mat3::Zero();
       L.template topLeftCorner<D, D>() = p.L[i];
       const Mat3 Dm = 0.5 * (L + L.transpose()), W = 0.5 * (L - L.transpose());
@@ -82,7 +82,7 @@ template <int D> class DruckerPrager final : public Material<D> {
       if constexpr (D == 2) p.stress_zz[i] = s(2, 2);
       p.vol[i] = p.vol0[i] * p.F[i].determinant();
       power_[i] = w * p.vol[i];
-    }
+    });
     dissipated_ += deterministic_sum(end - begin, [&](Index k) { return power_[begin + k]; });
   }
 

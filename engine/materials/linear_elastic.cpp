@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "engine/common/parallel.hpp"
 #include "engine/materials/material.hpp"
 #include "engine/mpm/reduce.hpp"
 
@@ -44,8 +45,7 @@ template <int D> class LinearElastic final : public Material<D> {
   void update(Particles<D>& p, Index begin, Index end, double dt) override {
     const double lam = lambda_in_, mu = el_.mu, lam3 = el_.lambda, beta = beta_;
     const bool strain2d = D == 2 && plane_ == Plane::strain;
-#pragma omp parallel for schedule(static) if (end - begin > kParallelMin)
-    for (Index i = begin; i < end; ++i) {
+    parallel_for(begin, end, [&](Index i) {
       const Mat<D>& L = p.L[i];
       const Mat<D> Dm = 0.5 * (L + L.transpose());
       const Mat<D> W = 0.5 * (L - L.transpose());
@@ -61,7 +61,7 @@ template <int D> class LinearElastic final : public Material<D> {
         p.stress_zz[i] = szz + (strain2d ? beta * lam3 * trD : 0.0);
         power_[i] = beta * (rate.cwiseProduct(Dm)).sum() * p.vol[i];
       }
-    }
+    });
     if (beta > 0) dissipated_ += dt * deterministic_sum(end - begin, [&](Index k) { return power_[begin + k]; });
   }
 

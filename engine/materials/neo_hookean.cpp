@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "engine/common/parallel.hpp"
 #include "engine/materials/material.hpp"
 #include "engine/mpm/reduce.hpp"
 
@@ -48,8 +49,7 @@ template <int D> class NeoHookean final : public Material<D> {
 
   void update(Particles<D>& p, Index begin, Index end, double dt) override {
     const double mu = el_.mu, lam = el_.lambda, beta = beta_, lamv = lambda_v_;
-#pragma omp parallel for schedule(static) if (end - begin > kParallelMin)
-    for (Index i = begin; i < end; ++i) {
+    parallel_for(begin, end, [&](Index i) {
       const Mat<D>& F = p.F[i];
       const double J2 = F.determinant();
       const double s = stretch_zz(J2);
@@ -64,7 +64,7 @@ template <int D> class NeoHookean final : public Material<D> {
         if constexpr (D == 2) if (plane_ == Plane::strain) p.stress_zz[i] += beta * lam * Dm.trace();
         power_[i] = sv.cwiseProduct(Dm).sum() * p.vol[i];
       }
-    }
+    });
     if (beta > 0) dissipated_ += dt * deterministic_sum(end - begin, [&](Index k) { return power_[begin + k]; });
   }
 

@@ -32,6 +32,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "engine/common/parallel.hpp"
 #include "engine/materials/material.hpp"
 #include "engine/mpm/reduce.hpp"
 
@@ -71,8 +72,7 @@ template <int D> class ViscousFluid final : public Material<D> {
   double energy_density(double J) const { return J < 1 ? K_ * (J - 1 - std::log(J)) : 0.0; }
 
   void update(Particles<D>& p, Index begin, Index end, double dt) override {
-#pragma omp parallel for schedule(static) if (end - begin > kParallelMin)
-    for (Index i = begin; i < end; ++i) {
+    parallel_for(begin, end, [&](Index i) {
       Mat3 Dm = Mat3::Zero();
       Dm.template topLeftCorner<D, D>() = 0.5 * (p.L[i] + p.L[i].transpose());
       const Mat3 dev = Dm - Dm.trace() / 3 * Mat3::Identity();
@@ -85,7 +85,7 @@ template <int D> class ViscousFluid final : public Material<D> {
       p.vol[i] = p.vol0[i] * J;
       p.F[i] = std::pow(J, 1.0 / D) * Mat<D>::Identity();
       power_[i] = 2 * mu * dd * p.vol[i];
-    }
+    });
     dissipated_ += dt * deterministic_sum(end - begin, [&](Index k) { return power_[begin + k]; });
   }
 

@@ -1,3 +1,4 @@
+#include "engine/common/parallel.hpp"
 #include "engine/mpm/boundary.hpp"
 
 #include <cmath>
@@ -116,8 +117,7 @@ template <int D> void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel) {
   const double fill = kContactFill * s.options.cell_volume;
   const auto& active = g.active();
   const Index na = static_cast<Index>(active.size());
-#pragma omp parallel for schedule(static) if (na > kParallelMin)
-  for (Index a = 0; a < na; ++a) {
+  parallel_for(0, na, [&](Index a) {
     const Index id = active[a];
     int present = 0;
     double mt = 0, vt = 0;
@@ -131,7 +131,7 @@ template <int D> void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel) {
       pt += g.m[k] * vel[k];
       gt += g.grad_m[k];
     }
-    if (present < 2 || vt < fill) continue;  // supports overlap, the bodies do not touch
+    if (present < 2 || vt < fill) return;  // supports overlap, the bodies do not touch
     const Vec<D> vcm = pt / mt;
     for (int b = 0; b < nf; ++b) {
       const Index k = b * nn + id;
@@ -151,7 +151,7 @@ template <int D> void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel) {
         vel[k] -= vn * n + (t > 0 ? Vec<D>(mu * vn * rt / t) : Vec<D>::Zero());
       }
     }
-  }
+  });
 }
 
 template double apply_boundaries<2>(Scene<2>&, std::vector<Vec<2>>&, double, double, bool);

@@ -1,3 +1,4 @@
+#include "engine/common/parallel.hpp"
 #include "engine/mpm/grid.hpp"
 
 #include <algorithm>
@@ -51,15 +52,13 @@ template <int D> void Grid<D>::zero_node(Index id) {
 template <int D> void Grid<D>::bin(const std::vector<Vec<D>>& x) {
   // Zero the nodes of the previous step, so every node outside the active set is zero.
   const Index nold = static_cast<Index>(active_.size());
-#pragma omp parallel for schedule(static) if (nold > kParallelMin)
-  for (Index a = 0; a < nold; ++a) zero_node(active_[a]);
+  parallel_for(0, nold, [&](Index a) { zero_node(active_[a]); });
 
   const Index np = static_cast<Index>(x.size());
   tile_of_.resize(x.size());
   tile_particles_.resize(x.size());
   occupied_.clear();
-#pragma omp parallel for schedule(static) if (np > kParallelMin)
-  for (Index i = 0; i < np; ++i) {
+  parallel_for(0, np, [&](Index i) {
     const Vec<D> xr = grid_coord(x[i]);
     Index t = 0;
     for (int d = D - 1; d >= 0; --d) {
@@ -67,7 +66,7 @@ template <int D> void Grid<D>::bin(const std::vector<Vec<D>>& x) {
       t = t * tiles_[d] + c / T;
     }
     tile_of_[i] = t;
-  }
+  });
   for (Index i = 0; i < np; ++i)
     if (tile_count_[tile_of_[i]]++ == 0) occupied_.push_back(tile_of_[i]);
   std::sort(occupied_.begin(), occupied_.end());

@@ -1,3 +1,4 @@
+#include "engine/common/parallel.hpp"
 #include "engine/mpm/solver.hpp"
 
 #include <limits>
@@ -51,12 +52,12 @@ template <int D> void Solver<D>::particles_to_grid() {
   const Index nn = g.nnodes();
   const auto& active = g.active();
   const Index na = static_cast<Index>(active.size());
-#pragma omp parallel for schedule(static) if (na > kParallelMin)
-  for (Index a = 0; a < na; ++a)
+  parallel_for(0, na, [&](Index a) {
     for (int fld = 0; fld < g.nfields(); ++fld) {
       const Index k = fld * nn + active[a];
       g.f[k] += g.m[k] * grav;
     }
+  });
 }
 
 // Reorders each body's particles into the tile order of the last binning (a stable counting sort by tile,
@@ -94,8 +95,7 @@ template <int D> void Solver<D>::grid_update(double dt) {
   const auto& active = g.active();
   const Index na = static_cast<Index>(active.size());
   const double eps = mass_eps_;
-#pragma omp parallel for schedule(static) if (na > kParallelMin)
-  for (Index a = 0; a < na; ++a) {
+  parallel_for(0, na, [&](Index a) {
     for (int fld = 0; fld < g.nfields(); ++fld) {
       const Index k = fld * nn + active[a];
       if (g.m[k] > eps) {
@@ -105,7 +105,7 @@ template <int D> void Solver<D>::grid_update(double dt) {
         g.m[k] = 0;  // empty node: excluded from boundaries and contact
       }
     }
-  }
+  });
   boundary_work_ += apply_boundaries(scene_, g.vL, dt, time_ + dt, true);
   body_contact(scene_, g.vL);
 }
@@ -148,9 +148,7 @@ template <int D> double Solver<D>::stable_time_step(double limit) const {
   if (scene_.options.dt_max > 0) dt = std::min(dt, scene_.options.dt_max);
   std::vector<double> dt_bodies;  // each body's stable step h / (c + |v|) (damping included)
   for (const Body& b : scene_.bodies) {
-    double vmax = 0;
-#pragma omp parallel for schedule(static) reduction(max : vmax) if (b.end - b.begin > kParallelMin)
-    for (Index i = b.begin; i < b.end; ++i) vmax = std::max(vmax, P.v[i].norm());
+    const double vmax = parallel_max(b.begin, b.end, 0.0, [&](Index i) { return P.v[i].norm(); });
     const Material<D>& mat = *scene_.materials[b.material];
     const double h = scene_.grid->h(), c = mat.wave_speed();
     double dt_b = h / (c + vmax);
@@ -225,10 +223,7 @@ template <int D> Diagnostics<D> Solver<D>::diagnostics() const {
 template <int D> double Solver<D>::min_jacobian() const {
   const auto& P = scene_.particles;
   const Index np = static_cast<Index>(P.size());
-  double j = std::numeric_limits<double>::infinity();
-#pragma omp parallel for schedule(static) reduction(min : j) if (np > kParallelMin)
-  for (Index i = 0; i < np; ++i) j = std::min(j, P.vol[i] / P.vol0[i]);
-  return j;
+  return parallel_min(Index(0), np, std::numeric_limits<double>::infinity(), [&](Index i) { return P.vol[i] / P.vol0[i]; });
 }
 
 template <int D> void Solver<D>::fail(const std::string& what) const {

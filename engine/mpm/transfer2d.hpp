@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/common/parallel.hpp"
 #include "engine/mpm/scene.hpp"
 #include "engine/mpm/transfer.hpp"
 
@@ -104,14 +105,13 @@ template <class Shape, bool APIC, bool GRAD, bool MOMENTUM> void scatter2d(Scene
   for (int col = 0; col < 4; ++col) {
     const Index* tiles = g.color_tiles(col).data();
     const Index nt = static_cast<Index>(g.color_tiles(col).size());
-#pragma omp parallel for schedule(dynamic, 1) firstprivate(c) if (parallel)
-    for (Index k = 0; k < nt; ++k) scatter_range<Shape, APIC, GRAD, MOMENTUM>(c, start[tiles[k]], start[tiles[k] + 1]);
+    // c is passed by value into each tile's scatter: a copy that no store can alias.
+    parallel_for_dynamic(nt, parallel, [c, start, tiles](Index k) { scatter_range<Shape, APIC, GRAD, MOMENTUM>(c, start[tiles[k]], start[tiles[k] + 1]); });
   }
   if constexpr (!MOMENTUM) {  // unpack the records into m, p, f and zero them for the next step
     const auto& active = g.active();
     const Index na = static_cast<Index>(active.size()), nn = g.nnodes();
-#pragma omp parallel for schedule(static) if (na > kParallelMin)
-    for (Index a = 0; a < na; ++a)
+    parallel_for(0, na, [&](Index a) {
       for (int fld = 0; fld < g.nfields(); ++fld) {
         const Index k = fld * nn + active[a];
         double* r = g.mpf.data() + 5 * k;
@@ -120,6 +120,7 @@ template <class Shape, bool APIC, bool GRAD, bool MOMENTUM> void scatter2d(Scene
         g.f[k] = Vec<2>(r[3], r[4]);
         r[0] = r[1] = r[2] = r[3] = r[4] = 0.0;
       }
+    });
   }
 }
 
@@ -224,9 +225,8 @@ template <class Shape, bool APIC, int MODE> G2PResult gather2d(Scene<2>& s, doub
   const Index np = static_cast<Index>(P.size());
   constexpr Index kChunk = 1024;
   const Index nchunks = (np + kChunk - 1) / kChunk;
-  int bad = 0;
-#pragma omp parallel for schedule(static) reduction(| : bad) firstprivate(c) if (np > kParallelMin)
-  for (Index k = 0; k < nchunks; ++k) bad |= gather_range<Shape, APIC, MODE>(c, k * kChunk, std::min(np, (k + 1) * kChunk));
+  const int bad = parallel_or(nchunks, np > kParallelMin,
+                              [c, np](Index k) { return gather_range<Shape, APIC, MODE>(c, k * kChunk, std::min(np, (k + 1) * kChunk)); });
   return G2PResult{bad == 0};
 }
 

@@ -82,17 +82,57 @@ void Newmark::kinematics(const FrameState& n, const Eigen::VectorXd& D, double d
   s.v = c1 * D + (1 - gamma_ / beta_) * n.v + dt * (1 - 0.5 * gamma_ / beta_) * n.a;
 }
 
+// Numeric LDLT of A; the symbolic analysis (AMD ordering, elimination tree) is redone only when A's sparsity pattern
+// differs from the last one analysed. Under stick contact the matrix changes every step but its pattern does not,
+// and the ordering was the largest single cost of a small frame's step (perf, paper A.5: 16 elements, Newmark).
+bool Newmark::factorize(const SpMat& A, bool throw_on_failure) {
+  const auto n = static_cast<std::size_t>(A.outerSize()) + 1;
+  const bool same = pattern_outer_.size() == n && std::equal(pattern_outer_.begin(), pattern_outer_.end(), A.outerIndexPtr()) &&
+                    pattern_inner_.size() == static_cast<std::size_t>(A.nonZeros()) &&
+                    std::equal(pattern_inner_.begin(), pattern_inner_.end(), A.innerIndexPtr());
+  if (!same) {
+    solver_.analyzePattern(A);
+    pattern_outer_.assign(A.outerIndexPtr(), A.outerIndexPtr() + n);
+    pattern_inner_.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
+  }
+  solver_.factorize(A);
+  if (solver_.info() == Eigen::Success) return true;
+  if (throw_on_failure) throw std::runtime_error("Frame: Newmark effective matrix factorisation failed");
+  return false;
+}
+
 void Newmark::step_linear(FrameState& s, const Eigen::VectorXd& f, double dt, const SpMat* Ma) {
   const double c0 = 1 / (beta_ * dt * dt), c1 = gamma_ / (beta_ * dt);
   const double ar = sys_.model().rayleigh_mass, br = sys_.model().rayleigh_stiffness;
-  if (Ma || dt != dt_factored_) {  // refactorised while mass is attached, else only when dt changes
-    // c0 (M + Ma) + (1 + alpha)(K0 + c1 C), C = ar M + br K0
-    SpMat K = (1 + alpha_) * (1 + c1 * br) * sys_.stiffness() + (c0 + (1 + alpha_) * c1 * ar) * sys_.mass();
-    if (Ma) K += c0 * *Ma;
-    solver_.compute(sys_.constrained(K));
-    if (solver_.info() != Eigen::Success)
-      throw std::runtime_error("Frame: Newmark effective matrix factorisation failed");
-    dt_factored_ = Ma ? 0.0 : dt;
+  if (dt != dt_factored_) {  // c0 M + (1 + alpha)(K0 + c1 C), C = ar M + br K0: rebuilt when dt changes (CFL steps)
+    const double ck = (1 + alpha_) * (1 + c1 * br), cm = c0 + (1 + alpha_) * c1 * ar;
+    if (kc_.nonZeros() == 0) {  // K0 and M constrained on one common pattern, so keff_ is a sum of value arrays
+      kc_ = sys_.constrained(sys_.stiffness() + 0.0 * sys_.mass());
+      mc_ = sys_.constrained(sys_.mass() + 0.0 * sys_.stiffness());
+      if (kc_.nonZeros() != mc_.nonZeros() || !std::equal(kc_.innerIndexPtr(), kc_.innerIndexPtr() + kc_.nonZeros(), mc_.innerIndexPtr()))
+        throw std::logic_error("Newmark: K0 and M patterns differ");
+    }
+    keff_ = kc_;  // constrained DOFs get ck + cm on the diagonal: decoupled, with zero right-hand side, so still 0
+    const double* k = kc_.valuePtr();
+    const double* m = mc_.valuePtr();
+    double* v = keff_.valuePtr();
+    for (Eigen::Index q = 0; q < keff_.nonZeros(); ++q) v[q] = ck * k[q] + cm * m[q];
+    dt_factored_ = dt;
+    if (!Ma) factorize(keff_);
+    factored_with_mass_ = false;
+  }
+  if (Ma) {  // + c0 Ma on the free DOFs, written into a copy of the cached matrix (same pattern: node blocks)
+    keff_ma_ = keff_;
+    const Eigen::VectorXd& free = sys_.free();
+    for (int c = 0; c < Ma->outerSize(); ++c)
+      for (SpMat::InnerIterator it(*Ma, c); it; ++it)
+        if (free(it.row()) > 0 && free(it.col()) > 0) keff_ma_.coeffRef(it.row(), it.col()) += c0 * it.value();
+    keff_ma_.makeCompressed();
+    factorize(keff_ma_);
+    factored_with_mass_ = true;
+  } else if (factored_with_mass_) {
+    factorize(keff_);
+    factored_with_mass_ = false;
   }
   // rhs = f - K0 d_n + (M + Ma)(c0 dt v_n + (1/(2 beta) - 1) a_n)
   //       - (1 + alpha) C ((1 - gamma/beta) v_n + dt (1 - gamma/(2 beta)) a_n) + alpha C v_n
@@ -140,8 +180,7 @@ void Newmark::step_newton(FrameState& s, const Eigen::VectorXd& f, double dt, co
     if (it == kMaxIterations) break;
     SpMat J = (1 + alpha_) * (sys_.tangent(s.d) + c1 * br * sys_.stiffness()) + (c0 + (1 + alpha_) * c1 * ar) * sys_.mass();
     if (Ma) J += c0 * *Ma;
-    solver_.compute(sys_.constrained(J));
-    if (solver_.info() != Eigen::Success) break;
+    if (!factorize(sys_.constrained(J), false)) break;
     delta = solver_.solve(rhs_);
     D += delta;
   }

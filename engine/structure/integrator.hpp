@@ -72,6 +72,7 @@ class Newmark final : public FrameTimeIntegrator {
   void load_state(StateReader& r) override {
     r.get(fint_), r.get(fint0_), r.get(tmp_), r.get(rhs_), r.get(dd_);
     dt_factored_ = 0;  // refactorise on the next step
+    pattern_outer_.clear();
   }
 
  private:
@@ -79,10 +80,15 @@ class Newmark final : public FrameTimeIntegrator {
   void kinematics(const FrameState& n, const Eigen::VectorXd& D, double dt, FrameState& s) const;
   void step_linear(FrameState& s, const Eigen::VectorXd& f, double dt, const SpMat* Ma);
   void step_newton(FrameState& s, const Eigen::VectorXd& f, double dt, const SpMat* Ma);
+  bool factorize(const SpMat& A, bool throw_on_failure = true);
 
   const FrameSystem& sys_;
   double alpha_ = 0, beta_ = 0.25, gamma_ = 0.5;
-  double dt_factored_ = 0;   // 0: the factorisation is stale (new dt, or it held attached mass)
+  double dt_factored_ = 0;   // 0: keff_ is stale (new dt, or restarted)
+  bool factored_with_mass_ = false;  // solver_ holds keff_ + c0 Ma, not keff_
+  SpMat kc_, mc_;            // constrained K0 and M on one pattern
+  SpMat keff_, keff_ma_;     // constrained effective matrix for dt_factored_, and with the attached mass
+  std::vector<int> pattern_outer_, pattern_inner_;  // the sparsity pattern solver_ last analysed
   Eigen::SimplicialLDLT<SpMat> solver_;
   Eigen::VectorXd fint_, fint0_, tmp_, rhs_, dd_;
 };

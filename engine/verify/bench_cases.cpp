@@ -53,17 +53,21 @@ json bench_a5(bool progress) {
   struct Dt { const char* name; double dt_max, cfl; };
   const Dt dts[] = {{"dt 1e-4 (paper)", 1e-4, 0.5}, {"dt 3e-4", 3e-4, 0.9}, {"dt 1e-3", 1e-3, 0.9}, {"CFL 0.3", 1.0, 0.3},
                     {"CFL 0.5", 1.0, 0.5}, {"CFL 0.9", 1.0, 0.9}};
-  for (const char* integrator : {"explicit", "newmark"})
-    for (int n : {2, 4, 8, 16})
-      for (const Dt& d : dts) {
-        const Overrides ov = {{"/analysis/dt_max", d.dt_max}, {"/analysis/cfl", d.cfl}, {"/structure/integrator", integrator}};
-        A5Run r = paper_a5_run(n, ov);
-        const ErrorPair e = compare_history(r.time, r.midspan, r.t_impact, fe);
-        json p{{"integrator", integrator}, {"elements", n}, {"time_step", d.name}, {"error", e.nrms}, {"peak_error", e.peak}, {"wall_seconds", r.wall}};
-        p["paper_setup"] = std::string(integrator) == "explicit" && n == 8 && d.dt_max == 1e-4;
-        points.push_back(p);
-        if (progress) std::fprintf(stderr, "a5 %-14s %d elements %-16s error %.4f wall %.3f s\n", integrator, n, d.name, e.nrms, r.wall);
-      }
+  for (const char* shape : {"linear", "gimp", "bspline2"})
+    for (const char* integrator : {"explicit", "newmark"})
+      for (int n : {2, 4, 8, 16})
+        for (const Dt& d : dts) {
+          const Overrides ov = {{"/analysis/dt_max", d.dt_max}, {"/analysis/cfl", d.cfl}, {"/structure/integrator", integrator},
+                                {"/mpm/shape_function", shape}};
+          A5Run r = paper_a5_run(n, ov);
+          const ErrorPair e = compare_history(r.time, r.midspan, r.t_impact, fe);
+          json p{{"shape", shape}, {"integrator", integrator}, {"elements", n}, {"time_step", d.name}, {"error", e.nrms}, {"peak_error", e.peak},
+                 {"wall_seconds", r.wall}, {"steps", r.steps}};
+          p["paper_setup"] = std::string(shape) == "linear" && std::string(integrator) == "explicit" && n == 8 && d.dt_max == 1e-4;
+          points.push_back(p);
+          if (progress)
+            std::fprintf(stderr, "a5 %-8s %-9s %2d elements %-16s error %.4f wall %.3f s\n", shape, integrator, n, d.name, e.nrms, r.wall);
+        }
   mark_front(points);
   // The paper's set-up against our fastest configuration that is at least as accurate, median of 3 runs each.
   const json* paper = nullptr;
@@ -76,7 +80,8 @@ json bench_a5(bool progress) {
     const Dt* d = nullptr;
     for (const Dt& x : dts)
       if (p["time_step"] == x.name) d = &x;
-    const Overrides ov = {{"/analysis/dt_max", d->dt_max}, {"/analysis/cfl", d->cfl}, {"/structure/integrator", p["integrator"]}};
+    const Overrides ov = {{"/analysis/dt_max", d->dt_max}, {"/analysis/cfl", d->cfl}, {"/structure/integrator", p["integrator"]},
+                          {"/mpm/shape_function", p["shape"]}};
     const int n = p["elements"];
     return median3([&] { return paper_a5_run(n, ov).wall; });
   };

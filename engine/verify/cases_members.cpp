@@ -96,6 +96,7 @@ A5Run paper_a5_run(int elements, const std::vector<std::pair<std::string, nlohma
     if (std::isnan(r.t_impact) && std::abs(f.data[2 * k + 1]) > 0) r.t_impact = r.time[k];
   }
   r.wall = out.results.info.numbers.at("wall_seconds");
+  r.steps = static_cast<long>(out.results.info.numbers.at("steps"));
   return r;
 }
 

@@ -24,6 +24,7 @@ struct A5Run {
   std::vector<double> time, midspan;  // s, m (vertical displacement of the centre-line)
   double t_impact = 0;                // first sample with a contact force on the beam (s)
   double wall = 0;                    // s
+  long steps = 0;
 };
 A5Run paper_a5_run(int elements, const std::vector<std::pair<std::string, nlohmann::json>>& overrides = {});
 
