@@ -39,17 +39,38 @@ template <int D> void MemberContact<D>::find_candidates(const Scene<D>& s) {
     const double ln = s.coupling.decay_scale * g.h() + (s.coupling.distance == DistanceKind::material ? 1.5 * g.h() : 0.0);
     for (const Candidate& c : cand_) slot_[c.node] = -1;
     cand_.clear();
+    // Nodes that can hold mass: the occupied tiles' reach, tile t's particles touching nodes [T t - 1, T t + T + 1].
+    IVec<2> occ_lo(g.nodes()[0], g.nodes()[1]), occ_hi(-1, -1);
+    for (Index t : g.occupied()) {
+      const IVec<2> tc = g.tile_coord(t);
+      for (int d = 0; d < 2; ++d) {
+        occ_lo[d] = std::min(occ_lo[d], Grid<2>::T * tc[d] - 1);
+        occ_hi[d] = std::max(occ_hi[d], Grid<2>::T * tc[d] + Grid<2>::T + 1);
+      }
+    }
     curves_.resize(static_cast<std::size_t>(fr.nelements()));
     for (int e = 0; e < fr.nelements(); ++e) {
       curves_[e] = fr.curve(e);
       const ElementCurve& c = curves_[e];
       Vec2 lo, hi;
       curve_box(c, lo, hi);
-      const double reach = std::max(fr.half_depth(e, 0), fr.half_depth(e, 1)) + ln + 1e-9 * g.h();
+      const double hd_max = std::max(fr.half_depth(e, 0), fr.half_depth(e, 1));  // depth tapers linearly
+      const double reach = hd_max + ln + 1e-9 * g.h();
+      // Lower bound on a node's distance to the curve without projecting: the curve lies in the hull of its Bezier
+      // points P0..P3, and every hull point is within dev = max(dist(P1, chord), dist(P2, chord)) of the chord
+      // segment P0P3 (distance to a convex set is convex), so |x - curve| >= |x - chord| - dev.
+      const Vec2 q0 = c.point(0), q3 = c.point(1), q1 = q0 + c.d1(0) / 3, q2 = q3 - c.d1(1) / 3;
+      const Vec2 ch = q3 - q0;
+      const double ch2 = ch.squaredNorm();
+      auto seg_dist = [&](const Vec2& x) {
+        const double t = ch2 > 0 ? std::clamp((x - q0).dot(ch) / ch2, 0.0, 1.0) : 0.0;
+        return (x - q0 - t * ch).norm();
+      };
+      const double dev = std::max(seg_dist(q1), seg_dist(q2));
       IVec<2> a, b;
       for (int d = 0; d < 2; ++d) {
-        a[d] = std::max(0, static_cast<int>(std::ceil((lo[d] - reach - g.origin()[d]) * g.inv_h())));
-        b[d] = std::min(g.nodes()[d] - 1, static_cast<int>(std::floor((hi[d] + reach - g.origin()[d]) * g.inv_h())));
+        a[d] = std::max({0, occ_lo[d], static_cast<int>(std::ceil((lo[d] - reach - g.origin()[d]) * g.inv_h()))});
+        b[d] = std::min({g.nodes()[d] - 1, occ_hi[d], static_cast<int>(std::floor((hi[d] + reach - g.origin()[d]) * g.inv_h()))});
       }
       for (int j = a[1]; j <= b[1]; ++j)
         for (int i = a[0]; i <= b[0]; ++i) {
@@ -58,13 +79,16 @@ template <int D> void MemberContact<D>::find_candidates(const Scene<D>& s) {
           for (int f : s.coupling.fields) has_mass = has_mass || g.m[f * g.nnodes() + id] > 0;
           if (!has_mass) continue;
           const Vec2 x = g.node_pos(id);
+          int& k = slot_[id];
+          // Exact skips: r >= ln (free zone), or no nearer than the surface this node already has.
+          const double r_low = seg_dist(x) - dev - hd_max;
+          if (r_low >= ln || (k >= 0 && r_low >= cand_[k].surface)) continue;
           const Projection pr = project_on_curve(c, x);
           ++stats_.candidates;
           stats_.projection_iterations += pr.iterations;
           stats_.max_projection_iterations = std::max(stats_.max_projection_iterations, pr.iterations);
           const double r = std::sqrt(pr.dist2) - fr.half_depth(e, pr.xi);
           if (r >= ln) continue;  // free zone whichever side the material is on (node distance)
-          int& k = slot_[id];
           if (k < 0) {
             k = static_cast<int>(cand_.size());
             cand_.push_back(Candidate{id, e, pr.xi, pr.dist2, r, c.point(pr.xi)});
