@@ -55,7 +55,7 @@ json bench_a5(bool progress) {
                     {"CFL 0.5", 1.0, 0.5}, {"CFL 0.9", 1.0, 0.9}};
   for (const char* shape : {"linear", "gimp", "bspline2"})
     for (const char* integrator : {"explicit", "newmark"})
-      for (int n : {2, 4, 8, 16})
+      for (int n : {2, 4, 8, 16, 32})
         for (const Dt& d : dts) {
           const Overrides ov = {{"/analysis/dt_max", d.dt_max}, {"/analysis/cfl", d.cfl}, {"/structure/integrator", integrator},
                                 {"/mpm/shape_function", shape}};
