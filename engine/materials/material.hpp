@@ -26,6 +26,10 @@ template <int D> class Material {
   virtual void attach(const Particles<D>& /*p*/, Index /*begin*/, Index /*end*/) {}
   // Stress update over particles [begin, end) for a step of length dt (s).
   virtual void update(Particles<D>& p, Index begin, Index end, double dt) = 0;
+  // True when update() is pointwise: each particle's new state depends on that particle alone and nothing is
+  // accumulated across particles, so disjoint sub-ranges may be updated concurrently and in any split with the
+  // same result. The solver then updates stresses chunk by chunk inside G2P, while L and F are still in cache.
+  virtual bool pointwise() const { return false; }
   // Stored (recoverable) strain energy of particles [begin, end) (J).
   virtual double strain_energy(const Particles<D>& p, Index begin, Index end) const = 0;
   // Energy dissipated since t = 0 (viscosity, plasticity) by all bodies of this material (J).

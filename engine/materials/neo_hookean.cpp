@@ -25,6 +25,7 @@ template <int D> class NeoHookean final : public Material<D> {
   double density() const override { return rho_; }
   double wave_speed() const override { return el_.wave_speed(rho_, plane_); }
   double damping_time() const override { return beta_; }
+  bool pointwise() const override { return beta_ == 0; }  // damped: dissipation is summed over the range
   void permute(const std::vector<Index>& perm) override { permute_array(power_, perm); }
   double dissipated() const override { return dissipated_; }
   void save_state(StateWriter& w) const override { w.put(power_), w.put(dissipated_); }

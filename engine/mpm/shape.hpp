@@ -13,7 +13,7 @@ namespace dmi {
 
 struct LinearShape {
   static constexpr int K = 2;
-  static void eval(double xr, double /*lp*/, int& base, double* w, double* dw) {
+  [[gnu::always_inline]] static inline void eval(double xr, double /*lp*/, int& base, double* w, double* dw) {
     base = static_cast<int>(std::floor(xr));
     const double f = xr - base;
     w[0] = 1 - f;
@@ -25,7 +25,7 @@ struct LinearShape {
 
 struct BSpline2Shape {
   static constexpr int K = 3;
-  static void eval(double xr, double /*lp*/, int& base, double* w, double* dw) {
+  [[gnu::always_inline]] static inline void eval(double xr, double /*lp*/, int& base, double* w, double* dw) {
     base = static_cast<int>(std::floor(xr - 0.5));
     const double f = xr - base;  // in [0.5, 1.5)
     w[0] = 0.5 * (1.5 - f) * (1.5 - f);
@@ -40,7 +40,7 @@ struct BSpline2Shape {
 struct GimpShape {
   static constexpr int K = 3;
   // 1D uGIMP weight S(r) and slope S'(r) for r = x_p - x_i (grid units), 0 < lp <= 1/2.
-  static void weight(double r, double lp, double& s, double& ds) {
+  [[gnu::always_inline]] static inline void weight(double r, double lp, double& s, double& ds) {
     const double a = std::abs(r), sg = r < 0 ? -1.0 : 1.0;
     if (a < lp) {
       s = 1 - (r * r + lp * lp) / (2 * lp);
@@ -57,7 +57,7 @@ struct GimpShape {
       ds = 0;
     }
   }
-  static void eval(double xr, double lp, int& base, double* w, double* dw) {
+  [[gnu::always_inline]] static inline void eval(double xr, double lp, int& base, double* w, double* dw) {
     base = static_cast<int>(std::floor(xr - 0.5));
     for (int k = 0; k < K; ++k) weight(xr - (base + k), lp, w[k], dw[k]);
   }

@@ -35,8 +35,9 @@ template <int D> void Solver<D>::step(double dt) {
   particles_to_grid();                         // m_i, p_i, f_i = f_int + f_ext (eqs. 5-8)
   member_boundary_forces(dt);                  // stage 1: members as velocity boundaries, reactions on the frame
   grid_update(dt);                             // v^k, v^L = v^k + dt f/m, walls, regions, body contact
-  grid_to_particles(dt);                       // v_p, x_p, L_p, F_p (eqs. 13-14); MUSL remaps first
-  update_stress(dt);                           // per body, its material law
+  // v_p, x_p, L_p, F_p (eqs. 13-14; MUSL remaps first), then per body its material law: inside G2P chunk by chunk
+  // when every law is pointwise, else as a pass of its own.
+  if (!grid_to_particles(dt)) update_stress(dt);
   advance_members(dt);                         // stage 2: the frame under the reactions (eqs. 27-29 or Newmark)
   time_ += dt;
   ++steps_;
@@ -110,11 +111,19 @@ template <int D> void Solver<D>::grid_update(double dt) {
   body_contact(scene_, g.vL);
 }
 
-template <int D> void Solver<D>::grid_to_particles(double dt) {
+// Returns true when the stresses were updated too (every body's law pointwise: fused into G2P's chunks).
+template <int D> bool Solver<D>::grid_to_particles(double dt) {
   Grid<D>& g = *scene_.grid;
   G2PResult r;
+  bool fuse = true;
+  for (const Body& b : scene_.bodies) fuse = fuse && scene_.materials[b.material]->pointwise();
+  const typename TransferKernels<D>::ChunkHook stress = [this, dt](Index i0, Index i1) {
+    for (const Body& b : scene_.bodies)
+      if (const Index a = std::max(b.begin, i0), e = std::min(b.end, i1); a < e) scene_.materials[b.material]->update(scene_.particles, a, e, dt);
+  };
+  const auto* after = fuse ? &stress : nullptr;
   if (scene_.options.update == StressUpdate::usl) {
-    r = kernels_->g2p(scene_, dt, G2PMode::full);
+    r = kernels_->g2p(scene_, dt, G2PMode::full, after);
   } else {
     // MUSL (Sulsky et al. 1995): update particle velocities, remap their momentum to the grid,
     // and take the velocity gradient from the remapped nodal velocities.
@@ -133,9 +142,10 @@ template <int D> void Solver<D>::grid_to_particles(double dt) {
     // feeds strain rates inconsistent with the motion and gained ~12 % energy in the disk test.
     apply_boundaries(scene_, g.v, dt, time_ + dt, false);
     if (members_) members_->constrain_remap(scene_, g.v);  // members are walls too (unlike body contact)
-    r = kernels_->g2p(scene_, dt, G2PMode::kinematics);
+    r = kernels_->g2p(scene_, dt, G2PMode::kinematics, after);
   }
   if (!r.ok) fail("particle state");
+  return fuse;
 }
 
 template <int D> void Solver<D>::update_stress(double dt) {

@@ -62,7 +62,7 @@ template <int D> class Solver {
   void member_boundary_forces(double dt);
   void advance_members(double dt);
   void grid_update(double dt);
-  void grid_to_particles(double dt);
+  bool grid_to_particles(double dt);
   void update_stress(double dt);
   [[noreturn]] void fail(const std::string& what) const;
 

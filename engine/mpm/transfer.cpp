@@ -100,8 +100,8 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
     }
   }
 
-  G2PResult g2p(Scene<D>& s, double dt, G2PMode mode) const override {
-    if constexpr (D == 2) return detail::g2p2d<Shape>(s, dt, mode);
+  G2PResult g2p(Scene<D>& s, double dt, G2PMode mode, const typename TransferKernels<D>::ChunkHook* after_chunk) const override {
+    if constexpr (D == 2) return detail::g2p2d<Shape>(s, dt, mode, after_chunk);
     Grid<D>& g = *s.grid;
     Particles<D>& P = s.particles;
     const bool apic = s.options.transfer == TransferKind::apic;
@@ -151,6 +151,7 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
       }
       if (!P.v[i].allFinite()) bad = 1;
     }
+    if (after_chunk && mode != G2PMode::velocity_only) (*after_chunk)(0, np);
     return G2PResult{bad == 0};
   }
 };

@@ -7,6 +7,7 @@
 //   APIC (Jiang et al. 2015): v_p = sum N v^L, C_p = B_p D_p^-1 with B_p = sum N v^L (x_i-x_p)^T,
 //        D_p = sum N (x_i-x_p)(x_i-x_p)^T (h^2/4 I for quadratic B-splines, computed generally).
 #pragma once
+#include <functional>
 #include <memory>
 
 #include "engine/mpm/scene.hpp"
@@ -28,7 +29,10 @@ template <int D> class TransferKernels {
   virtual ~TransferKernels() = default;
   // Scatter mass, momentum and (unless momentum_only) force and mass gradient. Grid was binned.
   virtual void p2g(Scene<D>& s, bool momentum_only) const = 0;
-  virtual G2PResult g2p(Scene<D>& s, double dt, G2PMode mode) const = 0;
+  // after_chunk (modes full and kinematics): called on particle ranges [begin, end) once their kinematics are done,
+  // possibly concurrently for disjoint ranges (the fused pointwise stress update, Solver::grid_to_particles).
+  using ChunkHook = std::function<void(Index, Index)>;
+  virtual G2PResult g2p(Scene<D>& s, double dt, G2PMode mode, const ChunkHook* after_chunk = nullptr) const = 0;
   // mx_i += sum_p m_p N_ip x_p over the particles of the given occupied tiles (indices into
   // Grid::occupied()), serially: the mass-weighted particle position a node sees (SEEDS.md A.3
   // eq. 25) where members need it. mx has the grid's field layout.

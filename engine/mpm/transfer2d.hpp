@@ -10,6 +10,7 @@
 #include "engine/common/parallel.hpp"
 #include "engine/mpm/scene.hpp"
 #include "engine/mpm/transfer.hpp"
+#include "engine/mpm/transfer2d_avx.hpp"
 
 namespace dmi::detail {
 
@@ -32,7 +33,7 @@ struct ScatterCtx {
   double* __restrict gm;
   double* __restrict gp;
   double* __restrict gf;
-  double* __restrict mpf;  // interleaved (m, px, py, fx, fy) records
+  double* __restrict pf;  // interleaved (px, py, fx, fy) records, 32-byte aligned (Grid::pf)
   double* __restrict gg;
   double* __restrict gvol;
   double h, ih, ox, oy, gx, gy;
@@ -59,6 +60,12 @@ template <class Shape, bool APIC, bool GRAD, bool MOMENTUM> inline void scatter_
     // In-plane volume for the contact fill test (plane-stress thinning must not switch contact off).
     if constexpr (GRAD) vip = c.vol0[i] * c.F[i].determinant();
     const Index off = c.bodies[c.body[i]].field * c.nn;
+#ifdef DMI_HAVE_AVX2_K3
+    if constexpr (K == 3 && !APIC && !GRAD && !MOMENTUM) {
+      scatter_k3_avx(c.pf, c.gm, off + static_cast<Index>(by) * c.nx + bx, c.nx, wx, dwx, wy, dwy, c.ih, mp, mvx, mvy, s00, s01, s10, s11);
+      continue;
+    }
+#endif
     for (int b = 0; b < K; ++b) {
       const Index row = off + static_cast<Index>(by + b) * c.nx + bx;
       const double Wy = wy[b], dWy = dwy[b] * c.ih;
@@ -75,12 +82,12 @@ template <class Shape, bool APIC, bool GRAD, bool MOMENTUM> inline void scatter_
           c.gp[2 * id] += px;
           c.gp[2 * id + 1] += py;
         } else {
-          double* r = c.mpf + 5 * id;
-          r[0] += N * mp;
-          r[1] += px;
-          r[2] += py;
-          r[3] += s00 * dNx + s01 * dNy;  // gravity m_i g is added on the grid (Solver::particles_to_grid)
-          r[4] += s10 * dNx + s11 * dNy;
+          c.gm[id] += N * mp;
+          double* r = c.pf + 4 * id;
+          r[0] += px;
+          r[1] += py;
+          r[2] += s00 * dNx + s01 * dNy;  // gravity m_i g is added on the grid (Solver::particles_to_grid)
+          r[3] += s10 * dNx + s11 * dNy;
         }
         if constexpr (GRAD) {
           c.gg[2 * id] += mp * dNx;
@@ -97,7 +104,7 @@ template <class Shape, bool APIC, bool GRAD, bool MOMENTUM> void scatter2d(Scene
   const Particles<2>& P = s.particles;
   ScatterCtx c{P.x.data(), P.v.data(), P.half_size.data(), P.C.data(), P.F.data(), P.stress.data(), P.mass.data(), P.vol.data(),
                P.vol0.data(), P.body.data(), s.bodies.data(), g.tile_particles().data(), g.m.data(), g.p.data()->data(), g.f.data()->data(),
-               g.mpf.data(),
+               g.pf(),
                GRAD ? g.grad_m.data()->data() : nullptr, GRAD ? g.vol.data() : nullptr, g.h(), g.inv_h(), g.origin()[0], g.origin()[1],
                s.gravity[0], s.gravity[1], g.nodes()[0], g.nnodes()};
   const Index* start = g.tile_start().data();
@@ -108,17 +115,16 @@ template <class Shape, bool APIC, bool GRAD, bool MOMENTUM> void scatter2d(Scene
     // c is passed by value into each tile's scatter: a copy that no store can alias.
     parallel_for_dynamic(nt, parallel, [c, start, tiles](Index k) { scatter_range<Shape, APIC, GRAD, MOMENTUM>(c, start[tiles[k]], start[tiles[k] + 1]); });
   }
-  if constexpr (!MOMENTUM) {  // unpack the records into m, p, f and zero them for the next step
+  if constexpr (!MOMENTUM) {  // unpack the records into p, f and zero them for the next step
     const auto& active = g.active();
     const Index na = static_cast<Index>(active.size()), nn = g.nnodes();
     parallel_for(0, na, [&](Index a) {
       for (int fld = 0; fld < g.nfields(); ++fld) {
         const Index k = fld * nn + active[a];
-        double* r = g.mpf.data() + 5 * k;
-        g.m[k] = r[0];
-        g.p[k] = Vec<2>(r[1], r[2]);
-        g.f[k] = Vec<2>(r[3], r[4]);
-        r[0] = r[1] = r[2] = r[3] = r[4] = 0.0;
+        double* r = g.pf() + 4 * k;
+        g.p[k] = Vec<2>(r[0], r[1]);
+        g.f[k] = Vec<2>(r[2], r[3]);
+        r[0] = r[1] = r[2] = r[3] = 0.0;
       }
     });
   }
@@ -155,13 +161,23 @@ template <class Shape, bool APIC, int MODE> inline int gather_range(const Gather
     const double* gu = MODE == 2 ? c.gv : c.gvl;  // the velocity the gradient is taken of
     double vpx = 0, vpy = 0, dvx = 0, dvy = 0, l00 = 0, l01 = 0, l10 = 0, l11 = 0;
     double b00 = 0, b01 = 0, b10 = 0, b11 = 0, d00 = 0, d01 = 0, d11 = 0;
+#ifdef DMI_HAVE_AVX2_K3
+    constexpr bool kVector = K == 3 && !APIC && MODE == 0;
+    if constexpr (kVector) {
+      const GatherK3 gk = gather_k3_avx(c.gvl, c.gv, off + static_cast<Index>(by) * c.nx + bx, c.nx, wx, dwx, wy, dwy, c.ih);
+      vpx = gk.vpx, vpy = gk.vpy, dvx = gk.vpx - gk.nvx, dvy = gk.vpy - gk.nvy;
+      l00 = gk.l00, l01 = gk.l01, l10 = gk.l10, l11 = gk.l11;
+    }
+#else
+    constexpr bool kVector = false;
+#endif
     // Linear shapes: a particle exactly on a grid line has weight 0 but slope 1/h at the node beyond it; at a body's
     // leading face that node is empty (v = 0), which read as a velocity gradient -v/h (stress in a rigid translation,
     // docs/reliability.md). An empty node is given the particle's interpolated velocity instead: with sum grad N = 0,
     // L += u_bar (x) sum over empty nodes of grad N.
     constexpr bool kEmptyFix = std::is_same_v<Shape, LinearShape> && MODE != 1;
     double ubx = 0, uby = 0, gex = 0, gey = 0;
-    for (int b = 0; b < K; ++b) {
+    for (int b = 0; b < (kVector ? 0 : K); ++b) {
       const Index row = off + static_cast<Index>(by + b) * c.nx + bx;
       const double Wy = wy[b], dWy = dwy[b] * c.ih, dy = (by + b - yr) * c.h;
       for (int a = 0; a < K; ++a) {
@@ -216,7 +232,7 @@ template <class Shape, bool APIC, int MODE> inline int gather_range(const Gather
   return bad;
 }
 
-template <class Shape, bool APIC, int MODE> G2PResult gather2d(Scene<2>& s, double dt) {
+template <class Shape, bool APIC, int MODE> G2PResult gather2d(Scene<2>& s, double dt, const TransferKernels<2>::ChunkHook* after) {
   Grid<2>& g = *s.grid;
   Particles<2>& P = s.particles;
   const GatherCtx c{P.x.data(), P.v.data(), P.half_size.data(), P.C.data(), P.F.data(), P.L.data(), P.body.data(), s.bodies.data(),
@@ -225,16 +241,21 @@ template <class Shape, bool APIC, int MODE> G2PResult gather2d(Scene<2>& s, doub
   const Index np = static_cast<Index>(P.size());
   constexpr Index kChunk = 1024;
   const Index nchunks = (np + kChunk - 1) / kChunk;
-  const int bad = parallel_or(nchunks, np > kParallelMin,
-                              [c, np](Index k) { return gather_range<Shape, APIC, MODE>(c, k * kChunk, std::min(np, (k + 1) * kChunk)); });
+  // A chunk's stress update (after) runs right after its gather, on data still in cache.
+  const int bad = parallel_or(nchunks, np > kParallelMin, [c, np, after](Index k) {
+    const Index i0 = k * kChunk, i1 = std::min(np, (k + 1) * kChunk);
+    const int b = gather_range<Shape, APIC, MODE>(c, i0, i1);
+    if (MODE != 1 && after) (*after)(i0, i1);
+    return b;
+  });
   return G2PResult{bad == 0};
 }
 
-template <class Shape> G2PResult g2p2d(Scene<2>& s, double dt, G2PMode mode) {
+template <class Shape> G2PResult g2p2d(Scene<2>& s, double dt, G2PMode mode, const TransferKernels<2>::ChunkHook* a) {
   const bool apic = s.options.transfer == TransferKind::apic;
   const int m = mode == G2PMode::full ? 0 : mode == G2PMode::velocity_only ? 1 : 2;
-  if (apic) return m == 0 ? gather2d<Shape, true, 0>(s, dt) : m == 1 ? gather2d<Shape, true, 1>(s, dt) : gather2d<Shape, true, 2>(s, dt);
-  return m == 0 ? gather2d<Shape, false, 0>(s, dt) : m == 1 ? gather2d<Shape, false, 1>(s, dt) : gather2d<Shape, false, 2>(s, dt);
+  if (apic) return m == 0 ? gather2d<Shape, true, 0>(s, dt, a) : m == 1 ? gather2d<Shape, true, 1>(s, dt, a) : gather2d<Shape, true, 2>(s, dt, a);
+  return m == 0 ? gather2d<Shape, false, 0>(s, dt, a) : m == 1 ? gather2d<Shape, false, 1>(s, dt, a) : gather2d<Shape, false, 2>(s, dt, a);
 }
 
 }  // namespace dmi::detail

@@ -1,0 +1,83 @@
+// AVX2 forms of the 2D FLIP scatter and gather for 3-node stencils (quadratic B-splines, uGIMP): the same equations
+// as transfer2d.hpp's scalar loops (SEEDS.md A.1, eqs. 5-8 and 13-14) with 4-wide vectors: a node's (px, py, fx, fy)
+// record is one aligned vector, and a stencil row's three velocities are 6 adjacent doubles (perf: the scalar loops
+// spilled their operands to the stack and spent their time in loads and stores). Sums are the same terms in the same
+// node order; rounding differs from the scalar loops by FMA contraction only. No access reaches past a row's third node.
+#pragma once
+#if defined(__AVX2__) && defined(__FMA__)
+#define DMI_HAVE_AVX2_K3 1
+#include <immintrin.h>
+
+namespace dmi::detail {
+
+// Scatter of one particle with weights wx, dwx, wy, dwy (grid units) to the 3 x 3 nodes from node0 (rows nx apart):
+// record (px, py, fx, fy) of node (a, b) += Wy_b P_a + dWy_b Q_a, and m += Wy_b wx_a m_p, where
+//   P_a = (wx_a m vx, wx_a m vy, dwx_a/h s00, dwx_a/h s10),  Q_a = wx_a (0, 0, s01, s11),  s = -V sigma,
+// i.e. N m v and -V sigma grad N with N = wx_a Wy_b, grad N = (dwx_a Wy_b / h, wx_a dWy_b). P_a, Q_a are built in
+// registers (a stack array filled by scalar stores and read back 4-wide stalled on store forwarding).
+[[gnu::always_inline]] inline void scatter_k3_avx(double* pf, double* gm, Index node0, Index nx, const double* wx, const double* dwx,
+                                                  const double* wy, const double* dwy, double ih, double mp, double mvx, double mvy,
+                                                  double s00, double s01, double s10, double s11) {
+  const __m256d V1 = _mm256_set_pd(s10, s00, mvy, mvx), V2 = _mm256_set_pd(s11, s01, 0.0, 0.0);
+  __m256d P[3], Q[3];
+  for (int a = 0; a < 3; ++a) {
+    const __m256d w = _mm256_set1_pd(wx[a]), d = _mm256_set1_pd(dwx[a] * ih);
+    P[a] = _mm256_mul_pd(_mm256_blend_pd(w, d, 0b1100), V1);
+    Q[a] = _mm256_mul_pd(w, V2);
+  }
+  for (int b = 0; b < 3; ++b) {
+    const Index id = node0 + b * nx;
+    double* r = pf + 4 * id;
+    const __m256d W = _mm256_set1_pd(wy[b]), dW = _mm256_set1_pd(dwy[b] * ih);
+    for (int a = 0; a < 3; ++a)
+      _mm256_store_pd(r + 4 * a, _mm256_add_pd(_mm256_load_pd(r + 4 * a), _mm256_fmadd_pd(W, P[a], _mm256_mul_pd(dW, Q[a]))));
+    const double wm = wy[b] * mp;
+    gm[id] += wx[0] * wm;
+    gm[id + 1] += wx[1] * wm;
+    gm[id + 2] += wx[2] * wm;
+  }
+}
+
+// Horizontal sums of interleaved (x, y) lanes: lo = (x0, y0, x1, y1), hi = (x2, y2) -> (sum x, sum y).
+inline __m128d pair_sum(__m256d lo, __m128d hi) {
+  return _mm_add_pd(_mm_add_pd(_mm256_castpd256_pd128(lo), _mm256_extractf128_pd(lo, 1)), hi);
+}
+
+struct GatherK3 {
+  double vpx, vpy, nvx, nvy, l00, l01, l10, l11;  // sum N vL, sum N v, grad of vL (l_ij = sum vL_i dN_j)
+};
+
+// Gather of one particle from velocities vL and v (interleaved x, y) at rows starting at node offset row0.
+[[gnu::always_inline]] inline GatherK3 gather_k3_avx(const double* vl, const double* v, Index row0, Index nx, const double* wx, const double* dwx,
+                              const double* wy, const double* dwy, double ih) {
+  const __m256d WX = _mm256_set_pd(wx[1], wx[1], wx[0], wx[0]), DX = _mm256_set_pd(dwx[1], dwx[1], dwx[0], dwx[0]);
+  const __m128d WX2 = _mm_set1_pd(wx[2]), DX2 = _mm_set1_pd(dwx[2]);
+  __m256d aN = _mm256_setzero_pd(), aV = aN, aDx = aN, aDy = aN;
+  __m128d aN2 = _mm_setzero_pd(), aV2 = aN2, aDx2 = aN2, aDy2 = aN2;
+  for (int b = 0; b < 3; ++b) {
+    const Index id = row0 + b * nx;
+    const __m256d L = _mm256_loadu_pd(vl + 2 * id), V = _mm256_loadu_pd(v + 2 * id);
+    const __m128d L2 = _mm_loadu_pd(vl + 2 * id + 4), V2 = _mm_loadu_pd(v + 2 * id + 4);
+    const __m256d W = _mm256_set1_pd(wy[b]), dW = _mm256_set1_pd(dwy[b] * ih), Wh = _mm256_set1_pd(wy[b] * ih);
+    const __m256d wl = _mm256_mul_pd(WX, L);
+    aN = _mm256_fmadd_pd(W, wl, aN);
+    aDy = _mm256_fmadd_pd(dW, wl, aDy);
+    aDx = _mm256_fmadd_pd(Wh, _mm256_mul_pd(DX, L), aDx);
+    aV = _mm256_fmadd_pd(W, _mm256_mul_pd(WX, V), aV);
+    const __m128d W1 = _mm256_castpd256_pd128(W), dW1 = _mm256_castpd256_pd128(dW), Wh1 = _mm256_castpd256_pd128(Wh);
+    const __m128d wl2 = _mm_mul_pd(WX2, L2);
+    aN2 = _mm_fmadd_pd(W1, wl2, aN2);
+    aDy2 = _mm_fmadd_pd(dW1, wl2, aDy2);
+    aDx2 = _mm_fmadd_pd(Wh1, _mm_mul_pd(DX2, L2), aDx2);
+    aV2 = _mm_fmadd_pd(W1, _mm_mul_pd(WX2, V2), aV2);
+  }
+  alignas(16) double n[2], nv[2], dx[2], dy[2];
+  _mm_store_pd(n, pair_sum(aN, aN2));
+  _mm_store_pd(nv, pair_sum(aV, aV2));
+  _mm_store_pd(dx, pair_sum(aDx, aDx2));
+  _mm_store_pd(dy, pair_sum(aDy, aDy2));
+  return GatherK3{n[0], n[1], nv[0], nv[1], dx[0], dy[0], dx[1], dy[1]};
+}
+
+}  // namespace dmi::detail
+#endif
