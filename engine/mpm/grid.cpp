@@ -89,6 +89,14 @@ template <int D> void Grid<D>::bin(const std::vector<Vec<D>>& x) {
 
   for (auto& c : color_tiles_) c.clear();
   active_.clear();
+  if constexpr (D == 2) {  // colours here, the active nodes in ascending order without a sort (active_nodes_2d)
+    for (Index k = 0; k < nocc; ++k) {
+      const IVec<D> ti = tile_coord(occupied_[k]);
+      color_tiles_[(ti[0] & 1) | ((ti[1] & 1) << 1)].push_back(k);
+    }
+    active_nodes_2d();
+    return;
+  }
   for (Index k = 0; k < nocc; ++k) {
     Index rest = occupied_[k];
     IVec<D> ti;
@@ -123,6 +131,45 @@ template <int D> void Grid<D>::bin(const std::vector<Vec<D>>& x) {
   // Ascending node ids: grid loops then stream memory row by row (in tile order a 10x wider grid cost 1.9x per step).
   std::sort(active_.begin(), active_.end());
   for (Index id : active_) flag_[id] = 0;
+}
+
+// The nodes the occupied tiles' particles can touch (tile (tx, ty): node columns [tx T - 1, tx T + T + 1], rows
+// [ty T - 1, ty T + T + 1]), in ascending node id, in O(active nodes + occupied tiles): occupied_ is sorted by tile
+// id, so each tile row's tiles are a contiguous run ordered by tx; a node row j is reached by at most two tile rows,
+// whose column intervals are merged in order. Replaces collecting in tile order and sorting (std::sort was 3-4 % of
+// a 1 M-particle step, serial).
+template <int D> void Grid<D>::active_nodes_2d() {
+  if constexpr (D == 2) {
+    struct Run { int ty; Index begin, end; };  // occupied_[begin, end) are tile row ty
+    std::vector<Run> runs;
+    for (Index k = 0; k < static_cast<Index>(occupied_.size()); ++k) {
+      const int ty = static_cast<int>(occupied_[k] / tiles_[0]);
+      if (runs.empty() || runs.back().ty != ty) runs.push_back(Run{ty, k, k});
+      runs.back().end = k + 1;
+    }
+    auto row_lo = [](int ty) { return ty * T - 1; };
+    auto row_hi = [](int ty) { return ty * T + T + 1; };
+    int next_row = 0;  // rows below it are done
+    for (std::size_t g = 0; g < runs.size(); ++g) {
+      for (int j = std::max({next_row, row_lo(runs[g].ty), 0}); j <= std::min(row_hi(runs[g].ty), nodes_[1] - 1); ++j) {
+        // Tile rows reaching row j among runs g and g + 1 (runs are ascending in ty; g - 1 ended below j).
+        const Run* a = &runs[g];
+        const Run* b = g + 1 < runs.size() && row_lo(runs[g + 1].ty) <= j ? &runs[g + 1] : nullptr;
+        Index ia = a->begin, ib = b ? b->begin : 0;
+        int last = -1;  // last column emitted in this row
+        while (ia < a->end || (b && ib < b->end)) {
+          Index t;
+          const bool take_a = !b || ib >= b->end || (ia < a->end && occupied_[ia] % tiles_[0] <= occupied_[ib] % tiles_[0]);
+          t = take_a ? occupied_[ia++] : occupied_[ib++];
+          const int tx = static_cast<int>(t % tiles_[0]);
+          const int c0 = std::max({last + 1, tx * T - 1, 0}), c1 = std::min(tx * T + T + 1, nodes_[0] - 1);
+          for (int c = c0; c <= c1; ++c) active_.push_back(static_cast<Index>(j) * nodes_[0] + c);
+          last = std::max(last, c1);
+        }
+        next_row = j + 1;
+      }
+    }
+  }
 }
 
 template class Grid<2>;

@@ -102,6 +102,7 @@ template <int D> class Grid {
   double h_, inv_h_;
   Index nnodes_, ntiles_;
   int nfields_;
+  void active_nodes_2d();
   std::vector<Index> active_;
   std::vector<unsigned char> flag_;
   void zero_node(Index id);
