@@ -2,6 +2,7 @@
 #include "engine/mpm/grid.hpp"
 
 #include <cstdint>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -73,19 +74,8 @@ template <int D> void Grid<D>::bin(const std::vector<Vec<D>>& x) {
     }
     tile_of_[i] = t;
   });
-  for (Index i = 0; i < np; ++i)
-    if (tile_count_[tile_of_[i]]++ == 0) occupied_.push_back(tile_of_[i]);
-  std::sort(occupied_.begin(), occupied_.end());
+  count_sort_tiles(np);
   const Index nocc = static_cast<Index>(occupied_.size());
-  tile_start_.resize(static_cast<std::size_t>(nocc + 1));
-  tile_start_[0] = 0;
-  for (Index k = 0; k < nocc; ++k) {
-    const Index t = occupied_[k];
-    tile_start_[k + 1] = tile_start_[k] + tile_count_[t];
-    tile_count_[t] = tile_start_[k];  // now the fill position of tile t
-  }
-  for (Index i = 0; i < np; ++i) tile_particles_[tile_count_[tile_of_[i]]++] = i;  // stable
-  for (Index t : occupied_) tile_count_[t] = 0;
 
   for (auto& c : color_tiles_) c.clear();
   active_.clear();
@@ -131,6 +121,63 @@ template <int D> void Grid<D>::bin(const std::vector<Vec<D>>& x) {
   // Ascending node ids: grid loops then stream memory row by row (in tile order a 10x wider grid cost 1.9x per step).
   std::sort(active_.begin(), active_.end());
   for (Index id : active_) flag_[id] = 0;
+}
+
+// Stable counting sort of the particles by tile (tile_particles_, tile_start_, occupied_ ascending). Large sets are
+// split into one contiguous chunk per thread: each counts its chunk into its own array, the chunks' offsets within a
+// tile follow in chunk order, and each fills its own chunk, so the order is exactly the serial one (particles by
+// tile, then by index). Serially these two passes over the particles limited two threads (docs/performance.md).
+template <int D> void Grid<D>::count_sort_tiles(Index np) {
+  const int nt = np > kParallelMin ? std::max(1, omp_get_max_threads()) : 1;
+  if (static_cast<int>(chunk_count_.size()) < nt) chunk_count_.resize(static_cast<std::size_t>(nt));
+  chunk_occupied_.resize(static_cast<std::size_t>(nt));
+  auto chunk = [np, nt](int c) { return np * c / nt; };
+  auto count = [&](int c) {
+    std::vector<Index>& cnt = c == 0 ? tile_count_ : chunk_count_[c];
+    if (cnt.size() != static_cast<std::size_t>(ntiles_)) cnt.assign(static_cast<std::size_t>(ntiles_), 0);
+    std::vector<Index>& occ = chunk_occupied_[c];
+    occ.clear();
+    for (Index i = chunk(c); i < chunk(c + 1); ++i)
+      if (cnt[tile_of_[i]]++ == 0) occ.push_back(tile_of_[i]);
+  };
+  auto fill = [&](int c) {
+    std::vector<Index>& cnt = c == 0 ? tile_count_ : chunk_count_[c];
+    for (Index i = chunk(c); i < chunk(c + 1); ++i) tile_particles_[cnt[tile_of_[i]]++] = i;
+  };
+  if (nt > 1) {
+#pragma omp parallel for schedule(static, 1) num_threads(nt)
+    for (int c = 0; c < nt; ++c) count(c);
+  } else {
+    count(0);
+  }
+  occupied_.clear();
+  for (int c = 0; c < nt; ++c) occupied_.insert(occupied_.end(), chunk_occupied_[c].begin(), chunk_occupied_[c].end());
+  std::sort(occupied_.begin(), occupied_.end());
+  occupied_.erase(std::unique(occupied_.begin(), occupied_.end()), occupied_.end());
+  const Index nocc = static_cast<Index>(occupied_.size());
+  tile_start_.resize(static_cast<std::size_t>(nocc + 1));
+  tile_start_[0] = 0;
+  for (Index k = 0; k < nocc; ++k) {
+    const Index t = occupied_[k];
+    Index pos = tile_start_[k];
+    for (int c = 0; c < nt; ++c) {  // counts become the fill positions of each chunk in tile t
+      std::vector<Index>& cnt = c == 0 ? tile_count_ : chunk_count_[c];
+      const Index n = cnt[t];
+      cnt[t] = pos;
+      pos += n;
+    }
+    tile_start_[k + 1] = pos;
+  }
+  if (nt > 1) {
+#pragma omp parallel for schedule(static, 1) num_threads(nt)
+    for (int c = 0; c < nt; ++c) fill(c);
+  } else {
+    fill(0);
+  }
+  for (int c = 0; c < nt; ++c) {  // reset only the occupied tiles (every chunk's entry there holds a fill position)
+    std::vector<Index>& cnt = c == 0 ? tile_count_ : chunk_count_[c];
+    for (Index t : occupied_) cnt[t] = 0;
+  }
 }
 
 // The nodes the occupied tiles' particles can touch (tile (tx, ty): node columns [tx T - 1, tx T + T + 1], rows

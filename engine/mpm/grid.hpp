@@ -103,6 +103,8 @@ template <int D> class Grid {
   Index nnodes_, ntiles_;
   int nfields_;
   void active_nodes_2d();
+  void count_sort_tiles(Index np);
+  std::vector<std::vector<Index>> chunk_count_, chunk_occupied_;  // per-thread tile counts (chunk 0 uses tile_count_)
   std::vector<Index> active_;
   std::vector<unsigned char> flag_;
   void zero_node(Index id);
