@@ -1,7 +1,10 @@
 #include "engine/mpm/transfer.hpp"
 
+#include "engine/common/parallel.hpp"
+
 #include <Eigen/LU>
 #include <cmath>
+#include <type_traits>
 
 #include "engine/mpm/shape.hpp"
 #include "engine/mpm/transfer2d.hpp"
@@ -42,8 +45,7 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
     for (int c = 0; c < (1 << D); ++c) {
       const auto& tiles = g.color_tiles(c);
       const Index nt = static_cast<Index>(tiles.size());
-#pragma omp parallel for schedule(dynamic, 1) if (parallel)
-      for (Index k = 0; k < nt; ++k) {
+      parallel_for_dynamic(nt, parallel, [&](Index k) {
         St st;
         const Index t = tiles[k];
         for (Index q = start[t]; q < start[t + 1]; ++q) {
@@ -80,7 +82,7 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
             }
           }
         }
-      }
+      });
     }
   }
 
@@ -109,15 +111,18 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
     const double h = g.h();
     const Index nn = g.nnodes();
     const Index np = static_cast<Index>(P.size());
-    int bad = 0;
-#pragma omp parallel for schedule(static) reduction(| : bad) if (np > kParallelMin)
-    for (Index i = 0; i < np; ++i) {
+    const int bad = parallel_or(np, np > kParallelMin, [&](Index i) {
+      int b = 0;
       St st;
       const Vec<D> xr = g.grid_coord(P.x[i]);
       st.compute(xr, P.half_size[i] * g.inv_h(), g.inv_h());
       const Index off = s.bodies[P.body[i]].field * nn;
       Vec<D> vpic = Vec<D>::Zero(), dv = Vec<D>::Zero();
       Mat<D> L = Mat<D>::Zero(), B = Mat<D>::Zero(), Dp = Mat<D>::Zero();
+      // Linear shapes: an empty node takes the particle's interpolated velocity in the gradient (as in 2D,
+      // transfer2d.hpp: a particle on a grid plane has slope 1/h at the empty node beyond a leading face).
+      constexpr bool kEmptyFix = std::is_same_v<Shape, LinearShape>;
+      Vec<D> ubar = Vec<D>::Zero(), gempty = Vec<D>::Zero();
       for (int n = 0; n < St::NN; ++n) {
         const IVec<D> ijk = st.base + st.offset[n];
         const Index id = off + g.node_id(ijk);
@@ -133,8 +138,14 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
           }
         }
         vpic += N * vl;
-        L += (mode == G2PMode::kinematics ? g.v[id] : vl) * st.dN[n].transpose();
+        const Vec<D>& u = mode == G2PMode::kinematics ? g.v[id] : vl;
+        L += u * st.dN[n].transpose();
+        if constexpr (kEmptyFix) {
+          ubar += N * u;
+          if (g.m[id] == 0) gempty += st.dN[n];
+        }
       }
+      if constexpr (kEmptyFix) L += ubar * gempty.transpose();
       if (mode != G2PMode::kinematics) {
         if (apic) {
           P.v[i] = vpic;
@@ -147,10 +158,11 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
         P.x[i] += dt * vpic;
         P.L[i] = L;
         P.F[i] = (Mat<D>::Identity() + dt * L) * P.F[i];
-        if (!g.interior(P.x[i]) || !L.allFinite()) bad = 1;
+        if (!g.interior(P.x[i]) || !L.allFinite()) b = 1;
       }
-      if (!P.v[i].allFinite()) bad = 1;
-    }
+      if (!P.v[i].allFinite()) b = 1;
+      return b;
+    });
     if (after_chunk && mode != G2PMode::velocity_only) (*after_chunk)(0, np);
     return G2PResult{bad == 0};
   }

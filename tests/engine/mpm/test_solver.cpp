@@ -91,6 +91,37 @@ TEST(Solver, WallImpact3D) {
   EXPECT_EQ(f.components.size(), 3u);
 }
 
+// 3D, linear shapes: a box translating rigidly by h/16 per step (exact in binary), so its particles, which start at
+// cell centres, sit on grid planes every eighth step. A particle on a plane has weight 0 but slope 1/h at the empty node beyond the body's
+// leading face; read as v = 0 there, that was a velocity gradient -v/h and stress in a rigid translation
+// (docs/reliability.md, grid_lines_linear in 2D). The particles' stress must stay zero and the box undeformed.
+TEST(Solver, LinearShapes3DRigidTranslationOnGridPlanesBuildsNoStress) {
+  for (const char* update : {"usl", "musl"}) {
+    json j = json::parse(embedded_examples().at("wall_impact.json"));
+    const double h = 0.125, dt = 1.0 / 1024, v = h / 16 / dt;  // 8 m/s: the CFL step (2.6e-3 s) is above dt
+    j["analysis"] = {{"dimension", 3}, {"end_time", 128 * dt}, {"dt_max", dt}, {"gravity", {0, 0, 0}}};
+    j["mpm"] = {{"shape_function", "linear"}, {"transfer", "flip"}, {"stress_update", update}};
+    j["grid"] = {{"origin", {0, 0, 0}}, {"size", {4, 4, 4}}, {"cell_size", h}};
+    j["materials"][0]["youngs_modulus"] = 1e5;
+    j["bodies"][0]["particles_per_cell"] = 1;
+    j["bodies"][0]["shape"] = {{"type", "box"}, {"min", {0.5, 0.5, 0.5}}, {"max", {1.0, 1.0, 1.0}}};
+    j["bodies"][0]["velocity"] = {v, v, v};
+    j.erase("walls");
+    j["output"]["probes"] = json::array();
+    Solver<3> s = solver_for<3>(j);
+    run_to(s, 128 * dt);
+    ASSERT_EQ(s.steps(), 128);
+    const auto& P = s.scene().particles;
+    double smax = 0, umax = 0;
+    for (std::size_t i = 0; i < P.size(); ++i) {
+      smax = std::max(smax, P.stress[i].cwiseAbs().maxCoeff());
+      umax = std::max(umax, (P.x[i] - P.x0[i] - Vec<3>::Constant(v * s.time())).cwiseAbs().maxCoeff());
+    }
+    EXPECT_LT(smax, 1e-6) << update;
+    EXPECT_LT(umax, 1e-9) << update;
+  }
+}
+
 // Multi-field bodies separate after an elastic collision; a single shared field also conserves momentum.
 TEST(Solver, MultiFieldBodiesSeparate) {
   Solver<2> s = solver_for<2>(disks("bspline2", "flip", "usl", "multi_field"));
