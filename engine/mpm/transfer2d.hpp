@@ -61,8 +61,10 @@ template <class Shape, bool APIC, bool GRAD, bool MOMENTUM> inline void scatter_
     if constexpr (GRAD) vip = c.vol0[i] * c.F[i].determinant();
     const Index off = c.bodies[c.body[i]].field * c.nn;
 #ifdef DMI_HAVE_AVX2_K3
-    if constexpr (K == 3 && !APIC && !GRAD && !MOMENTUM) {
-      scatter_k3_avx(c.pf, c.gm, off + static_cast<Index>(by) * c.nx + bx, c.nx, wx, dwx, wy, dwy, c.ih, mp, mvx, mvy, s00, s01, s10, s11);
+    if constexpr (K == 3 && !APIC && !MOMENTUM) {
+      const Index node0 = off + static_cast<Index>(by) * c.nx + bx;
+      scatter_k3_avx(c.pf, c.gm, node0, c.nx, wx, dwx, wy, dwy, c.ih, mp, mvx, mvy, s00, s01, s10, s11);
+      if constexpr (GRAD) scatter_grad_k3_avx(c.gg, c.gvol, node0, c.nx, wx, dwx, wy, dwy, c.ih, mp, vip);
       continue;
     }
 #endif

@@ -38,6 +38,28 @@ namespace dmi::detail {
   }
 }
 
+// The contact fields of the same particle (multi-field bodies): grad m += m_p grad N (interleaved x, y) and
+// vol += N V_in-plane. A stencil row of grad m is 6 adjacent doubles: Wy G1 + dWy G2 with
+// G1 = m_p / h (dwx_0, 0, dwx_1, 0, dwx_2, 0) and G2 = m_p (0, wx_0, 0, wx_1, 0, wx_2).
+[[gnu::always_inline]] inline void scatter_grad_k3_avx(double* gg, double* gvol, Index node0, Index nx, const double* wx, const double* dwx,
+                                                       const double* wy, const double* dwy, double ih, double mp, double vip) {
+  const double mh = mp * ih;
+  const __m256d G1 = _mm256_set_pd(0.0, mh * dwx[1], 0.0, mh * dwx[0]), G2 = _mm256_set_pd(mp * wx[1], 0.0, mp * wx[0], 0.0);
+  const __m128d H1 = _mm_set_pd(0.0, mh * dwx[2]), H2 = _mm_set_pd(mp * wx[2], 0.0);
+  for (int b = 0; b < 3; ++b) {
+    const Index id = node0 + b * nx;
+    double* g = gg + 2 * id;
+    const __m256d W = _mm256_set1_pd(wy[b]), dW = _mm256_set1_pd(dwy[b] * ih);
+    _mm256_storeu_pd(g, _mm256_add_pd(_mm256_loadu_pd(g), _mm256_fmadd_pd(W, G1, _mm256_mul_pd(dW, G2))));
+    const __m128d W1 = _mm256_castpd256_pd128(W), dW1 = _mm256_castpd256_pd128(dW);
+    _mm_storeu_pd(g + 4, _mm_add_pd(_mm_loadu_pd(g + 4), _mm_fmadd_pd(W1, H1, _mm_mul_pd(dW1, H2))));
+    const double wv = wy[b] * vip;
+    gvol[id] += wx[0] * wv;
+    gvol[id + 1] += wx[1] * wv;
+    gvol[id + 2] += wx[2] * wv;
+  }
+}
+
 // Horizontal sums of interleaved (x, y) lanes: lo = (x0, y0, x1, y1), hi = (x2, y2) -> (sum x, sum y).
 inline __m128d pair_sum(__m256d lo, __m128d hi) {
   return _mm_add_pd(_mm_add_pd(_mm256_castpd256_pd128(lo), _mm256_extractf128_pd(lo, 1)), hi);
