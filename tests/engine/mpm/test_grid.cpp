@@ -1,0 +1,84 @@
+// Grid binning invariants (engine/mpm/grid.cpp): the active-node list and the particle order by tile, which the
+// kernels and their determinism rely on. The fast paths (ordered active list without a sort, counting sort split
+// over threads) are compared with the plain definitions.
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include "engine/mpm/grid.hpp"
+
+namespace dmi {
+namespace {
+
+// Clusters of particles, some on the grid's edges and some tiles apart, on a 61 x 37-cell grid (tiles of 4 cells
+// do not divide it).
+std::vector<Vec<2>> scattered_particles() {
+  std::mt19937 rng(7);
+  std::vector<Vec<2>> x;
+  const Vec<2> centres[] = {{0.3, 0.3}, {6.0, 3.6}, {2.2, 1.0}, {5.9, 0.2}, {0.2, 3.5}, {4.0, 2.0}};
+  std::uniform_real_distribution<double> u(-0.45, 0.45);
+  for (const Vec<2>& c : centres)
+    for (int k = 0; k < 3000; ++k) {
+      Vec<2> p = c + Vec<2>(u(rng), u(rng));
+      p = p.cwiseMax(Vec<2>(0.05, 0.05)).cwiseMin(Vec<2>(6.05, 3.65));
+      x.push_back(p);
+    }
+  return x;
+}
+
+// Plain definition: every node a particle of an occupied tile can touch, sorted and unique.
+std::vector<Index> reachable_nodes(const Grid<2>& g) {
+  std::vector<Index> ids;
+  for (Index t : g.occupied()) {
+    const IVec<2> tc = g.tile_coord(t);
+    for (int j = std::max(0, Grid<2>::T * tc[1] - 1); j <= std::min(g.nodes()[1] - 1, Grid<2>::T * tc[1] + Grid<2>::T + 1); ++j)
+      for (int i = std::max(0, Grid<2>::T * tc[0] - 1); i <= std::min(g.nodes()[0] - 1, Grid<2>::T * tc[0] + Grid<2>::T + 1); ++i)
+        ids.push_back(g.node_id(IVec<2>(i, j)));
+  }
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  return ids;
+}
+
+TEST(Grid, ActiveNodesAreTheReachableOnesInAscendingOrder) {
+  Grid<2> g(Vec<2>(0, 0), IVec<2>(61, 37), 0.1, 1);
+  const std::vector<Vec<2>> x = scattered_particles();
+  g.bin(x);
+  EXPECT_EQ(g.active(), reachable_nodes(g));
+  // Again after the particles moved (the previous active set is cleared, not merged).
+  std::vector<Vec<2>> y = x;
+  for (auto& p : y) p = (p + Vec<2>(1.3, -0.7)).cwiseMax(Vec<2>(0.05, 0.05)).cwiseMin(Vec<2>(6.05, 3.65));
+  g.bin(y);
+  EXPECT_EQ(g.active(), reachable_nodes(g));
+}
+
+TEST(Grid, ParticleOrderByTileIsStableAndThreadIndependent) {
+  const std::vector<Vec<2>> x = scattered_particles();
+  std::vector<std::vector<Index>> orders;
+  const int threads = omp_get_max_threads();
+  for (int nt : {1, 2, 3}) {
+    omp_set_num_threads(nt);
+    Grid<2> g(Vec<2>(0, 0), IVec<2>(61, 37), 0.1, 1);
+    g.bin(x);
+    orders.push_back(g.tile_particles());
+    // Stable counting sort: by tile (in the order of occupied()), then by particle index.
+    const auto& start = g.tile_start();
+    for (std::size_t k = 0; k + 1 < start.size(); ++k)
+      for (Index q = start[k]; q < start[k + 1]; ++q) {
+        const Vec<2> p = x[g.tile_particles()[q]];
+        const Index t = static_cast<Index>(std::min(36, int(p[1] / 0.1)) / Grid<2>::T) * g.tiles()[0] +
+                        std::min(60, int(p[0] / 0.1)) / Grid<2>::T;
+        ASSERT_EQ(t, g.occupied()[k]);
+        if (q > start[k]) ASSERT_LT(g.tile_particles()[q - 1], g.tile_particles()[q]);
+      }
+  }
+  omp_set_num_threads(threads);
+  EXPECT_EQ(orders[0], orders[1]);
+  EXPECT_EQ(orders[0], orders[2]);
+}
+
+}  // namespace
+}  // namespace dmi
