@@ -2,9 +2,11 @@
 // calls into libgomp (a team of one, and a futex wake per region): 0.33 us per region measured here with the passive
 // wait policy. A small scene crosses ~20 regions per step, ~7 us of a ~30 us step (paper A.5, docs/performance.md),
 // so below kParallelMin iterations the loop runs inline instead. Results do not depend on which way a loop ran: the
-// bodies write disjoint entries, and min / max / or reductions are exact in any order.
+// bodies write disjoint entries, parallel_reduce combines fixed chunks in a fixed order, and parallel_or is exact
+// in any order.
 #pragma once
 #include <algorithm>
+#include <vector>
 
 #include <omp.h>
 
@@ -34,26 +36,28 @@ template <class F> inline void parallel_for_dynamic(Index n, bool parallel, F&& 
   for (Index i = 0; i < n; ++i) f(i);
 }
 
-template <class T, class F> inline T parallel_max(Index begin, Index end, T init, F&& term) {
-  T m = init;
-  if (end - begin <= kParallelMin) {
-    for (Index i = begin; i < end; ++i) m = std::max(m, term(i));
-    return m;
+// combine(...combine(combine(init, term(begin)), term(begin + 1))...) over [begin, end) in fixed chunks of 4096,
+// each reduced from init, the partials combined in chunk order: bit-identical for any thread count, also for sums
+// (not associative in floating point). One chunk runs inline; more run under OpenMP.
+template <class T, class F, class C> inline T parallel_reduce(Index begin, Index end, T init, F&& term, C&& combine) {
+  constexpr Index chunk = 4096;
+  const Index n = end - begin, nc = (n + chunk - 1) / chunk;
+  const auto reduce_chunk = [&](Index c) {
+    T r = init;
+    for (Index i = begin + c * chunk; i < std::min(end, begin + (c + 1) * chunk); ++i) r = combine(r, term(i));
+    return r;
+  };
+  if (n <= kParallelMin) {
+    T r = init;
+    for (Index c = 0; c < nc; ++c) r = combine(r, reduce_chunk(c));
+    return r;
   }
-#pragma omp parallel for schedule(static) reduction(max : m)
-  for (Index i = begin; i < end; ++i) m = std::max(m, term(i));
-  return m;
-}
-
-template <class T, class F> inline T parallel_min(Index begin, Index end, T init, F&& term) {
-  T m = init;
-  if (end - begin <= kParallelMin) {
-    for (Index i = begin; i < end; ++i) m = std::min(m, term(i));
-    return m;
-  }
-#pragma omp parallel for schedule(static) reduction(min : m)
-  for (Index i = begin; i < end; ++i) m = std::min(m, term(i));
-  return m;
+  std::vector<T> part(static_cast<std::size_t>(nc), init);
+#pragma omp parallel for schedule(static)
+  for (Index c = 0; c < nc; ++c) part[c] = reduce_chunk(c);
+  T r = init;
+  for (const T& x : part) r = combine(r, x);
+  return r;
 }
 
 // Bitwise or of term(i) over [0, n): parallel when `parallel`.

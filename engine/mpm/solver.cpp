@@ -158,7 +158,7 @@ template <int D> double Solver<D>::stable_time_step(double limit) const {
   if (scene_.options.dt_max > 0) dt = std::min(dt, scene_.options.dt_max);
   std::vector<double> dt_bodies;  // each body's stable step h / (c + |v|) (damping included)
   for (const Body& b : scene_.bodies) {
-    const double vmax = parallel_max(b.begin, b.end, 0.0, [&](Index i) { return P.v[i].norm(); });
+    const double vmax = parallel_reduce(b.begin, b.end, 0.0, [&](Index i) { return P.v[i].norm(); }, [](double a, double v) { return std::max(a, v); });
     const Material<D>& mat = *scene_.materials[b.material];
     const double h = scene_.grid->h(), c = mat.wave_speed();
     double dt_b = h / (c + vmax);
@@ -233,7 +233,8 @@ template <int D> Diagnostics<D> Solver<D>::diagnostics() const {
 template <int D> double Solver<D>::min_jacobian() const {
   const auto& P = scene_.particles;
   const Index np = static_cast<Index>(P.size());
-  return parallel_min(Index(0), np, std::numeric_limits<double>::infinity(), [&](Index i) { return P.vol[i] / P.vol0[i]; });
+  return parallel_reduce(Index(0), np, std::numeric_limits<double>::infinity(), [&](Index i) { return P.vol[i] / P.vol0[i]; },
+                         [](double a, double j) { return std::min(a, j); });
 }
 
 template <int D> void Solver<D>::fail(const std::string& what) const {
