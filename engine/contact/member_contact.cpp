@@ -39,14 +39,12 @@ template <int D> void MemberContact<D>::find_candidates(const Scene<D>& s) {
     const double ln = s.coupling.decay_scale * g.h() + (s.coupling.distance == DistanceKind::material ? 1.5 * g.h() : 0.0);
     for (const Candidate& c : cand_) slot_[c.node] = -1;
     cand_.clear();
-    // Nodes that can hold mass: the occupied tiles' reach, tile t's particles touching nodes [T t - 1, T t + T + 1].
+    // Nodes that can hold mass: the box of the occupied tiles' reach.
     IVec<2> occ_lo(g.nodes()[0], g.nodes()[1]), occ_hi(-1, -1);
     for (Index t : g.occupied()) {
-      const IVec<2> tc = g.tile_coord(t);
-      for (int d = 0; d < 2; ++d) {
-        occ_lo[d] = std::min(occ_lo[d], Grid<2>::T * tc[d] - 1);
-        occ_hi[d] = std::max(occ_hi[d], Grid<2>::T * tc[d] + Grid<2>::T + 1);
-      }
+      IVec<2> lo, hi;
+      g.tile_nodes(t, lo, hi);
+      occ_lo = occ_lo.cwiseMin(lo), occ_hi = occ_hi.cwiseMax(hi);
     }
     curves_.resize(static_cast<std::size_t>(fr.nelements()));
     for (int e = 0; e < fr.nelements(); ++e) {

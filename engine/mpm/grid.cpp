@@ -35,7 +35,7 @@ Grid<D>::Grid(const Vec<D>& origin, const IVec<D>& cells, double h, int nfields)
     const auto addr = reinterpret_cast<std::uintptr_t>(pf_storage_.data());
     pf_ = pf_storage_.data() + ((32 - addr % 32) % 32) / sizeof(double);
   }
-  flag_.assign(static_cast<std::size_t>(nnodes_), 0);
+  if (D == 3) flag_.assign(static_cast<std::size_t>(nnodes_), 0);
   tile_count_.assign(static_cast<std::size_t>(ntiles_), 0);
 }
 
@@ -79,30 +79,19 @@ template <int D> void Grid<D>::bin(const std::vector<Vec<D>>& x) {
 
   for (auto& c : color_tiles_) c.clear();
   active_.clear();
-  if constexpr (D == 2) {  // colours here, the active nodes in ascending order without a sort (active_nodes_2d)
-    for (Index k = 0; k < nocc; ++k) {
-      const IVec<D> ti = tile_coord(occupied_[k]);
-      color_tiles_[(ti[0] & 1) | ((ti[1] & 1) << 1)].push_back(k);
-    }
+  for (Index k = 0; k < nocc; ++k) {  // colour = parity of the tile coordinates
+    const IVec<D> ti = tile_coord(occupied_[k]);
+    int color = 0;
+    for (int d = 0; d < D; ++d) color |= (ti[d] & 1) << d;
+    color_tiles_[color].push_back(k);
+  }
+  if constexpr (D == 2) {  // the active nodes in ascending order without a sort
     active_nodes_2d();
     return;
   }
   for (Index k = 0; k < nocc; ++k) {
-    Index rest = occupied_[k];
-    IVec<D> ti;
-    int color = 0;
-    for (int d = 0; d < D; ++d) {
-      ti[d] = static_cast<int>(rest % tiles_[d]);
-      rest /= tiles_[d];
-      color |= (ti[d] & 1) << d;
-    }
-    color_tiles_[color].push_back(k);
-    // Nodes a particle of this tile can touch: cells [tT, tT+T-1] -> nodes [tT-1, tT+T+1].
     IVec<D> lo, hi;
-    for (int d = 0; d < D; ++d) {
-      lo[d] = std::max(0, ti[d] * T - 1);
-      hi[d] = std::min(nodes_[d] - 1, ti[d] * T + T + 1);
-    }
+    tile_nodes(occupied_[k], lo, hi);
     IVec<D> ijk = lo;
     while (true) {
       const Index id = node_id(ijk);

@@ -71,6 +71,15 @@ template <int D> class Grid {
     }
     return ti;
   }
+  // Nodes a particle of tile t can touch (cells [T t, T t + T - 1] -> nodes [T t - 1, T t + T + 1]), clamped to the
+  // grid: lo and hi inclusive along each axis.
+  void tile_nodes(Index t, IVec<D>& lo, IVec<D>& hi) const {
+    const IVec<D> ti = tile_coord(t);
+    for (int d = 0; d < D; ++d) {
+      lo[d] = std::max(0, ti[d] * T - 1);
+      hi[d] = std::min(nodes_[d] - 1, ti[d] * T + T + 1);
+    }
+  }
   // Particles of occupied tile k: tile_particles()[tile_start()[k] .. tile_start()[k+1]).
   const std::vector<Index>& tile_start() const { return tile_start_; }
   const std::vector<Index>& tile_particles() const { return tile_particles_; }
@@ -93,10 +102,6 @@ template <int D> class Grid {
  private:
   std::vector<double> pf_storage_;
   double* pf_ = nullptr;
-
- public:
-
- private:
   Vec<D> origin_;
   IVec<D> cells_, nodes_, tiles_;
   double h_, inv_h_;
@@ -106,7 +111,7 @@ template <int D> class Grid {
   void count_sort_tiles(Index np);
   std::vector<std::vector<Index>> chunk_count_, chunk_occupied_;  // per-thread tile counts (chunk 0 uses tile_count_)
   std::vector<Index> active_;
-  std::vector<unsigned char> flag_;
+  std::vector<unsigned char> flag_;  // 3D active-node collection only
   void zero_node(Index id);
   std::vector<Index> tile_of_, tile_start_, tile_particles_, tile_count_, occupied_;
   std::array<std::vector<Index>, (1 << D)> color_tiles_;

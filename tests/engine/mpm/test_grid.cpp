@@ -33,10 +33,10 @@ std::vector<Vec<2>> scattered_particles() {
 std::vector<Index> reachable_nodes(const Grid<2>& g) {
   std::vector<Index> ids;
   for (Index t : g.occupied()) {
-    const IVec<2> tc = g.tile_coord(t);
-    for (int j = std::max(0, Grid<2>::T * tc[1] - 1); j <= std::min(g.nodes()[1] - 1, Grid<2>::T * tc[1] + Grid<2>::T + 1); ++j)
-      for (int i = std::max(0, Grid<2>::T * tc[0] - 1); i <= std::min(g.nodes()[0] - 1, Grid<2>::T * tc[0] + Grid<2>::T + 1); ++i)
-        ids.push_back(g.node_id(IVec<2>(i, j)));
+    IVec<2> lo, hi;
+    g.tile_nodes(t, lo, hi);
+    for (int j = lo[1]; j <= hi[1]; ++j)
+      for (int i = lo[0]; i <= hi[0]; ++i) ids.push_back(g.node_id(IVec<2>(i, j)));
   }
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
