@@ -23,9 +23,9 @@ template <class F> inline void parallel_for(Index begin, Index end, F&& f) {
   for (Index i = begin; i < end; ++i) f(i);
 }
 
-// Indices handed out dynamically in runs of consecutive ones, about 8 runs per thread (tiles of very different
-// particle counts balance; consecutive tiles of a colour are neighbours 8 cells apart, and single tiles handed to
-// alternating threads shared the cache lines of the nodal mass between them at every tile edge).
+// Indices handed out dynamically in runs of consecutive ones, about 8 runs per thread (work items of very different
+// particle counts balance; consecutive single tiles of a colour are neighbours 8 cells apart, and single tiles handed
+// to alternating threads shared the cache lines of the nodal mass between them at every tile edge).
 template <class F> inline void parallel_for_dynamic(Index n, bool parallel, F&& f) {
   if (!parallel) {
     for (Index i = 0; i < n; ++i) f(i);

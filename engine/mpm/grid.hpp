@@ -2,10 +2,12 @@
 // and an active-node list rebuilt each step from the occupied tiles, so per-step cost follows
 // the occupied cells, not the box. Several velocity fields (one per contact body) share a node
 // layout: array index = field * nnodes + node.
-// Particles are binned into tiles of T^D cells; tiles are coloured by the parity of their tile
-// index (2^D colours). Same-colour tiles are >= T cells apart, wider than any stencil (T = 4 >
-// 2 + 1), so a colour's tiles scatter in parallel without locks, and the summation order per
-// node (colour, tile, particle index) does not depend on the thread count.
+// Particles are binned into tiles of T^D cells. The scatter's work items are runs of occupied tiles in one colour:
+// a run's particles are contiguous in the tile order, and same-colour runs are >= T cells apart, wider than any
+// stencil (T = 4 > 2 + 1), so a colour's runs scatter in parallel without locks, and the summation order per node
+// (colour, run, particle order) does not depend on the thread count. Runs are whole tile rows along x (colour: the
+// parity of the other tile coordinates, 2^(D-1) colours), which stream the particle arrays; with too few rows to
+// share among threads, single tiles coloured by the parity of all their coordinates (2^D colours).
 #pragma once
 #include <array>
 #include <vector>
@@ -56,8 +58,14 @@ template <int D> class Grid {
   Index nnodes() const { return nnodes_; }
   int nfields() const { return nfields_; }
   const std::vector<Index>& active() const { return active_; }
-  // Occupied tiles of colour c, as indices k into the occupied-tile list.
-  const std::vector<Index>& color_tiles(int c) const { return color_tiles_[c]; }
+  // Work items of colour c: occupied-tile index ranges [begin, end), each scattered by one thread in order.
+  struct TileRun {
+    Index begin, end;
+  };
+  const std::vector<TileRun>& color_runs(int c) const { return color_runs_[c]; }
+  static constexpr int kColors = 1 << D;
+  // Fewest tile rows for row runs when the particles are many enough to scatter in parallel.
+  static constexpr Index kMinRows = 16;
   // Occupied tiles (tile ids, ascending); index k into this list is the "occupied-tile index".
   const std::vector<Index>& occupied() const { return occupied_; }
   const IVec<D>& tiles() const { return tiles_; }  // tile counts per axis
@@ -109,12 +117,13 @@ template <int D> class Grid {
   int nfields_;
   void active_nodes_2d();
   void count_sort_tiles(Index np);
+  void color_runs_build(Index np);
   std::vector<std::vector<Index>> chunk_count_, chunk_occupied_;  // per-thread tile counts (chunk 0 uses tile_count_)
   std::vector<Index> active_;
   std::vector<unsigned char> flag_;  // 3D active-node collection only
   void zero_node(Index id);
   std::vector<Index> tile_of_, tile_start_, tile_particles_, tile_count_, occupied_;
-  std::array<std::vector<Index>, (1 << D)> color_tiles_;
+  std::array<std::vector<TileRun>, (1 << D)> color_runs_;
 };
 
 }  // namespace dmi

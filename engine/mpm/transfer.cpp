@@ -42,13 +42,12 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
     const auto& start = g.tile_start();
     const auto& order = g.tile_particles();
     const bool parallel = static_cast<Index>(P.size()) > kParallelMin;
-    for (int c = 0; c < (1 << D); ++c) {
-      const auto& tiles = g.color_tiles(c);
-      const Index nt = static_cast<Index>(tiles.size());
-      parallel_for_dynamic(nt, parallel, [&](Index k) {
+    for (int c = 0; c < Grid<D>::kColors; ++c) {
+      const auto& runs = g.color_runs(c);
+      const Index nr = static_cast<Index>(runs.size());
+      parallel_for_dynamic(nr, parallel, [&](Index k) {
         St st;
-        const Index t = tiles[k];
-        for (Index q = start[t]; q < start[t + 1]; ++q) {
+        for (Index q = start[runs[k].begin]; q < start[runs[k].end]; ++q) {
           const Index i = order[q];
           const Vec<D> xr = g.grid_coord(P.x[i]);
           st.compute(xr, P.half_size[i] * g.inv_h(), g.inv_h());

@@ -111,11 +111,11 @@ template <class Shape, bool APIC, bool GRAD, bool MOMENTUM> void scatter2d(Scene
                s.gravity[0], s.gravity[1], g.nodes()[0], g.nnodes()};
   const Index* start = g.tile_start().data();
   const bool parallel = static_cast<Index>(P.size()) > kParallelMin;
-  for (int col = 0; col < 4; ++col) {
-    const Index* tiles = g.color_tiles(col).data();
-    const Index nt = static_cast<Index>(g.color_tiles(col).size());
-    // c is passed by value into each tile's scatter: a copy that no store can alias.
-    parallel_for_dynamic(nt, parallel, [c, start, tiles](Index k) { scatter_range<Shape, APIC, GRAD, MOMENTUM>(c, start[tiles[k]], start[tiles[k] + 1]); });
+  for (int col = 0; col < Grid<2>::kColors; ++col) {
+    const auto* runs = g.color_runs(col).data();
+    const Index nr = static_cast<Index>(g.color_runs(col).size());
+    // c is passed by value into each run's scatter: a copy that no store can alias.
+    parallel_for_dynamic(nr, parallel, [c, start, runs](Index k) { scatter_range<Shape, APIC, GRAD, MOMENTUM>(c, start[runs[k].begin], start[runs[k].end]); });
   }
   if constexpr (!MOMENTUM) {  // unpack the records into p, f and zero them for the next step
     const auto& active = g.active();

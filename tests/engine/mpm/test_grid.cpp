@@ -80,5 +80,53 @@ TEST(Grid, ParticleOrderByTileIsStableAndThreadIndependent) {
   EXPECT_EQ(orders[0], orders[2]);
 }
 
+// The scatter's work items: every occupied tile in exactly one run, runs of consecutive occupied tiles, and no node
+// reached by two runs of one colour (the lock-free scatter's condition). Many particles on few tile rows fall back to
+// single tiles in 2^D colours; otherwise runs are whole tile rows in 2^(D-1) colours.
+void check_runs(const Grid<2>& g, bool expect_rows) {
+  std::vector<int> seen(g.occupied().size(), 0);
+  bool rows = true;
+  for (int c = 0; c < Grid<2>::kColors; ++c) {
+    std::vector<int> reach(static_cast<std::size_t>(g.nnodes()), 0);
+    for (const auto& r : g.color_runs(c)) {
+      ASSERT_LT(r.begin, r.end);
+      const Index row = g.occupied()[r.begin] / g.tiles()[0];
+      for (Index k = r.begin; k < r.end; ++k) {
+        ++seen[k];
+        ASSERT_EQ(g.occupied()[k] / g.tiles()[0], row);  // one tile row
+        IVec<2> lo, hi;
+        g.tile_nodes(g.occupied()[k], lo, hi);
+        for (int j = lo[1]; j <= hi[1]; ++j)
+          for (int i = lo[0]; i <= hi[0]; ++i) {
+            int& n = reach[g.node_id(IVec<2>(i, j))];
+            ASSERT_TRUE(n == 0 || n == 1 + (&r - g.color_runs(c).data())) << "node reached by two runs of colour " << c;
+            n = 1 + static_cast<int>(&r - g.color_runs(c).data());
+          }
+      }
+      rows = rows && (r.end == static_cast<Index>(g.occupied().size()) || g.occupied()[r.end] / g.tiles()[0] != row);
+    }
+  }
+  for (int n : seen) ASSERT_EQ(n, 1);
+  EXPECT_EQ(rows, expect_rows);
+  if (expect_rows) EXPECT_TRUE(g.color_runs(2).empty() && g.color_runs(3).empty());
+}
+
+TEST(Grid, ScatterRunsCoverTheTilesAndSameColourRunsDoNotShareNodes) {
+  // 18,000 particles on 10 tile rows (< kMinRows): single tiles.
+  Grid<2> g(Vec<2>(0, 0), IVec<2>(61, 37), 0.1, 1);
+  g.bin(scattered_particles());
+  check_runs(g, false);
+  // The same particles on a grid of 0.05 m cells span 19 tile rows: whole rows.
+  Grid<2> fine(Vec<2>(0, 0), IVec<2>(122, 74), 0.05, 1);
+  fine.bin(scattered_particles());
+  check_runs(fine, true);
+  // Few particles (a serial scatter): rows, whatever their number.
+  std::vector<Vec<2>> few = scattered_particles();
+  few.resize(2000);
+  Grid<2> small(Vec<2>(0, 0), IVec<2>(61, 37), 0.1, 1);
+  small.bin(few);
+  check_runs(small, true);
+}
+
 }  // namespace
 }  // namespace dmi
