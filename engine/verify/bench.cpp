@@ -41,9 +41,6 @@ json block_json(long n, const std::string& shape, const std::string& transfer) {
   return j;
 }
 
-Scenario block_scenario(long n, const std::string& shape, const std::string& transfer) {
-  return parse_scenario(block_json(n, shape, transfer), "<kernel benchmark>");
-}
 
 // Median per-step wall time of a scene (s): warm-up steps, then 3 repeats of `steps` steps.
 double step_time(const Scenario& s, int steps) {
@@ -62,6 +59,10 @@ double step_time(const Scenario& s, int steps) {
 
 
 }  // namespace
+
+Scenario block_scenario(long n, const std::string& shape, const std::string& transfer) {
+  return parse_scenario(block_json(n, shape, transfer), "<kernel benchmark>");
+}
 
 json to_json(const KernelBench& b) {
   return json{{"shape", b.shape}, {"transfer", b.transfer}, {"threads", b.threads}, {"particles", b.particles}, {"active_nodes", b.active_nodes},

@@ -26,6 +26,11 @@ struct BenchOptions {
   std::vector<std::string> shapes = {"linear", "gimp", "bspline2"}, transfers = {"flip", "apic"};
 };
 
+// The kernel benchmark's scene: a square linear-elastic block of about n particles (2 x 2 per cell, h = 0.05 m),
+// falling freely with a small drift, on a grid 1 m wider on every side. Also used by bench/kernels.cpp.
+struct Scenario;
+Scenario block_scenario(long n, const std::string& shape, const std::string& transfer);
+
 std::vector<KernelBench> kernel_bench(const BenchOptions& o, bool progress);
 nlohmann::json to_json(const KernelBench& b);
 
