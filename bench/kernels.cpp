@@ -7,6 +7,8 @@
 //   ScatterFloor: the production scatter (scatter_k3_avx, transfer2d_avx.hpp) over a minimal particle stream (9
 //                 doubles each, in tile-row order), with no indirection, no body lookup and no other pass: what
 //                 the scatter's nodal read-modify-writes cost alone.
+//   GatherFloor:  the production gather (gather_k3_avx) over a minimal particle stream (8 doubles each), with the
+//                 FLIP velocity, position and F updates: what G2P's arithmetic and nodal loads cost alone.
 //   CopyFloor:    every particle array read once and written once (the bytes of Particles<2>): the memory-traffic
 //                 time of one pass over all particle data.
 #include <benchmark/benchmark.h>
@@ -117,6 +119,41 @@ void ScatterFloor(benchmark::State& st) {
   st.SetItemsProcessed(st.iterations() * static_cast<long>(p.size()));
 }
 
+// The production gather (gather_k3_avx) over a minimal particle stream: weights, the 3 x 3 nodes' v and v^L, then
+// FLIP velocity, position and F updated in place (dt = 0: the particles stay put).
+void GatherFloor(benchmark::State& st) {
+  struct P {
+    double x, y, vx, vy, F[4];
+  };
+  const long n = particles();
+  const int side = static_cast<int>(std::sqrt(static_cast<double>(n)));
+  const Index nx = side / 2 + 4;
+  std::vector<P> p;
+  p.reserve(static_cast<std::size_t>(side) * side);
+  for (int ty = 0; ty < side; ty += 8)
+    for (int tx = 0; tx < side; tx += 8)
+      for (int j = ty; j < std::min(side, ty + 8); ++j)
+        for (int i = tx; i < std::min(side, tx + 8); ++i) p.push_back(P{1.25 + 0.5 * i, 1.25 + 0.5 * j, 0.1, 0.2, {1, 0, 0, 1}});
+  std::vector<double> v(2 * static_cast<std::size_t>(nx * nx), 0.1), vl(v.size(), 0.2);
+  const double dt = 0;
+  for (auto _ : st) {
+    for (P& a : p) {
+      int bx, by;
+      double wx[3], dwx[3], wy[3], dwy[3];
+      BSpline2Shape::eval(a.x, 0, bx, wx, dwx);
+      BSpline2Shape::eval(a.y, 0, by, wy, dwy);
+      const detail::GatherK3 g = detail::gather_k3_avx(vl.data(), v.data(), static_cast<Index>(by) * nx + bx, nx, wx, dwx, wy, dwy, 1.0);
+      a.vx += g.vpx - g.nvx, a.vy += g.vpy - g.nvy;
+      a.x += dt * g.vpx, a.y += dt * g.vpy;
+      const double f0 = a.F[0], f1 = a.F[1], f2 = a.F[2], f3 = a.F[3];
+      a.F[0] = f0 + dt * (g.l00 * f0 + g.l01 * f2), a.F[1] = f1 + dt * (g.l00 * f1 + g.l01 * f3);
+      a.F[2] = f2 + dt * (g.l10 * f0 + g.l11 * f2), a.F[3] = f3 + dt * (g.l10 * f1 + g.l11 * f3);
+    }
+    benchmark::ClobberMemory();
+  }
+  st.SetItemsProcessed(st.iterations() * static_cast<long>(p.size()));
+}
+
 void CopyFloor(benchmark::State& st) {
   const long n = particles();
   const std::size_t bytes = sizeof(Vec<2>) * 4 + sizeof(Mat<2>) * 4 + sizeof(double) * 4 + sizeof(int) + sizeof(Index) * 2;
@@ -137,6 +174,7 @@ BENCHMARK(G2P)->Unit(benchmark::kMillisecond);
 BENCHMARK(Stress)->Unit(benchmark::kMillisecond);
 BENCHMARK(Step)->Unit(benchmark::kMillisecond);
 BENCHMARK(ScatterFloor)->Unit(benchmark::kMillisecond);
+BENCHMARK(GatherFloor)->Unit(benchmark::kMillisecond);
 BENCHMARK(CopyFloor)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();
