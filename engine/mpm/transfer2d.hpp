@@ -70,6 +70,16 @@ template <class Shape, bool APIC, bool GRAD, bool MOMENTUM> inline void scatter_
 #endif
     for (int b = 0; b < K; ++b) {
       const Index row = off + static_cast<Index>(by + b) * c.nx + bx;
+      if constexpr (MOMENTUM) {
+        __builtin_prefetch(c.gp + 2 * (row + kNodeAhead), 1);
+      } else {
+        __builtin_prefetch(c.pf + 4 * (row + kNodeAhead), 1);
+        __builtin_prefetch(c.gm + row + kNodeAhead, 1);
+      }
+      if constexpr (GRAD) {
+        __builtin_prefetch(c.gg + 2 * (row + kNodeAhead), 1);
+        __builtin_prefetch(c.gvol + row + kNodeAhead, 1);
+      }
       const double Wy = wy[b], dWy = dwy[b] * c.ih;
       [[maybe_unused]] const double dy = (by + b - yr) * c.h;
       for (int a = 0; a < K; ++a) {
@@ -181,6 +191,8 @@ template <class Shape, bool APIC, int MODE> inline int gather_range(const Gather
     double ubx = 0, uby = 0, gex = 0, gey = 0;
     for (int b = 0; b < (kVector ? 0 : K); ++b) {
       const Index row = off + static_cast<Index>(by + b) * c.nx + bx;
+      __builtin_prefetch(c.gvl + 2 * (row + kNodeAhead));
+      __builtin_prefetch(c.gv + 2 * (row + kNodeAhead));
       const double Wy = wy[b], dWy = dwy[b] * c.ih, dy = (by + b - yr) * c.h;
       for (int a = 0; a < K; ++a) {
         const Index id = row + a;
