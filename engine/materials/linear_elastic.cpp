@@ -75,6 +75,12 @@ template <int D> class LinearElastic final : public Material<D> {
   static void update2d(Particles<D>& p, Index begin, Index end, double dt, double lam, double mu, double lam_zz) {
     if constexpr (D == 2) {
       parallel_for(begin, end, [&](Index i) {
+        // Software prefetch 16 particles ahead of the arrays the chunk's gather did not touch (perf: 39 % of this
+        // loop's samples waited on one stress load). Kernel bench, 1 thread, A/B 4 rounds: 12.3-13.9 -> 13.3-14.5 M/s.
+        // The same for G2P's own particle arrays (x, v, F, L) made it 3 % slower: not done.
+        __builtin_prefetch(p.stress.data() + i + 16, 1);
+        __builtin_prefetch(p.vol.data() + i + 16, 1);
+        __builtin_prefetch(p.vol0.data() + i + 16);
         const Mat<2>& L = p.L[i];
         Mat<2>& s = p.stress[i];
         const double tr = L(0, 0) + L(1, 1), d01 = 0.5 * (L(0, 1) + L(1, 0)), w = 0.5 * (L(0, 1) - L(1, 0));
