@@ -65,16 +65,7 @@ template <int D> void Grid<D>::bin(const std::vector<Vec<D>>& x) {
   tile_of_.resize(x.size());
   tile_particles_.resize(x.size());
   occupied_.clear();
-  parallel_for(0, np, [&](Index i) {
-    const Vec<D> xr = grid_coord(x[i]);
-    Index t = 0;
-    for (int d = D - 1; d >= 0; --d) {
-      const int c = std::clamp(static_cast<int>(std::floor(xr[d])), 0, cells_[d] - 1);
-      t = t * tiles_[d] + c / T;
-    }
-    tile_of_[i] = t;
-  });
-  count_sort_tiles(np);
+  count_sort_tiles(x);
   const Index nocc = static_cast<Index>(occupied_.size());
 
   color_runs_build(np);
@@ -128,11 +119,23 @@ template <int D> void Grid<D>::color_runs_build(Index np) {
   }
 }
 
+template <int D> Index Grid<D>::tile_of(const Vec<D>& x) const {
+  const Vec<D> xr = grid_coord(x);
+  Index t = 0;
+  for (int d = D - 1; d >= 0; --d) {
+    const int c = std::clamp(static_cast<int>(std::floor(xr[d])), 0, cells_[d] - 1);
+    t = t * tiles_[d] + c / T;
+  }
+  return t;
+}
+
 // Stable counting sort of the particles by tile (tile_particles_, tile_start_, occupied_ ascending). Large sets are
 // split into one contiguous chunk per thread: each counts its chunk into its own array, the chunks' offsets within a
 // tile follow in chunk order, and each fills its own chunk, so the order is exactly the serial one (particles by
-// tile, then by index). Serially these two passes over the particles limited two threads (docs/performance.md).
-template <int D> void Grid<D>::count_sort_tiles(Index np) {
+// tile, then by index). Serially these two passes over the particles limited two threads (docs/performance.md). The
+// counting pass also finds each particle's tile (a pass of its own before: 4.3 of 11.6 ms binning 1 M particles).
+template <int D> void Grid<D>::count_sort_tiles(const std::vector<Vec<D>>& x) {
+  const Index np = static_cast<Index>(x.size());
   const int nt = np > kParallelMin ? std::max(1, omp_get_max_threads()) : 1;
   if (static_cast<int>(chunk_count_.size()) < nt) chunk_count_.resize(static_cast<std::size_t>(nt));
   chunk_occupied_.resize(static_cast<std::size_t>(nt));
@@ -142,8 +145,11 @@ template <int D> void Grid<D>::count_sort_tiles(Index np) {
     if (cnt.size() != static_cast<std::size_t>(ntiles_)) cnt.assign(static_cast<std::size_t>(ntiles_), 0);
     std::vector<Index>& occ = chunk_occupied_[c];
     occ.clear();
-    for (Index i = chunk(c); i < chunk(c + 1); ++i)
-      if (cnt[tile_of_[i]]++ == 0) occ.push_back(tile_of_[i]);
+    for (Index i = chunk(c); i < chunk(c + 1); ++i) {  // the tile of each particle, counted as it is found
+      const Index t = tile_of(x[i]);
+      tile_of_[i] = t;
+      if (cnt[t]++ == 0) occ.push_back(t);
+    }
   };
   auto fill = [&](int c) {
     std::vector<Index>& cnt = c == 0 ? tile_count_ : chunk_count_[c];

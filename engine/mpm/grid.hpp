@@ -116,7 +116,8 @@ template <int D> class Grid {
   Index nnodes_, ntiles_;
   int nfields_;
   void active_nodes_2d();
-  void count_sort_tiles(Index np);
+  Index tile_of(const Vec<D>& x) const;  // tile id of a position (cells clamped to the grid)
+  void count_sort_tiles(const std::vector<Vec<D>>& x);
   void color_runs_build(Index np);
   std::vector<std::vector<Index>> chunk_count_, chunk_occupied_;  // per-thread tile counts (chunk 0 uses tile_count_)
   std::vector<Index> active_;
