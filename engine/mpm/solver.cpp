@@ -43,23 +43,8 @@ template <int D> void Solver<D>::step(double dt) {
   ++steps_;
 }
 
-// P2G, then gravity on the grid: sum_p N_ip m_p g = m_i g (eq. 8's body force), one multiply per node instead of
-// one per particle-node pair.
-template <int D> void Solver<D>::particles_to_grid() {
-  kernels_->p2g(scene_, false);
-  Grid<D>& g = *scene_.grid;
-  const Vec<D> grav = scene_.gravity;
-  if (grav.squaredNorm() == 0) return;
-  const Index nn = g.nnodes();
-  const auto& active = g.active();
-  const Index na = static_cast<Index>(active.size());
-  parallel_for(0, na, [&](Index a) {
-    for (int fld = 0; fld < g.nfields(); ++fld) {
-      const Index k = fld * nn + active[a];
-      g.f[k] += g.m[k] * grav;
-    }
-  });
-}
+// P2G with gravity: f_i = f_int + m_i g, the body force added per node by the kernels (eq. 8).
+template <int D> void Solver<D>::particles_to_grid() { kernels_->p2g(scene_, false); }
 
 // Reorders each body's particles into the tile order of the last binning (a stable counting sort by tile,
 // so particles of one tile sit together in memory): the scatter then reads the particle arrays almost

@@ -73,7 +73,7 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
             }
             if constexpr (!MOMENTUM) {
               g.m[id] += N * mp;
-              g.f[id] += vs * st.dN[n];  // gravity m_i g is added on the grid (Solver::particles_to_grid)
+              g.f[id] += vs * st.dN[n];  // gravity m_i g is added per node below
             }
             if constexpr (GRAD) {
               g.grad_m[id] += mp * st.dN[n];
@@ -81,6 +81,15 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
             }
           }
         }
+      });
+    }
+    // Gravity on the grid: sum_p N_ip m_p g = m_i g (eq. 8's body force), one multiply per node instead of one per
+    // particle-node pair.
+    if constexpr (!MOMENTUM) {
+      const Vec<D> grav = s.gravity;
+      const auto& active = g.active();
+      parallel_for(0, static_cast<Index>(active.size()), [&](Index a) {
+        for (int fld = 0; fld < g.nfields(); ++fld) g.f[fld * nn + active[a]] += g.m[fld * nn + active[a]] * grav;
       });
     }
   }

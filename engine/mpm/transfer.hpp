@@ -27,7 +27,7 @@ struct G2PResult {
 template <int D> class TransferKernels {
  public:
   virtual ~TransferKernels() = default;
-  // Scatter mass, momentum and (unless momentum_only) force and mass gradient. Grid was binned.
+  // Scatter mass, momentum and (unless momentum_only) force with gravity m_i g, and mass gradient. Grid was binned.
   virtual void p2g(Scene<D>& s, bool momentum_only) const = 0;
   // after_chunk (modes full and kinematics): called on particle ranges [begin, end) once their kinematics are done,
   // possibly concurrently for disjoint ranges (the fused pointwise stress update, Solver::grid_to_particles).

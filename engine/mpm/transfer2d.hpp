@@ -36,7 +36,7 @@ struct ScatterCtx {
   double* __restrict pf;  // interleaved (px, py, fx, fy) records, 32-byte aligned (Grid::pf)
   double* __restrict gg;
   double* __restrict gvol;
-  double h, ih, ox, oy, gx, gy;
+  double h, ih, ox, oy;
   Index nx, nn;
 };
 
@@ -98,7 +98,7 @@ template <class Shape, bool APIC, bool GRAD, bool MOMENTUM> inline void scatter_
           double* r = c.pf + 4 * id;
           r[0] += px;
           r[1] += py;
-          r[2] += s00 * dNx + s01 * dNy;  // gravity m_i g is added on the grid (Solver::particles_to_grid)
+          r[2] += s00 * dNx + s01 * dNy;  // gravity: m_i g when the records are unpacked
           r[3] += s10 * dNx + s11 * dNy;
         }
         if constexpr (GRAD) {
@@ -118,7 +118,7 @@ template <class Shape, bool APIC, bool GRAD, bool MOMENTUM> void scatter2d(Scene
                P.vol0.data(), P.body.data(), s.bodies.data(), g.tile_particles().data(), g.m.data(), g.p.data()->data(), g.f.data()->data(),
                g.pf(),
                GRAD ? g.grad_m.data()->data() : nullptr, GRAD ? g.vol.data() : nullptr, g.h(), g.inv_h(), g.origin()[0], g.origin()[1],
-               s.gravity[0], s.gravity[1], g.nodes()[0], g.nnodes()};
+               g.nodes()[0], g.nnodes()};
   const Index* start = g.tile_start().data();
   const bool parallel = static_cast<Index>(P.size()) > kParallelMin;
   for (int col = 0; col < Grid<2>::kColors; ++col) {
@@ -127,15 +127,16 @@ template <class Shape, bool APIC, bool GRAD, bool MOMENTUM> void scatter2d(Scene
     // c is passed by value into each run's scatter: a copy that no store can alias.
     parallel_for_dynamic(nr, parallel, [c, start, runs](Index k) { scatter_range<Shape, APIC, GRAD, MOMENTUM>(c, start[runs[k].begin], start[runs[k].end]); });
   }
-  if constexpr (!MOMENTUM) {  // unpack the records into p, f and zero them for the next step
+  if constexpr (!MOMENTUM) {  // unpack the records into p, f (+ gravity m_i g, eq. 8) and zero them for the next step
     const auto& active = g.active();
     const Index na = static_cast<Index>(active.size()), nn = g.nnodes();
+    const Vec<2> grav = s.gravity;
     parallel_for(0, na, [&](Index a) {
       for (int fld = 0; fld < g.nfields(); ++fld) {
         const Index k = fld * nn + active[a];
         double* r = g.pf() + 4 * k;
         g.p[k] = Vec<2>(r[0], r[1]);
-        g.f[k] = Vec<2>(r[2], r[3]);
+        g.f[k] = Vec<2>(r[2], r[3]) + g.m[k] * grav;
         r[0] = r[1] = r[2] = r[3] = 0.0;
       }
     });
