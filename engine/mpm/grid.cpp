@@ -102,21 +102,20 @@ template <int D> void Grid<D>::bin(const std::vector<Vec<D>>& x) {
 // (1 M particles, quadratic B-splines, docs/performance.md): a colour's tiles were every other tile of every other
 // row, so each pass read the particle arrays in 1/4 slices, and the scatter took 1.7x as long out of cache.
 template <int D> void Grid<D>::color_runs_build(Index np) {
-  for (auto& c : color_runs_) c.clear();
-  const Index nocc = static_cast<Index>(occupied_.size());
-  Index nrows = 0;
-  for (Index k = 0; k < nocc; ++k) nrows += k == 0 || occupied_[k] / tiles_[0] != occupied_[k - 1] / tiles_[0];
-  const bool rows = np <= kParallelMin || nrows >= kMinRows;
-  for (Index k = 0; k < nocc;) {
-    const IVec<D> ti = tile_coord(occupied_[k]);
-    Index e = k + 1;
-    if (rows)
-      while (e < nocc && occupied_[e] / tiles_[0] == occupied_[k] / tiles_[0]) ++e;
-    int color = 0;
-    for (int d = rows ? 1 : 0; d < D; ++d) color |= (ti[d] & 1) << (rows ? d - 1 : d);
-    color_runs_[color].push_back(TileRun{k, e});
-    k = e;
+  rows_.clear();  // maximal runs of occupied tiles in one tile row
+  for (Index k = 0; k < static_cast<Index>(occupied_.size()); ++k) {
+    if (rows_.empty() || occupied_[k] / tiles_[0] != occupied_[rows_.back().begin] / tiles_[0]) rows_.push_back(TileRun{k, k});
+    rows_.back().end = k + 1;
   }
+  for (auto& c : color_runs_) c.clear();
+  const bool by_rows = np <= kParallelMin || static_cast<Index>(rows_.size()) >= kMinRows;
+  for (const TileRun& r : rows_)
+    for (Index k = r.begin; k < r.end; k = by_rows ? r.end : k + 1) {
+      const IVec<D> ti = tile_coord(occupied_[k]);
+      int color = 0;
+      for (int d = by_rows ? 1 : 0; d < D; ++d) color |= (ti[d] & 1) << (by_rows ? d - 1 : d);
+      color_runs_[color].push_back(by_rows ? r : TileRun{k, k + 1});
+    }
 }
 
 template <int D> Index Grid<D>::tile_of(const Vec<D>& x) const {
@@ -140,8 +139,9 @@ template <int D> void Grid<D>::count_sort_tiles(const std::vector<Vec<D>>& x) {
   if (static_cast<int>(chunk_count_.size()) < nt) chunk_count_.resize(static_cast<std::size_t>(nt));
   chunk_occupied_.resize(static_cast<std::size_t>(nt));
   auto chunk = [np, nt](int c) { return np * c / nt; };
+  auto counts = [&](int c) -> std::vector<Index>& { return c == 0 ? tile_count_ : chunk_count_[c]; };
   auto count = [&](int c) {
-    std::vector<Index>& cnt = c == 0 ? tile_count_ : chunk_count_[c];
+    std::vector<Index>& cnt = counts(c);
     if (cnt.size() != static_cast<std::size_t>(ntiles_)) cnt.assign(static_cast<std::size_t>(ntiles_), 0);
     std::vector<Index>& occ = chunk_occupied_[c];
     occ.clear();
@@ -152,7 +152,7 @@ template <int D> void Grid<D>::count_sort_tiles(const std::vector<Vec<D>>& x) {
     }
   };
   auto fill = [&](int c) {
-    std::vector<Index>& cnt = c == 0 ? tile_count_ : chunk_count_[c];
+    std::vector<Index>& cnt = counts(c);
     for (Index i = chunk(c); i < chunk(c + 1); ++i) tile_particles_[cnt[tile_of_[i]]++] = i;
   };
   if (nt > 1) {
@@ -172,7 +172,7 @@ template <int D> void Grid<D>::count_sort_tiles(const std::vector<Vec<D>>& x) {
     const Index t = occupied_[k];
     Index pos = tile_start_[k];
     for (int c = 0; c < nt; ++c) {  // counts become the fill positions of each chunk in tile t
-      std::vector<Index>& cnt = c == 0 ? tile_count_ : chunk_count_[c];
+      std::vector<Index>& cnt = counts(c);
       const Index n = cnt[t];
       cnt[t] = pos;
       pos += n;
@@ -185,10 +185,8 @@ template <int D> void Grid<D>::count_sort_tiles(const std::vector<Vec<D>>& x) {
   } else {
     fill(0);
   }
-  for (int c = 0; c < nt; ++c) {  // reset only the occupied tiles (every chunk's entry there holds a fill position)
-    std::vector<Index>& cnt = c == 0 ? tile_count_ : chunk_count_[c];
-    for (Index t : occupied_) cnt[t] = 0;
-  }
+  for (int c = 0; c < nt; ++c)  // reset only the occupied tiles (every chunk's entry there holds a fill position)
+    for (Index t : occupied_) counts(c)[t] = 0;
 }
 
 // The nodes the occupied tiles' particles can touch (tile (tx, ty): node columns [tx T - 1, tx T + T + 1], rows
@@ -198,27 +196,20 @@ template <int D> void Grid<D>::count_sort_tiles(const std::vector<Vec<D>>& x) {
 // a 1 M-particle step, serial).
 template <int D> void Grid<D>::active_nodes_2d() {
   if constexpr (D == 2) {
-    struct Run { int ty; Index begin, end; };  // occupied_[begin, end) are tile row ty
-    std::vector<Run> runs;
-    for (Index k = 0; k < static_cast<Index>(occupied_.size()); ++k) {
-      const int ty = static_cast<int>(occupied_[k] / tiles_[0]);
-      if (runs.empty() || runs.back().ty != ty) runs.push_back(Run{ty, k, k});
-      runs.back().end = k + 1;
-    }
+    auto ty_of = [&](const TileRun& r) { return static_cast<int>(occupied_[r.begin] / tiles_[0]); };  // rows_: one tile row each
     auto row_lo = [](int ty) { return ty * T - 1; };
     auto row_hi = [](int ty) { return ty * T + T + 1; };
     int next_row = 0;  // rows below it are done
-    for (std::size_t g = 0; g < runs.size(); ++g) {
-      for (int j = std::max({next_row, row_lo(runs[g].ty), 0}); j <= std::min(row_hi(runs[g].ty), nodes_[1] - 1); ++j) {
-        // Tile rows reaching row j among runs g and g + 1 (runs are ascending in ty; g - 1 ended below j).
-        const Run* a = &runs[g];
-        const Run* b = g + 1 < runs.size() && row_lo(runs[g + 1].ty) <= j ? &runs[g + 1] : nullptr;
+    for (std::size_t g = 0; g < rows_.size(); ++g) {
+      for (int j = std::max({next_row, row_lo(ty_of(rows_[g])), 0}); j <= std::min(row_hi(ty_of(rows_[g])), nodes_[1] - 1); ++j) {
+        // Tile rows reaching row j among rows g and g + 1 (ascending in ty; g - 1 ended below j).
+        const TileRun* a = &rows_[g];
+        const TileRun* b = g + 1 < rows_.size() && row_lo(ty_of(rows_[g + 1])) <= j ? &rows_[g + 1] : nullptr;
         Index ia = a->begin, ib = b ? b->begin : 0;
         int last = -1;  // last column emitted in this row
         while (ia < a->end || (b && ib < b->end)) {
-          Index t;
           const bool take_a = !b || ib >= b->end || (ia < a->end && occupied_[ia] % tiles_[0] <= occupied_[ib] % tiles_[0]);
-          t = take_a ? occupied_[ia++] : occupied_[ib++];
+          const Index t = take_a ? occupied_[ia++] : occupied_[ib++];
           const int tx = static_cast<int>(t % tiles_[0]);
           const int c0 = std::max({last + 1, tx * T - 1, 0}), c1 = std::min(tx * T + T + 1, nodes_[0] - 1);
           for (int c = c0; c <= c1; ++c) active_.push_back(static_cast<Index>(j) * nodes_[0] + c);

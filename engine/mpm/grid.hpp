@@ -118,7 +118,8 @@ template <int D> class Grid {
   void active_nodes_2d();
   Index tile_of(const Vec<D>& x) const;  // tile id of a position (cells clamped to the grid)
   void count_sort_tiles(const std::vector<Vec<D>>& x);
-  void color_runs_build(Index np);
+  void color_runs_build(Index np);  // rows_ and color_runs_ from occupied_
+  std::vector<TileRun> rows_;        // occupied tiles by tile row (equal y [and z] tile coordinates), ascending
   std::vector<std::vector<Index>> chunk_count_, chunk_occupied_;  // per-thread tile counts (chunk 0 uses tile_count_)
   std::vector<Index> active_;
   std::vector<unsigned char> flag_;  // 3D active-node collection only

@@ -32,7 +32,6 @@ struct ScatterCtx {
   const Index* __restrict order;
   double* __restrict gm;
   double* __restrict gp;
-  double* __restrict gf;
   double* __restrict pf;  // interleaved (px, py, fx, fy) records, 32-byte aligned (Grid::pf)
   double* __restrict gg;
   double* __restrict gvol;
@@ -115,7 +114,7 @@ template <class Shape, bool APIC, bool GRAD, bool MOMENTUM> void scatter2d(Scene
   Grid<2>& g = *s.grid;
   const Particles<2>& P = s.particles;
   ScatterCtx c{P.x.data(), P.v.data(), P.half_size.data(), P.C.data(), P.F.data(), P.stress.data(), P.mass.data(), P.vol.data(),
-               P.vol0.data(), P.body.data(), s.bodies.data(), g.tile_particles().data(), g.m.data(), g.p.data()->data(), g.f.data()->data(),
+               P.vol0.data(), P.body.data(), s.bodies.data(), g.tile_particles().data(), g.m.data(), g.p.data()->data(),
                g.pf(),
                GRAD ? g.grad_m.data()->data() : nullptr, GRAD ? g.vol.data() : nullptr, g.h(), g.inv_h(), g.origin()[0], g.origin()[1],
                g.nodes()[0], g.nnodes()};
