@@ -91,19 +91,26 @@ void Stress(benchmark::State& st) {
   st.SetItemsProcessed(st.iterations() * b.n());
 }
 
+// The floors' particles: about particles() of them on a side x side lattice, 2 per cell of a unit grid starting a cell
+// in, in the order the solver sorts them: tiles of 4 x 4 cells (8 x 8 particles) along tile rows, row by row inside.
+int lattice_side() { return static_cast<int>(std::sqrt(static_cast<double>(particles()))); }
+template <class P, class Make> std::vector<P> tile_ordered(int side, Make make) {
+  std::vector<P> p;
+  p.reserve(static_cast<std::size_t>(side) * side);
+  for (int ty = 0; ty < side; ty += 8)
+    for (int tx = 0; tx < side; tx += 8)
+      for (int j = ty; j < std::min(side, ty + 8); ++j)
+        for (int i = tx; i < std::min(side, tx + 8); ++i) p.push_back(make(1.25 + 0.5 * i, 1.25 + 0.5 * j));
+  return p;
+}
+
 void ScatterFloor(benchmark::State& st) {
   struct P {
     double x, y, mvx, mvy, m, s00, s01, s10, s11;
   };
-  const long n = particles();
-  const int side = static_cast<int>(std::sqrt(static_cast<double>(n)));  // particles per row, 2 per cell
+  const int side = lattice_side();
   const Index nx = side / 2 + 4;
-  std::vector<P> p;
-  p.reserve(static_cast<std::size_t>(side) * side);
-  for (int ty = 0; ty < side; ty += 8)  // tile rows of 4 cells, tiles of 4 x 4 cells, particles row by row
-    for (int tx = 0; tx < side; tx += 8)
-      for (int j = ty; j < std::min(side, ty + 8); ++j)
-        for (int i = tx; i < std::min(side, tx + 8); ++i) p.push_back(P{1.25 + 0.5 * i, 1.25 + 0.5 * j, 0.1, 0.2, 1.0, 1, 2, 2, 3});
+  const std::vector<P> p = tile_ordered<P>(side, [](double x, double y) { return P{x, y, 0.1, 0.2, 1.0, 1, 2, 2, 3}; });
   std::vector<double> storage(4 * static_cast<std::size_t>(nx * nx) + 4), gm(static_cast<std::size_t>(nx * nx));
   double* pf = storage.data() + ((32 - reinterpret_cast<std::uintptr_t>(storage.data()) % 32) % 32) / sizeof(double);
   for (auto _ : st) {
@@ -125,15 +132,9 @@ void GatherFloor(benchmark::State& st) {
   struct P {
     double x, y, vx, vy, F[4];
   };
-  const long n = particles();
-  const int side = static_cast<int>(std::sqrt(static_cast<double>(n)));
+  const int side = lattice_side();
   const Index nx = side / 2 + 4;
-  std::vector<P> p;
-  p.reserve(static_cast<std::size_t>(side) * side);
-  for (int ty = 0; ty < side; ty += 8)
-    for (int tx = 0; tx < side; tx += 8)
-      for (int j = ty; j < std::min(side, ty + 8); ++j)
-        for (int i = tx; i < std::min(side, tx + 8); ++i) p.push_back(P{1.25 + 0.5 * i, 1.25 + 0.5 * j, 0.1, 0.2, {1, 0, 0, 1}});
+  std::vector<P> p = tile_ordered<P>(side, [](double x, double y) { return P{x, y, 0.1, 0.2, {1, 0, 0, 1}}; });
   std::vector<double> v(2 * static_cast<std::size_t>(nx * nx), 0.1), vl(v.size(), 0.2);
   const double dt = 0;
   for (auto _ : st) {
@@ -156,7 +157,7 @@ void GatherFloor(benchmark::State& st) {
 
 void CopyFloor(benchmark::State& st) {
   const long n = particles();
-  const std::size_t bytes = sizeof(Vec<2>) * 4 + sizeof(Mat<2>) * 4 + sizeof(double) * 4 + sizeof(int) + sizeof(Index) * 2;
+  const std::size_t bytes = Particles<2>::kBytesPerParticle;
   std::vector<char> a(bytes * static_cast<std::size_t>(n), 1), b(a.size(), 0);
   for (auto _ : st) {
     std::memcpy(b.data(), a.data(), a.size());

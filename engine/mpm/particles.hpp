@@ -34,6 +34,9 @@ template <int D> struct Particles {
   std::vector<Index> id, slot;
 
   std::size_t size() const { return x.size(); }
+  // Bytes of one particle over all the arrays above (x, x0, v, half_size; F, L, C, stress; stress_zz, mass, vol0,
+  // vol; body; id, slot).
+  static constexpr std::size_t kBytesPerParticle = 4 * sizeof(Vec<D>) + 4 * sizeof(Mat<D>) + 4 * sizeof(double) + sizeof(int) + 2 * sizeof(Index);
 
  private:
   std::vector<double> scratch_;  // permute's gather buffer, kept between reorderings

@@ -121,7 +121,7 @@ std::vector<KernelBench> kernel_bench(const BenchOptions& o, bool progress) {
         b.spread = (*std::max_element(per_step.begin(), per_step.end()) - *std::min_element(per_step.begin(), per_step.end())) / b.seconds_per_step;
         // Particle arrays: x, x0, v, half_size (4 vectors), F, L, C, stress (4 matrices), stress_zz, mass, vol0, vol, body,
         // id, slot; plus the material's own arrays (none for undamped linear elasticity).
-        b.bytes_per_particle = 4 * sizeof(Vec<2>) + 4 * sizeof(Mat<2>) + 4 * sizeof(double) + sizeof(int) + 2 * sizeof(Index);
+        b.bytes_per_particle = Particles<2>::kBytesPerParticle;
         out.push_back(b);
         if (progress)
           std::fprintf(stderr, "kernel %-8s %-4s %d thread(s): %.3f s/step, %.2f M updates/s (spread %.0f %%)\n", shape.c_str(), transfer.c_str(), t,
