@@ -11,8 +11,25 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Decay function q_n(s), s = r / l_n in (0, 1) (SEEDS.md A.2 eq. 16; the paper leaves q_n open).
-double decay(DecayKind k, double s) { return k == DecayKind::linear ? 1 - s : 0.5 * (1 + std::cos(kPi * s)); }
+// Weight q of the boundary force at signed distance r from a member surface of half depth hm (eq. 16).
+// Sharp: a node is held fully (q = 1) once r <= r_on and, if it was held in the previous step, while
+// r <= r_on + l_n / 2; else it is free. r_on = max(0, (l_n - 2 hm) / 2): nodes on or inside the member surface, as a
+// rigid wall holds the nodes on or behind its plane, widened for members thinner than l_n so that the held band
+// (2 hm + 2 r_on >= l_n) always contains a grid node. The release band keeps a member that vibrates across the
+// threshold from switching a loaded node on and off every step: each switch is a plastic impact of the node, and
+// a hard impact lost 54-79 % of its energy without it. Linear 1 - r / l_n and cosine (1 + cos(pi r / l_n)) / 2 hold
+// nodes partly; a partly held node is braked by q of its approach velocity every step, a dashpot of impedance
+// ~ q (1 - q) rho c per unit area that absorbs a hard elastic impact (docs/verification.md, member contact).
+double weight(DecayKind k, double r, double ln, double hm, bool held_before) {
+  if (k == DecayKind::sharp) {
+    const double on = std::max(0.0, 0.5 * ln - hm) + 1e-9 * ln;  // a node on the surface is held (round-off)
+    return r <= on || (held_before && r <= on + 0.5 * ln) ? 1.0 : 0.0;
+  }
+  if (r <= 0) return 1.0;
+  if (r >= ln) return 0.0;
+  const double s = r / ln;
+  return k == DecayKind::linear ? 1 - s : 0.5 * (1 + std::cos(kPi * s));
+}
 
 // Axis-aligned box of an element's deformed centre-line: the cubic lies in the convex hull of its
 // Bezier control points x(0), x(0) + x'(0)/3, x(1) - x'(1)/3, x(1).
@@ -149,9 +166,25 @@ template <int D> void MemberContact<D>::apply(Scene<D>& s, const TransferKernels
     force_.setZero();
     loaded_.clear();
     loads_.clear();
+    Grid<2>& g = *s.grid;
+    if (held_flag_.size() != static_cast<std::size_t>(g.nnodes() * g.nfields())) held_flag_.assign(static_cast<std::size_t>(g.nnodes() * g.nfields()), 0);
+    for (Index k : held_) held_flag_[k] = 1;  // the nodes that pressed on a member in the previous step
     find_candidates(s);
-    if (cand_.empty()) return;
-    mass_positions(s, kernels);
+    if (!cand_.empty()) {
+      mass_positions(s, kernels);
+      boundary_forces(s, dt);
+    }
+    for (Index k : held_) held_flag_[k] = 0;
+    held_.clear();
+    for (const Loaded& l : loaded_)
+      if (l.pressed) held_.push_back(l.k);
+  }
+}
+
+// f_bc of eqs. (19)-(21) on the candidate nodes, the reactions on the frame and the held masses.
+template <int D> void MemberContact<D>::boundary_forces(Scene<D>& s, double dt) {
+  if constexpr (D == 2) {
+    Frame& fr = *s.frame;
     Grid<2>& g = *s.grid;
     const MemberCoupling& opt = s.coupling;
     const double ln = opt.decay_scale * g.h();
@@ -186,9 +219,9 @@ template <int D> void MemberContact<D>::apply(Scene<D>& s, const TransferKernels
         // Velocity of the member's surface point x^M + c n: centre-line velocity plus omega x (c n), so the
         // material is held where the reaction acts (its power then matches the frame's, moment included).
         const Vec2 vstar = vc + omega * hm * Vec2(-n.y(), n.x());
-        const double q = r <= 0 ? 1.0 : (r < ln ? decay(opt.decay, r / ln) : 0.0);
+        const double q = weight(opt.decay, r, ln, hm, held_flag_[k] != 0);
         if (q == 0) continue;
-        loaded_.push_back(Loaded{k, n, vstar, q, mode});
+        loaded_.push_back(Loaded{k, n, vstar, q, mode, false});
         Vec2 fv = -g.f[k] + (m * vstar - g.p[k]) / dt;  // eq. (20)
         if (mode != MemberContactMode::stick) {
           const double fn = fv.dot(n);
@@ -211,6 +244,7 @@ template <int D> void MemberContact<D>::apply(Scene<D>& s, const TransferKernels
         // (all directions when stuck, the normal one when sliding).
         fr.add_point_mass(c.element, c.xi, q * m * (mode == MemberContactMode::stick ? Mat<2>(Mat<2>::Identity()) : Mat<2>(n * n.transpose())));
         force_ += F;
+        loaded_.back().pressed = true;
         loads_.push_back(ContactLoad{c.element, c.xi, c.xm + hm * n, F});
         ++stats_.loaded;
       }

@@ -1,15 +1,19 @@
-// Stage 1 of Lin & Yang's two-stage contact (SEEDS.md A.2-A.3): beam-column members act on the MPM
-// grid as velocity boundaries through Yang's (2016) equivalent specific-force field, and the
-// reactions load the frame. Per step, after P2G and before the grid update:
-//   r   = (y - x^M) . n - c(xi)                      signed distance to the member surface, eq. (23), with
-//         y = x_i (the paper, distance "node") or y = xbar_i (distance "material", the default: the field
-//         engages when the material a node carries reaches the member, not a cell earlier; docs/verification.md)
+// Stage 1 of Lin & Yang's (2024) two-stage contact: beam-column members act on the MPM grid as velocity
+// boundaries through Yang's (2016) equivalent specific-force field, and the reactions load the frame. Per step,
+// after P2G and before the grid update:
+//   r   = (y - x^M) . n - c(xi)                      signed distance to the member surface (Lin & Yang 2024, eq. 23),
+//         y = x_i (distance "node", the default and the paper's) or y = xbar_i (distance "material": from the
+//         mass-weighted particle position the node sees)
 //   n   oriented towards the material a node sees:   (xbar_i - x^M) . n > 0, eqs. (24)-(25)
-//   q   = 1 (r <= 0), q_n(r / l_n) (0 < r < l_n), 0   eq. (16); l_n = decay_scale |(h n_x, h n_y)| = decay_scale h (18)
+//   q   weight of eq. (16) over the layer l_n = decay_scale |(h n_x, h n_y)| = decay_scale h (eq. 18):
+//         sharp (default): 1 for nodes on or inside the surface (a band >= l_n wide for thin members), kept while
+//         the node presses and r <= r_on + l_n / 2 (hysteresis), else 0 -- the node set a rigid wall holds;
+//         linear / cosine (the paper's decay layer): 0 < q < 1 across l_n, which brakes a partly held node by q of
+//         its approach velocity every step -- a dashpot that absorbs a hard elastic impact (docs/verification.md)
 //   f_v = -f_tot + (m v* - p) / dt                    stick / prescribed velocity, eq. (20)
 //         normal part only, and only while it pushes the material away (f_v . n > 0): separable, eq. (21)
 //         plus a tangential part limited by mu f_v . n: friction (Coulomb)
-//   f_bc = q f_v added to the node; -f_bc acts on the member at the surface point x^M + c n, i.e. a
+//   f_bc = q f_v added to the node (eq. 19); -f_bc acts on the member at the surface point x^M + c n, i.e. a
 //   force at x^M plus the moment of the offset, turned into consistent end forces by Frame::add_point_load.
 //   The held nodal mass q m (q m n n^T when sliding) is attached to the frame for the step
 //   (Frame::add_point_mass): the staggered scheme computes the reaction from v*_n, and without the
@@ -74,11 +78,13 @@ template <int D> class MemberContact {
     w.tag("member_contact");
     w.put(stats_), w.put(force_);
     save_loads(w, loads_);
+    w.put(held_);
   }
   void load_state(StateReader& r) {
     r.tag("member_contact");
     r.get(stats_), r.get(force_);
     load_loads(r, loads_);
+    r.get(held_);
   }
 
  private:
@@ -91,11 +97,13 @@ template <int D> class MemberContact {
   };
   void find_candidates(const Scene<D>& s);
   void mass_positions(const Scene<D>& s, const TransferKernels<D>& kernels);
+  void boundary_forces(Scene<D>& s, double dt);
   struct Loaded {  // a node-field pair that received a boundary force this step
     Index k;        // field * nnodes + node
     Vec<D> n, vstar;
     double q;
     MemberContactMode mode;
+    bool pressed;  // received a force (a separating node is listed for MUSL's remap but gets none)
   };
   std::vector<ElementCurve> curves_;  // deformed centre-lines at t_n, by element (this step)
   std::vector<Candidate> cand_;
@@ -105,6 +113,8 @@ template <int D> class MemberContact {
   std::vector<Index> tiles_;               // occupied-tile indices whose particles reach a candidate
   std::vector<unsigned char> tile_flag_;   // per tile id, scratch
   std::vector<Index> marked_;
+  std::vector<Index> held_;                // node-field pairs that received a force in the last step
+  std::vector<unsigned char> held_flag_;   // per node-field, scratch: set from held_ during apply()
   Vec2 force_ = Vec2::Zero();
   std::vector<ContactLoad> loads_;
   MemberContactStats stats_;

@@ -61,9 +61,9 @@ struct SolverOptions {
 struct MemberCoupling {
   MemberContactMode mode = MemberContactMode::separable;
   double friction = 0.0;
-  DecayKind decay = DecayKind::linear;
+  DecayKind decay = DecayKind::sharp;
   double decay_scale = 1.0;
-  DistanceKind distance = DistanceKind::material;
+  DistanceKind distance = DistanceKind::node;
   std::vector<int> fields;         // velocity fields the members act on
   std::vector<int> bonded_fields;  // of those, the fields held by stick whatever the mode
 };

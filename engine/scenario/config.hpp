@@ -153,15 +153,15 @@ struct StructureConfig {
 
 // --- Members as MPM velocity boundaries (Yang 2016; SEEDS.md A.2-A.3) ---------------------------
 enum class MemberContactMode { stick, separable, friction };
-enum class DecayKind { linear, cosine };
+enum class DecayKind { sharp, linear, cosine };
 enum class DistanceKind { node, material };
 
 struct MemberContactConfig {
   MemberContactMode mode = MemberContactMode::separable;
   double friction = 0.0;                             // Coulomb coefficient (mode friction)
-  DecayKind decay = DecayKind::linear;               // q_n of eq. (16)
+  DecayKind decay = DecayKind::sharp;                // q of eq. (16): held or free, with hysteresis
   double decay_scale = 1.0;                          // multiplies l_n of eq. (18)
-  DistanceKind distance = DistanceKind::material;    // where r of eq. (23) is measured from
+  DistanceKind distance = DistanceKind::node;        // where r of eq. (23) is measured from
   std::vector<std::string> bodies;                   // bodies the members act on; empty = all
   std::vector<std::string> bonded;                   // bodies stuck to the members whatever the mode
 };

@@ -383,15 +383,18 @@ void read_member_contact(Obj o, MemberContactConfig& c, bool structure) {
   if (o.when("mode", c.mode == MemberContactMode::friction ? "friction" : "", "friction"))
     o.number("friction", c.friction, Spec{.doc = "Coulomb friction coefficient between members and bodies", .min = 0});
   o.end_when();
-  o.choice<DecayKind>("decay", c.decay, {{"linear", DecayKind::linear}, {"cosine", DecayKind::cosine}},
-                      Spec{.doc = "decay of the boundary force across the decay layer, q_n(s) with s = r / l_n (SEEDS.md A.2 eq. 16): "
-                                  "linear 1 - s or cosine (1 + cos(pi s)) / 2"});
+  o.choice<DecayKind>("decay", c.decay, {{"sharp", DecayKind::sharp}, {"linear", DecayKind::linear}, {"cosine", DecayKind::cosine}},
+                      Spec{.doc = "weight q of the boundary force across the decay layer l_n (Lin & Yang 2024, eq. 16): sharp (default) "
+                                  "= a node is held fully (q = 1) once r <= l_n / 2 and stays held while r <= l_n and the material "
+                                  "presses, else q = 0; linear 1 - r / l_n or cosine (1 + cos(pi r / l_n)) / 2 hold nodes partly, "
+                                  "which acts as a dashpot of impedance ~ q (1 - q) rho c and absorbs a hard elastic impact "
+                                  "(docs/verification.md, member contact)"});
   o.number("decay_scale", c.decay_scale, positive("", "multiplies the decay-layer thickness l_n of SEEDS.md A.2 eq. (18)"));
   o.choice<DistanceKind>("distance", c.distance, {{"node", DistanceKind::node}, {"material", DistanceKind::material}},
-                         Spec{.doc = "signed distance r that sets q: material (default) = from the mass-weighted particle position the "
-                                     "node sees (SEEDS.md A.3 eq. 25), so the field engages when the material, not its grid support, "
-                                     "reaches the member; node = from the grid node itself (eq. 23, the paper), which acts up to a "
-                                     "cell early (docs/verification.md)"});
+                         Spec{.doc = "signed distance r that sets q: node (default) = from the grid node itself (Lin & Yang 2024, "
+                                     "eq. 23), the node set a rigid wall holds; material = from the mass-weighted particle "
+                                     "position the node sees (eq. 25), which engages when the material, not its grid support, "
+                                     "reaches the member (docs/verification.md)"});
   o.strings("bodies", c.bodies, {}, Spec{.doc = "names of the bodies the members act on; empty: all bodies"});
   o.strings("bonded", c.bonded, {}, Spec{.doc = "names of bodies bonded to the members: held by stick contact whatever the mode "
                                                 "(a tyre buffer fixed on the dam face, while a boulder meets the dam separably); "

@@ -243,4 +243,56 @@ HardImpact en1991_hard_impact(double impact_speed_m_per_s, double impacting_mass
           std::sqrt(impacting_mass_kg / equivalent_stiffness_N_per_m)};
 }
 
+std::vector<double> cantilever_base_shear(double EI, double m, double L, double a, const std::vector<double>& t,
+                                          const std::vector<double>& force, int modes) {
+  const char* f = "cantilever_base_shear";
+  require_positive(f, "bending_stiffness_N_m2", EI);
+  require_positive(f, "mass_per_length_kg_per_m", m);
+  require_positive(f, "length_m", L);
+  require_positive(f, "load_height_m", a);
+  if (a > L) fail(f, "load_height_m", a, "<= length_m");
+  if (modes < 1 || modes > 8) fail(f, "modes", modes, "an integer in [1, 8]");
+  if (force.size() != t.size()) fail(f, "force.size()", static_cast<double>(force.size()), "t.size()");
+  struct Mode { double w, La, Lj, Mj; };  // omega, phi(a), int m phi, int m phi^2
+  std::vector<Mode> md;
+  double static_part = 1.0;
+  for (int j = 1; j <= modes; ++j) {
+    // Root of 1 + cos x cosh x by Newton from (2j - 1) pi / 2 (the first from 1.875).
+    double x = j == 1 ? kCantileverBeta1L : (2 * j - 1) * std::numbers::pi / 2;
+    for (int it = 0; it < 50; ++it) {
+      const double g = 1 + std::cos(x) * std::cosh(x), dg = -std::sin(x) * std::cosh(x) + std::cos(x) * std::sinh(x);
+      const double dx = g / dg;
+      x -= dx;
+      if (std::abs(dx) < 1e-15 * x) break;
+    }
+    const double b = x / L, sj = (std::cosh(x) + std::cos(x)) / (std::sinh(x) + std::sin(x));
+    const auto phi = [&](double y) { return std::cosh(b * y) - std::cos(b * y) - sj * (std::sinh(b * y) - std::sin(b * y)); };
+    const int n = 4000;  // Simpson's rule on n intervals
+    double Lj = 0, Mj = 0;
+    for (int i = 0; i <= n; ++i) {
+      const double w = (i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2), p = phi(L * i / n);
+      Lj += w * p, Mj += w * p * p;
+    }
+    Lj *= m * L / (3 * n), Mj *= m * L / (3 * n);
+    md.push_back({b * b * std::sqrt(EI / m), phi(a), Lj, Mj});
+    static_part -= Lj * phi(a) / Mj;
+  }
+  std::vector<double> V(t.size(), 0.0), q(md.size(), 0.0), qd(md.size(), 0.0);
+  for (std::size_t k = 1; k < t.size(); ++k) {
+    const double dt = t[k] - t[k - 1];
+    if (!(dt > 0)) fail(f, "t (step)", dt, "increasing times");
+    double v = static_part * force[k];
+    for (std::size_t j = 0; j < md.size(); ++j) {
+      const Mode& o = md[j];
+      const double qs = force[k] * o.La / (o.Mj * o.w * o.w);  // static modal response to the step's force
+      const double c = std::cos(o.w * dt), s = std::sin(o.w * dt), d = q[j] - qs;
+      q[j] = qs + d * c + qd[j] / o.w * s;
+      qd[j] = -d * o.w * s + qd[j] * c;
+      v += o.Lj * o.w * o.w * q[j];
+    }
+    V[k] = v;
+  }
+  return V;
+}
+
 }  // namespace dmi::sdof

@@ -5,6 +5,7 @@
 // direction of the initial velocity / impulse. Every function validates its arguments and throws
 // std::invalid_argument naming the function, the argument and its value.
 #pragma once
+#include <vector>
 
 namespace dmi::sdof {
 
@@ -167,5 +168,21 @@ struct HardImpact {
 // B.2's eq. (23) with the impacting mass in place of the dam's.
 HardImpact en1991_hard_impact(double impact_speed_m_per_s, double impacting_mass_kg,
                               double equivalent_stiffness_N_per_m);
+
+// ---------------------------------------------------------------------------------------------------
+// Continuous cantilever under a force history (beyond B.2's single mode)
+// ---------------------------------------------------------------------------------------------------
+
+// Base shear V(t_k) (N) of a uniform, undamped Euler-Bernoulli cantilever (fixed at x = 0, free at L) under a
+// transverse force history at height a: force[k] is the mean force over (t[k-1], t[k]] (force[0] is ignored, the
+// beam starts at rest). Modal superposition of the exact continuous modes phi_j(x) = cosh b x - cos b x
+// - s_j (sinh b x - sin b x), 1 + cos(b_j L) cosh(b_j L) = 0, omega_j = b_j^2 sqrt(EI / m), each modal
+// coordinate integrated exactly for a piecewise-constant force; the modes above the first `modes` enter
+// statically (mode-acceleration method, Chopra 2017, Dynamics of Structures, section 12.12):
+//   V = F (1 - sum_j L_j phi_j(a) / M_j) + sum_j L_j omega_j^2 q_j,  L_j = int m phi_j, M_j = int m phi_j^2.
+// Requires 1 <= modes <= 8, 0 < a <= L, t increasing.
+std::vector<double> cantilever_base_shear(double bending_stiffness_N_m2, double mass_per_length_kg_per_m, double length_m,
+                                          double load_height_m, const std::vector<double>& t, const std::vector<double>& force,
+                                          int modes);
 
 }  // namespace dmi::sdof

@@ -237,7 +237,8 @@ std::vector<CaseResult> paper_a5() {
         const bool paper = std::string(dist) == "node";
         r.push_back(metric("paper_a5", tag + ": normalised RMS vs eq. (30)", "-", e30.nrms, 0.0, paper ? 0.15 : 0.09, false));
         r.push_back(metric("paper_a5", tag + ": normalised RMS vs point-mass FE", "-", efe.nrms, 0.0, paper ? 0.15 : 0.09, false));
-        r.push_back(metric("paper_a5", tag + ": peak deflection error vs eq. (30)", "-", e30.peak, 0.0, paper ? 0.08 : 0.03, false));
+        // The peak against the converged point-mass FE model: eq. (30) keeps one mode and lies 9 % below it.
+        r.push_back(metric("paper_a5", tag + ": peak deflection error vs point-mass FE", "-", efe.peak, 0.0, paper ? 0.08 : 0.03, false));
         r.push_back(bound_metric("paper_a5", tag + ": 1-element RMS / 8-element RMS (must exceed 2)", "-", nrms1 / efe.nrms, 2.0, true));
       }
     }
@@ -291,11 +292,14 @@ std::vector<CaseResult> paper_a6_large() {
   return stamp(r, timer.seconds());
 }
 
-// Paper B.2 eq. (23) against the coupled simulation (examples/sdof_boulder_on_column.json): a 1 t boulder at
-// 5 m/s on the 4 m concrete column. Momentum: the contact impulse equals the boulder's momentum change. The
-// peak base shear is compared with m v0 omega for the SDOF omega_n = sqrt(6E/rho) r/L^2 and for the first
-// cantilever mode; the impact (onset to peak ~4 ms) is short against the first period (33 ms) but not
-// against the second (5 ms), so higher modes add to the base shear and the SDOF value is exceeded.
+// Paper B.2 against the coupled simulation (examples/sdof_boulder_on_column.json): a 1 t boulder at 5 m/s on the
+// 4 m concrete column. Momentum: the contact impulse equals the boulder's momentum change. Load path: the peak
+// base shear equals that of the continuous Euler-Bernoulli cantilever (exact modes, 8 dynamic + the rest static)
+// under the simulated contact force history at the impact height, to 5 % (the pulse of ~1 ms drives modes up to the
+// sixth; 10 consistent-mass elements, as in the example, resolve them; with lumped mass they fall 5-8 % short; the
+// load spreads over a few grid nodes about the impact height). Eq. (23)'s m v0 omega
+// (plastic impulse, one mode) is printed beside it: the elastic rebound and the higher modes lift the real peak
+// far above it, so it is an estimate, not a reference (docs/verification.md).
 std::vector<CaseResult> sdof_column() {
   const CaseTimer timer;
   const RunOutput out = run_quiet(example_scenario("sdof_boulder_on_column.json"));
@@ -304,17 +308,23 @@ std::vector<CaseResult> sdof_column() {
   const Series& cf = series(out.results, "frame/contact_force");
   const Series& v = series(out.results, "probes/boulder/velocity");
   double peak = 0, impulse = 0;
+  std::vector<double> fx(t.size());
   for (std::size_t k = 0; k < t.size(); ++k) {
     peak = std::max(peak, std::abs(base.data[3 * k]));
+    fx[k] = cf.data[2 * k];
     if (k > 0) impulse += 0.5 * (cf.data[2 * k] + cf.data[2 * (k - 1)]) * (t[k] - t[k - 1]);
   }
   const double m = 2650 * pi * 0.245 * 0.245 * 2.0, v0 = 5.0;
+  const Section sec = Section::rectangle(2.0, 1.3);
+  const std::vector<double> vb = sdof::cantilever_base_shear(2.5e10 * sec.inertia(0), 2300 * sec.area(0), 4.0, 3.6, t, fx, 8);
+  double peak_modal = 0;
+  for (double x : vb) peak_modal = std::max(peak_modal, std::abs(x));
   const sdof::CantileverSdof col = sdof::cantilever_sdof(2.5e10, 2300, sdof::rectangular_section(2.0, 1.3), 4.0);
-  const double f_n = m * v0 * col.natural_frequency_rad_per_s, f_1 = m * v0 * col.first_mode_rad_per_s;
   std::vector<CaseResult> r;
   r.push_back(metric("sdof_column", "contact impulse / boulder momentum change", "-", impulse / (m * (v0 - v.data[v.data.size() - 2])), 1.0, 0.02));
-  r.push_back(metric("sdof_column", "peak base shear / m v0 omega_n (eq. 23, SDOF omega)", "-", peak / f_n, 1.0, 0.6));
-  r.push_back(metric("sdof_column", "peak base shear / m v0 omega_1 (first cantilever mode)", "-", peak / f_1, 1.0, 0.25));
+  r.push_back(metric("sdof_column", "peak base shear vs continuous cantilever under the simulated contact force", "N", peak, peak_modal, 0.05));
+  r.push_back(bound_metric("sdof_column", "peak base shear / m v0 omega_1 (eq. 23, first mode; estimate, must exceed 1)", "-",
+                           peak / (m * v0 * col.first_mode_rad_per_s), 1.0, true));
   return stamp(r, timer.seconds());
 }
 
@@ -451,13 +461,85 @@ std::vector<CaseResult> buffer_pad() {
 
 }  // namespace
 
+namespace {
+
+// One run of examples/cylinder_on_wall.json or cylinder_on_member.json at cell size h, the target face moved down by
+// `offset` (m) and the cylinder with it (same 0.017 m gap).
+struct ImpactRun {
+  double peak = 0, impulse = 0, rebound = 0, ke_loss = 0;  // N per m, N s per m, m/s, fraction of the initial KE
+};
+ImpactRun impact_run(bool member, double h, double offset, double member_E = 0) {
+  using J = nlohmann::json;
+  std::vector<std::pair<std::string, J>> ov = {{"/grid/cell_size", h}, {"/bodies/0/shape/center", J::array({0.55, 0.417 - offset})}};
+  if (member) {
+    ov.push_back({"/structure/nodes/0/position", J::array({0.0, -0.5 - offset})});
+    ov.push_back({"/structure/nodes/1/position", J::array({1.1, -0.5 - offset})});
+    if (member_E > 0) ov.push_back({"/materials/1/youngs_modulus", member_E});
+  } else {
+    ov.push_back({"/walls/0/point", J::array({0.0, -offset})});
+  }
+  const RunOutput out = run_quiet(example_scenario(member ? "cylinder_on_member.json" : "cylinder_on_wall.json", ov));
+  const auto& t = out.results.time;
+  const Series& f = series(out.results, member ? "frame/contact_force" : "walls/wall/force");
+  const Series& v = series(out.results, "probes/rock/velocity");
+  const Series& ke = series(out.results, "probes/rock/kinetic_energy");
+  ImpactRun r;
+  for (std::size_t k = 1; k < t.size(); ++k) {
+    const double fy = -f.data[2 * k + 1];  // the force on the target points down (-y)
+    r.peak = std::max(r.peak, fy);
+    r.impulse += fy * (t[k] - t[k - 1]);  // interval means: exact impulse
+  }
+  r.rebound = v.data.back();
+  r.ke_loss = 1 - ke.data.back() / ke.data.front();
+  return r;
+}
+
+}  // namespace
+
+// Hard elastic impact, one physical situation by independent routes: a rock cylinder (R 0.4 m, E 50 GPa, 5 m/s,
+// plane strain) on a rigid slip wall, on a beam-column member made effectively rigid (E 3e13 Pa) and on a stiff
+// concrete member (E 30 GPa, 1 m deep, 1.1 m span), the face on a grid line and 0.007 m off it. Tolerances fixed
+// before the runs: the rigid member holds the same node set as the wall, so it must give the wall's peak to 1 %;
+// the concrete member adds its compliance in series with the contact's (about 5 % of it: a few % off the peak)
+// and keeps a little vibration energy (peak 5 %, impulse and rebound 2 %); the energy lost by the held nodes'
+// plastic engagement falls with h (observed order > 0.5 from h = 0.02 to 0.01 m). The peak force itself is not
+// converged at these cells (the contact patch is 1-3 cells wide): docs/verification.md.
+std::vector<CaseResult> impact_contact() {
+  const CaseTimer timer;
+  std::vector<CaseResult> r;
+  for (double off : {0.0, 0.007}) {
+    const std::string face = off == 0 ? "face on a grid line" : "face off the grid";
+    ImpactRun wall_h[2], con_h[2];
+    for (int i = 0; i < 2; ++i) {
+      const double h = i == 0 ? 0.02 : 0.01;
+      const std::string tag = ", h = " + std::string(i == 0 ? "0.02" : "0.01") + " m, " + face;
+      wall_h[i] = impact_run(false, h, off);
+      con_h[i] = impact_run(true, h, off);
+      if (i == 0) {
+        const ImpactRun rig = impact_run(true, h, off, 3e13);
+        r.push_back(metric("impact_contact", "peak force, rigid member vs wall" + tag, "N/m", rig.peak, wall_h[i].peak, 0.01));
+        r.push_back(metric("impact_contact", "rebound speed, rigid member vs wall" + tag, "m/s", rig.rebound, wall_h[i].rebound, 0.01));
+      }
+      r.push_back(metric("impact_contact", "peak force, concrete member vs wall" + tag, "N/m", con_h[i].peak, wall_h[i].peak, 0.05));
+      r.push_back(metric("impact_contact", "impulse, concrete member vs wall" + tag, "N s/m", con_h[i].impulse, wall_h[i].impulse, 0.02));
+      r.push_back(metric("impact_contact", "rebound speed, concrete member vs wall" + tag, "m/s", con_h[i].rebound, wall_h[i].rebound, 0.02));
+    }
+    const double p_wall = std::log2(wall_h[0].ke_loss / wall_h[1].ke_loss), p_con = std::log2(con_h[0].ke_loss / con_h[1].ke_loss);
+    r.push_back(bound_metric("impact_contact", "order of the kinetic energy lost, wall, h 0.02 -> 0.01 m, " + face + " (> 0.5)", "-", p_wall, 0.5, true));
+    r.push_back(bound_metric("impact_contact", "order of the kinetic energy lost, concrete member, h 0.02 -> 0.01 m, " + face + " (> 0.5)", "-", p_con, 0.5, true));
+    r.push_back(bound_metric("impact_contact", "kinetic energy lost, concrete member, h = 0.01 m, " + face + " (< 0.05)", "-", con_h[1].ke_loss, 0.05, false));
+  }
+  return stamp(r, timer.seconds());
+}
+
 std::vector<ValidationCase> member_validation_cases() {
   return {
       {"frame_closed_forms", "beam-column frame: static deflections, moments and first frequencies vs closed forms", frame_closed_forms},
       {"paper_a5", "Lin & Yang A.5: block sticking to a simply supported beam vs eq. (30) and a point-mass FE model", paper_a5},
       {"paper_a6", "Lin & Yang A.6: disc on a fixed-end beam, peak deflections vs the paper, h^-1.5 scaling", paper_a6},
       {"paper_a6_large", "Lin & Yang A.6 at h/L = 0.025 as beam-columns (dropped by the paper): corotational contact", paper_a6_large},
-      {"sdof_column", "paper B eq. (23): boulder on a cantilever column, simulated peak base shear vs SDOF", sdof_column},
+      {"impact_contact", "hard elastic impact: rock cylinder on a rigid wall vs an effectively rigid and a concrete member", impact_contact},
+      {"sdof_column", "paper B: boulder on a cantilever column, base shear vs the continuous cantilever, eq. (23) beside", sdof_column},
       {"tyre_buffer", "boulder on a concrete check dam without and with a bonded tyre buffer: base shear, moment, duration", tyre_buffer},
       {"buffer_pad", "rock block on a rubber pad against a rigid wall: contact time, wall force, restitution vs closed forms", buffer_pad},
       {"paper_b_table1", "paper B Table 1: 980 kN on a concrete column, hex8 solid FE, point load vs pyramid patches", paper_b_table1},

@@ -322,7 +322,7 @@ TEST(ScenarioStructure, Defaults) {
   const MemberContactConfig& mc = s.member_contact;
   EXPECT_EQ(mc.mode, MemberContactMode::separable);
   EXPECT_DOUBLE_EQ(mc.friction, 0.0);
-  EXPECT_EQ(mc.decay, DecayKind::linear);
+  EXPECT_EQ(mc.decay, DecayKind::sharp);
   EXPECT_DOUBLE_EQ(mc.decay_scale, 1.0);
   EXPECT_TRUE(mc.bodies.empty());
   ASSERT_EQ(s.output.probes.size(), 1u);

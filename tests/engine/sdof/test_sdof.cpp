@@ -308,3 +308,34 @@ TEST(ImpactInvalidArguments, Throw) {
 
 }  // namespace
 }  // namespace dmi::sdof
+
+// A load ramped over many first periods is carried statically: V(t) -> F(t) (error ~ 1 / (omega_1 T)).
+TEST(CantileverBaseShear, QuasiStaticRampIsCarriedStatically) {
+  const double EI = 1e9, m = 1000, L = 4, w1 = 1.8751040687 * 1.8751040687 / (L * L) * std::sqrt(EI / m);
+  const double T = 2000 * 2 * 3.14159265358979 / w1;
+  std::vector<double> t, f;
+  for (int k = 0; k <= 20000; ++k) t.push_back(T * k / 20000), f.push_back(1e5 * (T * (k - 0.5) / 20000) / T);
+  const std::vector<double> v = dmi::sdof::cantilever_base_shear(EI, m, L, 3.0, t, f, 4);
+  EXPECT_NEAR(v.back(), 1e5, 1e5 * 2e-3);
+}
+
+// A constant force applied suddenly: the base shear oscillates about F, and with one mode its extremes are the
+// single-mode closed form F (1 - r) + r F (1 - cos omega_1 t), r = L_1 phi_1(a) / M_1, i.e. peak F (1 + r).
+TEST(CantileverBaseShear, SuddenLoadOneModePeakMatchesClosedForm) {
+  const double EI = 2e9, m = 800, L = 5, a = L;
+  std::vector<double> t, f;
+  for (int k = 0; k <= 200000; ++k) t.push_back(1e-5 * k), f.push_back(k == 0 ? 0.0 : 1e4);
+  const std::vector<double> v = dmi::sdof::cantilever_base_shear(EI, m, L, a, t, f, 1);
+  double vmax = 0;
+  for (double x : v) vmax = std::max(vmax, x);
+  // Tip load, first mode of a cantilever: L_1 phi_1(L) / M_1 = 2 * 0.7830 / 1 ... computed here by the
+  // textbook values int phi_1 = 0.7830 L (phi_1(L) = 2), int phi_1^2 = L: r = 0.7830 * 2 = 1.5660.
+  EXPECT_NEAR(vmax, 1e4 * (1 + 1.5660), 1e4 * 2.566 * 2e-3);
+}
+
+TEST(CantileverBaseShear, RefusesBadArguments) {
+  const std::vector<double> t{0, 1}, f{0, 1};
+  EXPECT_THROW(dmi::sdof::cantilever_base_shear(1e9, 1000, 4, 5, t, f, 4), std::invalid_argument);
+  EXPECT_THROW(dmi::sdof::cantilever_base_shear(1e9, 1000, 4, 3, t, f, 0), std::invalid_argument);
+  EXPECT_THROW(dmi::sdof::cantilever_base_shear(1e9, 1000, 4, 3, t, {0.0}, 4), std::invalid_argument);
+}
