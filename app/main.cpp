@@ -4,6 +4,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +15,7 @@
 #include <sstream>
 
 #include "design/design.hpp"
+#include "design/grid_study.hpp"
 #include "render/field.hpp"
 #include "render/render_main.hpp"
 #include "render/charts.hpp"
@@ -111,6 +114,76 @@ int simulate(const std::string& file, const std::string& out, int threads, bool 
 }
 
 // `bench`, plus with --out the JSON and the Pareto chart of paper A.5 (error against wall time, the front joined).
+// `run --grid-study`: the scenario at its cell size h and at r h and r^2 h (coarsest first), each simulated and
+// checked in OUT/grid_study/h_<cell>/ (the finest in OUT/ itself), then the grid uncertainty of every governing
+// quantity (design/grid_study.hpp) written into OUT/design.json. Returns the verdict of the finest run.
+int grid_study_run(const std::string& file, const std::string& out, int threads, bool quiet, const std::string& progress, double ratio,
+                   const std::string& limits_file, const RestartFlags& rf) {
+  namespace fs = std::filesystem;
+  if (!(ratio >= std::sqrt(2.0) - 1e-12)) throw dmi::InputError("--grid-ratio = " + std::to_string(ratio) + ": expected a ratio >= sqrt(2) (1.41421)");
+  const std::vector<dmi::ScenarioVariant> variants = dmi::load_scenario_variants(file);
+  const double h1 = variants.front().scenario.grid.cell_size;
+  for (const auto& v : variants)
+    if (std::abs(v.scenario.grid.cell_size - h1) > 1e-12 * h1)
+      throw dmi::InputError(file + ": the variants have different cell sizes; a grid study needs one");
+  const int dim = variants.front().scenario.analysis.dimension;
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  nlohmann::json source = nlohmann::json::parse(text.str());
+  const std::array<double, 3> h{h1, h1 * ratio, h1 * ratio * ratio};
+  const double c1 = std::pow(ratio, -(dim + 1)), c2 = c1 * c1;
+  std::printf("grid study: cell sizes %.4g, %.4g, %.4g m (ratio %.3g); estimated cost %.2f times the single run at %.4g m "
+              "(particles ~ h^-%d, steps ~ h^-1: the coarser runs cost %.2f and %.2f of it)\n",
+              h[0], h[1], h[2], ratio, 1 + c1 + c2, h[0], dim, c1, c2);
+  std::array<std::string, 3> folders;
+  std::array<nlohmann::json, 3> designs;
+  int verdict = 0;
+  double wall_coarse = 0;
+  for (int g = 2; g >= 0; --g) {
+    char name[64];
+    std::snprintf(name, sizeof name, "h_%.6g", h[g]);
+    const std::string dir = g == 0 ? out : (fs::path(out) / "grid_study" / name).string();
+    fs::create_directories(dir);
+    std::string scen = file;
+    if (g > 0) {  // the same scenario at the coarser cell size: grid.cell_size beside presets or in the low-level grid
+      nlohmann::json j = source;
+      j["grid"]["cell_size"] = h[g];
+      scen = (fs::path(dir) / "scenario.json").string();
+      std::ofstream(scen) << j.dump(1) << "\n";
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    std::vector<std::string> written;
+    simulate(scen, dir, threads, quiet || g > 0, progress, false, false, g == 0 ? rf : RestartFlags{}, &written);
+    const std::string design = (fs::path(dir) / "design.json").string();
+    const int v = dmi::design::check_main(written, limits_file, false, design, quiet || g > 0, DMI_VERSION);
+    if (g == 0) verdict = v;
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (g == 2) wall_coarse = wall;
+    if (!quiet) {
+      std::printf("grid study: h = %.4g m done in %.1f s", h[g], wall);
+      if (g == 2) std::printf("; the remaining runs should take about %.0f s", wall_coarse * (1 / c1 + 1 / c2));
+      std::printf("\n");
+    }
+    folders[g] = dir;
+    std::ifstream d(design);
+    designs[g] = nlohmann::json::parse(d);
+  }
+  nlohmann::json fine = designs[0];
+  fine["grid_study"] = dmi::design::grid_study_section(designs, h, folders);
+  dmi::design::write_design_json((fs::path(out) / "design.json").string(), fine);
+  if (!quiet) {
+    std::printf("\ngrid uncertainty of the governing numbers (%s):\n", fine["grid_study"]["method"].get<std::string>().c_str());
+    for (const auto& q : fine["grid_study"]["quantities"]) {
+      const std::string var = q["variant"].get<std::string>();
+      std::printf("  %s%-40s %12.5g %-4s +- %5.1f %%  %s\n", var.empty() ? "" : ("[" + var + "] ").c_str(), q["title"].get<std::string>().c_str(),
+                  q["values"][0].get<double>(), q["unit"].get<std::string>().c_str(), 100 * q["gci"].get<double>(),
+                  q["statement"].get<std::string>().c_str());
+    }
+  }
+  return verdict;
+}
+
 int bench_command(const std::vector<std::string>& cases, bool as_json, bool quick, const dmi::BenchOptions& o, const std::string& out) {
   if (out.empty()) return dmi::bench_main(cases, as_json, quick, o);
   std::stringstream captured;
@@ -198,6 +271,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   std::string file, out = "out", progress = "auto";
+  bool grid_study = false;
+  double grid_ratio = std::sqrt(2.0);
   int threads = 0;
   bool quiet = false, dry_run = false, expand = false, json = false, list = false, markdown = false;
   RestartFlags restart;
@@ -251,6 +326,10 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"von_mises", "sigma_xx", "sigma_yy", "pressure"}))->capture_default_str();
   rep->add_flag("--no-pdf", no_pdf, "HTML only");
   rep->add_flag("-q,--quiet", quiet, "no progress output");
+  run->add_flag("--grid-study", grid_study,
+                "also run the scenario at r h and r^2 h and state the grid uncertainty (observed order, Richardson value, GCI) of "
+                "every governing number in design.json and the report");
+  run->add_option("--grid-ratio", grid_ratio, "refinement ratio r of --grid-study (>= sqrt 2)")->capture_default_str();
   run->add_flag("--no-report", no_pdf, "skip the pictures and the report (simulation and checks only)");
   std::vector<std::string> bench_cases;
   bool quick = false;
@@ -292,10 +371,15 @@ int main(int argc, char** argv) {
     if (*sim) return simulate(file, out, threads, quiet, progress, dry_run, expand, restart);
     if (*run) {  // the whole chain: simulation, then the design checks of what it wrote
       if (!limits_file.empty()) dmi::design::read_limits(limits_file);  // a bad limits file fails before the simulation
-      std::vector<std::string> written;
-      simulate(file, out, threads, quiet, progress, false, false, restart, &written);
-      const std::string design = (std::filesystem::path(out) / "design.json").string();
-      const int verdict = dmi::design::check_main(written, limits_file, false, design, quiet, DMI_VERSION);
+      int verdict = 0;
+      if (grid_study) {
+        verdict = grid_study_run(file, out, threads, quiet, progress, grid_ratio, limits_file, restart);
+      } else {
+        std::vector<std::string> written;
+        simulate(file, out, threads, quiet, progress, false, false, restart, &written);
+        const std::string design = (std::filesystem::path(out) / "design.json").string();
+        verdict = dmi::design::check_main(written, limits_file, false, design, quiet, DMI_VERSION);
+      }
       if (!no_pdf) dmi::render::report_main(out, {quantity, quiet, true, DMI_VERSION});
       return verdict;
     }

@@ -130,6 +130,22 @@ std::vector<std::string> resolve(const std::string& p) {
 
 }  // namespace
 
+void write_design_json(const std::string& path, const json& doc) {
+  const fs::path target = path, tmp = path + "." + std::to_string(::getpid()) + ".tmp";
+  {
+    std::ofstream o(tmp);
+    if (!o) throw InputError(target.string() + ": cannot write design.json here");
+    o << doc.dump(1) << "\n";
+    o.flush();
+    if (!o) {
+      std::error_code ec;
+      fs::remove(tmp, ec);
+      throw InputError(target.string() + ": writing design.json failed");
+    }
+  }
+  fs::rename(tmp, target);
+}
+
 int check_main(const std::vector<std::string>& paths, const std::string& limits_file, bool print_json, const std::string& out, bool quiet,
                const std::string& version) {
   const Limits limits = limits_file.empty() ? Limits{} : read_limits(limits_file);
@@ -159,19 +175,7 @@ int check_main(const std::vector<std::string>& paths, const std::string& limits_
     std::error_code ec;
     target = fs::is_directory(paths.front(), ec) ? fs::path(paths.front()) / "design.json" : fs::path(paths.front()).parent_path() / "design.json";
   }
-  const fs::path tmp = target.string() + "." + std::to_string(::getpid()) + ".tmp";
-  {
-    std::ofstream o(tmp);
-    if (!o) throw InputError(target.string() + ": cannot write design.json here");
-    o << doc.dump(1) << "\n";
-    o.flush();
-    if (!o) {
-      std::error_code ec;
-      fs::remove(tmp, ec);
-      throw InputError(target.string() + ": writing design.json failed");
-    }
-  }
-  fs::rename(tmp, target);
+  write_design_json(target.string(), doc);
   if (print_json) std::cout << doc.dump(1) << "\n";
   else if (!quiet) std::cout << summary_text(doc) << "wrote " << target.string() << "\n";
   return doc["verdict"]["passed"] ? 0 : 1;

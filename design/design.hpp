@@ -25,6 +25,9 @@ nlohmann::json compare_runs(const nlohmann::json& with_buffer, const nlohmann::j
 // compared with. The first pair gives "comparison".
 nlohmann::json design_document(const std::vector<nlohmann::json>& runs, const Limits& limits, const std::string& software_version);
 
+// Writes design.json atomically (a temporary beside it, renamed when complete).
+void write_design_json(const std::string& path, const nlohmann::json& doc);
+
 // The readable summary `damimpact check` prints.
 std::string summary_text(const nlohmann::json& design);
 

@@ -196,7 +196,41 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
           ", utilisation " + fmt("%.2f", g["utilisation"].get<double>()) + " (" + eng(g["demand"], g["unit"]) + " against " + eng(g["capacity"], g["unit"]) +
           "; " + where(g) + ").";
   }
-  d["verdict_text"] = vt;
+  // Grid uncertainty: the governing numbers with their GCI, or a plain statement that it is unknown.
+  auto grid_word = [](const std::string& b) -> std::string {
+    if (b == "converged") return "converged";
+    if (b == "monotone") return "converging";
+    if (b == "outside_asymptotic_range") return "outside the asymptotic range";
+    if (b == "oscillatory") return "NOT CONVERGED: oscillates";
+    return "NOT CONVERGED: grows as h falls";
+  };
+  json gq = json::array();
+  std::string gov_grid;
+  const std::string judged = v.value("runs_judged", std::string());
+  if (design_doc.contains("grid_study") && design_doc["grid_study"].is_object()) {
+    const json& gs = design_doc["grid_study"];
+    for (const auto& q : gs["quantities"]) {
+      const std::string unit = q["unit"], var = q["variant"];
+      auto val = [&](double x) { return unit == "-" ? fmt("%.3f", x) : eng(x, unit); };
+      const bool ok = q["converged"].get<bool>();
+      gq.push_back({{"run", var.empty() ? "—" : var}, {"title", q["title"]}, {"fine", val(q["values"][0])}, {"medium", val(q["values"][1])},
+                    {"coarse", val(q["values"][2])}, {"gci", fmt("± %.0f %%", 100 * q["gci"].get<double>())},
+                    {"order", q["observed_order"].is_number() ? fmt("%.2f", q["observed_order"].get<double>()) : std::string("—")},
+                    {"extrapolated", q["extrapolated"].is_number() && ok ? val(q["extrapolated"]) : std::string("—")},
+                    {"statement", grid_word(q["behaviour"])}, {"status_class", ok ? "pass" : "fail"}});
+      if (q["id"] == "governing_utilisation" && (judged.empty() || var.empty() || judged.find(var) != std::string::npos))
+        gov_grid = " Grid uncertainty of the governing utilisation: " + fmt("%.2f", q["values"][0].get<double>()) + fmt(" ± %.0f %%", 100 * q["gci"].get<double>()) +
+                   " (" + q["statement"].get<std::string>() + ").";
+    }
+    d["grid_cells"] = fmt("%.4g", gs["cell_sizes_m"][0].get<double>()) + ", " + fmt("%.4g", gs["cell_sizes_m"][1].get<double>()) + " and " +
+                      fmt("%.4g m", gs["cell_sizes_m"][2].get<double>());
+    d["grid_not_converged"] = gs.value("not_converged", 0);
+  } else {
+    gov_grid = " These numbers come from one grid: their grid uncertainty is unknown (damimpact run --grid-study states it).";
+  }
+  d["has_grid_study"] = !gq.empty();
+  d["grid_quantities"] = gq;
+  d["verdict_text"] = vt + gov_grid;
   std::string rt, files;
   for (const auto& r : runs) rt += (rt.empty() ? "" : ", ") + label(r), files += (files.empty() ? "" : ", ") + r.file;
   d["runs_text"] = rt;

@@ -161,3 +161,33 @@ TEST_F(CheckCli, RunSimulatesThenChecksAndExitsByTheVerdict) {
   EXPECT_EQ(d["verdict"]["status"], "fail");
   EXPECT_EQ(d["runs"][0]["results_file"], (out / "results.h5").string());
 }
+
+// `run --grid-study` end to end: the static cantilever's reactions do not depend on the grid, so every quantity of
+// the study is converged with a zero index; the three runs are kept, the coarser ones under grid_study/.
+TEST_F(CheckCli, GridStudyOfAGridIndependentRunIsConvergedWithZeroIndex) {
+  const fs::path out = dir / "grid";
+  const Cli c = cli("run " + std::string(DMI_SOURCE_DIR) + "/tests/data/design/cantilever_self_weight.json -o " + out.string() +
+                    " --grid-study --grid-ratio 2 --no-report -q");
+  ASSERT_EQ(c.status, 0) << c.err;
+  const json d = json::parse(slurp(out / "design.json"));
+  ASSERT_TRUE(d.contains("grid_study"));
+  const json& g = d["grid_study"];
+  const double h = g["cell_sizes_m"][0].get<double>();
+  EXPECT_NEAR(g["cell_sizes_m"][1].get<double>(), 2 * h, 1e-12);
+  EXPECT_NEAR(g["cell_sizes_m"][2].get<double>(), 4 * h, 1e-12);
+  ASSERT_GE(g["quantities"].size(), 3u);
+  for (const auto& q : g["quantities"]) {
+    EXPECT_EQ(q["behaviour"], "converged") << q.dump();
+    EXPECT_EQ(q["gci"].get<double>(), 0.0);
+  }
+  EXPECT_EQ(g["not_converged"], 0);
+  for (int k = 1; k <= 2; ++k) EXPECT_TRUE(fs::exists(fs::path(g["folders"][k].get<std::string>()) / "design.json"));
+}
+
+TEST_F(CheckCli, GridStudyRefusesARatioBelowSqrtTwo) {
+  const Cli c = cli("run " + std::string(DMI_SOURCE_DIR) + "/tests/data/design/cantilever_self_weight.json -o " + (dir / "g2").string() +
+                    " --grid-study --grid-ratio 1.2 --no-report -q");
+  EXPECT_EQ(c.status, 2);
+  EXPECT_NE(c.err.find("--grid-ratio = 1.2"), std::string::npos) << c.err;
+  EXPECT_NE(c.err.find("sqrt(2)"), std::string::npos) << c.err;
+}
