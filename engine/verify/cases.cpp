@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "engine/verify/validate.hpp"
+#include "engine/sdof/sdof.hpp"
 
 namespace dmi {
 namespace {
@@ -155,6 +156,51 @@ std::vector<CaseResult> wall_impact() {
   return stamp(r, timer.seconds());
 }
 
+// Hertz impact of an elastic sphere on a rigid wall (examples/hertz_sphere_on_wall.json; Johnson 1985, ch. 11) at
+// h = R/5 and R/10. Fixed before the runs: the wall's impulse equals the sphere's momentum change m v0 (1 + e) to 1 %
+// (two independent measures: wall reactions, particle velocities); the energy lost by the held nodes' plastic
+// engagement falls with h (order > 0.5); the peak force and the contact time approach Hertz under refinement. The
+// peak itself is 18-34 % above Hertz at R/5-R/20 (the held nodes' stencils reach 1.5 h into the sphere, a patch
+// wider than Hertz's): reported beside the closed form in docs/verification.md, not passed here.
+std::vector<CaseResult> hertz_sphere() {
+  Timer timer;
+  const double R = 0.1, v0 = 2.0, m = 1000.0 * 4.0 / 3.0 * 3.14159265358979323846 * R * R * R;
+  const sdof::HertzImpact hz = sdof::hertz_sphere_impact(m, v0, R, 1e8, 0.3, 1e30, 0.0);
+  struct Run { double peak, duration, impulse, e; };
+  auto run = [&](double h) {
+    const RunOutput out = run_quiet(example_scenario("hertz_sphere_on_wall.json", {{"/grid/cell_size", h}}));
+    const auto& t = out.results.time;
+    const Series& f = series(out.results, "walls/wall/force");
+    const Series& v = series(out.results, "probes/ball/velocity");
+    Run r{0, 0, 0, v.data.back() / v0};
+    for (std::size_t k = 1; k < t.size(); ++k) r.peak = std::max(r.peak, -f.data[3 * k + 2]);
+    double t0 = -1, t1 = 0;
+    for (std::size_t k = 1; k < t.size(); ++k) {
+      const double fz = -f.data[3 * k + 2];
+      r.impulse += fz * (t[k] - t[k - 1]);  // interval means: the exact impulse
+      if (fz > 0.01 * r.peak) {
+        if (t0 < 0) t0 = t[k - 1];
+        t1 = t[k];
+      }
+    }
+    r.duration = t1 - t0;
+    return r;
+  };
+  const Run a = run(2 * R / 10), b = run(R / 10);
+  std::vector<CaseResult> r;
+  for (const Run* x : {&a, &b}) {
+    const std::string tag = x == &a ? " (h = R/5)" : " (h = R/10)";
+    r.push_back(metric("hertz_sphere", "wall impulse / m v0 (1 + e)" + tag, "-", x->impulse / (m * v0 * (1 + x->e)), 1.0, 0.01));
+  }
+  const double ea = std::abs(a.peak / hz.peak_force_N - 1), eb = std::abs(b.peak / hz.peak_force_N - 1);
+  const double ta = std::abs(a.duration / hz.contact_duration_s - 1), tb = std::abs(b.duration / hz.contact_duration_s - 1);
+  r.push_back(bound_metric("hertz_sphere", "peak force error vs Hertz, R/10 / R/5 (must fall, < 1)", "-", eb / ea, 1.0, false));
+  r.push_back(bound_metric("hertz_sphere", "contact time error vs Hertz, R/10 / R/5 (must fall, < 1)", "-", tb / ta, 1.0, false));
+  r.push_back(bound_metric("hertz_sphere", "order of the energy lost, 1 - e^2, R/5 -> R/10 (> 0.5)", "-",
+                           std::log2((1 - a.e * a.e) / (1 - b.e * b.e)), 0.5, true));
+  return stamp(r, timer.seconds());
+}
+
 // 5a. Free fall: y = y0 - g t^2/2 (the explicit update adds g dt t/2, i.e. a relative error dt/t);
 //     a uniformly accelerating body stays stress free.
 std::vector<CaseResult> free_fall() {
@@ -224,6 +270,7 @@ const std::vector<ValidationCase>& validation_cases() {
       {"incline", "block on a 30 deg incline with Coulomb friction: sliding and sticking", incline},
       {"slab_friction", "block sliding on a second body: multi-field contact with and without friction", slab_friction},
       {"wall_impact", "elastic bar onto a rigid wall: contact stress rho c v and time 2L/c", wall_impact},
+      {"hertz_sphere", "3D elastic sphere onto a rigid wall: impulse, rebound and the approach to Hertz under refinement", hertz_sphere},
       {"free_fall", "free fall: drop g t^2/2, no stress", free_fall},
       {"rest_on_wall", "block at rest on a wall: settlement rho g H^2/3E, no drift or creep", rest_on_wall},
       {"damped_bar", "bar with Kelvin-Voigt damping: logarithmic decrement and dissipated energy", damped_bar},
