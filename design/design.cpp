@@ -77,7 +77,7 @@ json parse_document(const Results& r, const char* name, const std::string& where
   }
 }
 
-// Solid-FE peaks (SEEDS.md B.3) and their concrete checks: max principal vs phi_f f_t, min principal vs phi_c alpha f'c.
+// Solid-FE peaks (Lin, Cheng & Tuan, Table 1) and their concrete checks: max principal vs phi_f f_t, min principal vs phi_c alpha f'c.
 json solid_part(const json& doc, const Limits& L, std::vector<Check>& checks, const std::string& where) {
   if (doc.is_null()) return nullptr;
   json cases = json::array();
@@ -101,7 +101,7 @@ json solid_part(const json& doc, const Limits& L, std::vector<Check>& checks, co
       const json& mx = pk.at("max_principal").at("gauss");
       const json& mn = pk.at("min_principal").at("gauss");
       add("solid_principal_tension", "principal tension", std::max(0.0, mx.at("value_Pa").get<double>()), L.concrete.tensile_capacity(),
-          mx.at("location_m"), "sigma_1 <= phi_f f_t", "SEEDS.md B.3; ACI 318-19 21.2.1");
+          mx.at("location_m"), "sigma_1 <= phi_f f_t", "Lin, Cheng & Tuan, Table 1; ACI 318-19 21.2.1");
       add("solid_principal_compression", "principal compression", std::max(0.0, -mn.at("value_Pa").get<double>()),
           L.concrete.compressive_capacity(), mn.at("location_m"), "|sigma_3| <= phi_c alpha f'c", "ACI 318-19 21.2.1, 22.2.2.4.1");
     }

@@ -61,7 +61,7 @@ std::vector<Estimate> estimates(const json& basis, double shear, double contact,
       out.push_back(make("sdof_base_force", buffer ? "SDOF peak base force, buffer in series" : "SDOF peak base force",
                          buffer ? "F_T = m v0 omega, omega = sqrt(k_eff / M), k_eff = 1/(1/k + 1/k_b), k = 3EI/H^3, M = rho A H / 2, k_b = E_b (pi D^2/4) / t_b"
                                 : "F_T = m v0 omega_n, omega_n = sqrt(k / M), k = 3EI/H^3, M = rho A H / 2 (mean section)",
-                         "SEEDS.md B.2 eqs. (21)-(23)", r.peak_base_force_N, "peak_base_shear", shear));
+                         "Lin, Cheng & Tuan eqs. (21)-(23)", r.peak_base_force_N, "peak_base_shear", shear));
     } else {
       const double Dc = b.get("dam", "column_diameter_m"), tc = b.get("dam", "column_wall_thickness_m"), d = Dc - 2 * tc;
       I = std::numbers::pi / 64 * (std::pow(Dc, 4) - std::pow(d, 4));

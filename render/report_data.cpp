@@ -239,7 +239,7 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
   d["materials"] = materials(first);
   // Model.
   d["methods"] =
-      "Material Point Method for the boulder, debris and buffer (explicit, SEEDS.md A.1); beam-column finite elements for the dam "
+      "Material Point Method for the boulder, debris and buffer (explicit, Lin & Yang 2024); beam-column finite elements for the dam "
       "members, coupled to the particles by Lin & Yang's two-stage contact with Yang's equivalent force field (A.2-A.3); plane strain, "
       "the out-of-plane width as given. Checks and estimates: docs/design-checks.md.";
   json rl = json::array();

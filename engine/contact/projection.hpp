@@ -1,5 +1,5 @@
 // Projection of a point on a member's deformed centre-line (replaces the paper's plain Newton
-// search, SEEDS.md A.4, which slows down and can diverge under large deformation).
+// search, Lin & Yang 2024, appendix, which slows down and can diverge under large deformation).
 #pragma once
 #include "engine/structure/frame.hpp"
 

@@ -1,4 +1,4 @@
-// Explicit MPM solver: advances a Scene by one step at a time (SEEDS.md A.1, USL or MUSL).
+// Explicit MPM solver: advances a Scene by one step at a time (Lin & Yang 2024, USL or MUSL).
 // Output, checkpoints and progress stay outside; the driver calls step() and reads diagnostics.
 #pragma once
 #include <memory>

@@ -1,6 +1,6 @@
 // Particle <-> grid transfer kernels, one instance per (dimension, shape function), chosen once
 // when the solver is built; the transfer scheme (FLIP/PIC blend or APIC) is a flag per call.
-//   P2G (SEEDS.md A.1 eqs. 5-8): m_i = sum_p N_ip m_p,  p_i = sum_p N_ip m_p (v_p + C_p (x_i - x_p)),
+//   P2G (Lin & Yang 2024 eqs. 5-8): m_i = sum_p N_ip m_p,  p_i = sum_p N_ip m_p (v_p + C_p (x_i - x_p)),
 //        f_i = -sum_p V_p sigma_p grad N_ip + sum_p N_ip m_p g.   (C_p = 0 unless APIC)
 //   G2P (eqs. 13-14): FLIP v_p += sum N_ip (v^L_i - v^k_i), PIC v_p = sum N_ip v^L_i, blended;
 //        x_p += dt sum N_ip v^L_i;  L_p = sum v_i (x) grad N_ip;  F_p <- (I + dt L_p) F_p.
@@ -34,7 +34,7 @@ template <int D> class TransferKernels {
   using ChunkHook = std::function<void(Index, Index)>;
   virtual G2PResult g2p(Scene<D>& s, double dt, G2PMode mode, const ChunkHook* after_chunk = nullptr) const = 0;
   // mx_i += sum_p m_p N_ip x_p over the particles of the given occupied tiles (indices into
-  // Grid::occupied()), serially: the mass-weighted particle position a node sees (SEEDS.md A.3
+  // Grid::occupied()), serially: the mass-weighted particle position a node sees (Lin & Yang 2024
   // eq. 25) where members need it. mx has the grid's field layout.
   virtual void scatter_mass_position(const Scene<D>& s, const std::vector<Index>& tiles, std::vector<Vec<D>>& mx) const = 0;
 };

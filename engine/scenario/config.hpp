@@ -98,7 +98,7 @@ struct ProbeConfig {
   std::vector<std::string> quantities;
 };
 
-// --- Beam-column frame (2D; SEEDS.md A.3) -------------------------------------------------------
+// --- Beam-column frame (2D; Lin & Yang 2024) -------------------------------------------------------
 enum class BeamTheoryKind { euler_bernoulli, timoshenko };
 enum class FrameTransformKind { linear, corotational };
 enum class FrameMassKind { lumped, consistent };
@@ -151,7 +151,7 @@ struct StructureConfig {
   std::vector<NodalMassConfig> masses;
 };
 
-// --- Members as MPM velocity boundaries (Yang 2016; SEEDS.md A.2-A.3) ---------------------------
+// --- Members as MPM velocity boundaries (Yang 2016; Lin & Yang 2024) ---------------------------
 enum class MemberContactMode { stick, separable, friction };
 enum class DecayKind { sharp, linear, cosine };
 enum class DistanceKind { node, material };
@@ -173,7 +173,7 @@ struct OutputConfig {
   std::vector<ProbeConfig> probes;
 };
 
-// --- Solid-FE check of a concrete dam body (paper B, SEEDS.md B.3) ------------------------------
+// --- Solid-FE check of a concrete dam body (paper B, Lin, Cheng & Tuan, Table 1) ------------------------------
 struct SolidLoadConfig {
   std::string name, type;                            // point | patch | simulation
   double force = 0;                                  // N (point, patch)

@@ -46,13 +46,13 @@ void read_mpm(Obj o, MpmConfig& m) {
                       {{"linear", ShapeKind::linear}, {"gimp", ShapeKind::gimp}, {"bspline2", ShapeKind::bspline2}},
                       Spec{.doc = "grid shape functions: linear (Sulsky 1994), uGIMP (Bardenhagen & Kober 2004), quadratic B-spline"});
   o.choice<TransferKind>("transfer", m.transfer, {{"flip", TransferKind::flip}, {"apic", TransferKind::apic}},
-                         Spec{.doc = "particle velocity update: FLIP/PIC blend (SEEDS.md A.1 eq. 13) or APIC (Jiang et al. 2015)"});
+                         Spec{.doc = "particle velocity update: FLIP/PIC blend (Lin & Yang 2024 eq. 13) or APIC (Jiang et al. 2015)"});
   o.number("flip_blend", m.flip_blend, Spec{.doc = "FLIP fraction of the FLIP/PIC blend: 1 = pure FLIP, 0 = pure PIC (transfer = flip only)", .min = 0, .max = 1});
   // Linear shape functions with USL are unstable when a particle barely touches a node (tiny nodal
   // mass, full force gradient): MUSL's remapped velocities avoid it, so it is their default.
   m.update = m.shape == ShapeKind::linear ? StressUpdate::musl : StressUpdate::usl;
   o.choice<StressUpdate>("stress_update", m.update, {{"usl", StressUpdate::usl}, {"musl", StressUpdate::musl}},
-                         Spec{.doc = "update stress last (USL, SEEDS.md A.1) or modified USL with a momentum remap (MUSL); "
+                         Spec{.doc = "update stress last (USL, Lin & Yang 2024) or modified USL with a momentum remap (MUSL); "
                                      "default usl, but musl for linear shape functions (USL with linear shapes is unstable at nearly empty nodes)"});
   if (!o.documenting() && m.shape == ShapeKind::linear && m.transfer == TransferKind::apic)
     o.fail("transfer", nullptr, "flip with shape_function linear (APIC with linear shape functions is unstable at nearly empty nodes; use gimp or bspline2 for APIC)");
@@ -250,7 +250,7 @@ void read_probe(Obj& o, ProbeConfig& p) {
   if (p.quantities.empty()) p.quantities = allowed;
 }
 
-// --- Beam-column frame (2D; SEEDS.md A.3) -----------------------------------------------------
+// --- Beam-column frame (2D; Lin & Yang 2024) -----------------------------------------------------
 
 void read_section(Obj o, SectionConfig& c) {
   o.string("type", c.type, Spec{.doc = "rectangle (solid, width x depth) | pipe (circular hollow section) | "
@@ -259,7 +259,7 @@ void read_section(Obj o, SectionConfig& c) {
     o.fail("type", nullptr, "rectangle, pipe or tapered_rectangle (got '" + c.type + "')");
   if (o.when("type", c.type, "rectangle")) {
     o.number("width", c.width, positive("m", "out-of-plane width b", true));
-    o.number("depth", c.depth, positive("m", "in-plane depth h; the member surfaces are h/2 from the centre line (SEEDS.md A.3 eq. 23)", true));
+    o.number("depth", c.depth, positive("m", "in-plane depth h; the member surfaces are h/2 from the centre line (Lin & Yang 2024 eq. 23)", true));
   }
   o.end_when();
   if (o.when("type", c.type, "pipe")) {
@@ -330,12 +330,12 @@ void read_structure(Obj o, StructureConfig& st) {
                                {{"linear", FrameTransformKind::linear}, {"corotational", FrameTransformKind::corotational}},
                                Spec{.doc = "geometric transformation: linear (small displacement, M and K formed once) or corotational "
                                            "(large displacement and rotation: internal forces and tangent from the current chords; "
-                                           "the mass matrix stays the initial one; SEEDS.md A.3)"});
+                                           "the mass matrix stays the initial one; Lin & Yang 2024)"});
   o.choice<FrameMassKind>("mass", st.mass, {{"lumped", FrameMassKind::lumped}, {"consistent", FrameMassKind::consistent}},
                           Spec{.doc = "element mass matrix: lumped (diagonal) or consistent"});
   o.choice<FrameIntegratorKind>("integrator", st.integrator,
                                 {{"explicit", FrameIntegratorKind::explicit_euler}, {"newmark", FrameIntegratorKind::newmark}},
-                                Spec{.doc = "frame time integration: explicit (SEEDS.md A.3 eqs. 27-29; its stable step limits the global "
+                                Spec{.doc = "frame time integration: explicit (Lin & Yang 2024 eqs. 27-29; its stable step limits the global "
                                             "time step) or newmark (implicit, HHT-alpha form; does not limit the step)"});
   if (o.when("integrator", st.integrator == FrameIntegratorKind::newmark ? "newmark" : "", "newmark"))
     o.number("hht_alpha", st.hht_alpha,
@@ -368,7 +368,7 @@ void read_structure(Obj o, StructureConfig& st) {
   o.finish();
 }
 
-// Members as velocity boundaries of the continua (Yang 2016; SEEDS.md A.2-A.3).
+// Members as velocity boundaries of the continua (Yang 2016; Lin & Yang 2024).
 void read_member_contact(Obj o, MemberContactConfig& c, bool structure) {
   if (!o.documenting() && o.present() && !structure)
     throw InputError(o.context().file, o.path(), "", "a \"structure\" section as well (member_contact says how the structure's members "
@@ -377,7 +377,7 @@ void read_member_contact(Obj o, MemberContactConfig& c, bool structure) {
                               {{"stick", MemberContactMode::stick},
                                {"separable", MemberContactMode::separable},
                                {"friction", MemberContactMode::friction}},
-                              Spec{.doc = "stick: prescribed member velocity (SEEDS.md A.2 eq. 20), the material sticks; separable: "
+                              Spec{.doc = "stick: prescribed member velocity (Lin & Yang 2024 eq. 20), the material sticks; separable: "
                                           "smooth boundary applied only while a node approaches the member (eq. 21); friction: "
                                           "separable plus Coulomb friction"});
   if (o.when("mode", c.mode == MemberContactMode::friction ? "friction" : "", "friction"))
@@ -389,7 +389,7 @@ void read_member_contact(Obj o, MemberContactConfig& c, bool structure) {
                                   "presses, else q = 0; linear 1 - r / l_n or cosine (1 + cos(pi r / l_n)) / 2 hold nodes partly, "
                                   "which acts as a dashpot of impedance ~ q (1 - q) rho c and absorbs a hard elastic impact "
                                   "(docs/verification.md, member contact)"});
-  o.number("decay_scale", c.decay_scale, positive("", "multiplies the decay-layer thickness l_n of SEEDS.md A.2 eq. (18)"));
+  o.number("decay_scale", c.decay_scale, positive("", "multiplies the decay-layer thickness l_n of Lin & Yang 2024 eq. (18)"));
   o.choice<DistanceKind>("distance", c.distance, {{"node", DistanceKind::node}, {"material", DistanceKind::material}},
                          Spec{.doc = "signed distance r that sets q: node (default) = from the grid node itself (Lin & Yang 2024, "
                                      "eq. 23), the node set a rigid wall holds; material = from the mass-weighted particle "
@@ -484,11 +484,11 @@ void read_scenario(Obj& o, Scenario& s) {
   read_contact(o.object("contact", "contact between bodies"), s.contact);
   o.array<WallConfig>("walls", s.walls, Spec{.doc = "rigid fixed walls acting on grid nodes"}, read_wall);
   o.array<PrescribedVelocityConfig>("prescribed_velocity", s.prescribed_velocity, Spec{.doc = "regions of grid nodes moving with a given velocity"}, read_region);
-  read_structure(o.object("structure", "2D beam-column frame whose members act on the bodies (SEEDS.md A.3); absent: no frame"), s.structure);
-  read_member_contact(o.object("member_contact", "how the structure's members act on the bodies (SEEDS.md A.2); only with a structure"),
+  read_structure(o.object("structure", "2D beam-column frame whose members act on the bodies (Lin & Yang 2024); absent: no frame"), s.structure);
+  read_member_contact(o.object("member_contact", "how the structure's members act on the bodies (Lin & Yang 2024); only with a structure"),
                       s.member_contact, s.structure.present);
   read_output(o.object("output", "what is recorded"), s.output);
-  read_solid_check(o.object("solid_check", "a linear solid-FE check of a concrete dam body (paper B, SEEDS.md B.3): static load cases, "
+  read_solid_check(o.object("solid_check", "a linear solid-FE check of a concrete dam body (paper B, Lin, Cheng & Tuan, Table 1): static load cases, "
                                            "given or taken from this run's contact loads; absent: none"), s.solid_check);
   // Free-form here: design/ validates it where it reads it (docs/design-json.md).
   if (const json* b = o.raw("design_basis", Spec{.doc = "inputs of the closed-form impact estimates of the design checks (dam, boulder, "
@@ -504,7 +504,7 @@ std::string value_text(double x) { return json(x).dump(); }
 
 std::string quoted(const std::string& name) { return json(name).dump(); }
 
-// The frame's cross-references and geometry (SEEDS.md A.3); returns the member names.
+// The frame's cross-references and geometry (Lin & Yang 2024); returns the member names.
 // Members meet only at shared nodes: coincident nodes, a node inside another member's span, or two
 // members crossing would be silently disconnected frames (members do not join where they touch).
 void check_frame_geometry(const StructureConfig& st, const std::string& file) {
@@ -559,7 +559,7 @@ std::set<std::string> check_structure(const Scenario& s, const std::string& file
     const FrameNodeConfig& n = st.nodes[i];
     const std::string p = base + "/nodes/" + std::to_string(i);
     if (!nodes.emplace(n.name, i).second) throw InputError(file, p + "/name", quoted(n.name), "a name not used before in this list");
-    // The members act on the grid nodes around them (SEEDS.md A.2), so the frame must lie on the grid.
+    // The members act on the grid nodes around them (Lin & Yang 2024), so the frame must lie on the grid.
     for (std::size_t d = 0; d < n.position.size(); ++d)
       if (n.position[d] < g.origin[d] - 1e-12 || n.position[d] > g.origin[d] + g.size[d] + 1e-12) {
         std::ostringstream os;

@@ -42,7 +42,7 @@ struct Box {
 };
 
 // Uniform cantilever first two circular frequencies (rad/s): omega_i = (beta_i L)^2 sqrt(E/rho) r / L^2,
-// beta L = 1.8751, 4.6941 (SEEDS.md B.2; Clough & Penzien 1993, 18-3).
+// beta L = 1.8751, 4.6941 (Lin, Cheng & Tuan; Clough & Penzien 1993, 18-3).
 std::pair<double, double> cantilever_modes(double E, double rho, double r, double L) {
   const double base = std::sqrt(E / rho) * r / (L * L);
   return {1.8751 * 1.8751 * base, 4.6941 * 4.6941 * base};

@@ -77,7 +77,7 @@ void read_dam(Obj o, DamPreset& d) {
                                            "the column spacing across the channel of a steel dam"));
   o.choice<std::string>("base", d.base, {{"fixed", "fixed"}, {"pinned", "pinned"}}, Spec{.doc = "support at the foundation"});
   o.number("damping_ratio", d.damping_ratio, Spec{.doc = "structural damping ratio (Rayleigh, fitted to the first two cantilever modes "
-                                                         "of the dam estimated as a uniform cantilever, SEEDS.md B.2; concrete 5-10 %, B.4)",
+                                                         "of the dam estimated as a uniform cantilever, Lin, Cheng & Tuan; concrete 5-10 %, B.4)",
                                                   .min = 0, .max = 0.5});
   o.integer("elements", d.elements, Spec{.doc = "beam-column elements per member (members model)", .min = 1, .max = 1000});
   if (o.when("type", d.type, "concrete_gravity")) {
@@ -86,7 +86,7 @@ void read_dam(Obj o, DamPreset& d) {
     o.choice<std::string>("sloped_face", d.sloped_face, {{"downstream", "downstream"}, {"upstream", "upstream"}, {"both", "both"}},
                           Spec{.doc = "which face is battered: downstream (vertical upstream face), upstream, or both (symmetric)"});
     o.choice<std::string>("model", d.model, {{"members", "members"}, {"continuum", "continuum"}},
-                          Spec{.doc = "members: one tapered beam-column member fixed at the base (SEEDS.md A.3; stresses from N and M); "
+                          Spec{.doc = "members: one tapered beam-column member fixed at the base (Lin & Yang 2024; stresses from N and M); "
                                       "continuum: an MPM body stuck to the ground along its base (for comparison)"});
     d.concrete = material_object(o, "concrete", json{{"model", "linear_elastic"}, {"density", 2400}, {"youngs_modulus", 25e9}, {"poisson_ratio", 0.2}},
                                  "concrete (paper B uses E 25 GPa, rho 2300)", "concrete");

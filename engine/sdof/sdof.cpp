@@ -1,4 +1,4 @@
-// SEEDS.md B.1, B.2, B.4 and the design-practice impact loads; equations are stated in sdof.hpp.
+// Lin, Cheng & Tuan and the design-practice impact loads; equations are stated in sdof.hpp.
 #include "engine/sdof/sdof.hpp"
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Paper B's closed-form tools (SEEDS.md B.1, B.2, B.4): the single-degree-of-freedom oscillator, its
+// Paper B's closed-form tools (Lin, Cheng & Tuan): the single-degree-of-freedom oscillator, its
 // free and impulse responses, the boulder-on-dam peak base force, a buffer in series, and three
 // design-practice impact loads (GEO/Kwan 2012 Hertz, full Hertz after Johnson 1985, EN 1991-1-7 Annex C).
 // Pure functions, SI units throughout (kg, m, s, N, Pa, rad/s); displacement u is positive in the
@@ -13,13 +13,13 @@ namespace dmi::sdof {
 // B.1 SDOF theory: m u'' + c u' + k u = 0
 // ---------------------------------------------------------------------------------------------------
 
-// omega_n = sqrt(k/m) (rad/s), SEEDS B.1 eq. (9).
+// omega_n = sqrt(k/m) (rad/s), Lin, Cheng & Tuan eq. (9).
 double natural_frequency(double mass_kg, double stiffness_N_per_m);
 
-// c_c = 2 m omega_n = 2 sqrt(k m) (N s/m), SEEDS B.1 eq. (14).
+// c_c = 2 m omega_n = 2 sqrt(k m) (N s/m), Lin, Cheng & Tuan eq. (14).
 double critical_damping(double mass_kg, double stiffness_N_per_m);
 
-// omega_D = omega_n sqrt(1 - zeta^2) (rad/s), SEEDS B.1 eq. (14); requires 0 <= zeta < 1.
+// omega_D = omega_n sqrt(1 - zeta^2) (rad/s), Lin, Cheng & Tuan eq. (14); requires 0 <= zeta < 1.
 double damped_frequency(double natural_frequency_rad_per_s, double damping_ratio);
 
 // An oscillator: mass m (kg), stiffness k (N/m), damping ratio zeta = c/c_c (-), zeta >= 0 (zeta < 1
@@ -33,7 +33,7 @@ struct Oscillator {
   double damping_coefficient_N_s_per_m() const; // c = zeta c_c = 2 zeta sqrt(k m)
 };
 
-// The oscillator with viscous damping coefficient c (N s/m): zeta = c / (2 sqrt(k m)), SEEDS B.1 eq. (14).
+// The oscillator with viscous damping coefficient c (N s/m): zeta = c / (2 sqrt(k m)), Lin, Cheng & Tuan eq. (14).
 Oscillator oscillator_from_damping_coefficient(double mass_kg, double stiffness_N_per_m,
                                                double damping_N_s_per_m);
 
@@ -50,7 +50,7 @@ double free_vibration(const Oscillator& o, double u0_m, double v0_m_per_s, doubl
 // e^{-zeta wn (t-tau)} sin(wD (t-tau)) / (m wD) damped, eq. (19) (and the zeta >= 1 forms above).
 double unit_impulse_response(const Oscillator& o, double t_s, double tau_s);
 
-// Response (m) to an impulse I (N s) applied at tau: I h(t - tau), SEEDS B.1 eqs. (18)-(19), (21).
+// Response (m) to an impulse I (N s) applied at tau: I h(t - tau), Lin, Cheng & Tuan eqs. (18)-(19), (21).
 double impulse_response(const Oscillator& o, double impulse_N_s, double t_s, double tau_s);
 
 // Peak of the unit-impulse response and its time after the impulse.
@@ -59,12 +59,12 @@ struct ImpulsePeak {
   double time_s;                  // t_peak - tau (s)
 };
 
-// Peak of h, SEEDS B.1 eq. (20), from h' = 0 <=> tan(wD t) = sqrt(1-zeta^2)/zeta:
+// Peak of h, Lin, Cheng & Tuan eq. (20), from h' = 0 <=> tan(wD t) = sqrt(1-zeta^2)/zeta:
 //   t_peak = atan2(sqrt(1-zeta^2), zeta) / wD,
 //   u_max  = (1/(m wn)) exp(-(zeta/sqrt(1-zeta^2)) atan(sqrt(1-zeta^2)/zeta))        (0 <= zeta < 1)
 // zeta = 0 gives 1/(m wn) at t = pi/(2 wn). Same derivation with tanh for zeta > 1:
 //   t_peak = atanh(sqrt(zeta^2-1)/zeta) / w*, u_max = (1/(m wn)) exp(-(zeta/sqrt(zeta^2-1)) atanh(...)),
-// and zeta = 1: t_peak = 1/wn, u_max = 1/(e m wn). u_max decreases with zeta (SEEDS B.4).
+// and zeta = 1: t_peak = 1/wn, u_max = 1/(e m wn). u_max decreases with zeta (Lin, Cheng & Tuan).
 ImpulsePeak unit_impulse_peak(const Oscillator& o);
 
 // ---------------------------------------------------------------------------------------------------
@@ -78,7 +78,7 @@ struct BoulderImpact {
   double peak_base_force_N;           // F_T,max = k u_max = I omega_n = m v0 omega_n, eq. (23)
 };
 
-// SEEDS B.2 eqs. (21)-(23): boulder mass m (kg) at speed v0 (m/s) on a dam of effective mass M (kg)
+// Lin, Cheng & Tuan eqs. (21)-(23): boulder mass m (kg) at speed v0 (m/s) on a dam of effective mass M (kg)
 // and stiffness k (N/m). u(t) ~ (I/(M wn)) sin(wn t); eq. (23) as written (the impulse goes entirely
 // into the dam's effective mass M; the boulder mass enters only through I).
 BoulderImpact boulder_on_dam(double boulder_mass_kg, double boulder_speed_m_per_s,
@@ -106,13 +106,13 @@ struct CantileverSdof {
   double first_mode_rad_per_s;         // omega_1 = (beta_1 L)^2 sqrt(E/rho) r / L^2, beta_1 L = 1.8751
 };
 
-// Uniform cantilever column of height L (m), Young's modulus E (Pa), density rho (kg/m^3), SEEDS B.2.
+// Uniform cantilever column of height L (m), Young's modulus E (Pa), density rho (kg/m^3), Lin, Cheng & Tuan.
 // beta_1 L = 1.87510407 is the first root of 1 + cos x cosh x = 0 (the paper's 1.875).
 CantileverSdof cantilever_sdof(double youngs_modulus_Pa, double density_kg_per_m3,
                                const Section& section, double height_m);
 
 // ---------------------------------------------------------------------------------------------------
-// Buffer in series (SEEDS B.2, last line)
+// Buffer in series (Lin, Cheng & Tuan, last line)
 // ---------------------------------------------------------------------------------------------------
 
 // Springs in series: k_eff = 1 / (1/k_dam + 1/k_buffer) (N/m).

@@ -1,4 +1,4 @@
-// The solid-FE check of a concrete dam body (paper B, SEEDS.md B.3): the tapered dam as hex8 (3D) or
+// The solid-FE check of a concrete dam body (paper B, Lin, Cheng & Tuan, Table 1): the tapered dam as hex8 (3D) or
 // quad4 (2D plane strain) elements, base fixed, linear elastic, one static solve per load case:
 //   point      a horizontal force at the upstream-face node nearest to (across, height);
 //   patch      the same force spread over a rectangle of the face (pyramid or uniform, paper B);

@@ -1,4 +1,4 @@
-// Nodal load vectors for the structured tapered block (SEEDS.md B.3): point loads, the paper's patch loads
+// Nodal load vectors for the structured tapered block (Lin, Cheng & Tuan, Table 1): point loads, the paper's patch loads
 // and a general face traction q(y, z) / pressure profile q(z) (e.g. pressures taken from a simulation).
 //   Point load: a force vector added to one node.
 //   Patch load on an x-face (upstream i = 0, downstream i = nx) of a hex8 block: traction t(y, z) = q(y, z) d

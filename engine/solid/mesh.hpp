@@ -1,4 +1,4 @@
-// Structured meshes for the linear solid model (SEEDS.md B.3): hex8 blocks and quad4 sections.
+// Structured meshes for the linear solid model (Lin, Cheng & Tuan, Table 1): hex8 blocks and quad4 sections.
 //   Coordinates: x through the thickness (upstream face -> downstream face), y across the face width
 //   (3D only), z up the height; metres. A 2D mesh stores (x, z) in its two columns.
 //   Corner order (VTK): quad4 (-1,-1),(1,-1),(1,1),(-1,1); hex8 the same at zeta = -1, then at zeta = +1,

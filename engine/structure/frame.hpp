@@ -1,7 +1,7 @@
 // A 2D beam-column frame: nodes with 3 DOFs (ux, uy, rz), elements made of a basic system
 // (element.hpp: axial force N and end moments M_i, M_j against chord deformations, free of rigid
 // modes) and a coordinate transformation (linear or corotational), supports, nodal masses, lumped
-// or consistent mass, and a time integrator: the explicit scheme of SEEDS.md A.3 eqs. (27)-(29) or
+// or consistent mass, and a time integrator: the explicit scheme of Lin & Yang 2024 eqs. (27)-(29) or
 // implicit Newmark (average acceleration).
 //
 // Sign conventions. Global DOF order per node: ux, uy, rz (rz counter-clockwise +). Element local

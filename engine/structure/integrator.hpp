@@ -1,4 +1,4 @@
-// Time integrators of the frame's equation of motion M a + C v + f_int(d) = f (SEEDS.md A.3 eq. (26)),
+// Time integrators of the frame's equation of motion M a + C v + f_int(d) = f (Lin & Yang 2024 eq. (26)),
 // kept apart from the physics (STYLE.md rule 3): they see the frame only through FrameSystem. The loads f
 // are held constant over a step.
 #pragma once
@@ -30,7 +30,7 @@ class FrameTimeIntegrator {
   virtual void load_state(StateReader& r) = 0;
 };
 
-// SEEDS.md A.3 eqs. (27)-(29) (symplectic Euler): a_n = M^-1 (f - f_int(d_n) - C v_n),
+// Lin & Yang 2024 eqs. (27)-(29) (symplectic Euler): a_n = M^-1 (f - f_int(d_n) - C v_n),
 // v_{n+1} = v_n + dt a_n, d_{n+1} = d_n + dt v_{n+1}. Per mode with damping ratio zeta the amplification
 // matrix has det = 1 - 2 zeta omega dt and trace 2 - (omega dt)^2 - 2 zeta omega dt, stable for
 // omega dt <= 2 (sqrt(1 + zeta^2) - zeta), i.e. dt <= 4 / (sqrt(4 omega^2 + c^2) + c), c = alpha + beta omega^2;

@@ -133,9 +133,9 @@ std::vector<KernelBench> kernel_bench(const BenchOptions& o, bool progress) {
 }
 
 int bench_main(const std::vector<std::string>& cases, bool as_json, bool quick, BenchOptions o) {
-  const std::vector<std::string> all = {"kernel", "a5", "a6", "bar", "disks", "skip"};
+  const std::vector<std::string> all = {"kernel", "a5", "a6", "bar", "disks", "skip", "dam"};
   for (const auto& c : cases)
-    if (std::find(all.begin(), all.end(), c) == all.end()) throw InputError("bench: unknown case '" + c + "' (known: kernel, a5, a6, bar, disks, skip)");
+    if (std::find(all.begin(), all.end(), c) == all.end()) throw InputError("bench: unknown case '" + c + "' (known: kernel, a5, a6, bar, disks, skip, dam)");
   auto wanted = [&](const char* c) { return cases.empty() || std::find(cases.begin(), cases.end(), c) != cases.end(); };
   const BenchOptions d;
   if (o.shapes.empty()) o.shapes = d.shapes;
@@ -160,9 +160,23 @@ int bench_main(const std::vector<std::string>& cases, bool as_json, bool quick, 
     out["skip"] = bench_skip(!as_json);
     out["skip"]["block"] = skip_block_bench(!as_json);
   }
+  if (wanted("dam")) out["dam"] = bench_dam(!as_json, quick);
   if (as_json) {
     std::cout << out.dump(1) << "\n";
     return 0;
+  }
+  if (out.contains("dam")) {
+    const json& d = out["dam"];
+    std::printf("\nThe main job: run time against error (%s)\n", d["reference"].get<std::string>().c_str());
+    std::printf("%-12s %8s %9s %14s %14s %16s\n", "dam", "cell m", "wall s", "shear error", "moment error", "contact error");
+    auto pct = [](const json& e) { return e.is_number() ? std::to_string(100 * e.get<double>()).substr(0, 5) + " %" : std::string("n/a"); };
+    for (const auto& p : d["points"])
+      std::printf("%-12s %8.4f %9.2f %14s %14s %16s%s\n", p["group"].get<std::string>().c_str(), p["cell_size"].get<double>(),
+                  p["wall_seconds"].get<double>(), pct(p["base_shear_error"]).c_str(), pct(p["base_moment_error"]).c_str(),
+                  pct(p["contact_force_error"]).c_str(), p["front"].get<bool>() ? "  (front)" : "");
+    for (const char* g : {"bare", "with buffer"})
+      for (const char* k : {"base_shear", "base_moment", "contact_force"})
+        std::printf("  %s, %s: %s\n", g, k, d[g][k]["statement"].get<std::string>().c_str());
   }
   if (!results.empty()) {
     std::printf("\nMPM kernel throughput (2D, linear elastic, %ld particles, median of %d x %d steps)\n", o.particles, o.repeats, o.steps);

@@ -1,4 +1,4 @@
-// Verification of beam-column members coupled to MPM (Lin & Yang 2024, SEEDS.md A.5-A.6).
+// Verification of beam-column members coupled to MPM (Lin & Yang 2024, Lin & Yang 2024, verifications 1-2).
 #include "engine/verify/cases_members.hpp"
 
 #include "engine/sdof/sdof.hpp"
@@ -50,7 +50,7 @@ FrameModel prismatic_beam(int n, double L, const Section& sec, double E, double 
 }  // namespace
 
 
-// Eq. (30) with omega in both terms (SEEDS.md A.5 note), t from the instant of impact.
+// Eq. (30) with omega in both terms (Lin & Yang 2024, verification 1 note), t from the instant of impact.
 double paper_a5_eq30(double t) {
   const double g = 10, d = 0.75, L = 5, b = 0.05, h = 0.25, rho = 1e4, E = 0.17e9;
   const double m_obj = 960 * 0.25 * 0.25 * b;
@@ -214,7 +214,7 @@ std::vector<CaseResult> frame_closed_forms() {
   return stamp(r, timer.seconds());
 }
 
-// SEEDS.md A.5 at the paper's settings, 1/2/4/8 elements, with the paper's node distance and our
+// Lin & Yang 2024, verification 1 at the paper's settings, 1/2/4/8 elements, with the paper's node distance and our
 // material distance. References: eq. (30) and the 64-element point-mass model (all modes), both
 // from the first step with a contact force.
 std::vector<CaseResult> paper_a5() {
@@ -246,7 +246,7 @@ std::vector<CaseResult> paper_a5() {
   return stamp(r, timer.seconds());
 }
 
-// SEEDS.md A.6: peak top-surface mid-span deflection beside the paper's, and the h^-1.5 scaling of
+// Lin & Yang 2024, verification 2: peak top-surface mid-span deflection beside the paper's, and the h^-1.5 scaling of
 // the beam-column peaks (energy argument) fitted over h/L = 0.2, 0.1, 0.05.
 std::vector<CaseResult> paper_a6() {
   const CaseTimer timer;
@@ -270,7 +270,7 @@ std::vector<CaseResult> paper_a6() {
   return stamp(r, timer.seconds());
 }
 
-// The case the paper dropped (SEEDS.md A.6, h/L = 0.025 as beam-columns): with the linear
+// The case the paper dropped (Lin & Yang 2024, verification 2, h/L = 0.025 as beam-columns): with the linear
 // transformation the beam deflects past the disc; the corotational one adds membrane stiffness.
 // Does the contact hold? The disc must stay above the beam (centroid gap > -0.05 m: the disc
 // flattens, its centroid may come a little nearer than r) and rebound.
@@ -328,7 +328,7 @@ std::vector<CaseResult> sdof_column() {
   return stamp(r, timer.seconds());
 }
 
-// Paper B Table 1 (SEEDS.md B.3) with the hex8 model of engine/solid: von Mises at element centroids with
+// Paper B Table 1 (Lin, Cheng & Tuan, Table 1) with the hex8 model of engine/solid: von Mises at element centroids with
 // the downstream face sloped matched best of all measures and slope choices (docs/verification.md).
 std::vector<CaseResult> paper_b_table1() {
   const CaseTimer timer;

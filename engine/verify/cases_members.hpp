@@ -1,4 +1,4 @@
-// Runs and closed forms for the beam-column verification cases (SEEDS.md A.5-A.6), shared by
+// Runs and closed forms for the beam-column verification cases (Lin & Yang 2024, verifications 1-2), shared by
 // `damimpact validate`, the tests and the benchmarks.
 #pragma once
 #include <functional>

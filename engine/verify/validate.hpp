@@ -48,7 +48,7 @@ struct CaseTimer {
 std::vector<CaseResult> stamp(std::vector<CaseResult> r, double wall);
 
 const std::vector<ValidationCase>& validation_cases();
-std::vector<ValidationCase> member_validation_cases();  // cases_members.cpp (SEEDS.md A.3-A.6)
+std::vector<ValidationCase> member_validation_cases();  // cases_members.cpp (Lin & Yang 2024)
 std::vector<ValidationCase> debris_validation_cases();  // cases_debris.cpp (granular collapse)
 
 // Bar vibration at one resolution (used by the case, tests and benchmarks).

@@ -1,4 +1,4 @@
-// Members as velocity boundaries (Lin & Yang two-stage contact, SEEDS.md A.2-A.3), end to end on
+// Members as velocity boundaries (Lin & Yang two-stage contact, Lin & Yang 2024), end to end on
 // small scenes with closed forms: a block resting on a stiff beam loads it with its weight; a block
 // sliding on it decelerates at mu g; separable contact never pulls; orientation by x-bar (eq. 24)
 // holds for material below a member.

@@ -1,4 +1,4 @@
-// Closed-form SDOF and impact tools (engine/sdof/sdof.hpp, SEEDS.md B.1, B.2, B.4): identities (the
+// Closed-form SDOF and impact tools (engine/sdof/sdof.hpp, Lin, Cheng & Tuan): identities (the
 // equation of motion by finite differences, eq. (20) against the sampled maximum, Hertz closed forms
 // against an RK4 integration of the contact ODE) and worked examples with their hand calculations.
 #include <gtest/gtest.h>
@@ -127,7 +127,7 @@ TEST(SdofImpulse, PeakHandValueAndUndampedLimit) {
     EXPECT_NEAR(unit_impulse_peak({m, k, zeta}).displacement_m_per_N_s, undamped / std::numbers::e, 1e-5 * undamped);
 }
 
-// Paper B's concrete column (SEEDS B.3) as a cantilever SDOF, hit by a 1 t boulder at 5 m/s:
+// Paper B's concrete column (Lin, Cheng & Tuan, Table 1) as a cantilever SDOF, hit by a 1 t boulder at 5 m/s:
 //   section: b = 2 m, depth 1.0 (crest) .. 1.6 m (base), mean 1.3 m: A = 2.6 m^2,
 //   I = 2 * 1.3^3 / 12 = 0.3661667 m^4, r = 1.3/sqrt(12) = 0.3752777 m
 //   k = 3 * 25e9 * 0.3661667 / 4^3 = 4.29101562e8 N/m;  M = 2300 * 2.6 * 4 / 2 = 11 960 kg
