@@ -1,5 +1,5 @@
 // Off-screen rendering without any X server: Mesa's surfaceless EGL platform (software llvmpipe) made
-// current, then handed to a vtkGenericOpenGLRenderWindow (../shared/notes/headless-vtk.md).
+// current, then handed to a vtkGenericOpenGLRenderWindow (docs/report.md, "Off-screen rendering").
 #pragma once
 #include <memory>
 #include <string>
