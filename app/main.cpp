@@ -171,6 +171,8 @@ int grid_study_run(const std::string& file, const std::string& out, int threads,
   }
   nlohmann::json fine = designs[0];
   fine["grid_study"] = dmi::design::grid_study_section(designs, h, folders);
+  const dmi::design::Limits limits = limits_file.empty() ? dmi::design::Limits{} : dmi::design::read_limits(limits_file);
+  verdict = dmi::design::judge_grid_study(fine, limits.grid_judge_on) || fine["verdict"].value("status", "") == "no_checks" ? 0 : 1;
   dmi::design::write_design_json((fs::path(out) / "design.json").string(), fine);
   if (!quiet) {
     std::printf("\ngrid uncertainty of the governing numbers (%s):\n", fine["grid_study"]["method"].get<std::string>().c_str());
@@ -180,6 +182,11 @@ int grid_study_run(const std::string& file, const std::string& out, int threads,
                   q["values"][0].get<double>(), q["unit"].get<std::string>().c_str(), 100 * q["gci"].get<double>(),
                   q["statement"].get<std::string>().c_str());
     }
+    for (const auto& r : fine["grid_study"]["verdict"]["runs"])
+      std::printf("  %sgoverning utilisation %.3f, conservative bound u (1 + GCI) = %.3f: %s\n",
+                  r["variant"].get<std::string>().empty() ? "" : ("[" + r["variant"].get<std::string>() + "] ").c_str(), r["utilisation"].get<double>(),
+                  r["utilisation_bound"].get<double>(), r["passed"].get<bool>() ? "within 1" : "above 1");
+    std::printf("  judged on: %s%s\n", limits.grid_judge_on.c_str(), fine["verdict"].contains("note") ? (" (" + fine["verdict"]["note"].get<std::string>() + ")").c_str() : "");
   }
   return verdict;
 }

@@ -89,4 +89,29 @@ json grid_study_section(const std::array<json, 3>& designs, const std::array<dou
   return out;
 }
 
+bool judge_grid_study(json& design, const std::string& judge_on) {
+  json& gs = design["grid_study"];
+  json& v = design["verdict"];
+  const std::string judged = v.value("runs_judged", std::string());
+  json runs = json::array();
+  bool bound_ok = true;
+  for (const auto& q : gs["quantities"]) {
+    if (q["id"] != "governing_utilisation") continue;
+    const std::string var = q["variant"];
+    if (!judged.empty() && !var.empty() && judged.find(var) == std::string::npos) continue;  // a reference run
+    const double u = q["values"][0].get<double>(), gci = q["gci"].get<double>(), bound = u * (1 + gci);
+    runs.push_back({{"variant", var}, {"utilisation", u}, {"gci", gci}, {"utilisation_bound", bound}, {"passed", bound <= 1.0},
+                    {"converged", q["converged"]}});
+    bound_ok = bound_ok && bound <= 1.0;
+  }
+  gs["verdict"] = {{"judge_on", judge_on}, {"runs", runs}, {"bound_passed", bound_ok}};
+  if (judge_on != "conservative_bound") return v.value("passed", false);
+  if (v.value("passed", false) && !bound_ok) {
+    v["passed"] = false;
+    v["status"] = "fail";
+    v["note"] = "passes on the finest grid but not on the conservative bound u (1 + GCI) of the grid study (limits: grid_study.judge_on)";
+  }
+  return v.value("passed", false);
+}
+
 }  // namespace dmi::design

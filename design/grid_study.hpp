@@ -16,4 +16,10 @@ namespace dmi::design {
 nlohmann::json grid_study_section(const std::array<nlohmann::json, 3>& designs, const std::array<double, 3>& h,
                                   const std::array<std::string, 3>& folders);
 
+// Adds design["grid_study"]["verdict"]: for every judged run, the governing utilisation u, its GCI and the bound
+// u (1 + GCI), passed when the bound is <= 1. With judge_on "conservative_bound" the document's verdict follows it
+// (a design that passes on the finest grid but not on the bound fails, and the verdict says why). Returns whether
+// the design passes on the criterion asked for.
+bool judge_grid_study(nlohmann::json& design, const std::string& judge_on);
+
 }  // namespace dmi::design

@@ -32,7 +32,7 @@ json Limits::to_json() const {
     c["punching_patch_m"] = nullptr;
   return json{{"concrete", c},
               {"steel", {{"yield_strength_Pa", steel.yield_strength}, {"gamma_M0", steel.gamma_M0}}},
-              {"members", member_material}};
+              {"members", member_material}, {"grid_study", {{"judge_on", grid_judge_on}}}};
 }
 
 namespace {
@@ -68,7 +68,16 @@ struct Reader {
 Limits parse_limits(const json& j, const std::string& file) {
   Reader r{file};
   Limits L;
-  r.keys(j, "", {"concrete", "steel", "members"});
+  r.keys(j, "", {"concrete", "steel", "members", "grid_study"});
+  if (j.contains("grid_study")) {
+    const json& g = j["grid_study"];
+    r.keys(g, "/grid_study", {"judge_on"});
+    if (g.contains("judge_on")) {
+      const json& v = g["judge_on"];
+      if (!v.is_string() || (v != "finest" && v != "conservative_bound")) r.fail("/grid_study/judge_on", &v, "\"finest\" or \"conservative_bound\"");
+      L.grid_judge_on = v.get<std::string>();
+    }
+  }
   if (j.contains("concrete")) {
     const json& c = j["concrete"];
     const std::string p = "/concrete";

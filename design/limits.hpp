@@ -40,6 +40,9 @@ struct SteelLimits {
 struct Limits {
   ConcreteLimits concrete;
   SteelLimits steel;
+  // With `run --grid-study`: judge the design on the finest grid's utilisation ("finest") or on its conservative
+  // bound u (1 + GCI) ("conservative_bound"; Roache 1998: the GCI as an error band).
+  std::string grid_judge_on = "finest";
   std::map<std::string, std::string> member_material;  // member name -> concrete | steel (overrides the guess)
   nlohmann::json to_json() const;
 };

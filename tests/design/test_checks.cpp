@@ -90,4 +90,8 @@ TEST(DesignLimits, ReadsAFileAndRejectsBadValuesWithThePath) {
   EXPECT_NE(message(R"({"steel": {"fy": 355e6}})").find("/steel/fy"), std::string::npos);
   EXPECT_NE(message(R"({"members": {"dam": "timber"}})").find("/members/dam = \"timber\": expected \"concrete\" or \"steel\""), std::string::npos);
   EXPECT_NE(message(R"({"steel": {"gamma_M0": 0.9}})").find("expected a partial factor >= 1"), std::string::npos);
+  EXPECT_EQ(L.grid_judge_on, "finest");
+  EXPECT_EQ(parse_limits(nlohmann::json::parse(R"({"grid_study": {"judge_on": "conservative_bound"}})"), "l.json").grid_judge_on, "conservative_bound");
+  EXPECT_NE(message(R"({"grid_study": {"judge_on": "mean"}})").find("/grid_study/judge_on = \"mean\": expected \"finest\" or \"conservative_bound\""),
+            std::string::npos);
 }

@@ -24,3 +24,21 @@ TEST(GridStudy, SectionReadsTheThreeDesignsAndRefusesAMissingQuantity) {
   bad["runs"][0]["base_total"]["Fx_N"]["abs_max"]["value"] = "n/a";
   EXPECT_THROW(grid_study_section({doc(101, 0.5), bad, doc(116, 0.6)}, h, {"a", "b", "c"}), std::runtime_error);
 }
+
+// Judging on the conservative bound: a design that passes on the finest grid (u 0.9) fails when its grid
+// uncertainty (GCI 20 %) lifts u (1 + GCI) above 1, and the verdict says why; judged on the finest grid it passes.
+TEST(GridStudy, ConservativeBoundCanFailADesignThatPassesOnTheFinestGrid) {
+  using nlohmann::json;
+  auto design = [] {
+    json q = {{"id", "governing_utilisation"}, {"variant", ""}, {"values", {0.9, 0.8, 0.7}}, {"gci", 0.2}, {"converged", true}};
+    return json{{"verdict", {{"passed", true}, {"status", "pass"}, {"runs_judged", ""}}}, {"grid_study", {{"quantities", {q}}}}};
+  };
+  json a = design(), b = design();
+  EXPECT_TRUE(judge_grid_study(a, "finest"));
+  EXPECT_TRUE(a["verdict"]["passed"].get<bool>());
+  EXPECT_NEAR(a["grid_study"]["verdict"]["runs"][0]["utilisation_bound"].get<double>(), 1.08, 1e-12);
+  EXPECT_FALSE(a["grid_study"]["verdict"]["bound_passed"].get<bool>());
+  EXPECT_FALSE(judge_grid_study(b, "conservative_bound"));
+  EXPECT_EQ(b["verdict"]["status"], "fail");
+  EXPECT_NE(b["verdict"]["note"].get<std::string>().find("conservative bound"), std::string::npos);
+}
