@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <limits>
 #include <stdexcept>
 
 namespace dmi::design {
@@ -36,7 +34,7 @@ json quantity(const std::string& variant, const std::string& id, const std::stri
   return json{{"variant", variant}, {"id", id}, {"title", title}, {"unit", unit}, {"values", {f[0], f[1], f[2]}},
               {"observed_order", num(c.order)}, {"extrapolated", num(c.extrapolated)}, {"gci", c.gci},
               {"safety_factor", c.safety_factor}, {"asymptotic_ratio", num(c.asymptotic_ratio)},
-              {"behaviour", behaviour_name(c.behaviour)}, {"converged", c.behaviour == GridBehaviour::converged || c.behaviour == GridBehaviour::monotone},
+              {"behaviour", behaviour_name(c.behaviour)}, {"converged", c.converged()},
               {"conservative_magnitude", bound}, {"statement", describe(c)}};
 }
 

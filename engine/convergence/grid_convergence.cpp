@@ -54,7 +54,6 @@ GridConvergence grid_convergence(const std::array<double, 3>& h, const std::arra
   }
   if (e21 == 0 || e32 / e21 < 0) {  // oscillatory (or the fine pair equal): the spread bounds the error
     c.behaviour = GridBehaviour::oscillatory;
-    c.safety_factor = 1.25;
     c.gci = c.safety_factor * std::max(std::abs(e21), std::abs(f[2] - f[0])) / f1;
     return c;
   }

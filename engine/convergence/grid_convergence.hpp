@@ -25,6 +25,8 @@ struct GridConvergence {
   double safety_factor = 1.25;       // Fs used
   double asymptotic_ratio = 0;       // GCI_32 / (r21^p GCI_21): 1 in the asymptotic range (NaN when not defined)
   GridBehaviour behaviour = GridBehaviour::monotone;
+  // In the asymptotic range (or equal on all grids): the extrapolated value and the index can be trusted.
+  bool converged() const { return behaviour == GridBehaviour::converged || behaviour == GridBehaviour::monotone; }
 };
 
 // h: cell sizes fine to coarse (strictly increasing), f: the quantity at each. Throws std::invalid_argument on
