@@ -1,4 +1,4 @@
-// Debris verification (issue 4): the planar granular column collapse against Lube et al. (2005).
+// Debris verification: the planar granular column collapse against Lube et al. (2005).
 #include <algorithm>
 #include <cmath>
 #include <vector>

@@ -360,7 +360,7 @@ double impact_duration(const std::vector<double>& t, const Series& v, double v0,
   return stop - start;
 }
 
-// Tyre buffer (issue 4): the same 1 t boulder at 5 m/s on the concrete check dam without and with a 0.3 m
+// Tyre buffer: the same 1 t boulder at 5 m/s on the concrete check dam without and with a 0.3 m
 // damped rubber layer bonded to the face (examples/dam_boulder_*.json). The buffer must lower the peak base
 // shear and moment and lengthen the load; neither run may create energy (balance <= +1 % of the input).
 std::vector<CaseResult> tyre_buffer() {
@@ -393,7 +393,7 @@ std::vector<CaseResult> tyre_buffer() {
   return stamp(r, timer.seconds());
 }
 
-// Buffer physics on a rigid wall (issue 4; examples/buffer_pad_rigid_wall.json): a rock block on a rubber
+// Buffer physics on a rigid wall (examples/buffer_pad_rigid_wall.json): a rock block on a rubber
 // pad stuck to the wall. The pad is a rod (mass m_p, length t, modulus E' = E / (1 - nu^2), free edges in
 // plane strain) carrying the block as tip mass M: beta tan(beta) = m_p / M, omega = beta c / t, contact
 // time pi / omega, wall force M v omega / cos(beta) (Clough & Penzien 1993, 18-2). A damped pad returns

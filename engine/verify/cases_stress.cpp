@@ -1,4 +1,4 @@
-// Stability stress suite (issue 8; `damimpact validate --stress`, docs/reliability.md "Stability stress suite").
+// Stability stress suite (`damimpact validate --stress`, docs/reliability.md "Stability stress suite").
 // Every run is attempted: a RunError (NaN/Inf, a particle leaving the grid) becomes a failed metric carrying
 // its message instead of ending the suite.
 #include <algorithm>
