@@ -34,17 +34,19 @@ def run(s, out):
     return h5py.File(os.path.join(out, "results.h5"), "r")
 
 
-def cylinder(target, h, off, E=None, decay=None):
+def cylinder(target, h, off, E=None, decay=None, gap=0.017, end=None):
     s = load("cylinder_on_wall.json" if target in ("wall", "mirror") else "cylinder_on_member.json")
     s["grid"]["cell_size"] = h
-    s["bodies"][0]["shape"]["center"] = [0.55, 0.417 - off]
+    s["bodies"][0]["shape"]["center"] = [0.55, 0.4 + gap - off]
+    if end:
+        s["analysis"]["end_time"] = end
     if target == "wall":
         s["walls"][0]["point"] = [0.0, -off]
     elif target == "mirror":  # the image cylinder below the plane y = 0, moving up
         del s["walls"]
         image = json.loads(json.dumps(s["bodies"][0]))
         image.update({"name": "image", "velocity": [0, 5.0]})
-        image["shape"]["center"] = [0.55, -0.417]
+        image["shape"]["center"] = [0.55, -0.4 - gap]
         s["bodies"].append(image)
         s["contact"] = {"method": "multi_field", "friction": 0.0}
     else:
@@ -78,6 +80,9 @@ def main():
     ap.add_argument("--cells", type=float, nargs="*", default=[0.04, 0.02, 0.01, 0.005])
     ap.add_argument("--hertz", type=float, nargs="*", default=[0.02, 0.01, 0.005])
     ap.add_argument("--out", default="/tmp/impact_routes")
+    ap.add_argument("--gap", type=float, default=0.017, help="initial gap of the 2D cylinder (m)")
+    ap.add_argument("--end", type=float, default=None, help="end time of the 2D runs (s); default the example's")
+    ap.add_argument("--only", nargs="*", default=None, help="run the 2D routes whose label contains one of these")
     a = ap.parse_args()
     m = 2650 * np.pi * 0.4 ** 2
     routes = [("rigid wall, on", "wall", 0.0, {}), ("member E 3e13, on", "member", 0.0, {"E": 3e13}),
@@ -88,8 +93,10 @@ def main():
     print("| target | h (m) | peak (MN/m) | contact time (ms) | restitution | kinetic energy lost |")
     print("|---|---|---|---|---|---|")
     for label, target, off, kw in routes:
+        if a.only is not None and not any(o in label for o in a.only):
+            continue
         for h in a.cells:
-            f = run(cylinder(target, h, off, **kw), os.path.join(a.out, "%s_%s_%g" % (target, off, h) + "_".join(kw)))
+            f = run(cylinder(target, h, off, gap=a.gap, end=a.end, **kw), os.path.join(a.out, "%s_%s_%g" % (target, off, h) + "_".join(kw)))
             peak, tc, e, loss = impact_2d(f, target, m)
             print("| %s | %g | %.1f | %.2f | %.3f | %.1f %% |" % (label, h, peak / 1e6, tc * 1e3, e, 100 * loss), flush=True)
     # 3D Hertz sphere: reference 7.20 kN, 4.25 ms (sdof::hertz_sphere_impact)

@@ -157,6 +157,37 @@ template <int D> void MemberContact<D>::mass_positions(const Scene<D>& s, const 
   kernels.scatter_mass_position(s, tiles_, mx_);
 }
 
+// touch_ from the particles of the tiles near candidates whose domain reaches the surface of the member that holds
+// their nearest node (a particle touching a surface has its nearest node within l_n of it, a candidate).
+template <int D> void MemberContact<D>::touching(const Scene<D>& s) {
+  const Grid<D>& g = *s.grid;
+  touch_.reset(static_cast<std::size_t>(g.nnodes()) * g.nfields());
+  if (s.coupling.decay != DecayKind::sharp || s.coupling.detection != DetectionKind::surface) return;
+  if constexpr (D == 2) {
+    const Particles<2>& P = s.particles;
+    const Frame& fr = *s.frame;
+    const double tol = 1e-6 * g.h();
+    for (Index t : tiles_)
+      for (Index q = g.tile_start()[t]; q < g.tile_start()[t + 1]; ++q) {
+        const Index i = g.tile_particles()[q];
+        const Vec2 xr = g.grid_coord(P.x[i]);
+        const Index id = g.node_id(IVec<2>(static_cast<int>(std::lround(xr[0])), static_cast<int>(std::lround(xr[1]))));
+        if (slot_[id] < 0) continue;
+        const Candidate& c = cand_[slot_[id]];
+        const Projection pr = project_on_curve(curves_[c.element], P.x[i]);
+        const double d = std::sqrt(pr.dist2), hm = fr.half_depth(c.element, pr.xi);
+        Vec2 n;
+        if (d > 1e-12 * g.h()) {
+          n = (P.x[i] - curves_[c.element].point(pr.xi)) / d;
+        } else {
+          const Vec2 t1 = curves_[c.element].d1(pr.xi).normalized();
+          n = Vec2(-t1.y(), t1.x());
+        }
+        if (d - hm - particle_reach<2>(P, i, -n) <= tol) touch_.add(g, s.bodies[P.body[i]].field * g.nnodes(), P.x[i], n);
+      }
+  }
+}
+
 template <int D> void MemberContact<D>::apply(Scene<D>& s, const TransferKernels<D>& kernels, double dt) {
   if constexpr (D != 2) {
     throw std::logic_error("beam-column members are 2D only");
@@ -172,6 +203,7 @@ template <int D> void MemberContact<D>::apply(Scene<D>& s, const TransferKernels
     find_candidates(s);
     if (!cand_.empty()) {
       mass_positions(s, kernels);
+      touching(s);
       boundary_forces(s, dt);
     }
     for (Index k : held_) held_flag_[k] = 0;
@@ -219,7 +251,11 @@ template <int D> void MemberContact<D>::boundary_forces(Scene<D>& s, double dt) 
         // Velocity of the member's surface point x^M + c n: centre-line velocity plus omega x (c n), so the
         // material is held where the reaction acts (its power then matches the frame's, moment included).
         const Vec2 vstar = vc + omega * hm * Vec2(-n.y(), n.x());
-        const double q = weight(opt.decay, r, ln, hm, held_flag_[k] != 0);
+        double q = weight(opt.decay, r, ln, hm, held_flag_[k] != 0);
+        // Surface detection: only nodes engaged by particles touching the member, among those within l_n / 2 of
+        // its surface on either side (as a rigid wall: a face between grid lines acts at the nearest node row).
+        if (mode != MemberContactMode::stick && opt.decay == DecayKind::sharp && opt.detection == DetectionKind::surface)
+          q = touch_.engaged(k) && (q > 0 || r <= 0.5 * ln * (1 + 1e-9)) ? 1.0 : 0.0;
         if (q == 0) continue;
         loaded_.push_back(Loaded{k, n, vstar, q, mode, false});
         Vec2 fv = -g.f[k] + (m * vstar - g.p[k]) / dt;  // eq. (20)

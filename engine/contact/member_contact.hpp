@@ -10,6 +10,8 @@
 //         the node presses and r <= r_on + l_n / 2 (hysteresis), else 0 -- the node set a rigid wall holds;
 //         linear / cosine (the paper's decay layer): 0 < q < 1 across l_n, which brakes a partly held node by q of
 //         its approach velocity every step -- a dashpot that absorbs a hard elastic impact (docs/verification.md)
+//   surface detection (default, sharp decay, separable and friction): a node is held only when engaged by a
+//         particle whose domain touches the member surface (engine/mpm/touch.hpp), as for a rigid wall
 //   f_v = -f_tot + (m v* - p) / dt                    stick / prescribed velocity, eq. (20)
 //         normal part only, and only while it pushes the material away (f_v . n > 0): separable, eq. (21)
 //         plus a tangential part limited by mu f_v . n: friction (Coulomb)
@@ -97,6 +99,7 @@ template <int D> class MemberContact {
   };
   void find_candidates(const Scene<D>& s);
   void mass_positions(const Scene<D>& s, const TransferKernels<D>& kernels);
+  void touching(const Scene<D>& s);
   void boundary_forces(Scene<D>& s, double dt);
   struct Loaded {  // a node-field pair that received a boundary force this step
     Index k;        // field * nnodes + node
@@ -113,6 +116,7 @@ template <int D> class MemberContact {
   std::vector<Index> tiles_;               // occupied-tile indices whose particles reach a candidate
   std::vector<unsigned char> tile_flag_;   // per tile id, scratch
   std::vector<Index> marked_;
+  TouchSet touch_;                         // surface detection: node-fields engaged by particles touching a member
   std::vector<Index> held_;                // node-field pairs that received a force in the last step
   std::vector<unsigned char> held_flag_;   // per node-field, scratch: set from held_ during apply()
   Vec2 force_ = Vec2::Zero();

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+
 namespace dmi {
 namespace {
 
@@ -41,7 +42,49 @@ template <int D> Vec<D> constrain(const Vec<D>& v, const Vec<D>& n, WallConditio
   return v;
 }
 
+bool unilateral(const WallCondition c) { return c == WallCondition::slip || c == WallCondition::friction; }
+
+// Signed distance from the wall to the nearest point of particle i's domain (negative: it overlaps the wall), and
+// the wall's outward normal there.
+template <int D> double surface_gap(const Wall<D>& w, const Particles<D>& P, Index i, Vec<D>& n) {
+  if (!w.box) {
+    n = w.normal;
+    return (P.x[i] - w.point).dot(w.normal) - particle_reach<D>(P, i, -w.normal);  // reach towards the wall
+  }
+  double gap = -std::numeric_limits<double>::infinity();
+  for (int d = 0; d < D; ++d)
+    for (int side = 0; side < 2; ++side) {
+      const double out = side ? P.x[i][d] - w.hi[d] : w.lo[d] - P.x[i][d];
+      const double g = out - particle_reach<D>(P, i, (side ? -1.0 : 1.0) * Vec<D>::Unit(d));
+      if (g > gap) gap = g, n = side ? Vec<D>(Vec<D>::Unit(d)) : Vec<D>(-Vec<D>::Unit(d));
+    }
+  return gap;
+}
+
 }  // namespace
+
+template <int D> void wall_touch(Scene<D>& s) {
+  const Grid<D>& g = *s.grid;
+  const Particles<D>& P = s.particles;
+  const Index np = static_cast<Index>(P.size());
+  const double tol = 1e-6 * g.h();
+  std::vector<unsigned char> flag;
+  for (auto& w : s.walls) {
+    if (!w.surface_detection || !unilateral(w.condition)) continue;
+    w.touch.reset(static_cast<std::size_t>(g.nnodes()) * g.nfields());
+    flag.assign(P.size(), 0);
+    parallel_for(0, np, [&](Index i) {
+      Vec<D> n;
+      flag[i] = surface_gap(w, P, i, n) <= tol;
+    });
+    for (Index i = 0; i < np; ++i) {
+      if (!flag[i]) continue;
+      Vec<D> n;
+      surface_gap(w, P, i, n);
+      w.touch.add(g, s.bodies[P.body[i]].field * g.nnodes(), P.x[i], n);
+    }
+  }
+}
 
 template <int D> double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double time, bool record) {
   Grid<D>& g = *s.grid;
@@ -60,8 +103,13 @@ template <int D> double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, 
       const double m = g.m[k];
       if (m <= 0) continue;
       for (auto& w : s.walls) {
+        // Surface detection: only nodes engaged by particles touching the wall, so the held patch is the contact
+        // patch to within a node spacing (not the stencil's reach), among the nodes within h/2 of the plane on
+        // either side: a plane between grid lines acts at the nearest node row, not at the row behind it.
+        const bool surface = w.surface_detection && unilateral(w.condition);
         Vec<D> n;
-        if (!wall_normal(w, x, tol, n)) continue;
+        if (!wall_normal(w, x, surface ? 0.5 * g.h() : tol, n)) continue;
+        if (surface && !w.touch.engaged(k)) continue;
         const Vec<D> before = vel[k];
         vel[k] = constrain(before, n, w.condition, w.friction);
         const bool bilateral = w.condition == WallCondition::stick || w.condition == WallCondition::roller;
@@ -154,6 +202,8 @@ template <int D> void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel) {
   });
 }
 
+template void wall_touch<2>(Scene<2>&);
+template void wall_touch<3>(Scene<3>&);
 template double apply_boundaries<2>(Scene<2>&, std::vector<Vec<2>>&, double, double, bool);
 template double apply_boundaries<3>(Scene<3>&, std::vector<Vec<3>>&, double, double, bool);
 template void body_contact<2>(Scene<2>&, std::vector<Vec<2>>&);

@@ -5,6 +5,11 @@
 
 namespace dmi {
 
+// Surface contact detection of unilateral walls (slip, friction) from the particle positions at the step's start
+// (engine/mpm/touch.hpp): a particle touches a wall when its domain reaches it and engages its tributary nodes
+// (Wall::touch); apply_boundaries then holds only engaged nodes.
+template <int D> void wall_touch(Scene<D>& s);
+
 // Walls and prescribed-velocity regions on vel (v^L, or the MUSL remapped velocity).
 // When record is true, the force on every wall/region (N) is stored and the work done by the
 // boundaries on the material during this step, sum m_i (v_after - v_before) . v_after, returned (J).

@@ -21,6 +21,9 @@ template <int D> struct Particles {
   std::vector<Vec<D>> x0;         // initial position (m): displacement = x - x0
   std::vector<Vec<D>> v;          // velocity (m/s)
   std::vector<Vec<D>> half_size;  // GIMP half-length of the particle domain (m)
+  // Reach of the body from the particle centre along -e_d and +e_d, undeformed (m): half_size inside the body, the
+  // distance to the seeded shape's surface for particles next to it (surface contact detection, touch.hpp).
+  std::vector<Vec<D>> reach_lo, reach_hi;
   std::vector<Mat<D>> F;          // in-plane deformation gradient
   std::vector<Mat<D>> L;          // velocity gradient of the last step (1/s)
   std::vector<Mat<D>> C;          // APIC affine velocity matrix (1/s)
@@ -34,9 +37,9 @@ template <int D> struct Particles {
   std::vector<Index> id, slot;
 
   std::size_t size() const { return x.size(); }
-  // Bytes of one particle over all the arrays above (x, x0, v, half_size; F, L, C, stress; stress_zz, mass, vol0,
+  // Bytes of one particle over all the arrays above (x, x0, v, half_size, reach_lo, reach_hi; F, L, C, stress; stress_zz, mass, vol0,
   // vol; body; id, slot).
-  static constexpr std::size_t kBytesPerParticle = 4 * sizeof(Vec<D>) + 4 * sizeof(Mat<D>) + 4 * sizeof(double) + sizeof(int) + 2 * sizeof(Index);
+  static constexpr std::size_t kBytesPerParticle = 6 * sizeof(Vec<D>) + 4 * sizeof(Mat<D>) + 4 * sizeof(double) + sizeof(int) + 2 * sizeof(Index);
 
  private:
   std::vector<double> scratch_;  // permute's gather buffer, kept between reorderings
@@ -58,7 +61,7 @@ template <int D> struct Particles {
       parallel_for(0, n, [&](Index i) { std::memcpy(static_cast<void*>(o + i), d + perm[i], sizeof(T)); });
       parallel_for(0, n, [&](Index i) { std::memcpy(static_cast<void*>(d + i), o + i, sizeof(T)); });
     };
-    apply(x), apply(x0), apply(v), apply(half_size), apply(F), apply(L), apply(C), apply(stress), apply(stress_zz);
+    apply(x), apply(x0), apply(v), apply(half_size), apply(reach_lo), apply(reach_hi), apply(F), apply(L), apply(C), apply(stress), apply(stress_zz);
     apply(mass), apply(vol0), apply(vol), apply(body), apply(id);
     for (std::size_t i = 0; i < id.size(); ++i) slot[id[i]] = static_cast<Index>(i);
   }
@@ -66,26 +69,29 @@ template <int D> struct Particles {
   // Every field, for checkpoints. load_state() requires the particle count the scenario built.
   void save_state(StateWriter& w) const {
     w.tag("particles");
-    w.put(x), w.put(x0), w.put(v), w.put(half_size), w.put(F), w.put(L), w.put(C), w.put(stress), w.put(stress_zz);
+    w.put(x), w.put(x0), w.put(v), w.put(half_size), w.put(reach_lo), w.put(reach_hi), w.put(F), w.put(L), w.put(C), w.put(stress), w.put(stress_zz);
     w.put(mass), w.put(vol0), w.put(vol), w.put(body), w.put(id), w.put(slot);
   }
   void load_state(StateReader& r) {
     r.tag("particles");
     const std::size_t n = size();
-    r.get(x), r.get(x0), r.get(v), r.get(half_size), r.get(F), r.get(L), r.get(C), r.get(stress), r.get(stress_zz);
+    r.get(x), r.get(x0), r.get(v), r.get(half_size), r.get(reach_lo), r.get(reach_hi), r.get(F), r.get(L), r.get(C), r.get(stress), r.get(stress_zz);
     r.get(mass), r.get(vol0), r.get(vol), r.get(body), r.get(id), r.get(slot);
-    for (std::size_t k : {x0.size(), v.size(), half_size.size(), F.size(), L.size(), C.size(), stress.size(),
+    for (std::size_t k : {x0.size(), v.size(), half_size.size(), reach_lo.size(), reach_hi.size(), F.size(), L.size(), C.size(), stress.size(),
                           stress_zz.size(), mass.size(), vol0.size(), vol.size(), body.size(), id.size(), slot.size()})
       r.expect_size("a particle array", k, n);
     r.expect_size("particles", x.size(), n);
   }
 
   // Appends one particle at rest state; fields that a material must set start as NaN-free zeros.
-  void push(const Vec<D>& pos, const Vec<D>& vel, const Vec<D>& half, double m, double volume, int b) {
+  void push(const Vec<D>& pos, const Vec<D>& vel, const Vec<D>& half, double m, double volume, int b) { push(pos, vel, half, m, volume, b, half, half); }
+  void push(const Vec<D>& pos, const Vec<D>& vel, const Vec<D>& half, double m, double volume, int b, const Vec<D>& lo, const Vec<D>& hi) {
     x.push_back(pos);
     x0.push_back(pos);
     v.push_back(vel);
     half_size.push_back(half);
+    reach_lo.push_back(lo);
+    reach_hi.push_back(hi);
     F.push_back(Mat<D>::Identity());
     L.push_back(Mat<D>::Zero());
     C.push_back(Mat<D>::Zero());

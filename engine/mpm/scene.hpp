@@ -9,6 +9,7 @@
 #include "engine/materials/material.hpp"
 #include "engine/mpm/grid.hpp"
 #include "engine/mpm/particles.hpp"
+#include "engine/mpm/touch.hpp"
 #include "engine/scenario/config.hpp"
 #include "engine/structure/frame.hpp"
 
@@ -35,6 +36,11 @@ template <int D> struct Wall {
   // inside it (wide stencils: GIMP, B-splines). Keeps second-order convergence at fixed ends.
   int mirror_axis = -1;
   int mirror_index = 0;
+  // Unilateral walls (slip, friction) with surface detection hold only the nodes engaged by particles touching
+  // the wall (engine/mpm/touch.hpp; wall_touch in boundary.hpp fills touch each step). Node detection: every node
+  // on or behind the wall that has mass.
+  bool surface_detection = true;
+  TouchSet touch;
   Vec<D> force = Vec<D>::Zero();  // of the last step
 };
 
@@ -64,6 +70,7 @@ struct MemberCoupling {
   DecayKind decay = DecayKind::sharp;
   double decay_scale = 1.0;
   DistanceKind distance = DistanceKind::node;
+  DetectionKind detection = DetectionKind::surface;
   std::vector<int> fields;         // velocity fields the members act on
   std::vector<int> bonded_fields;  // of those, the fields held by stick whatever the mode
 };

@@ -92,6 +92,7 @@ template <int D> void Solver<D>::grid_update(double dt) {
       }
     }
   });
+  wall_touch(scene_);
   boundary_work_ += apply_boundaries(scene_, g.vL, dt, time_ + dt, true);
   body_contact(scene_, g.vL);
 }

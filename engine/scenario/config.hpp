@@ -78,11 +78,16 @@ struct ContactConfig {
   double friction = 0.0;                             // Coulomb coefficient between bodies
 };
 
+// How a unilateral boundary (a slip or friction wall, a member with sharp decay) decides that a grid node is in
+// contact: surface = the particles touching it carry half the node's mass; node = every node on or behind it.
+enum class DetectionKind { surface, node };
+
 struct WallConfig {
   std::string name, type;                            // plane | box
   DVec point, normal, min, max;
   WallCondition condition = WallCondition::slip;
   double friction = 0.0;
+  DetectionKind detection = DetectionKind::surface;  // slip and friction walls
 };
 
 struct PrescribedVelocityConfig {
@@ -162,6 +167,7 @@ struct MemberContactConfig {
   DecayKind decay = DecayKind::sharp;                // q of eq. (16): held or free, with hysteresis
   double decay_scale = 1.0;                          // multiplies l_n of eq. (18)
   DistanceKind distance = DistanceKind::node;        // where r of eq. (23) is measured from
+  DetectionKind detection = DetectionKind::surface;  // sharp decay: a node is held only where the material touches
   std::vector<std::string> bodies;                   // bodies the members act on; empty = all
   std::vector<std::string> bonded;                   // bodies stuck to the members whatever the mode
 };

@@ -198,6 +198,11 @@ void read_wall(Obj& o, WallConfig& w) {
                           {{"stick", WallCondition::stick}, {"roller", WallCondition::roller}, {"slip", WallCondition::slip}, {"friction", WallCondition::friction}},
                           Spec{.doc = "stick: v = 0; roller: no normal velocity (bilateral); slip: frictionless contact, separable; friction: Coulomb contact, separable"});
   o.number("friction", w.friction, Spec{.doc = "Coulomb coefficient (condition = friction)", .min = 0});
+  o.choice<DetectionKind>("detection", w.detection, {{"surface", DetectionKind::surface}, {"node", DetectionKind::node}},
+                          Spec{.doc = "contact detection of a unilateral boundary: surface (default) = a grid node is held only where the particles whose "
+                                        "domains touch it carry at least half the node's mass; node = every node on or behind the wall with mass is held, "
+                                        "which engages the stencil's reach (1.5 h) ahead of the body and makes a hard impact's peak "
+                                        "cell-dependent (docs/verification.md, hard impact)"});
 }
 
 void read_region(Obj& o, PrescribedVelocityConfig& r) {
@@ -395,6 +400,11 @@ void read_member_contact(Obj o, MemberContactConfig& c, bool structure) {
                                      "eq. 23), the node set a rigid wall holds; material = from the mass-weighted particle "
                                      "position the node sees (eq. 25), which engages when the material, not its grid support, "
                                      "reaches the member (docs/verification.md)"});
+  o.choice<DetectionKind>("detection", c.detection, {{"surface", DetectionKind::surface}, {"node", DetectionKind::node}},
+                          Spec{.doc = "contact detection of a unilateral boundary: surface (default) = a grid node is held only where the particles whose "
+                                        "domains touch it carry at least half the node's mass; node = every node on or inside the member surface with mass is held, "
+                                        "which engages the stencil's reach (1.5 h) ahead of the body and makes a hard impact's peak "
+                                        "cell-dependent (docs/verification.md, hard impact)" " (sharp decay, separable and friction modes)"});
   o.strings("bodies", c.bodies, {}, Spec{.doc = "names of the bodies the members act on; empty: all bodies"});
   o.strings("bonded", c.bonded, {}, Spec{.doc = "names of bodies bonded to the members: held by stick contact whatever the mode "
                                                 "(a tyre buffer fixed on the dam face, while a boulder meets the dam separably); "

@@ -83,7 +83,7 @@ FrameModel build_frame_model(const Scenario& s) {
 
 template <int D> MemberCoupling build_coupling(const Scenario& s, const Scene<D>& scene) {
   const MemberContactConfig& mc = s.member_contact;
-  MemberCoupling c{mc.mode, mc.friction, mc.decay, mc.decay_scale, mc.distance, {}, {}};
+  MemberCoupling c{mc.mode, mc.friction, mc.decay, mc.decay_scale, mc.distance, mc.detection, {}, {}};
   for (const Body& b : scene.bodies) {
     const bool listed = mc.bodies.empty() || std::find(mc.bodies.begin(), mc.bodies.end(), b.name) != mc.bodies.end();
     if (listed && std::find(c.fields.begin(), c.fields.end(), b.field) == c.fields.end()) c.fields.push_back(b.field);

@@ -58,6 +58,26 @@ template <int D> Vec<D> vec(const DVec& v) {
 
 template <int D> bool inside(const ShapeConfig& s, const Vec<D>& x) { return shape_contains(s, x.data(), D); }
 
+// Reach of the body from a seeded particle at x along -e_d (lo) and +e_d (hi): half the spacing dx where the
+// neighbouring lattice position is in the shape too, else the distance to the shape's surface along that axis
+// (bisection on membership to 1e-6 dx), so boundary particles carry the shape's curvature (engine/mpm/touch.hpp).
+template <int D> void surface_reach(const ShapeConfig& s, const Vec<D>& x, double dx, Vec<D>& lo, Vec<D>& hi) {
+  for (int d = 0; d < D; ++d)
+    for (int side = 0; side < 2; ++side) {
+      const Vec<D> e = (side ? 1.0 : -1.0) * Vec<D>::Unit(d);
+      double r = 0.5 * dx;
+      if (!inside<D>(s, x + dx * e)) {
+        double in = 0, out = dx;
+        while (out - in > 1e-6 * dx) {
+          const double mid = 0.5 * (in + out);
+          (inside<D>(s, x + mid * e) ? in : out) = mid;
+        }
+        r = in;
+      }
+      (side ? hi : lo)[d] = r;
+    }
+}
+
 // Seeds particles on the regular sub-grid of spacing h/ppc aligned with the cells: positions
 // origin + (c + (k + 1/2)/ppc) h, kept when inside the shape. Volume (h/ppc)^D (x thickness in 2D).
 template <int D> void seed_body(Scene<D>& sc, const Scenario& s, const BodyConfig& b, int body, double rho) {
@@ -84,7 +104,11 @@ template <int D> void seed_body(Scene<D>& sc, const Scenario& s, const BodyConfi
     for (int d = 0; d < D; ++d) x[d] = origin[d] + (first[d] + k[d] + 0.5) * dx;
     Vec<D> v = v0;
     if (sine) v += vec<D>(b.sine_amplitude) * std::sin(vec<D>(b.sine_wavevector).dot(x - vec<D>(b.sine_origin)));
-    if (inside<D>(b.shape, x)) sc.particles.push(x, v, half, rho * volume, volume, body);
+    if (inside<D>(b.shape, x)) {
+      Vec<D> lo, hi;
+      surface_reach<D>(b.shape, x, dx, lo, hi);
+      sc.particles.push(x, v, half, rho * volume, volume, body, lo, hi);
+    }
     int d = 0;
     for (; d < D; ++d) {
       if (++k[d] < count[d]) break;
@@ -152,6 +176,7 @@ template <int D> Scene<D> build_scene(const Scenario& s) {
     }
     wall.condition = w.condition;
     wall.friction = w.friction;
+    wall.surface_detection = w.detection == DetectionKind::surface;
     sc.walls.push_back(wall);
   }
   for (const auto& r : s.prescribed_velocity) {

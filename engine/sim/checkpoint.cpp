@@ -10,7 +10,7 @@
 
 namespace dmi {
 namespace {
-constexpr char kMagic[8] = {'D', 'M', 'I', 'C', 'K', 'P', 'T', '1'};
+constexpr char kMagic[8] = {'D', 'M', 'I', 'C', 'K', 'P', 'T', '2'};  // 2: particles carry their surface reach
 }
 
 std::uint64_t fnv1a(const std::string& bytes, std::uint64_t h) {
@@ -78,7 +78,7 @@ std::string read_checkpoint(const std::string& path, int dim, std::uint64_t fing
   StateReader head(all, path);
   char magic[8];
   head.get(magic);
-  if (std::memcmp(magic, kMagic, sizeof kMagic) != 0) head.fail("not a damimpact checkpoint (bad magic)");
+  if (std::memcmp(magic, kMagic, sizeof kMagic) != 0) head.fail("not a checkpoint of this damimpact version (bad magic); run without --restart");
   if (head.get<std::uint32_t>() != static_cast<std::uint32_t>(dim)) head.fail("written by a run of another dimension");
   if (head.get<std::uint64_t>() != fingerprint)
     head.fail("written for another scenario (the scenario file or its variant changed since); run without --restart");

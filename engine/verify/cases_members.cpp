@@ -466,7 +466,8 @@ namespace {
 // One run of examples/cylinder_on_wall.json or cylinder_on_member.json at cell size h, the target face moved down by
 // `offset` (m) and the cylinder with it (same 0.017 m gap).
 struct ImpactRun {
-  double peak = 0, impulse = 0, rebound = 0, ke_loss = 0;  // N per m, N s per m, m/s, fraction of the initial KE
+  double peak = 0, impulse = 0, rebound = 0;  // N per m, N s per m, m/s
+  double lost = 0;  // energy lost, 1 - (kinetic + strain of the cylinder and the frame) / initial kinetic energy
 };
 ImpactRun impact_run(bool member, double h, double offset, double member_E = 0) {
   using J = nlohmann::json;
@@ -482,7 +483,6 @@ ImpactRun impact_run(bool member, double h, double offset, double member_E = 0) 
   const auto& t = out.results.time;
   const Series& f = series(out.results, member ? "frame/contact_force" : "walls/wall/force");
   const Series& v = series(out.results, "probes/rock/velocity");
-  const Series& ke = series(out.results, "probes/rock/kinetic_energy");
   ImpactRun r;
   for (std::size_t k = 1; k < t.size(); ++k) {
     const double fy = -f.data[2 * k + 1];  // the force on the target points down (-y)
@@ -490,7 +490,11 @@ ImpactRun impact_run(bool member, double h, double offset, double member_E = 0) 
     r.impulse += fy * (t[k] - t[k - 1]);  // interval means: exact impulse
   }
   r.rebound = v.data.back();
-  r.ke_loss = 1 - ke.data.back() / ke.data.front();
+  // What the cylinder keeps as vibration (kinetic and strain energy) and the member as motion and strain is not lost.
+  double kept = 0;
+  for (const char* e : {"energy/kinetic", "energy/strain", "energy/frame_kinetic", "energy/frame_strain"})
+    if (const Series* s = out.results.find(e)) kept += s->data.back();
+  r.lost = 1 - kept / series(out.results, "energy/kinetic").data.front();
   return r;
 }
 
@@ -502,11 +506,14 @@ ImpactRun impact_run(bool member, double h, double offset, double member_E = 0) 
 // before the runs: the rigid member holds the same node set as the wall, so it must give the wall's peak to 1 %;
 // the concrete member adds its compliance in series with the contact's (about 5 % of it: a few % off the peak)
 // and keeps a little vibration energy (peak 5 %, impulse and rebound 2 %); the energy lost by the held nodes'
-// plastic engagement falls with h (observed order > 0.5 from h = 0.02 to 0.01 m). The peak force itself is not
-// converged at these cells (the contact patch is 1-3 cells wide): docs/verification.md.
+// plastic engagement falls with h (observed order > 0.5 from h = 0.02 to 0.01 m). With surface contact detection
+// (engine/mpm/touch.hpp) the engaged patch is the touching particles' to +-h/2 at each edge; at h = 0.01 m the
+// patch at peak is ~3 cells wide, and the line-contact force at a given energy depends on the patch width only
+// through ln(4R/a): +-h/2 in a moves the peak by less than 10 %, the tolerance between grids and alignments.
 std::vector<CaseResult> impact_contact() {
   const CaseTimer timer;
   std::vector<CaseResult> r;
+  double on_off[2] = {0, 0};  // wall peak at h = 0.01 m, face on and off the grid line
   for (double off : {0.0, 0.007}) {
     const std::string face = off == 0 ? "face on a grid line" : "face off the grid";
     ImpactRun wall_h[2], con_h[2];
@@ -524,11 +531,14 @@ std::vector<CaseResult> impact_contact() {
       r.push_back(metric("impact_contact", "impulse, concrete member vs wall" + tag, "N s/m", con_h[i].impulse, wall_h[i].impulse, 0.02));
       r.push_back(metric("impact_contact", "rebound speed, concrete member vs wall" + tag, "m/s", con_h[i].rebound, wall_h[i].rebound, 0.02));
     }
-    const double p_wall = std::log2(wall_h[0].ke_loss / wall_h[1].ke_loss), p_con = std::log2(con_h[0].ke_loss / con_h[1].ke_loss);
-    r.push_back(bound_metric("impact_contact", "order of the kinetic energy lost, wall, h 0.02 -> 0.01 m, " + face + " (> 0.5)", "-", p_wall, 0.5, true));
-    r.push_back(bound_metric("impact_contact", "order of the kinetic energy lost, concrete member, h 0.02 -> 0.01 m, " + face + " (> 0.5)", "-", p_con, 0.5, true));
-    r.push_back(bound_metric("impact_contact", "kinetic energy lost, concrete member, h = 0.01 m, " + face + " (< 0.05)", "-", con_h[1].ke_loss, 0.05, false));
+    const double p_wall = std::log2(wall_h[0].lost / wall_h[1].lost), p_con = std::log2(con_h[0].lost / con_h[1].lost);
+    r.push_back(bound_metric("impact_contact", "order of the energy lost, wall, h 0.02 -> 0.01 m, " + face + " (> 0.5)", "-", p_wall, 0.5, true));
+    r.push_back(bound_metric("impact_contact", "order of the energy lost, concrete member, h 0.02 -> 0.01 m, " + face + " (> 0.5)", "-", p_con, 0.5, true));
+    r.push_back(bound_metric("impact_contact", "energy lost, concrete member, h = 0.01 m, " + face + " (< 0.05)", "-", con_h[1].lost, 0.05, false));
+    r.push_back(metric("impact_contact", "peak force on the wall, h = 0.02 vs 0.01 m, " + face, "N/m", wall_h[0].peak, wall_h[1].peak, 0.10));
+    on_off[off == 0 ? 0 : 1] = wall_h[1].peak;
   }
+  r.push_back(metric("impact_contact", "peak force on the wall, h = 0.01 m, face off vs on the grid line", "N/m", on_off[1], on_off[0], 0.10));
   return stamp(r, timer.seconds());
 }
 
