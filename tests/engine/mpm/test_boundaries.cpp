@@ -87,7 +87,7 @@ TEST(SurfaceDetection, SeededParticlesReachTheShapeSurface) {
 
 // A slip wall with surface detection acts when the body's surface reaches it, not when the body's grid support
 // does: the cylinder 0.017 m above the wall at 5 m/s touches when the surface under its lowest particle column
-// (dx/2 off the centre line, R - sqrt(R^2 - dx^2/4) higher than the bottom) arrives, within a step. Node detection
+// (c off the centre line, R - sqrt(R^2 - c^2) higher than the bottom) arrives, within a step. Node detection
 // holds the nodes on the wall as soon as the stencil (1.5 h = 0.03 m) reaches them: at once.
 TEST(SurfaceDetection, SlipWallActsWhenTheSurfaceArrives) {
   auto first_contact = [](const std::string& detection, double& dt) {
@@ -105,7 +105,8 @@ TEST(SurfaceDetection, SlipWallActsWhenTheSurfaceArrives) {
   };
   double dt = 0;
   const double surface = first_contact("surface", dt);
-  const double R = 0.4, dx = 0.02, arrival = (0.017 + R - std::sqrt(R * R - 0.25 * dx * dx)) / 5;
+  const double R = 0.4, dx = 0.02, u = (0.55 - -0.4) / dx - 0.5;  // particle columns at x = -0.4 + (k + 1/2) dx
+  const double c = std::abs(u - std::round(u)) * dx, arrival = (0.017 + R - std::sqrt(R * R - c * c)) / 5;
   EXPECT_GE(surface, arrival - dt);
   EXPECT_LE(surface, arrival + dt);
   EXPECT_LT(first_contact("node", dt), 0.001);
