@@ -129,6 +129,12 @@ A6Run paper_a6_run(double h, bool beam_column, const std::vector<std::pair<std::
     r.peak_displacement = std::max(r.peak_displacement, -u.data[2 * k + 1]);
     r.peak_von_mises = std::max(r.peak_von_mises, vm.data[nv * k + col]);
   }
+  // The disc's bottom point moves with the particle nearest to it (a particle probe named "bottom", if any).
+  if (const Series* yb = out.results.find("probes/bottom/position")) {
+    r.min_bottom_gap = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < r.time.size(); ++k)
+      r.min_bottom_gap = std::min(r.min_bottom_gap, 0.25 + (yb->data[2 * k + 1] - yb->data[1]) - u.data[2 * k + 1]);
+  }
   r.disc_final_vy = vd.data.back();
   const auto& num = out.results.info.numbers;
   if (num.count("projection_iterations_max")) {
@@ -272,18 +278,20 @@ std::vector<CaseResult> paper_a6() {
 
 // The case the paper dropped (Lin & Yang 2024, verification 2, h/L = 0.025 as beam-columns): with the linear
 // transformation the beam deflects past the disc; the corotational one adds membrane stiffness.
-// Does the contact hold? The disc must stay above the beam (centroid gap > -0.05 m: the disc
-// flattens, its centroid may come a little nearer than r) and rebound.
+// Does the contact hold? The disc's bottom must stay on the beam (penetration < 0.05 m) and the disc rebound. The
+// disc (E 1.7 MPa, c 42 m/s, at 10 m/s: strains ~ v/c = 0.24) flattens: its centroid comes 0.06 m nearer than r to
+// the beam top, which is not penetration (node detection held it 0.1 m above instead, the stencil's reach).
 std::vector<CaseResult> paper_a6_large() {
   const CaseTimer timer;
   const A6Run lin = paper_a6_run(0.0625, true);
-  const A6Run cr = paper_a6_run(0.0625, true, {{"/structure/transformation", "corotational"}});
+  const nlohmann::json bottom = {{"name", "bottom"}, {"type", "particle"}, {"body", "disc"}, {"point", {1.25, 0.0625 + 0.25}}, {"quantities", {"position"}}};
+  const A6Run cr = paper_a6_run(0.0625, true, {{"/structure/transformation", "corotational"}, {"/output/probes/-", bottom}});
   std::vector<CaseResult> r;
   // Small-displacement theory misses the membrane stiffness: its peak must be far above the corotational one.
   const double ratio = lin.peak_displacement / cr.peak_displacement;
   r.push_back(bound_metric("paper_a6_large", "linear / corotational peak deflection (must exceed 2)", "-", ratio, 2.0, true));
-  r.push_back(metric("paper_a6_large", "corotational: disc centroid below the beam top + r, worst (penetration)", "m",
-                     std::max(0.0, -cr.min_gap), 0.0, 0.05, false));
+  r.push_back(metric("paper_a6_large", "corotational: disc bottom below the beam top, worst (penetration)", "m",
+                     std::max(0.0, -cr.min_bottom_gap), 0.0, 0.05, false));
   r.push_back(metric("paper_a6_large", "corotational: rebound speed short of upward (max(0, -v_final))", "m/s",
                      std::max(0.0, -cr.disc_final_vy), 0.0, 0.5, false));
   r.push_back(metric("paper_a6_large", "corotational: peak deflection, regression vs the first run (c07f3eb)", "m",

@@ -40,6 +40,7 @@ struct A6Run {
   double peak_displacement = 0;                 // max downward top-surface displacement (m)
   double peak_von_mises = 0;                    // Pa
   double min_gap = 0;                           // min over time of disc-centroid gap to the beam top minus r (m)
+  double min_bottom_gap = 0;                    // min over time of the disc bottom's gap to the beam top (m), if probed
   double disc_final_vy = 0;                     // disc centroid vertical velocity at the end (m/s, + up)
   double projection_iterations_max = 0, projection_iterations_mean = 0;
   double wall = 0;                              // s
