@@ -132,47 +132,27 @@ int grid_study_run(const std::string& file, const std::string& out, int threads,
   nlohmann::json source = nlohmann::json::parse(text.str());
   const std::array<double, 3> h{h1, h1 * ratio, h1 * ratio * ratio};
   const double c1 = std::pow(ratio, -(dim + 1)), c2 = c1 * c1;
-  std::printf("grid study: cell sizes %.4g, %.4g, %.4g m (ratio %.3g); estimated cost %.2f times the single run at %.4g m "
+  if (!quiet) std::printf("grid study: cell sizes %.4g, %.4g, %.4g m (ratio %.3g); estimated cost %.2f times the single run at %.4g m "
               "(particles ~ h^-%d, steps ~ h^-1: the coarser runs cost %.2f and %.2f of it)\n",
               h[0], h[1], h[2], ratio, 1 + c1 + c2, h[0], dim, c1, c2);
-  std::array<std::string, 3> folders;
-  std::array<nlohmann::json, 3> designs;
-  int verdict = 0;
   double wall_coarse = 0;
-  for (int g = 2; g >= 0; --g) {
-    char name[64];
-    std::snprintf(name, sizeof name, "h_%.6g", h[g]);
-    const std::string dir = g == 0 ? out : (fs::path(out) / "grid_study" / name).string();
-    fs::create_directories(dir);
-    std::string scen = file;
-    if (g > 0) {  // the same scenario at the coarser cell size: grid.cell_size beside presets or in the low-level grid
-      nlohmann::json j = source;
-      j["grid"]["cell_size"] = h[g];
-      scen = (fs::path(dir) / "scenario.json").string();
-      std::ofstream(scen) << j.dump(1) << "\n";
-    }
-    const auto t0 = std::chrono::steady_clock::now();
+  const auto level_run = [&](const std::string& scen, const std::string& dir, int g) {
     std::vector<std::string> written;
     simulate(scen, dir, threads, quiet || g > 0, progress, false, false, g == 0 ? rf : RestartFlags{}, &written);
-    const std::string design = (fs::path(dir) / "design.json").string();
-    const int v = dmi::design::check_main(written, limits_file, false, design, quiet || g > 0, DMI_VERSION);
-    if (g == 0) verdict = v;
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return written;
+  };
+  const auto on_level = [&](int g, double hg, double wall) {
     if (g == 2) wall_coarse = wall;
-    if (!quiet) {
-      std::printf("grid study: h = %.4g m done in %.1f s", h[g], wall);
-      if (g == 2) std::printf("; the remaining runs should take about %.0f s", wall_coarse * (1 / c1 + 1 / c2));
-      std::printf("\n");
-    }
-    folders[g] = dir;
-    std::ifstream d(design);
-    designs[g] = nlohmann::json::parse(d);
-  }
-  nlohmann::json fine = designs[0];
-  fine["grid_study"] = dmi::design::grid_study_section(designs, h, folders);
+    if (quiet) return;
+    std::printf("grid study: h = %.4g m done in %.1f s", hg, wall);
+    if (g == 2) std::printf("; the remaining runs should take about %.0f s", wall_coarse * (1 / c1 + 1 / c2));
+    std::printf("\n");
+  };
+  const dmi::design::GridStudyOutcome r =
+      dmi::design::run_grid_study(file, source, h1, ratio, out, limits_file, level_run, quiet, DMI_VERSION, on_level);
+  const nlohmann::json& fine = r.design;
+  const int verdict = r.passed ? 0 : 1;
   const dmi::design::Limits limits = limits_file.empty() ? dmi::design::Limits{} : dmi::design::read_limits(limits_file);
-  verdict = dmi::design::judge_grid_study(fine, limits.grid_judge_on) ? 0 : 1;
-  dmi::design::write_design_json((fs::path(out) / "design.json").string(), fine);
   if (!quiet) {
     std::printf("\ngrid uncertainty of the governing numbers (%s):\n", fine["grid_study"]["method"].get<std::string>().c_str());
     for (const auto& q : fine["grid_study"]["quantities"]) {

@@ -3,8 +3,15 @@
 #include "engine/convergence/grid_convergence.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <stdexcept>
+
+#include "design/design.hpp"
+#include "design/limits.hpp"
 
 namespace dmi::design {
 
@@ -110,6 +117,44 @@ bool judge_grid_study(json& design, const std::string& judge_on) {
     v["note"] = "passes on the finest grid but not on the conservative bound u (1 + GCI) of the grid study (limits: grid_study.judge_on)";
   }
   return v.value("passed", false);
+}
+
+GridStudyOutcome run_grid_study(const std::string& file, const nlohmann::json& source, double h, double ratio, const std::string& out,
+                                const std::string& limits_file, const LevelSimulator& simulate, bool quiet,
+                                const std::string& software_version, const std::function<void(int, double, double)>& on_level) {
+  namespace fs = std::filesystem;
+  GridStudyOutcome r;
+  r.h = {h, h * ratio, h * ratio * ratio};
+  std::array<std::string, 3> folders;
+  std::array<nlohmann::json, 3> designs;
+  for (int g = 2; g >= 0; --g) {
+    const auto t0 = std::chrono::steady_clock::now();
+    char name[64];
+    std::snprintf(name, sizeof name, "h_%.6g", r.h[g]);
+    const std::string dir = g == 0 ? out : (fs::path(out) / "grid_study" / name).string();
+    fs::create_directories(dir);
+    std::string scen = file;
+    if (g > 0) {
+      nlohmann::json j = source;
+      j["grid"]["cell_size"] = r.h[g];
+      scen = (fs::path(dir) / "scenario.json").string();
+      std::ofstream(scen) << j.dump(1) << "\n";
+    }
+    const std::vector<std::string> written = simulate(scen, dir, g);
+    const std::string design = (fs::path(dir) / "design.json").string();
+    check_main(written, limits_file, false, design, quiet || g > 0, software_version);
+    folders[g] = dir;
+    std::ifstream d(design);
+    designs[g] = nlohmann::json::parse(d);
+    r.wall[g] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (on_level) on_level(g, r.h[g], r.wall[g]);
+  }
+  r.design = designs[0];
+  r.design["grid_study"] = grid_study_section(designs, r.h, folders);
+  const Limits limits = limits_file.empty() ? Limits{} : read_limits(limits_file);
+  r.passed = judge_grid_study(r.design, limits.grid_judge_on);
+  write_design_json((fs::path(out) / "design.json").string(), r.design);
+  return r;
 }
 
 }  // namespace dmi::design

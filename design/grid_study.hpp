@@ -2,7 +2,9 @@
 // its observed order, Richardson value and grid convergence index (engine/convergence/grid_convergence.hpp).
 #pragma once
 #include <array>
+#include <functional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -21,5 +23,25 @@ nlohmann::json grid_study_section(const std::array<nlohmann::json, 3>& designs, 
 // (a design that passes on the finest grid but not on the bound fails, and the verdict says why). Returns whether
 // the design passes on the criterion asked for.
 bool judge_grid_study(nlohmann::json& design, const std::string& judge_on);
+
+// Simulates every variant of the scenario file into dir (level 0 the finest) and returns the results files.
+using LevelSimulator = std::function<std::vector<std::string>(const std::string& scenario, const std::string& dir, int level)>;
+
+struct GridStudyOutcome {
+  nlohmann::json design;        // the finest level's design.json with the grid_study section, as written
+  bool passed = false;          // on the criterion of the limits file (grid_study.judge_on)
+  std::array<double, 3> h{};    // cell sizes, finest first
+  std::array<double, 3> wall{}; // seconds per level (simulation and checks)
+};
+
+// The grid study of `damimpact run --grid-study` and of sweep files with "grid_study": the scenario file `file`
+// (JSON `source`, cell size h) at h, r h and r^2 h, coarsest first. The coarser levels run in
+// out/grid_study/h_<cell>/ from a copy of the scenario with grid.cell_size set (beside presets or in the low-level
+// grid), the finest in out itself from `file`; each level's design checks go to its design.json, and out/design.json
+// receives the grid_study section and the judged verdict. on_level (optional) hears of each finished level.
+GridStudyOutcome run_grid_study(const std::string& file, const nlohmann::json& source, double h, double ratio, const std::string& out,
+                                const std::string& limits_file, const LevelSimulator& simulate, bool quiet,
+                                const std::string& software_version,
+                                const std::function<void(int level, double h, double seconds)>& on_level = {});
 
 }  // namespace dmi::design

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "design/design.hpp"
+#include "design/grid_study.hpp"
 #include "engine/common/error.hpp"
 #include "engine/io/results_writer.hpp"
 #include "engine/scenario/scenario.hpp"
@@ -80,6 +81,37 @@ json run_case(const SweepSpec& spec, std::size_t k, const SweepOptions& o) {
       written.push_back(res.string());
     }
     double sim_wall = 0;
+    if (spec.grid_ratio > 0) {  // the case at three cell sizes: grid uncertainty of its governing numbers
+      const double h = variants.front().scenario.grid.cell_size;
+      for (const auto& v : variants)
+        if (std::abs(v.scenario.grid.cell_size - h) > 1e-12 * h)
+          throw InputError(scen.string() + ": the variants have different cell sizes; a grid study needs one");
+      const auto level_run = [&](const std::string& file, const std::string& d, int) {
+        std::vector<std::string> out;
+        for (const auto& v : parse_scenario_variants(read_text(file), file)) {
+          RunOptions ro;
+          ro.out_dir = (v.label.empty() ? fs::path(d) : fs::path(d) / v.label).string();
+          ro.threads = o.threads;
+          ro.progress = ProgressMode::quiet;
+          ro.software_version = o.software_version;
+          const RunOutput r = run_scenario(v.scenario, ro);
+          sim_wall += r.results.info.numbers.at("wall_seconds");
+          out.push_back(r.results_path);
+        }
+        return out;
+      };
+      const design::GridStudyOutcome g = design::run_grid_study(scen.string(), json::parse(text), h, spec.grid_ratio, dir.string(),
+                                                                o.limits_file, level_run, true, o.software_version);
+      row["simulated_seconds"] = sim_wall;
+      fill_from_design(row, g.design);
+      double bound = 0;
+      for (const json& r : g.design["grid_study"]["verdict"]["runs"]) bound = std::max(bound, r["utilisation_bound"].get<double>());
+      row["utilisation_bound"] = bound;
+      row["grid_study_passed"] = g.passed;
+      if (o.case_reports) row["report"] = fs::relative(render::report_main(dir.string(), {"von_mises", true, o.pdf, o.software_version}).html, o.out_dir).string();
+      row["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      return row;
+    }
     if (reused) {  // resumable: a finished case is kept (its scenario unchanged)
       for (const auto& w : written) sim_wall += read_results(w, false).info.numbers.at("wall_seconds");
       row["status"] = "reused";

@@ -83,8 +83,8 @@ json case_scenario(const SweepSpec& s, std::size_t k) {
 SweepSpec parse_sweep(const nlohmann::ordered_json& j, const std::string& file, const std::string& dir) {
   if (!j.is_object()) throw InputError(file, "", j.type_name(), "a JSON object with base and parameters or cases");
   for (const auto& [k, v] : j.items())
-    if (k != "name" && k != "description" && k != "base" && k != "parameters" && k != "combine" && k != "cases")
-      throw InputError(file, "/" + escape(k), v.dump().substr(0, 60), "one of name, description, base, parameters, combine, cases");
+    if (k != "name" && k != "description" && k != "base" && k != "parameters" && k != "combine" && k != "cases" && k != "grid_study")
+      throw InputError(file, "/" + escape(k), v.dump().substr(0, 60), "one of name, description, base, parameters, combine, cases, grid_study");
   SweepSpec s;
   s.file = file;
   s.name = j.value("name", fs::path(file).stem().string());
@@ -106,6 +106,18 @@ SweepSpec parse_sweep(const nlohmann::ordered_json& j, const std::string& file, 
     s.base_file = file + " (/base)";
   } else {
     throw InputError(file, "/base", j["base"].dump().substr(0, 60), "a file name or a scenario object");
+  }
+  if (j.contains("grid_study")) {  // true (ratio sqrt 2), false, or {"ratio": r >= sqrt 2}
+    const auto& g = j["grid_study"];
+    if (g.is_boolean()) {
+      s.grid_ratio = g.get<bool>() ? std::sqrt(2.0) : 0.0;
+    } else if (g.is_object() && g.size() == 1 && g.contains("ratio") && g["ratio"].is_number()) {
+      s.grid_ratio = g["ratio"].get<double>();
+      if (!(s.grid_ratio >= std::sqrt(2.0) - 1e-12))
+        throw InputError(file, "/grid_study/ratio", g["ratio"].dump(), "a refinement ratio >= sqrt(2) (1.41421)");
+    } else {
+      throw InputError(file, "/grid_study", g.dump().substr(0, 60), "true, false or {\"ratio\": r} with r >= sqrt(2)");
+    }
   }
   const bool has_params = j.contains("parameters"), has_cases = j.contains("cases");
   if (has_params == has_cases) throw InputError(file, "", "", "either parameters (values per parameter) or cases (a table), not both");

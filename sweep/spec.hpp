@@ -14,6 +14,7 @@ struct SweepSpec {
   std::string base_file;                 // where it came from ("<inline>" when given in the sweep file)
   std::vector<std::string> parameters;   // JSON pointers, in column order
   std::vector<std::vector<nlohmann::json>> cases;  // one value per parameter
+  double grid_ratio = 0;                 // "grid_study": every case also at r h and r^2 h (0: no grid study)
 };
 
 // Reads and checks a sweep file; throws InputError naming the file, the JSON path, the value and the expectation

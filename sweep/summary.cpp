@@ -239,7 +239,9 @@ std::string summary_csv(const json& s) {
   std::ostringstream o;
   o << "case";
   for (const json& p : s["parameters"]) o << "," << csv_field(p);
-  o << ",status,verdict,max_utilisation,governing_check,governing_member,governing_variant";
+  bool grid = false;  // a sweep with grid_study: the conservative bound u (1 + GCI) of each case
+  for (const json& r : s["cases"]) grid = grid || r.contains("utilisation_bound");
+  o << ",status,verdict,max_utilisation" << (grid ? ",utilisation_bound" : "") << ",governing_check,governing_member,governing_variant";
   for (const auto& l : labels) o << "," << l << "_max_utilisation," << l << "_contact_peak_N," << l << "_base_shear_N," << l << "_base_moment_Nm";
   o << ",wall_seconds,error\n";
   for (const json& r : s["cases"]) {
@@ -247,7 +249,7 @@ std::string summary_csv(const json& s) {
     for (const json& p : s["parameters"]) o << "," << csv_field(r["parameters"][p.get<std::string>()]);
     const json g = r["governing"].is_object() ? r["governing"] : json::object();
     o << "," << csv_field(r["status"]) << "," << csv_field(r["verdict"]) << "," << csv_field(r["max_utilisation"]) << ","
-      << csv_field(g.value("id", json())) << "," << csv_field(g.value("member", json())) << "," << csv_field(g.value("variant", json()));
+      << (grid ? csv_field(r.value("utilisation_bound", json())) + "," : "") << csv_field(g.value("id", json())) << "," << csv_field(g.value("member", json())) << "," << csv_field(g.value("variant", json()));
     for (const auto& l : labels) {
       const json v = r["variants"].value(l, json::object());
       for (const char* k : {"max_utilisation", "contact_peak_N", "base_shear_N", "base_moment_Nm"}) o << "," << csv_field(v.value(k, json()));

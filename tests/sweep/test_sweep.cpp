@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -80,6 +81,44 @@ TEST(SweepSpec, BadParameterPathsAndKeysAreNamed) {
   EXPECT_NE(e.find("every case gives every parameter"), std::string::npos) << e;
   e = error_of(R"({"base": "missing.json", "parameters": {"/a": [1]}})");
   EXPECT_NE(e.find("/base"), std::string::npos) << e;
+  e = error_of(R"({"base": "../free_fall.json", "grid_study": {"ratio": 1.2}, "parameters": {"/analysis/end_time": [0.1]}})");
+  EXPECT_NE(e.find("/grid_study/ratio"), std::string::npos) << e;
+  EXPECT_NE(e.find("1.41421"), std::string::npos) << e;
+  e = error_of(R"({"base": "../free_fall.json", "grid_study": "yes", "parameters": {"/analysis/end_time": [0.1]}})");
+  EXPECT_NE(e.find("/grid_study"), std::string::npos) << e;
+  EXPECT_EQ(parse(R"({"base": "../free_fall.json", "grid_study": true, "parameters": {"/analysis/end_time": [0.1]}})").grid_ratio,
+            std::sqrt(2.0));
+}
+
+// "grid_study": each case runs at h, r h and r^2 h; its design.json carries the grid_study section with the three
+// folders, and the summary row the conservative bound u (1 + GCI) of the governing utilisation, which is the
+// utilisation times 1 + the GCI the section gives for it.
+TEST(Sweep, GridStudyCasesCarryTheirUncertainty) {
+  const fs::path dir = fresh_dir("grid"), study = dir / "study.json";
+  fs::create_directories(dir);
+  std::ofstream(study) << R"({"name": "grid", "base": ")" << DMI_SOURCE_DIR
+                       << R"(/examples/sdof_boulder_on_column.json", "grid_study": {"ratio": 2}, "parameters": {"/analysis/end_time": [0.02]}})";
+  dmi::sweep::SweepOptions o;
+  o.out_dir = (dir / "out").string();
+  o.case_reports = false, o.pdf = false, o.quiet = true, o.threads = 1;
+  dmi::sweep::sweep_main(study.string(), o);
+  const json s = read_json(dir / "out" / "summary.json");
+  ASSERT_EQ(s["cases"].size(), 1u);
+  const json& row = s["cases"][0];
+  ASSERT_EQ(row["status"], "ok") << row["error"];
+  const json d = read_json(dir / "out" / "cases" / "case_0001" / "design.json");
+  ASSERT_TRUE(d.contains("grid_study"));
+  for (const json& f : d["grid_study"]["folders"]) EXPECT_TRUE(fs::exists(fs::path(f.get<std::string>()) / "design.json")) << f;
+  double u = 0, gci = -1;
+  for (const json& r : d["grid_study"]["verdict"]["runs"]) u = r["utilisation"].get<double>(), gci = r["gci"].get<double>();
+  EXPECT_GT(u, 0);
+  EXPECT_GE(gci, 0);
+  EXPECT_NEAR(row["utilisation_bound"].get<double>(), u * (1 + gci), 1e-12 * u);
+  std::ifstream csv(dir / "out" / "summary.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_NE(header.find(",max_utilisation,utilisation_bound,"), std::string::npos) << header;
+  fs::remove_all(dir);
 }
 
 // Three cases of the free-fall example, the second with a negative cell size: it fails with its error in the
