@@ -146,6 +146,10 @@ A6Run paper_a6_run(double h, bool beam_column, const std::vector<std::pair<std::
   return r;
 }
 
+std::pair<std::string, nlohmann::json> a6_bottom_probe(double depth) {
+  return {"/output/probes/-", {{"name", "bottom"}, {"type", "particle"}, {"body", "disc"}, {"point", {1.25, depth + 0.25}}, {"quantities", {"position"}}}};
+}
+
 double interpolate(const std::vector<double>& t, const std::vector<double>& u, double x) {
   if (x <= t.front()) return u.front();
   if (x >= t.back()) return u.back();
@@ -284,8 +288,7 @@ std::vector<CaseResult> paper_a6() {
 std::vector<CaseResult> paper_a6_large() {
   const CaseTimer timer;
   const A6Run lin = paper_a6_run(0.0625, true);
-  const nlohmann::json bottom = {{"name", "bottom"}, {"type", "particle"}, {"body", "disc"}, {"point", {1.25, 0.0625 + 0.25}}, {"quantities", {"position"}}};
-  const A6Run cr = paper_a6_run(0.0625, true, {{"/structure/transformation", "corotational"}, {"/output/probes/-", bottom}});
+  const A6Run cr = paper_a6_run(0.0625, true, {{"/structure/transformation", "corotational"}, a6_bottom_probe(0.0625)});
   std::vector<CaseResult> r;
   // Small-displacement theory misses the membrane stiffness: its peak must be far above the corotational one.
   const double ratio = lin.peak_displacement / cr.peak_displacement;

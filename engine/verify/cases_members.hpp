@@ -47,6 +47,8 @@ struct A6Run {
   long steps = 0;
 };
 A6Run paper_a6_run(double depth, bool beam_column, const std::vector<std::pair<std::string, nlohmann::json>>& overrides = {});
+// Override adding a particle probe "bottom" at the disc's lowest point (A6Run::min_bottom_gap measures penetration).
+std::pair<std::string, nlohmann::json> a6_bottom_probe(double depth);
 
 struct ErrorPair {
   double nrms = 0;  // RMS(u - ref) / max |ref|
