@@ -28,7 +28,7 @@ template <int D> Solver<D>::Solver(Scene<D> scene) : scene_(std::move(scene)) {
   if (scene_.frame) members_ = std::make_unique<MemberContact<D>>(*scene_.grid);
 }
 
-// The step as named phases (DESIGN.md "engine/").
+// The step as named phases (docs/architecture.md, "The step").
 template <int D> void Solver<D>::step(double dt) {
   if (steps_ % kSortInterval == 1) sort_particles();  // locality for the scatter (from the second step on)
   scene_.grid->bin(scene_.particles.x);      // tiles, active nodes, zeroed fields

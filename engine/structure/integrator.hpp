@@ -1,5 +1,5 @@
 // Time integrators of the frame's equation of motion M a + C v + f_int(d) = f (Lin & Yang 2024 eq. (26)),
-// kept apart from the physics (STYLE.md rule 3): they see the frame only through FrameSystem. The loads f
+// kept apart from the physics: they see the frame only through FrameSystem. The loads f
 // are held constant over a step.
 #pragma once
 #include <Eigen/Dense>

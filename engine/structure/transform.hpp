@@ -1,7 +1,7 @@
 // Coordinate transformations of a 2D beam-column: map the global end displacements
 // d = [ux_i, uy_i, rz_i, ux_j, uy_j, rz_j] to the basic deformations v (element.hpp), the basic forces q to
 // global end forces B^T q, and give the global tangent. Stateless: everything follows from the initial
-// chord and d. Geometric nonlinearity lives here only (OpenSees CrdTransf; STYLE.md rule 4).
+// chord and d. Geometric nonlinearity lives here only (as OpenSees CrdTransf).
 //   linear:        v = a d, a constant (small displacements); K = a^T kb a.
 //   corotational:  Crisfield (1991), Non-linear Finite Element Analysis of Solids and Structures, vol. 1,
 //                  sec. 7.3: l_n = |x_j - x_i|, chord rotation psi = atan2 of the current chord against the
