@@ -105,7 +105,8 @@ def main():
     R, v0, ms = 0.1, 2.0, 1000 * 4 / 3 * np.pi * 0.1 ** 3
     Es = 1e8 / (1 - 0.09)
     dmax = (15 * ms * v0 ** 2 / (16 * Es * np.sqrt(R))) ** 0.4
-    Fh, th = 4 / 3 * Es * np.sqrt(R) * dmax ** 1.5, 2.94 * dmax / v0
+    Fh = 4 / 3 * Es * np.sqrt(R) * dmax ** 1.5
+    th = 2.94 * dmax / v0 - 2 * 0.01 ** (2 / 3) * dmax / v0  # Hertz's time with the force above 1 % of its peak
     for h in a.hertz:
         s = load("hertz_sphere_on_wall.json")
         s["grid"]["cell_size"] = h
