@@ -121,10 +121,7 @@ int grid_study_run(const std::string& file, const std::string& out, int threads,
   namespace fs = std::filesystem;
   if (!(ratio >= std::sqrt(2.0) - 1e-12)) throw dmi::InputError("--grid-ratio = " + std::to_string(ratio) + ": expected a ratio >= sqrt(2) (1.41421)");
   const std::vector<dmi::ScenarioVariant> variants = dmi::load_scenario_variants(file);
-  const double h1 = variants.front().scenario.grid.cell_size;
-  for (const auto& v : variants)
-    if (std::abs(v.scenario.grid.cell_size - h1) > 1e-12 * h1)
-      throw dmi::InputError(file + ": the variants have different cell sizes; a grid study needs one");
+  const double h1 = dmi::common_cell_size(variants, file);
   const int dim = variants.front().scenario.analysis.dimension;
   std::ifstream in(file);
   std::stringstream text;
@@ -152,7 +149,6 @@ int grid_study_run(const std::string& file, const std::string& out, int threads,
       dmi::design::run_grid_study(file, source, h1, ratio, out, limits_file, level_run, quiet, DMI_VERSION, on_level);
   const nlohmann::json& fine = r.design;
   const int verdict = r.passed ? 0 : 1;
-  const dmi::design::Limits limits = limits_file.empty() ? dmi::design::Limits{} : dmi::design::read_limits(limits_file);
   if (!quiet) {
     std::printf("\ngrid uncertainty of the governing numbers (%s):\n", fine["grid_study"]["method"].get<std::string>().c_str());
     for (const auto& q : fine["grid_study"]["quantities"]) {
@@ -165,7 +161,7 @@ int grid_study_run(const std::string& file, const std::string& out, int threads,
       std::printf("  %sgoverning utilisation %.3f, conservative bound u (1 + GCI) = %.3f: %s\n",
                   r["variant"].get<std::string>().empty() ? "" : ("[" + r["variant"].get<std::string>() + "] ").c_str(), r["utilisation"].get<double>(),
                   r["utilisation_bound"].get<double>(), r["passed"].get<bool>() ? "within 1" : "above 1");
-    std::printf("  judged on: %s%s\n", limits.grid_judge_on.c_str(), fine["verdict"].contains("note") ? (" (" + fine["verdict"]["note"].get<std::string>() + ")").c_str() : "");
+    std::printf("  judged on: %s%s\n", fine["grid_study"]["verdict"]["judge_on"].get<std::string>().c_str(), fine["verdict"].contains("note") ? (" (" + fine["verdict"]["note"].get<std::string>() + ")").c_str() : "");
   }
   return verdict;
 }

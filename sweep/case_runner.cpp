@@ -55,6 +55,24 @@ void fill_from_design(json& row, const json& design) {
   row["variants"] = vars;
 }
 
+// Simulates every variant into dir (dir/<label>/ for labelled ones); adds their run wall times to sim_wall and
+// returns the results files.
+std::vector<std::string> run_variants(const std::vector<ScenarioVariant>& variants, const fs::path& dir, const SweepOptions& o,
+                                      double& sim_wall) {
+  std::vector<std::string> written;
+  for (const auto& v : variants) {
+    RunOptions ro;
+    ro.out_dir = (v.label.empty() ? dir : dir / v.label).string();
+    ro.threads = o.threads;
+    ro.progress = ProgressMode::quiet;
+    ro.software_version = o.software_version;
+    const RunOutput r = run_scenario(v.scenario, ro);
+    sim_wall += r.results.info.numbers.at("wall_seconds");
+    written.push_back(r.results_path);
+  }
+  return written;
+}
+
 }  // namespace
 
 json run_case(const SweepSpec& spec, std::size_t k, const SweepOptions& o) {
@@ -82,23 +100,9 @@ json run_case(const SweepSpec& spec, std::size_t k, const SweepOptions& o) {
     }
     double sim_wall = 0;
     if (spec.grid_ratio > 0) {  // the case at three cell sizes: grid uncertainty of its governing numbers
-      const double h = variants.front().scenario.grid.cell_size;
-      for (const auto& v : variants)
-        if (std::abs(v.scenario.grid.cell_size - h) > 1e-12 * h)
-          throw InputError(scen.string() + ": the variants have different cell sizes; a grid study needs one");
+      const double h = common_cell_size(variants, scen.string());
       const auto level_run = [&](const std::string& file, const std::string& d, int) {
-        std::vector<std::string> out;
-        for (const auto& v : parse_scenario_variants(read_text(file), file)) {
-          RunOptions ro;
-          ro.out_dir = (v.label.empty() ? fs::path(d) : fs::path(d) / v.label).string();
-          ro.threads = o.threads;
-          ro.progress = ProgressMode::quiet;
-          ro.software_version = o.software_version;
-          const RunOutput r = run_scenario(v.scenario, ro);
-          sim_wall += r.results.info.numbers.at("wall_seconds");
-          out.push_back(r.results_path);
-        }
-        return out;
+        return run_variants(parse_scenario_variants(read_text(file), file), d, o, sim_wall);
       };
       const design::GridStudyOutcome g = design::run_grid_study(scen.string(), json::parse(text), h, spec.grid_ratio, dir.string(),
                                                                 o.limits_file, level_run, true, o.software_version);
@@ -116,14 +120,7 @@ json run_case(const SweepSpec& spec, std::size_t k, const SweepOptions& o) {
       for (const auto& w : written) sim_wall += read_results(w, false).info.numbers.at("wall_seconds");
       row["status"] = "reused";
     } else {
-      for (const auto& v : variants) {
-        RunOptions ro;
-        ro.out_dir = (v.label.empty() ? dir : dir / v.label).string();
-        ro.threads = o.threads;
-        ro.progress = ProgressMode::quiet;
-        ro.software_version = o.software_version;
-        sim_wall += run_scenario(v.scenario, ro).results.info.numbers.at("wall_seconds");
-      }
+      run_variants(variants, dir, o, sim_wall);
     }
     row["simulated_seconds"] = sim_wall;
     design::check_main(written, o.limits_file, false, (dir / "design.json").string(), true, o.software_version);

@@ -31,6 +31,14 @@ double weight(DecayKind k, double r, double ln, double hm, bool held_before) {
   return k == DecayKind::linear ? 1 - s : 0.5 * (1 + std::cos(kPi * s));
 }
 
+// Unit normal of the centre-line c at xi pointing from its point xm there to x, at distance d (eq. A.9); for x on the
+// curve the tangent turned by +90 degrees (A.7).
+Vec2 outward_normal(const ElementCurve& c, double xi, const Vec2& x, const Vec2& xm, double d, double h) {
+  if (d > 1e-12 * h) return (x - xm) / d;
+  const Vec2 t = c.d1(xi).normalized();
+  return Vec2(-t.y(), t.x());
+}
+
 // Axis-aligned box of an element's deformed centre-line: the cubic lies in the convex hull of its
 // Bezier control points x(0), x(0) + x'(0)/3, x(1) - x'(1)/3, x(1).
 void curve_box(const ElementCurve& c, Vec2& lo, Vec2& hi) {
@@ -174,15 +182,10 @@ template <int D> void MemberContact<D>::touching(const Scene<D>& s) {
         const Index id = g.node_id(IVec<2>(static_cast<int>(std::lround(xr[0])), static_cast<int>(std::lround(xr[1]))));
         if (slot_[id] < 0) continue;
         const Candidate& c = cand_[slot_[id]];
-        const Projection pr = project_on_curve(curves_[c.element], P.x[i]);
+        const ElementCurve& curve = curves_[c.element];
+        const Projection pr = project_on_curve(curve, P.x[i]);
         const double d = std::sqrt(pr.dist2), hm = fr.half_depth(c.element, pr.xi);
-        Vec2 n;
-        if (d > 1e-12 * g.h()) {
-          n = (P.x[i] - curves_[c.element].point(pr.xi)) / d;
-        } else {
-          const Vec2 t1 = curves_[c.element].d1(pr.xi).normalized();
-          n = Vec2(-t1.y(), t1.x());
-        }
+        const Vec2 n = outward_normal(curve, pr.xi, P.x[i], curve.point(pr.xi), d, g.h());
         if (d - hm - particle_reach<2>(P, i, -n) <= tol) touch_.add(g, s.bodies[P.body[i]].field * g.nnodes(), P.x[i], n);
       }
   }
@@ -228,13 +231,7 @@ template <int D> void MemberContact<D>::boundary_forces(Scene<D>& s, double dt) 
       const Vec2 vc = fr.velocity_at(c.element, c.xi);
       const double omega = fr.angular_velocity_at(c.element, c.xi);
       const double dist = std::sqrt(c.dist2);
-      Vec2 n0;  // unit normal from the centre-line towards the node, eq. (A.9); on the curve (A.7)
-      if (dist > 1e-12 * g.h()) {
-        n0 = (x - c.xm) / dist;
-      } else {
-        const Vec2 t = curve.d1(c.xi).normalized();
-        n0 = Vec2(-t.y(), t.x());
-      }
+      const Vec2 n0 = outward_normal(curve, c.xi, x, c.xm, dist, g.h());  // from the centre-line towards the node
       for (int f : opt.fields) {
         const Index k = f * nn + c.node;
         const double m = g.m[k];

@@ -2,7 +2,7 @@
 #include "engine/mpm/boundary.hpp"
 
 #include <cmath>
-
+#include <limits>
 
 namespace dmi {
 namespace {

@@ -79,7 +79,8 @@ struct ContactConfig {
 };
 
 // How a unilateral boundary (a slip or friction wall, a member with sharp decay) decides that a grid node is in
-// contact: surface = the particles touching it carry half the node's mass; node = every node on or behind it.
+// contact: surface = it is engaged by a particle whose material touches the boundary (engine/mpm/touch.hpp);
+// node = every node on or behind it.
 enum class DetectionKind { surface, node };
 
 struct WallConfig {

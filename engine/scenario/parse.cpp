@@ -906,6 +906,14 @@ std::vector<ScenarioVariant> parse_scenario_variants(const std::string& text, co
 
 std::vector<ScenarioVariant> load_scenario_variants(const std::string& path) { return parse_scenario_variants(read_file_text(path), path); }
 
+double common_cell_size(const std::vector<ScenarioVariant>& variants, const std::string& file) {
+  const double h = variants.front().scenario.grid.cell_size;
+  for (const auto& v : variants)
+    if (std::abs(v.scenario.grid.cell_size - h) > 1e-12 * h)
+      throw InputError(file + ": the variants have different cell sizes; a grid study needs one");
+  return h;
+}
+
 std::string scenario_reference_markdown() {
   std::vector<schema::Row> rows;
   schema::Context ctx{.doc = &rows};

@@ -24,6 +24,8 @@ struct ScenarioVariant {
 };
 std::vector<ScenarioVariant> parse_scenario_variants(const std::string& text, const std::string& file);
 std::vector<ScenarioVariant> load_scenario_variants(const std::string& path);
+// The cell size every variant shares (a grid study refines one); throws InputError naming `file` if they differ.
+double common_cell_size(const std::vector<ScenarioVariant>& variants, const std::string& file);
 
 // Markdown reference of every key (generated from the parser's declarations).
 std::string scenario_reference_markdown();
