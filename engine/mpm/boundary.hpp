@@ -21,13 +21,16 @@ template <int D> double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, 
 
 // Bardenhagen, Brackbill & Sulsky (2000): at nodes where several fields have mass, a field moving
 // towards the others, (v_b - v_cm) . n_b > 0, loses that normal relative velocity; its tangential
-// relative velocity is reduced by mu times the normal correction (Coulomb) or removed (stick).
-// Normal: g_b = sum_p m_p grad N_i(x_p) points from a body's particles to the node (outwards);
-// n_b = (g_b - sum_{c!=b} g_c) normalised, so two-body corrections are equal and opposite (momentum
-// to round-off). Contact acts only where the bodies' particle volumes fill the node's support
-// (>= 99 % of a cell): overlapping supports alone (a corner over a face, a gap) are not contact.
-// Without that test a block on a frictionless slab was braked to rest after 18 mm; with it the
-// block slides at 0.99 g sin(theta) and with mu = 0.3 at 0.97 g (sin - mu cos) (docs/verification.md).
+// relative velocity is reduced by mu times the normal correction (Coulomb) or removed (stick); two-body
+// corrections are equal and opposite (momentum to round-off). Where bodies touch:
+// - surface detection (default; body_fronts in boundary.cpp): the two fields with most volume at the node touch
+//   when their surfaces, located from the particles' reach in the node's column, meet along the axis of least
+//   overlap (separating-axis rule). Overlapping supports alone are not contact, so a curved body meets another on
+//   its contact patch, as on a wall; a third field at the node is not corrected.
+// - volume detection: the bodies' particle volumes fill the node's support (>= 99 % of a cell), normal
+//   n_b = (g_b - sum_{c!=b} g_c) normalised, g_b = sum_p m_p grad N_i(x_p) (outwards). Without the fill test a
+//   block on a frictionless slab was braked to rest after 18 mm; with it the block slides at 0.99 g sin(theta).
+//   On curved bodies the fill lags the touch and the contact is soft (docs/verification.md).
 template <int D> void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel);
 
 }  // namespace dmi

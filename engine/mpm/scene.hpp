@@ -1,6 +1,7 @@
 // The low-level scene the MPM solver advances: particles, bodies, materials, grid, boundaries
 // and numerical options. Built from a Scenario by engine/sim/build_scene.
 #pragma once
+#include <array>
 #include <limits>
 #include <memory>
 #include <string>
@@ -60,6 +61,7 @@ struct SolverOptions {
   double cfl = 0.5;
   double dt_max = 0.0;          // 0: no user bound
   double contact_friction = 0.0;
+  BodyDetection contact_detection = BodyDetection::surface;
   double cell_volume = 0.0;     // h^D, times the thickness in 2D (m^3)
 };
 
@@ -86,6 +88,12 @@ template <int D> struct Scene {
   SolverOptions options;
   std::unique_ptr<Frame> frame;   // beam-column members (2D only), or none
   MemberCoupling coupling;
+  // Scratch of body_contact's surface detection (boundary.cpp), per node, reused every step: the pair of fields
+  // with most volume (-1: no pair), three candidate axes from the first towards the second, and each field's front
+  // along each axis.
+  std::vector<std::array<int, 2>> body_pair;
+  std::vector<std::array<Vec<D>, 3>> body_axes;
+  std::vector<std::array<double, 6>> body_front;
 };
 
 }  // namespace dmi

@@ -73,9 +73,15 @@ struct BodyConfig {
   DVec sine_amplitude, sine_wavevector, sine_origin;  // m/s, rad/m, m
 };
 
+// How multi-field contact decides that two bodies touch at a node: surface = their surfaces, located from the
+// particles' reach in the node's column, meet (engine/mpm/boundary.hpp); volume = their particle volumes fill the
+// node's support (Bardenhagen et al. 2000 with a fill test).
+enum class BodyDetection { surface, volume };
+
 struct ContactConfig {
   ContactMethod method = ContactMethod::multi_field;
   double friction = 0.0;                             // Coulomb coefficient between bodies
+  BodyDetection detection = BodyDetection::surface;
 };
 
 // How a unilateral boundary (a slip or friction wall, a member with sharp decay) decides that a grid node is in

@@ -177,6 +177,10 @@ void read_contact(Obj o, ContactConfig& c) {
                           Spec{.doc = "multi_field: one velocity field per body with Bardenhagen (2000) contact, bodies can separate and slide; "
                                       "single_field: all bodies share one field (no-slip, they stick on touching)"});
   o.number("friction", c.friction, Spec{.doc = "Coulomb friction coefficient between bodies (multi_field)", .min = 0});
+  o.choice<BodyDetection>("detection", c.detection, {{"surface", BodyDetection::surface}, {"volume", BodyDetection::volume}},
+                          Spec{.doc = "how two bodies are found touching at a grid node (multi_field): surface = their surfaces, located "
+                                      "from the particles in the node's column, meet (default); volume = their particle volumes fill the "
+                                      "node's support (late and soft on curved bodies: docs/verification.md)"});
   o.finish();
 }
 

@@ -190,6 +190,7 @@ template <int D> Scene<D> build_scene(const Scenario& s) {
   sc.options.cfl = s.analysis.cfl;
   sc.options.dt_max = s.analysis.dt_max;
   sc.options.contact_friction = s.contact.friction;
+  sc.options.contact_detection = s.contact.detection;
   sc.options.cell_volume = std::pow(h, D) * (D == 2 ? s.analysis.thickness : 1.0);
   if (s.structure.present) {
     try {

@@ -156,19 +156,21 @@ std::vector<CaseResult> wall_impact() {
   return stamp(r, timer.seconds());
 }
 
-// Hertz impact of an elastic sphere on a rigid wall (examples/hertz_sphere_on_wall.json; Johnson 1985, ch. 11) at
-// h = R/5 and R/10. The wall's impulse equals the sphere's momentum change m v0 (1 + e) to 1 % (two independent
-// measures: wall reactions, particle velocities); the energy lost by the held nodes' plastic engagement falls with h
-// (order > 0.5). Peak force and contact time against Hertz within the bound of the engaged patch: surface detection
-// (engine/mpm/touch.hpp) engages the node nearest to each touching particle, so with 2 particles per cell the held
-// patch reaches a + h/4 on average for a contact radius a; the contact stiffness follows the patch radius, so the
-// relative error is bounded by h / (4 a) with a = sqrt(R delta_max) of Hertz: 15 % at R/10 (a = 1.7 h). R/5 (a < h)
-// is outside that range and only checked for the impulse. Finer grids level off at +7 % / -5 % (R/20 and R/30,
-// docs/verification.md): a remainder that is not the patch quantisation.
+// Elastic sphere on a rigid frictionless wall (examples/hertz_sphere_on_wall.json) at h = R/5 and R/10. The wall's
+// impulse equals the sphere's momentum change m v0 (1 + e) to 1 % (two independent measures: wall reactions, particle
+// velocities); the energy lost by the held nodes' plastic engagement falls with h (order > 0.5). Peak force and
+// contact time are checked at R/10 within 5 % against the quasi-static impact of the finite sphere: Hertz's law
+// (Johnson 1985, sec. 4.2 and 11.4) assumes half-spaces, so its approach is that of points far from a contact
+// much smaller than R; here a/R = 0.17 and the centre of mass of a sphere held by its own inertia approaches the wall
+// less, by O(a/R). An axisymmetric finite-element model of the sphere on the flat under a uniform body force
+// (bench/hertz_axisym.cpp, mesh-converged to 0.01 %) gives a force-approach law 5 % stiffer than Hertz at a/R = 0.055
+// and 18 % at 0.17; integrated over the impact it gives the peak and duration below, +8.9 % and -6.4 % from Hertz.
+// Hertz's own error at this a/R exceeds 5 %, so it is not the gate (docs/verification.md gives both).
+constexpr double kFiniteSpherePeakN = 7871.0;       // bench/hertz_axisym: 13k and 47k elements agree to 0.01 %
+constexpr double kFiniteSphereTime1pcS = 3.866e-3;  // time with the force above 1 % of its peak
 std::vector<CaseResult> hertz_sphere() {
   Timer timer;
   const double R = 0.1, v0 = 2.0, m = 1000.0 * 4.0 / 3.0 * 3.14159265358979323846 * R * R * R;
-  const sdof::HertzImpact hz = sdof::hertz_sphere_impact(m, v0, R, 1e8, 0.3, 1e30, 0.0);
   struct Run { double peak, duration, impulse, e; };
   auto run = [&](double h) {
     const RunOutput out = run_quiet(example_scenario("hertz_sphere_on_wall.json", {{"/grid/cell_size", h}}));
@@ -195,13 +197,9 @@ std::vector<CaseResult> hertz_sphere() {
     const std::string tag = x == &a ? " (h = R/5)" : " (h = R/10)";
     r.push_back(metric("hertz_sphere", "wall impulse / m v0 (1 + e)" + tag, "-", x->impulse / (m * v0 * (1 + x->e)), 1.0, 0.01));
   }
-  const double bound = (R / 10) / (4 * std::sqrt(R * hz.max_indentation_m));
-  // The same measure on Hertz's history: F = k delta^1.5 exceeds 1 % of its peak once delta > 0.01^(2/3) delta_max,
-  // reached at t = 0.01^(2/3) delta_max / v0 after touching (the force is still negligible there, so delta = v0 t),
-  // and left as long before the end.
-  const double tc_1pc = hz.contact_duration_s - 2 * std::pow(0.01, 2.0 / 3.0) * hz.max_indentation_m / v0;
-  r.push_back(metric("hertz_sphere", "peak force vs Hertz (h = R/10)", "N", b.peak, hz.peak_force_N, bound));
-  r.push_back(metric("hertz_sphere", "contact time (force above 1 % of its peak) vs Hertz's (h = R/10)", "s", b.duration, tc_1pc, bound));
+  r.push_back(metric("hertz_sphere", "peak force vs the finite sphere (h = R/10)", "N", b.peak, kFiniteSpherePeakN, 0.05));
+  r.push_back(metric("hertz_sphere", "contact time (force above 1 % of its peak) vs the finite sphere (h = R/10)", "s",
+                     b.duration, kFiniteSphereTime1pcS, 0.05));
   r.push_back(bound_metric("hertz_sphere", "order of the energy lost, 1 - e^2, R/5 -> R/10 (> 0.5)", "-",
                            std::log2((1 - a.e * a.e) / (1 - b.e * b.e)), 0.5, true));
   return stamp(r, timer.seconds());
