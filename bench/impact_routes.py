@@ -35,13 +35,21 @@ def run(s, out):
 
 
 def cylinder(target, h, off, E=None, decay=None, gap=0.017, end=None):
-    s = load("cylinder_on_wall.json" if target in ("wall", "mirror") else "cylinder_on_member.json")
+    s = load("cylinder_on_wall.json" if target in ("wall", "mirror", "block") else "cylinder_on_member.json")
     s["grid"]["cell_size"] = h
     s["bodies"][0]["shape"]["center"] = [0.55, 0.4 + gap - off]
     if end:
         s["analysis"]["end_time"] = end
     if target == "wall":
         s["walls"][0]["point"] = [0.0, -off]
+    elif target == "block":  # a resolved concrete block (E of the member's concrete unless E given), base held
+        block_E = E or 3e10
+        s["materials"].append({"name": "concrete", "model": "linear_elastic", "density": 2400, "youngs_modulus": block_E,
+                               "poisson_ratio": 0.2})
+        s["bodies"].append({"name": "block", "material": "concrete", "particles_per_cell": 2,
+                            "shape": {"type": "box", "min": [0.0, -1.0 - off], "max": [1.1, -off]}, "velocity": [0, 0]})
+        s["walls"] = [{"name": "base", "type": "plane", "point": [0, -1.0 - off], "normal": [0, 1], "condition": "stick"}]
+        s["contact"] = {"method": "multi_field", "friction": 0.0}
     elif target == "mirror":  # the image cylinder below the plane y = 0, moving up
         del s["walls"]
         image = json.loads(json.dumps(s["bodies"][0]))
@@ -64,7 +72,7 @@ def impact_2d(f, target, m, v0=5.0):
     t = H["time"][:]
     vy = H["probes/rock/velocity"][:, 1]
     ke = H["probes/rock/kinetic_energy"][:, 0]
-    if target == "mirror":  # force from the momentum change over 0.02 ms windows
+    if target in ("mirror", "block"):  # force from the momentum change over 0.02 ms windows
         tg = np.arange(0, t[-1], 2e-5)
         F = m * np.diff(np.interp(tg, t, vy)) / 2e-5
         tF = tg[1:]
@@ -91,7 +99,9 @@ def main():
               ("concrete member, on", "member", 0.0, {}), ("rigid wall, off", "wall", 0.007, {}),
               ("member E 3e13, off", "member", 0.007, {"E": 3e13}), ("concrete member, off", "member", 0.007, {}),
               ("concrete member, paper decay layer, off", "member", 0.007, {"decay": {"decay": "linear", "distance": "node"}}),
-              ("two cylinders (multi-field), on", "mirror", 0.0, {})]
+              ("two cylinders (multi-field), on", "mirror", 0.0, {}),
+              ("concrete block (continuum, E 30 GPa), on", "block", 0.0, {}),
+              ("rigid block (continuum, E 3e13), on", "block", 0.0, {"E": 3e13})]
     print("| target | h (m) | peak (MN/m) | contact time (ms) | restitution | kinetic energy lost |")
     print("|---|---|---|---|---|---|")
     for label, target, off, kw in routes:

@@ -79,7 +79,13 @@ void read_dam(Obj o, DamPreset& d) {
   o.number("damping_ratio", d.damping_ratio, Spec{.doc = "structural damping ratio (Rayleigh, fitted to the first two cantilever modes "
                                                          "of the dam estimated as a uniform cantilever, Lin, Cheng & Tuan; concrete 5-10 %, B.4)",
                                                   .min = 0, .max = 0.5});
-  o.integer("elements", d.elements, Spec{.doc = "beam-column elements per member (members model)", .min = 1, .max = 1000});
+  // A short hard impact excites the dam's higher modes: its peak base shear with 2 / 4 / 8 / 16 / 32 elements was
+  // 4.17 / 7.13 / 8.07 / 8.87 / 8.88 MN (bare preset, h = 0.04 m), so 16 for the concrete wall; the steel frame's
+  // reactions moved by 1 % from 8 to 16.
+  if (d.type == "concrete_gravity") d.elements = 16;
+  o.integer("elements", d.elements, Spec{.doc = "beam-column elements per member (members model); default 16 for concrete_gravity "
+                                                "(peak base shear within 0.2 % of 32 elements, 8 gave -9 %), 8 for steel_open",
+                                         .min = 1, .max = 1000});
   if (o.when("type", d.type, "concrete_gravity")) {
     o.number("crest_thickness", d.crest, positive("m", "thickness at the crest, along the flow", true));
     o.number("base_thickness", d.base_thickness, positive("m", "thickness at the base, >= crest_thickness", true));
