@@ -196,36 +196,53 @@ template <int D> void body_fronts(Scene<D>& s) {
     s.body_front[id].fill(-std::numeric_limits<double>::infinity());
   });
   const double h = g.h(), tol = 0.5 + 1e-9;
-  const Index np = static_cast<Index>(P.size());
-  for (Index i = 0; i < np; ++i) {
-    const int f = s.bodies[P.body[i]].field;
-    const Vec<D> xr = g.grid_coord(P.x[i]);
-    IVec<D> lo, hi;
-    for (int d = 0; d < D; ++d) {
-      lo[d] = std::max(0, static_cast<int>(std::ceil(xr[d] - 1.5)));
-      hi[d] = std::min(g.nodes()[d] - 1, static_cast<int>(std::floor(xr[d] + 1.5)));
-    }
-    IVec<D> ijk = lo;
-    while (true) {
-      const Index id = g.node_id(ijk);
-      const auto& pair = s.body_pair[id];
-      if (pair[0] == f || pair[1] == f) {
-        const int side = pair[0] == f ? 0 : 1;
-        const Vec<D> r = xr - ijk.template cast<double>();  // particle minus node, grid units
-        for (int j = 0; j < 3; ++j) {
-          const Vec<D> e = (side ? -1.0 : 1.0) * s.body_axes[id][j];
-          const double rn = r.dot(e);
-          if ((r - rn * e).cwiseAbs().maxCoeff() > tol) continue;
-          double& front = s.body_front[id][2 * j + side];
-          front = std::max(front, rn * h + particle_reach(P, i, e));
-        }
-      }
+  // Only the particles of tiles whose node box holds a shared node can reach one.
+  const auto& occupied = g.occupied();
+  for (Index k = 0; k < static_cast<Index>(occupied.size()); ++k) {
+    IVec<D> blo, bhi;
+    g.tile_nodes(occupied[k], blo, bhi);
+    bool near = false;
+    for (IVec<D> c = blo; !near;) {
+      near = s.body_pair[g.node_id(c)][0] >= 0;
       int d = 0;
       for (; d < D; ++d) {
-        if (++ijk[d] <= hi[d]) break;
-        ijk[d] = lo[d];
+        if (++c[d] <= bhi[d]) break;
+        c[d] = blo[d];
       }
       if (d == D) break;
+    }
+    if (!near) continue;
+    for (Index q = g.tile_start()[k]; q < g.tile_start()[k + 1]; ++q) {
+      const Index i = g.tile_particles()[q];
+      const int f = s.bodies[P.body[i]].field;
+      const Vec<D> xr = g.grid_coord(P.x[i]);
+      IVec<D> lo, hi;
+      for (int d = 0; d < D; ++d) {
+        lo[d] = std::max(0, static_cast<int>(std::ceil(xr[d] - 1.5)));
+        hi[d] = std::min(g.nodes()[d] - 1, static_cast<int>(std::floor(xr[d] + 1.5)));
+      }
+      IVec<D> ijk = lo;
+      while (true) {
+        const Index id = g.node_id(ijk);
+        const auto& pair = s.body_pair[id];
+        if (pair[0] == f || pair[1] == f) {
+          const int side = pair[0] == f ? 0 : 1;
+          const Vec<D> r = xr - ijk.template cast<double>();  // particle minus node, grid units
+          for (int j = 0; j < 3; ++j) {
+            const Vec<D> e = (side ? -1.0 : 1.0) * s.body_axes[id][j];
+            const double rn = r.dot(e);
+            if ((r - rn * e).cwiseAbs().maxCoeff() > tol) continue;
+            double& front = s.body_front[id][2 * j + side];
+            front = std::max(front, rn * h + particle_reach(P, i, e));
+          }
+        }
+        int d = 0;
+        for (; d < D; ++d) {
+          if (++ijk[d] <= hi[d]) break;
+          ijk[d] = lo[d];
+        }
+        if (d == D) break;
+      }
     }
   }
 }
