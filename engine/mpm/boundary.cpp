@@ -201,28 +201,14 @@ template <int D> void body_fronts(Scene<D>& s) {
   for (Index k = 0; k < static_cast<Index>(occupied.size()); ++k) {
     IVec<D> blo, bhi;
     g.tile_nodes(occupied[k], blo, bhi);
-    bool near = false;
-    for (IVec<D> c = blo; !near;) {
-      near = s.body_pair[g.node_id(c)][0] >= 0;
-      int d = 0;
-      for (; d < D; ++d) {
-        if (++c[d] <= bhi[d]) break;
-        c[d] = blo[d];
-      }
-      if (d == D) break;
-    }
-    if (!near) continue;
+    if (!any_node_in_box<D>(blo, bhi, [&](const IVec<D>& c) { return s.body_pair[g.node_id(c)][0] >= 0; })) continue;
     for (Index q = g.tile_start()[k]; q < g.tile_start()[k + 1]; ++q) {
       const Index i = g.tile_particles()[q];
       const int f = s.bodies[P.body[i]].field;
       const Vec<D> xr = g.grid_coord(P.x[i]);
       IVec<D> lo, hi;
-      for (int d = 0; d < D; ++d) {
-        lo[d] = std::max(0, static_cast<int>(std::ceil(xr[d] - 1.5)));
-        hi[d] = std::min(g.nodes()[d] - 1, static_cast<int>(std::floor(xr[d] + 1.5)));
-      }
-      IVec<D> ijk = lo;
-      while (true) {
+      g.support_nodes(xr, lo, hi);
+      any_node_in_box<D>(lo, hi, [&](const IVec<D>& ijk) {
         const Index id = g.node_id(ijk);
         const auto& pair = s.body_pair[id];
         if (pair[0] == f || pair[1] == f) {
@@ -236,13 +222,8 @@ template <int D> void body_fronts(Scene<D>& s) {
             front = std::max(front, rn * h + particle_reach(P, i, e));
           }
         }
-        int d = 0;
-        for (; d < D; ++d) {
-          if (++ijk[d] <= hi[d]) break;
-          ijk[d] = lo[d];
-        }
-        if (d == D) break;
-      }
+        return false;
+      });
     }
   }
 }

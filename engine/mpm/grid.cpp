@@ -77,20 +77,14 @@ template <int D> void Grid<D>::bin(const std::vector<Vec<D>>& x) {
   for (Index k = 0; k < nocc; ++k) {
     IVec<D> lo, hi;
     tile_nodes(occupied_[k], lo, hi);
-    IVec<D> ijk = lo;
-    while (true) {
+    any_node_in_box<D>(lo, hi, [&](const IVec<D>& ijk) {
       const Index id = node_id(ijk);
       if (!flag_[id]) {
         flag_[id] = 1;
         active_.push_back(id);
       }
-      int d = 0;
-      for (; d < D; ++d) {
-        if (++ijk[d] <= hi[d]) break;
-        ijk[d] = lo[d];
-      }
-      if (d == D) break;
-    }
+      return false;
+    });
   }
   // Ascending node ids: grid loops then stream memory row by row (in tile order a 10x wider grid cost 1.9x per step).
   std::sort(active_.begin(), active_.end());

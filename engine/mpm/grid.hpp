@@ -16,6 +16,21 @@
 
 namespace dmi {
 
+// Calls f(ijk) for the node indices of the box [lo, hi] (inclusive), x fastest, until f returns true; returns
+// whether one did.
+template <int D, class F> bool any_node_in_box(const IVec<D>& lo, const IVec<D>& hi, F&& f) {
+  IVec<D> ijk = lo;
+  while (true) {
+    if (f(static_cast<const IVec<D>&>(ijk))) return true;
+    int d = 0;
+    for (; d < D; ++d) {
+      if (++ijk[d] <= hi[d]) break;
+      ijk[d] = lo[d];
+    }
+    if (d == D) return false;
+  }
+}
+
 template <int D> class Grid {
  public:
   static constexpr int T = 4;  // tile width in cells
@@ -86,6 +101,13 @@ template <int D> class Grid {
     for (int d = 0; d < D; ++d) {
       lo[d] = std::max(0, ti[d] * T - 1);
       hi[d] = std::min(nodes_[d] - 1, ti[d] * T + T + 1);
+    }
+  }
+  // Nodes within the quadratic B-spline support (1.5 cells) of a point at grid coordinates xr, clamped to the grid.
+  void support_nodes(const Vec<D>& xr, IVec<D>& lo, IVec<D>& hi) const {
+    for (int d = 0; d < D; ++d) {
+      lo[d] = std::max(0, static_cast<int>(std::ceil(xr[d] - 1.5)));
+      hi[d] = std::min(nodes_[d] - 1, static_cast<int>(std::floor(xr[d] + 1.5)));
     }
   }
   // Particles of occupied tile k: tile_particles()[tile_start()[k] .. tile_start()[k+1]).

@@ -52,26 +52,17 @@ class TouchSet {
   template <int D> void add(const Grid<D>& g, Index field_offset, const Vec<D>& x, const Vec<D>& n) {
     const Vec<D> xr = g.grid_coord(x);
     IVec<D> lo, hi;
-    for (int d = 0; d < D; ++d) {
-      lo[d] = std::max(0, static_cast<int>(std::ceil(xr[d] - 1.5)));
-      hi[d] = std::min(g.nodes()[d] - 1, static_cast<int>(std::floor(xr[d] + 1.5)));
-    }
+    g.support_nodes(xr, lo, hi);
     const double tol = 0.5 + 1e-9;
-    IVec<D> ijk = lo;
-    while (true) {
+    any_node_in_box<D>(lo, hi, [&](const IVec<D>& ijk) {
       const Vec<D> r = ijk.template cast<double>() - xr;  // node minus particle, grid units
       const double rn = r.dot(n);
       if (std::abs(rn) <= 1.5 && (r - rn * n).cwiseAbs().maxCoeff() <= tol) {
         const Index k = field_offset + g.node_id(ijk);
         if (!flag_[k]) flag_[k] = 1, set_.push_back(k);
       }
-      int d = 0;
-      for (; d < D; ++d) {
-        if (++ijk[d] <= hi[d]) break;
-        ijk[d] = lo[d];
-      }
-      if (d == D) break;
-    }
+      return false;
+    });
   }
 
  private:

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "engine/verify/cases_members.hpp"
 #include "engine/verify/validate.hpp"
 #include "engine/sdof/sdof.hpp"
 
@@ -212,19 +213,11 @@ std::vector<CaseResult> hertz_sphere() {
                                                                                    {"/contact", {{"method", "multi_field"}, {"friction", 0.0}}}}));
     const auto& t = out.results.time;
     const Series& v = series(out.results, "probes/ball/velocity");
-    auto vz = [&](double at) {
-      const std::size_t k = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), at) - t.begin());
-      if (k == 0) return v.data[2];
-      if (k >= t.size()) return v.data[3 * t.size() - 1];
-      const double w = (at - t[k - 1]) / (t[k] - t[k - 1]);
-      return (1 - w) * v.data[3 * (k - 1) + 2] + w * v.data[3 * k + 2];
-    };
     const double w = 2e-5;
-    std::vector<double> f;
-    for (double at = 0; at + w <= t.back(); at += w) f.push_back(m * (vz(at + w) - vz(at)) / w);
-    for (double x : f) mirror.peak = std::max(mirror.peak, x);
+    const std::vector<double> a = windowed_rate(t, v, 3, 2, w);
+    for (double x : a) mirror.peak = std::max(mirror.peak, m * x);
     int on = 0;
-    for (double x : f) on += x > 0.01 * mirror.peak;
+    for (double x : a) on += m * x > 0.01 * mirror.peak;
     mirror.duration = on * w;
     mirror.e = v.data.back() / v0;
   }

@@ -158,6 +158,14 @@ double interpolate(const std::vector<double>& t, const std::vector<double>& u, d
   return (1 - a) * u[k - 1] + a * u[k];
 }
 
+std::vector<double> windowed_rate(const std::vector<double>& t, const Series& s, int dims, int comp, double window) {
+  std::vector<double> u(t.size());
+  for (std::size_t k = 0; k < t.size(); ++k) u[k] = s.data[dims * k + comp];
+  std::vector<double> rate;
+  for (double at = 0; at + window <= t.back(); at += window) rate.push_back((interpolate(t, u, at + window) - interpolate(t, u, at)) / window);
+  return rate;
+}
+
 // Normalised RMS and peak errors of u(t) against ref(t - t0) over the samples with t >= t0.
 ErrorPair compare_history(const std::vector<double>& t, const std::vector<double>& u, double t0,
                           const std::function<double(double)>& ref) {
@@ -526,16 +534,9 @@ ImpactRun mirror_run(double h) {
                                                                              {"/contact", {{"method", "multi_field"}, {"friction", 0.0}}}}));
   const auto& t = out.results.time;
   const Series& v = series(out.results, "probes/rock/velocity");
-  const double m = 2650 * 3.14159265358979323846 * 0.4 * 0.4, w = 2e-5;
-  auto vy = [&](double at) {  // linear interpolation of the history
-    const std::size_t k = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), at) - t.begin());
-    if (k == 0) return v.data[1];
-    if (k >= t.size()) return v.data[2 * t.size() - 1];
-    const double a = (at - t[k - 1]) / (t[k] - t[k - 1]);
-    return (1 - a) * v.data[2 * (k - 1) + 1] + a * v.data[2 * k + 1];
-  };
+  const double m = 2650 * 3.14159265358979323846 * 0.4 * 0.4;
   ImpactRun r;
-  for (double at = 0; at + w <= t.back(); at += w) r.peak = std::max(r.peak, m * (vy(at + w) - vy(at)) / w);
+  for (double a : windowed_rate(t, v, 2, 1, 2e-5)) r.peak = std::max(r.peak, m * a);
   r.rebound = v.data.back();
   r.impulse = m * (v.data.back() - v.data[1]);
   return r;

@@ -56,6 +56,10 @@ struct ErrorPair {
 };
 // u(x) by linear interpolation of samples (t, u), clamped at the ends.
 double interpolate(const std::vector<double>& t, const std::vector<double>& u, double x);
+// Rate of change of component `comp` of a recorded vector series (`dims` components per row) over consecutive
+// windows of `window` s from t = 0, the history linearly interpolated: a body's momentum rate over m gives the force
+// on it where no wall or member records one (body-body contact).
+std::vector<double> windowed_rate(const std::vector<double>& t, const Series& s, int dims, int comp, double window);
 
 ErrorPair compare_history(const std::vector<double>& t, const std::vector<double>& u, double t0,
                           const std::function<double(double)>& ref);
