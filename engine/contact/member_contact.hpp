@@ -71,6 +71,12 @@ template <int D> class MemberContact {
   // q times an approaching normal relative velocity; friction also limits the tangential one.
   void constrain_remap(const Scene<D>& s, std::vector<Vec<D>>& vel) const;
   const MemberContactStats& stats() const { return stats_; }
+  // The node-field pairs (field * nnodes + node) held by stick at full weight in the last step, with the velocity
+  // v* they were given (the implicit viscosity holds them there in its solve, engine/mpm/viscous.hpp).
+  template <class Fn> void for_each_stuck(Fn&& f) const {
+    for (const Loaded& l : loaded_)
+      if (l.pressed && l.mode == MemberContactMode::stick && l.q == 1) f(l.k, l.vstar);
+  }
   // Total force the material exerts on the members in the last step (N): sum of -f_bc.
   const Vec2& force() const { return force_; }
   // The individual reactions of the last step (they sum to force()).

@@ -27,15 +27,24 @@ template <int D> class LinearElastic final : public Material<D> {
   double density() const override { return rho_; }
   double wave_speed() const override { return el_.wave_speed(rho_, plane_); }
   double damping_time() const override { return beta_; }
-  void permute(const std::vector<Index>& perm) override { permute_array(elastic_, perm), permute_array(elastic_zz_, perm), permute_array(power_, perm); }
+  bool viscous_coefficients(double& a, double& b) const override {
+    a = beta_ * lambda_in_, b = beta_ * el_.mu;
+    return beta_ > 0;
+  }
+  const std::vector<Mat<D>>* viscous_stress() const override { return &viscous_; }
+  void set_implicit_viscosity(bool on) override { implicit_ = on; }
+  void permute(const std::vector<Index>& perm) override {
+    permute_array(elastic_, perm), permute_array(elastic_zz_, perm), permute_array(power_, perm), permute_array(viscous_, perm);
+  }
   double dissipated() const override { return dissipated_; }
-  void save_state(StateWriter& w) const override { w.put(elastic_), w.put(elastic_zz_), w.put(power_), w.put(dissipated_); }
-  void load_state(StateReader& r) override { r.get(elastic_), r.get(elastic_zz_), r.get(power_), r.get(dissipated_); }
+  void save_state(StateWriter& w) const override { w.put(elastic_), w.put(elastic_zz_), w.put(power_), w.put(viscous_), w.put(dissipated_); }
+  void load_state(StateReader& r) override { r.get(elastic_), r.get(elastic_zz_), r.get(power_), r.get(viscous_), r.get(dissipated_); }
   void attach(const Particles<D>& p, Index begin, Index end) override {
     if (beta_ <= 0) return;
     elastic_.resize(p.size(), Mat<D>::Zero());
     elastic_zz_.resize(p.size(), 0.0);
     power_.resize(p.size(), 0.0);
+    viscous_.resize(p.size(), Mat<D>::Zero());
     for (Index i = begin; i < end; ++i) {
       elastic_[i] = p.stress[i];
       elastic_zz_[i] = p.stress_zz[i];
@@ -62,12 +71,13 @@ template <int D> class LinearElastic final : public Material<D> {
       if (strain2d) szz += dt * lam3 * trD;
       p.vol[i] = p.vol0[i] * p.F[i].determinant();
       if (beta > 0) {  // total = elastic + viscous beta C:D; power sigma_v : D (D_zz = 0 in plane strain)
-        p.stress[i] = s + beta * rate;
+        viscous_[i] = beta * rate;
+        p.stress[i] = s + viscous_[i];
         p.stress_zz[i] = szz + (strain2d ? beta * lam3 * trD : 0.0);
         power_[i] = beta * (rate.cwiseProduct(Dm)).sum() * p.vol[i];
       }
     });
-    if (beta > 0) dissipated_ += dt * deterministic_sum(end - begin, [&](Index k) { return power_[begin + k]; });
+    if (beta > 0 && !implicit_) dissipated_ += dt * deterministic_sum(end - begin, [&](Index k) { return power_[begin + k]; });
   }
 
   // Undamped 2D form of update(): sigma += dt (lam tr(D) I + 2 mu D) + dt (W sigma - sigma W), with
@@ -117,9 +127,10 @@ template <int D> class LinearElastic final : public Material<D> {
   Plane plane_;
   double beta_;  // s
   double lambda_in_;
-  std::vector<Mat<D>> elastic_;     // elastic stress (damped laws only), by particle index
+  std::vector<Mat<D>> elastic_, viscous_;  // elastic and viscous stress (damped laws only), by particle index
   std::vector<double> elastic_zz_, power_;
   double dissipated_ = 0;
+  bool implicit_ = false;  // dissipation counted by the implicit viscous solve
 };
 
 }  // namespace

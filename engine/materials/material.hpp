@@ -37,6 +37,15 @@ template <int D> class Material {
   // Stiffness-proportional viscous time beta (s): the stress has a part beta C:D. It lowers the
   // explicit stable step to (2/omega)(sqrt(1 + zeta^2) - zeta), zeta = beta omega / 2.
   virtual double damping_time() const { return 0.0; }
+  // Kelvin-Voigt laws whose viscous stress sigma_v = a tr(D) I + 2 b D has constant coefficients (Pa s) return
+  // {a, b} and keep the last update's sigma_v per particle (viscous_stress(), indexed like the particles); the
+  // solver then integrates that part implicitly on the grid (engine/mpm/viscous.hpp) and its step is the elastic
+  // one. Others return false and their damping_time() cuts the explicit step.
+  virtual bool viscous_coefficients(double& /*a*/, double& /*b*/) const { return false; }
+  virtual const std::vector<Mat<D>>* viscous_stress() const { return nullptr; }
+  // While on, update() still keeps the viscous stress but leaves its dissipation to the implicit solve, which counts
+  // the work of the viscous nodal forces on the grid's final velocities.
+  virtual void set_implicit_viscosity(bool /*on*/) {}
   // The solver reordered the particles: new[i] = old[perm[i]]; laws with per-particle arrays follow.
   virtual void permute(const std::vector<Index>& /*perm*/) {}
   // Internal variables (per-particle arrays, dissipated energy) for checkpoints; laws without any write nothing.

@@ -26,12 +26,18 @@ template <int D> class NeoHookean final : public Material<D> {
   double wave_speed() const override { return el_.wave_speed(rho_, plane_); }
   double damping_time() const override { return beta_; }
   bool pointwise() const override { return beta_ == 0; }  // damped: dissipation is summed over the range
-  void permute(const std::vector<Index>& perm) override { permute_array(power_, perm); }
+  bool viscous_coefficients(double& a, double& b) const override {
+    a = beta_ * lambda_v_, b = beta_ * el_.mu;
+    return beta_ > 0;
+  }
+  const std::vector<Mat<D>>* viscous_stress() const override { return &viscous_; }
+  void set_implicit_viscosity(bool on) override { implicit_ = on; }
+  void permute(const std::vector<Index>& perm) override { permute_array(power_, perm), permute_array(viscous_, perm); }
   double dissipated() const override { return dissipated_; }
-  void save_state(StateWriter& w) const override { w.put(power_), w.put(dissipated_); }
-  void load_state(StateReader& r) override { r.get(power_), r.get(dissipated_); }
+  void save_state(StateWriter& w) const override { w.put(power_), w.put(viscous_), w.put(dissipated_); }
+  void load_state(StateReader& r) override { r.get(power_), r.get(viscous_), r.get(dissipated_); }
   void attach(const Particles<D>& p, Index, Index) override {
-    if (beta_ > 0) power_.resize(p.size(), 0.0);
+    if (beta_ > 0) power_.resize(p.size(), 0.0), viscous_.resize(p.size(), Mat<D>::Zero());
   }
 
   // Out-of-plane stretch F_zz for an in-plane Jacobian J2.
@@ -62,11 +68,12 @@ template <int D> class NeoHookean final : public Material<D> {
         const Mat<D> Dm = 0.5 * (p.L[i] + p.L[i].transpose());
         const Mat<D> sv = beta * (lamv * Dm.trace() * Mat<D>::Identity() + 2 * mu * Dm);
         p.stress[i] += sv;
+        viscous_[i] = sv;
         if constexpr (D == 2) if (plane_ == Plane::strain) p.stress_zz[i] += beta * lam * Dm.trace();
         power_[i] = sv.cwiseProduct(Dm).sum() * p.vol[i];
       }
     });
-    if (beta > 0) dissipated_ += dt * deterministic_sum(end - begin, [&](Index k) { return power_[begin + k]; });
+    if (beta > 0 && !implicit_) dissipated_ += dt * deterministic_sum(end - begin, [&](Index k) { return power_[begin + k]; });
   }
 
   double strain_energy(const Particles<D>& p, Index begin, Index end) const override {
@@ -86,7 +93,9 @@ template <int D> class NeoHookean final : public Material<D> {
   Plane plane_;
   double beta_, lambda_v_;  // s, Pa
   std::vector<double> power_;
+  std::vector<Mat<D>> viscous_;  // viscous stress of the last update (damped only), by particle index
   double dissipated_ = 0;
+  bool implicit_ = false;  // dissipation counted by the implicit viscous solve
 };
 
 }  // namespace

@@ -262,7 +262,7 @@ template <int D> void pair_contact(Scene<D>& s, std::vector<Vec<D>>& vel, Index 
   vel[kb] -= P / mb;
 }
 
-template <int D> void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel) {
+template <int D> void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel, bool fronts) {
   Grid<D>& g = *s.grid;
   const int nf = g.nfields();
   if (nf < 2) return;
@@ -270,7 +270,7 @@ template <int D> void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel) {
   const auto& active = g.active();
   const Index na = static_cast<Index>(active.size());
   if (s.options.contact_detection == BodyDetection::surface) {
-    body_fronts(s);
+    if (fronts || s.body_pair.size() != static_cast<std::size_t>(nn)) body_fronts(s);
     const double tol = 1e-6 * g.h();
     parallel_for(0, na, [&](Index a) {
       if (s.body_pair[active[a]][0] >= 0) pair_contact(s, vel, active[a], tol);
@@ -320,7 +320,7 @@ template void wall_touch<2>(Scene<2>&);
 template void wall_touch<3>(Scene<3>&);
 template double apply_boundaries<2>(Scene<2>&, std::vector<Vec<2>>&, double, double, bool);
 template double apply_boundaries<3>(Scene<3>&, std::vector<Vec<3>>&, double, double, bool);
-template void body_contact<2>(Scene<2>&, std::vector<Vec<2>>&);
-template void body_contact<3>(Scene<3>&, std::vector<Vec<3>>&);
+template void body_contact<2>(Scene<2>&, std::vector<Vec<2>>&, bool);
+template void body_contact<3>(Scene<3>&, std::vector<Vec<3>>&, bool);
 
 }  // namespace dmi

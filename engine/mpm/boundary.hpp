@@ -31,6 +31,7 @@ template <int D> double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, 
 //   n_b = (g_b - sum_{c!=b} g_c) normalised, g_b = sum_p m_p grad N_i(x_p) (outwards). Without the fill test a
 //   block on a frictionless slab was braked to rest after 18 mm; with it the block slides at 0.99 g sin(theta).
 //   On curved bodies the fill lags the touch and the contact is soft (docs/verification.md).
-template <int D> void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel);
+// fronts = false reuses the surface detection of an earlier call in the same step (the particles have not moved).
+template <int D> void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel, bool fronts = true);
 
 }  // namespace dmi

@@ -59,6 +59,7 @@ struct SolverOptions {
   double flip_blend = 1.0;
   StressUpdate update = StressUpdate::usl;
   double cfl = 0.5;
+  bool implicit_damping = true;  // Kelvin-Voigt viscosity on the grid, backward Euler (engine/mpm/viscous.hpp)
   double dt_max = 0.0;          // 0: no user bound
   double contact_friction = 0.0;
   BodyDetection contact_detection = BodyDetection::surface;

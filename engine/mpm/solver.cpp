@@ -26,6 +26,7 @@ template <int D> Solver<D>::Solver(Scene<D> scene) : scene_(std::move(scene)) {
   mass_eps_ = std::isfinite(mmin) ? 1e-12 * mmin : 0.0;
   for (const Body& b : scene_.bodies) scene_.materials[b.material]->attach(scene_.particles, b.begin, b.end);
   if (scene_.frame) members_ = std::make_unique<MemberContact<D>>(*scene_.grid);
+  if (scene_.options.implicit_damping && ImplicitViscosity<D>::needed(scene_)) viscosity_ = std::make_unique<ImplicitViscosity<D>>();
 }
 
 // The step as named phases (docs/architecture.md, "The step").
@@ -33,6 +34,8 @@ template <int D> void Solver<D>::step(double dt) {
   if (steps_ % kSortInterval == 1) sort_particles();  // locality for the scatter (from the second step on)
   scene_.grid->bin(scene_.particles.x);      // tiles, active nodes, zeroed fields
   particles_to_grid();                         // m_i, p_i, f_i = f_int + f_ext (eqs. 5-8)
+  wall_touch(scene_);                          // nodes engaged by particles touching unilateral walls
+  implicit_viscosity(dt);                      // damped bodies: the viscous nodal force at the end of the step
   member_boundary_forces(dt);                  // stage 1: members as velocity boundaries, reactions on the frame
   grid_update(dt);                             // v^k, v^L = v^k + dt f/m, walls, regions, body contact
   // v_p, x_p, L_p, F_p (eqs. 13-14; MUSL remaps first), then per body its material law: inside G2P chunk by chunk
@@ -59,6 +62,18 @@ template <int D> void Solver<D>::sort_particles() {
   for (Index q : order) perm[next[P.body[q]]++] = q;
   P.permute(perm);
   for (auto& m : scene_.materials) m->permute(perm);
+}
+
+template <int D> void Solver<D>::implicit_viscosity(double dt) {
+  if (!viscosity_) return;
+  if (implicit_now_.size() != scene_.bodies.size()) implicit_now_.assign(scene_.bodies.size(), 1);  // a step not from stable_time_step
+  try {
+    held_.clear();
+    if (members_) members_->for_each_stuck([this](Index k, const Vec<D>& v) { held_.emplace_back(k, v); });
+    viscosity_->apply(scene_, *kernels_, dt, time_ + dt, mass_eps_, implicit_now_, held_);
+  } catch (const RunError& e) {
+    throw RunError("run stopped at step " + std::to_string(steps_ + 1) + ", t = " + std::to_string(time_) + " s: " + e.what());
+  }
 }
 
 template <int D> void Solver<D>::member_boundary_forces(double dt) {
@@ -92,9 +107,9 @@ template <int D> void Solver<D>::grid_update(double dt) {
       }
     }
   });
-  wall_touch(scene_);
   boundary_work_ += apply_boundaries(scene_, g.vL, dt, time_ + dt, true);
-  body_contact(scene_, g.vL);
+  body_contact(scene_, g.vL, !(viscosity_ && viscosity_->detected_contact()));  // detection once per step
+  if (viscosity_) viscosity_->account(g, dt);
 }
 
 // Returns true when the stresses were updated too (every body's law pointwise: fused into G2P's chunks).
@@ -142,8 +157,11 @@ template <int D> double Solver<D>::stable_time_step(double limit) const {
   const auto& P = scene_.particles;
   double dt = limit;
   if (scene_.options.dt_max > 0) dt = std::min(dt, scene_.options.dt_max);
-  std::vector<double> dt_bodies;  // each body's stable step h / (c + |v|) (damping included)
-  for (const Body& b : scene_.bodies) {
+  std::vector<double> dt_bodies;  // each body's stable step h / (c + |v|) (damping included unless implicit)
+  std::vector<double> dt_damped(scene_.bodies.size(), std::numeric_limits<double>::infinity());
+  implicit_now_.assign(scene_.bodies.size(), 0);
+  for (std::size_t k = 0; k < scene_.bodies.size(); ++k) {
+    const Body& b = scene_.bodies[k];
     const double vmax = parallel_reduce(b.begin, b.end, 0.0, [&](Index i) { return P.v[i].norm(); }, [](double a, double v) { return std::max(a, v); });
     const Material<D>& mat = *scene_.materials[b.material];
     const double h = scene_.grid->h(), c = mat.wave_speed();
@@ -151,15 +169,29 @@ template <int D> double Solver<D>::stable_time_step(double limit) const {
     // Kelvin-Voigt: the grid's highest frequency is omega_max ~ 2 sqrt(D) (c + |v|) / h (the checkerboard mode
     // along a diagonal); the 1D value 2 (c + |v|) / h let a damped rubber pad blow up in 2D at cfl 0.5
     // (docs/verification.md, buffer_pad). Strongly damped, the step tends to h^2 / (2 D beta c^2).
+    double a, bv;
+    const bool implicit = viscosity_ && mat.viscous_coefficients(a, bv);
     if (const double beta = mat.damping_time(); beta > 0) {
       const double w = 2 * std::sqrt(double(D)) / dt_b, zeta = 0.5 * beta * w;
-      dt_b = (2 / w) * (std::sqrt(1 + zeta * zeta) - zeta);
+      dt_damped[k] = (2 / w) * (std::sqrt(1 + zeta * zeta) - zeta);
+      if (!implicit) dt_b = dt_damped[k];
     }
     dt_bodies.push_back(dt_b);
-    dt = std::min(dt, scene_.options.cfl * dt_b);
   }
+  // The elastic step, and the explicit one with every damping limit. The implicit viscosity costs a solve per step
+  // (~1-5x an explicit step, more CG iterations the stiffer the viscous part): it is used only where it lengthens the
+  // step by more than kImplicitGain, for the bodies whose damped limit is below the elastic step.
+  const double cfl = scene_.options.cfl;
+  double dt_el = dt, dt_ex = dt;
+  for (std::size_t k = 0; k < dt_bodies.size(); ++k)
+    dt_el = std::min(dt_el, cfl * dt_bodies[k]), dt_ex = std::min(dt_ex, cfl * std::min(dt_bodies[k], dt_damped[k]));
+  const bool implicit_step = viscosity_ && dt_el > kImplicitGain * dt_ex;
+  dt = implicit_step ? dt_el : dt_ex;
   courant_ = 0;
-  for (double d : dt_bodies) courant_ = std::max(courant_, dt / d);
+  for (std::size_t k = 0; k < dt_bodies.size(); ++k) {
+    implicit_now_[k] = implicit_step && dt > cfl * dt_damped[k];
+    courant_ = std::max(courant_, dt / (implicit_now_[k] ? dt_bodies[k] : std::min(dt_bodies[k], dt_damped[k])));
+  }
   // An explicit frame limits the step (2 / omega_max, scaled by the same fraction); Newmark does not.
   if (scene_.frame) dt = std::min(dt, scene_.options.cfl * scene_.frame->stable_time_step());
   return dt;
@@ -177,6 +209,7 @@ template <int D> void Solver<D>::save_state(StateWriter& w) const {
   w.put<std::uint8_t>(scene_.frame ? 1 : 0);
   if (scene_.frame) scene_.frame->save_state(w);
   if (members_) members_->save_state(w);
+  w.put(viscosity_ ? viscosity_->dissipated() : 0.0);
 }
 
 template <int D> void Solver<D>::load_state(StateReader& r) {
@@ -194,6 +227,8 @@ template <int D> void Solver<D>::load_state(StateReader& r) {
   r.expect_size("frames", r.get<std::uint8_t>(), scene_.frame ? 1 : 0);
   if (scene_.frame) scene_.frame->load_state(r);
   if (members_) members_->load_state(r);
+  ImplicitViscosity<D> none;
+  (viscosity_ ? *viscosity_ : none).load_state(r);
 }
 
 template <int D> Diagnostics<D> Solver<D>::diagnostics() const {
@@ -205,6 +240,7 @@ template <int D> Diagnostics<D> Solver<D>::diagnostics() const {
   for (int c = 0; c < D; ++c) d.momentum[c] = deterministic_sum(np, [&](Index i) { return P.mass[i] * P.v[i][c]; });
   for (const Body& b : scene_.bodies) d.strain += scene_.materials[b.material]->strain_energy(P, b.begin, b.end);
   for (const auto& m : scene_.materials) d.dissipated += m->dissipated();
+  if (viscosity_) d.dissipated += viscosity_->dissipated();
   d.boundary_work = boundary_work_;
   if (const Frame* f = scene_.frame.get()) {
     d.frame_kinetic = f->kinetic_energy();

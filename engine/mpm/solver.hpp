@@ -7,6 +7,7 @@
 #include "engine/contact/member_contact.hpp"
 #include "engine/mpm/scene.hpp"
 #include "engine/mpm/transfer.hpp"
+#include "engine/mpm/viscous.hpp"
 
 namespace dmi {
 
@@ -57,8 +58,10 @@ template <int D> class Solver {
 
  private:
   static constexpr long kSortInterval = 16;  // steps between particle reorderings (sort_particles)
+  static constexpr double kImplicitGain = 3.0;  // implicit viscosity only where it lengthens the step more than this
   void sort_particles();
   void particles_to_grid();
+  void implicit_viscosity(double dt);
   void member_boundary_forces(double dt);
   void advance_members(double dt);
   void grid_update(double dt);
@@ -69,11 +72,14 @@ template <int D> class Solver {
   Scene<D> scene_;
   std::unique_ptr<TransferKernels<D>> kernels_;
   std::unique_ptr<MemberContact<D>> members_;  // when the scene has a frame
+  std::unique_ptr<ImplicitViscosity<D>> viscosity_;  // when a damped body is integrated implicitly
   double time_ = 0.0;
   long steps_ = 0;
   double boundary_work_ = 0.0;
   double mass_eps_ = 0.0;  // nodal masses below this are treated as empty
   mutable double courant_ = 0.0;
+  mutable std::vector<char> implicit_now_;  // per body: its viscosity integrated implicitly this step
+  typename ImplicitViscosity<D>::Held held_;  // members' stuck nodes, scratch
 };
 
 }  // namespace dmi

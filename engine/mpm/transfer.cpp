@@ -94,6 +94,20 @@ template <int D, class Shape> class Kernels final : public TransferKernels<D> {
     }
   }
 
+  int stencils(const Scene<D>& s, Index begin, Index end, std::vector<Index>& node, std::vector<Vec<D>>& grad) const override {
+    const Grid<D>& g = *s.grid;
+    const Particles<D>& P = s.particles;
+    node.resize(static_cast<std::size_t>(end - begin) * St::NN);
+    grad.resize(node.size());
+    parallel_for(begin, end, [&](Index i) {
+      St st;
+      st.compute(g.grid_coord(P.x[i]), P.half_size[i] * g.inv_h(), g.inv_h());
+      const std::size_t k0 = static_cast<std::size_t>(i - begin) * St::NN;
+      for (int n = 0; n < St::NN; ++n) node[k0 + n] = g.node_id(st.base + st.offset[n]), grad[k0 + n] = st.dN[n];
+    });
+    return St::NN;
+  }
+
   void scatter_mass_position(const Scene<D>& s, const std::vector<Index>& tiles, std::vector<Vec<D>>& mx) const override {
     const Grid<D>& g = *s.grid;
     const Particles<D>& P = s.particles;

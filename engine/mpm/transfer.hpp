@@ -36,6 +36,10 @@ template <int D> class TransferKernels {
   // mx_i += sum_p m_p N_ip x_p over the particles of the given occupied tiles (indices into
   // Grid::occupied()), serially: the mass-weighted particle position a node sees (Lin & Yang 2024
   // eq. 25) where members need it. mx has the grid's field layout.
+  // The stencils of particles [begin, end) for operators built outside the transfer (the implicit viscosity,
+  // engine/mpm/viscous.hpp): NN = K^D entries per particle, node[k NN + n] the node's index in its field and
+  // grad[k NN + n] its grad N (1/m), k = particle - begin. Returns NN.
+  virtual int stencils(const Scene<D>& s, Index begin, Index end, std::vector<Index>& node, std::vector<Vec<D>>& grad) const = 0;
   virtual void scatter_mass_position(const Scene<D>& s, const std::vector<Index>& tiles, std::vector<Vec<D>>& mx) const = 0;
 };
 

@@ -32,6 +32,7 @@ struct MpmConfig {
   TransferKind transfer = TransferKind::flip;
   double flip_blend = 1.0;                           // 1 = pure FLIP, 0 = pure PIC
   StressUpdate update = StressUpdate::usl;
+  bool implicit_damping = true;                      // mpm.damping: implicit (true) or explicit
   // Code-level only (not a scenario key): use analysis.cfl as given even above the scheme's measured stability
   // limit (stable_cfl_limit); for the studies that measure that limit (validate --stress cfl_sweep).
   bool allow_unstable_cfl = false;

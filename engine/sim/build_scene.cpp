@@ -187,6 +187,7 @@ template <int D> Scene<D> build_scene(const Scenario& s) {
   sc.options.transfer = s.mpm.transfer;
   sc.options.flip_blend = s.mpm.flip_blend;
   sc.options.update = s.mpm.update;
+  sc.options.implicit_damping = s.mpm.implicit_damping;
   sc.options.cfl = s.analysis.cfl;
   sc.options.dt_max = s.analysis.dt_max;
   sc.options.contact_friction = s.contact.friction;
