@@ -73,6 +73,12 @@ template <int D> class MemberContact {
   const MemberContactStats& stats() const { return stats_; }
   // The node-field pairs (field * nnodes + node) held by stick at full weight in the last step, with the velocity
   // v* they were given (the implicit viscosity holds them there in its solve, engine/mpm/viscous.hpp).
+  // True when a node of the given field received a force in the last step.
+  bool loaded_field(int field, Index nnodes) const {
+    for (const Loaded& l : loaded_)
+      if (l.pressed && l.k / nnodes == field) return true;
+    return false;
+  }
   template <class Fn> void for_each_stuck(Fn&& f) const {
     for (const Loaded& l : loaded_)
       if (l.pressed && l.mode == MemberContactMode::stick && l.q == 1) f(l.k, l.vstar);

@@ -86,9 +86,9 @@ template <int D> void wall_touch(Scene<D>& s) {
   }
 }
 
-template <int D> double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double time, bool record) {
+template <int D> double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double time, bool record, bool reset) {
   Grid<D>& g = *s.grid;
-  if (record) {
+  if (record && reset) {
     for (auto& w : s.walls) w.force.setZero();
     for (auto& r : s.regions) r.force.setZero();
   }
@@ -318,8 +318,8 @@ template <int D> void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel, bool f
 
 template void wall_touch<2>(Scene<2>&);
 template void wall_touch<3>(Scene<3>&);
-template double apply_boundaries<2>(Scene<2>&, std::vector<Vec<2>>&, double, double, bool);
-template double apply_boundaries<3>(Scene<3>&, std::vector<Vec<3>>&, double, double, bool);
+template double apply_boundaries<2>(Scene<2>&, std::vector<Vec<2>>&, double, double, bool, bool);
+template double apply_boundaries<3>(Scene<3>&, std::vector<Vec<3>>&, double, double, bool, bool);
 template void body_contact<2>(Scene<2>&, std::vector<Vec<2>>&, bool);
 template void body_contact<3>(Scene<3>&, std::vector<Vec<3>>&, bool);
 

@@ -17,7 +17,8 @@ template <int D> void wall_touch(Scene<D>& s);
 //   roller:   v.n = 0 (bilateral, frictionless)
 //   slip:     if v.n < 0: v -= (v.n) n                      (unilateral, frictionless)
 //   friction: as slip, then |v_t| reduced by mu |v.n|, to 0 at most (Coulomb)
-template <int D> double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double time, bool record);
+// reset = false adds to the forces of an earlier call in the same step (the rigid bodies' constraint iterations).
+template <int D> double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double time, bool record, bool reset = true);
 
 // Bardenhagen, Brackbill & Sulsky (2000): at nodes where several fields have mass, a field moving
 // towards the others, (v_b - v_cm) . n_b > 0, loses that normal relative velocity; its tangential

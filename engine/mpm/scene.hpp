@@ -21,6 +21,7 @@ struct Body {
   int material = 0;     // index into Scene::materials
   int field = 0;        // velocity field (multi-field contact) this body scatters to
   Index begin = 0, end = 0;  // particle range
+  bool rigid = false;   // moves as a rigid body (engine/mpm/rigid.hpp): no stress, no wave-speed step limit
 };
 
 // Rigid, fixed wall: a half-space behind a plane (normal n points into the free side) or a box.

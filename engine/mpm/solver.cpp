@@ -25,8 +25,13 @@ template <int D> Solver<D>::Solver(Scene<D> scene) : scene_(std::move(scene)) {
   for (double m : scene_.particles.mass) mmin = std::min(mmin, m);
   mass_eps_ = std::isfinite(mmin) ? 1e-12 * mmin : 0.0;
   for (const Body& b : scene_.bodies) scene_.materials[b.material]->attach(scene_.particles, b.begin, b.end);
+  for (const Body& b : scene_.bodies)  // a rigid body has no stress (its material gives its density)
+    if (b.rigid)
+      for (Index i = b.begin; i < b.end; ++i) scene_.particles.stress[i].setZero(), scene_.particles.stress_zz[i] = 0;
   if (scene_.frame) members_ = std::make_unique<MemberContact<D>>(*scene_.grid);
   if (scene_.options.implicit_damping && ImplicitViscosity<D>::needed(scene_)) viscosity_ = std::make_unique<ImplicitViscosity<D>>();
+  for (const Body& b : scene_.bodies)
+    if (b.rigid && !rigid_) rigid_ = std::make_unique<RigidBodies<D>>(scene_);
 }
 
 // The step as named phases (docs/architecture.md, "The step").
@@ -77,7 +82,15 @@ template <int D> void Solver<D>::implicit_viscosity(double dt) {
 }
 
 template <int D> void Solver<D>::member_boundary_forces(double dt) {
-  if (members_) members_->apply(scene_, *kernels_, dt);
+  if (!members_) return;
+  members_->apply(scene_, *kernels_, dt);
+  // A rigid body on a member would need the member's reaction in the rigid constraint passes (rigid_constraints),
+  // which the staggered frame does not take: refused rather than let the body sink into the member.
+  if (rigid_)
+    for (const Body& b : scene_.bodies)
+      if (b.rigid && members_->loaded_field(b.field, scene_.grid->nnodes()))
+        throw RunError("run stopped at step " + std::to_string(steps_ + 1) + ", t = " + std::to_string(time_) + " s: the rigid body '" + b.name +
+                       "' met a beam-column member; rigid bodies meet walls and other bodies only (make it elastic, or keep a buffer between)");
 }
 
 template <int D> void Solver<D>::advance_members(double dt) {
@@ -109,7 +122,24 @@ template <int D> void Solver<D>::grid_update(double dt) {
   });
   boundary_work_ += apply_boundaries(scene_, g.vL, dt, time_ + dt, true);
   body_contact(scene_, g.vL, !(viscosity_ && viscosity_->detected_contact()));  // detection once per step
+  if (rigid_) rigid_constraints(dt);
   if (viscosity_) viscosity_->account(g, dt);
+}
+
+// The walls, regions and body contact act on a rigid body's nodes one by one; its motion follows from all of them at
+// once. Alternating projections: the rigid fields' nodal velocities onto their rigid motion, then the constraints
+// again (their forces and work added to this step's), until the projection no longer changes them (each constraint
+// is a projection onto a convex set of nodal velocities, Coulomb friction with its limit summed over the passes).
+// Without it a rigid body on a wall kept sinking: the wall stopped only the few nodes it holds.
+template <int D> void Solver<D>::rigid_constraints(double dt) {
+  Grid<D>& g = *scene_.grid;
+  const double s_min = scene_.gravity.norm() * dt + 1e-12;
+  for (int it = 0; it < kRigidPasses; ++it) {
+    if (rigid_->project_nodes(scene_, g.vL, s_min) < 1e-8) return;
+    boundary_work_ += apply_boundaries(scene_, g.vL, dt, time_ + dt, true, false);
+    body_contact(scene_, g.vL, false);
+  }
+  rigid_->project_nodes(scene_, g.vL, s_min);
 }
 
 // Returns true when the stresses were updated too (every body's law pointwise: fused into G2P's chunks).
@@ -117,19 +147,21 @@ template <int D> bool Solver<D>::grid_to_particles(double dt) {
   Grid<D>& g = *scene_.grid;
   G2PResult r;
   bool fuse = true;
-  for (const Body& b : scene_.bodies) fuse = fuse && scene_.materials[b.material]->pointwise();
+  for (const Body& b : scene_.bodies) fuse = fuse && (b.rigid || scene_.materials[b.material]->pointwise());
   const typename TransferKernels<D>::ChunkHook stress = [this, dt](Index i0, Index i1) {
     for (const Body& b : scene_.bodies)
-      if (const Index a = std::max(b.begin, i0), e = std::min(b.end, i1); a < e) scene_.materials[b.material]->update(scene_.particles, a, e, dt);
+      if (const Index a = std::max(b.begin, i0), e = std::min(b.end, i1); a < e && !b.rigid) scene_.materials[b.material]->update(scene_.particles, a, e, dt);
   };
   const auto* after = fuse ? &stress : nullptr;
   if (scene_.options.update == StressUpdate::usl) {
     r = kernels_->g2p(scene_, dt, G2PMode::full, after);
+    if (rigid_) rigid_->project(scene_), rigid_->move(scene_, dt);
   } else {
     // MUSL (Sulsky et al. 1995): update particle velocities, remap their momentum to the grid,
     // and take the velocity gradient from the remapped nodal velocities.
     r = kernels_->g2p(scene_, dt, G2PMode::velocity_only);
     if (!r.ok) fail("non-finite particle velocity");
+    if (rigid_) rigid_->project(scene_);
     for (Index id : g.active())
       for (int fld = 0; fld < g.nfields(); ++fld) g.p[fld * g.nnodes() + id].setZero();
     kernels_->p2g(scene_, true);
@@ -144,13 +176,20 @@ template <int D> bool Solver<D>::grid_to_particles(double dt) {
     apply_boundaries(scene_, g.v, dt, time_ + dt, false);
     if (members_) members_->constrain_remap(scene_, g.v);  // members are walls too (unlike body contact)
     r = kernels_->g2p(scene_, dt, G2PMode::kinematics, after);
+    if (rigid_) rigid_->move(scene_, dt);
   }
+  if (rigid_)
+    for (const Body& b : scene_.bodies)
+      if (b.rigid)
+        for (Index i = b.begin; i < b.end; ++i)
+          if (!scene_.grid->interior(scene_.particles.x[i]) || !scene_.particles.v[i].allFinite()) r.ok = false;
   if (!r.ok) fail("particle state");
   return fuse;
 }
 
 template <int D> void Solver<D>::update_stress(double dt) {
-  for (const Body& b : scene_.bodies) scene_.materials[b.material]->update(scene_.particles, b.begin, b.end, dt);
+  for (const Body& b : scene_.bodies)
+    if (!b.rigid) scene_.materials[b.material]->update(scene_.particles, b.begin, b.end, dt);
 }
 
 template <int D> double Solver<D>::stable_time_step(double limit) const {
@@ -164,14 +203,15 @@ template <int D> double Solver<D>::stable_time_step(double limit) const {
     const Body& b = scene_.bodies[k];
     const double vmax = parallel_reduce(b.begin, b.end, 0.0, [&](Index i) { return P.v[i].norm(); }, [](double a, double v) { return std::max(a, v); });
     const Material<D>& mat = *scene_.materials[b.material];
-    const double h = scene_.grid->h(), c = mat.wave_speed();
+    // A rigid body has no waves: its speed bound is sqrt(|g| h), so that a body at rest falls a fraction of a cell.
+    const double h = scene_.grid->h(), c = b.rigid ? std::sqrt(scene_.gravity.norm() * h) : mat.wave_speed();
     double dt_b = h / (c + vmax);
     // Kelvin-Voigt: the grid's highest frequency is omega_max ~ 2 sqrt(D) (c + |v|) / h (the checkerboard mode
     // along a diagonal); the 1D value 2 (c + |v|) / h let a damped rubber pad blow up in 2D at cfl 0.5
     // (docs/verification.md, buffer_pad). Strongly damped, the step tends to h^2 / (2 D beta c^2).
     double a, bv;
     const bool implicit = viscosity_ && mat.viscous_coefficients(a, bv);
-    if (const double beta = mat.damping_time(); beta > 0) {
+    if (const double beta = b.rigid ? 0.0 : mat.damping_time(); beta > 0) {
       const double w = 2 * std::sqrt(double(D)) / dt_b, zeta = 0.5 * beta * w;
       dt_damped[k] = (2 / w) * (std::sqrt(1 + zeta * zeta) - zeta);
       if (!implicit) dt_b = dt_damped[k];
@@ -210,6 +250,7 @@ template <int D> void Solver<D>::save_state(StateWriter& w) const {
   if (scene_.frame) scene_.frame->save_state(w);
   if (members_) members_->save_state(w);
   w.put(viscosity_ ? viscosity_->dissipated() : 0.0);
+  if (rigid_) rigid_->save_state(w);
 }
 
 template <int D> void Solver<D>::load_state(StateReader& r) {
@@ -229,6 +270,7 @@ template <int D> void Solver<D>::load_state(StateReader& r) {
   if (members_) members_->load_state(r);
   ImplicitViscosity<D> none;
   (viscosity_ ? *viscosity_ : none).load_state(r);
+  if (rigid_) rigid_->load_state(r);
 }
 
 template <int D> Diagnostics<D> Solver<D>::diagnostics() const {

@@ -7,6 +7,7 @@
 #include "engine/contact/member_contact.hpp"
 #include "engine/mpm/scene.hpp"
 #include "engine/mpm/transfer.hpp"
+#include "engine/mpm/rigid.hpp"
 #include "engine/mpm/viscous.hpp"
 
 namespace dmi {
@@ -58,10 +59,12 @@ template <int D> class Solver {
 
  private:
   static constexpr long kSortInterval = 16;  // steps between particle reorderings (sort_particles)
-  static constexpr double kImplicitGain = 3.0;  // implicit viscosity only where it lengthens the step more than this
+  static constexpr double kImplicitGain = 3.0;
+  static constexpr int kRigidPasses = 200;  // constraint passes on the rigid bodies' nodes per step, at most  // implicit viscosity only where it lengthens the step more than this
   void sort_particles();
   void particles_to_grid();
   void implicit_viscosity(double dt);
+  void rigid_constraints(double dt);
   void member_boundary_forces(double dt);
   void advance_members(double dt);
   void grid_update(double dt);
@@ -73,6 +76,7 @@ template <int D> class Solver {
   std::unique_ptr<TransferKernels<D>> kernels_;
   std::unique_ptr<MemberContact<D>> members_;  // when the scene has a frame
   std::unique_ptr<ImplicitViscosity<D>> viscosity_;  // when a damped body is integrated implicitly
+  std::unique_ptr<RigidBodies<D>> rigid_;            // when the scene has rigid bodies
   double time_ = 0.0;
   long steps_ = 0;
   double boundary_work_ = 0.0;

@@ -69,6 +69,7 @@ struct BodyConfig {
   std::string name, material;
   ShapeConfig shape;
   int particles_per_cell = 2;                        // per direction
+  bool rigid = false;                                // rigid body: no stress, translation and rotation only
   DVec velocity;                                     // m/s
   // Optional sine mode added to velocity: v += amplitude sin(wavevector . (x - origin)).
   DVec sine_amplitude, sine_wavevector, sine_origin;  // m/s, rad/m, m

@@ -164,6 +164,10 @@ void read_body(Obj& o, BodyConfig& b) {
   o.string("material", b.material, Spec{.doc = "name of an entry in materials", .required = true});
   read_shape(o.object("shape", "region the body fills; particles are seeded on a regular sub-grid of every cell inside it"), b.shape);
   o.integer("particles_per_cell", b.particles_per_cell, Spec{.doc = "particles per cell along each axis", .min = 1, .max = 8});
+  o.boolean("rigid", b.rigid, Spec{.doc = "move as a rigid body: translation and rotation from the particles' momentum and angular momentum "
+                                          "after each grid update, no stress, no step limit from the material's stiffness (its density "
+                                          "gives the mass); contacts act on it as on any body. For a boulder whose deformation does not "
+                                          "matter (against a soft buffer), not for a hard impact whose peak the boulder's elasticity sets"});
   b.velocity.assign(o.context().dim, 0.0);
   o.vector("velocity", b.velocity, any("m/s", "initial velocity"));
   Obj m = o.object("velocity_sine", "optional sine mode added to the initial velocity, v += amplitude sin(wavevector . (x - origin)); "

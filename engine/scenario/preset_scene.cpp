@@ -354,8 +354,9 @@ void Builder::add_boulder() {
          "a boulder above the ground: its centre at least the equivalent radius " + std::to_string(r) + " m (+ half a cell) above the bed");
   if (cx + r > front(cy) + 1e-9)
     fail("/boulder/position", b.position, "a boulder upstream of the dam face or buffer (it overlaps them)");
+  const bool rigid = b.model == "rigid" || (b.model == "auto" && p_.buffer);
   bodies_.push_back(json{{"name", "boulder"}, {"material", "rock"}, {"shape", {{"type", "ball"}, {"center", {clean(cx), clean(cy)}}, {"radius", clean(r)}}},
-                         {"velocity", {vx, vy}}});
+                         {"velocity", {vx, vy}}, {"rigid", rigid}});
   probes_.push_back(json{{"name", "boulder"}, {"type", "body"}, {"body", "boulder"}, {"quantities", {"velocity", "kinetic_energy", "position"}}});
   box_.add(cx - r, cy - r), box_.add(cx + r, cy + r);
   // End: arrival plus 0.15 s (a buffered impact lasts a few hundredths of a second; docs/verification.md).

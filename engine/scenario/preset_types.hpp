@@ -24,6 +24,7 @@ struct BoulderPreset {
   double diameter = 0, mass = 0, density = 2650, youngs_modulus = 50e9, poisson_ratio = 0.25;
   DVec velocity, position;
   double release_height = 0, impact_height = 0, gap = -1;        // gap < 0: default
+  std::string model = "auto";                                      // auto | rigid | elastic
 };
 
 struct DebrisPreset {

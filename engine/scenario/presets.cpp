@@ -134,6 +134,11 @@ void read_boulder(Obj o, BoulderPreset& b) {
   o.number("impact_height", b.impact_height, positive("m", "height of the boulder's centre where it meets the dam (or buffer); default 0.9 x dam height"));
   o.vector("position", b.position, Spec{.unit = "m", .doc = "centre at release (overrides impact_height and gap)"});
   o.number("gap", b.gap, nonneg("m", "clearance to the face at release along the path; default 2 cells"));
+  o.choice<std::string>("model", b.model, {{"auto", "auto"}, {"rigid", "rigid"}, {"elastic", "elastic"}},
+                        Spec{.doc = "auto: rigid when it strikes a tyre buffer (its deformation does not matter against rubber thousands of "
+                                    "times softer, and the step is then the buffer's, not the rock's), elastic on a bare face (the rock's "
+                                    "elasticity sets a hard impact's peak); rigid or elastic to choose. A rigid boulder that reaches a "
+                                    "member stops the run"});
   o.finish();
   if (o.documenting()) return;
   if ((b.diameter > 0) == (b.mass > 0)) o.fail("diameter", nullptr, "either diameter or mass (exactly one of them)");

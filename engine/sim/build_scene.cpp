@@ -141,6 +141,7 @@ template <int D> Scene<D> build_scene(const Scenario& s) {
     body.name = bc.name;
     body.material = mat;
     body.field = multi ? static_cast<int>(b) : 0;
+    body.rigid = bc.rigid;
     body.begin = static_cast<Index>(sc.particles.size());
     seed_body(sc, s, bc, static_cast<int>(b), s.materials[mat].density);
     body.end = static_cast<Index>(sc.particles.size());

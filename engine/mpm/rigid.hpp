@@ -1,0 +1,48 @@
+// Rigid bodies in the MPM grid. A rigid body's particles scatter mass and momentum as any body's (no stress, so no
+// internal force), and meet walls, members and other bodies through the same nodal constraints. After G2P their
+// velocities are projected on the rigid motions: with M = sum m_p, r_p = x_p - x_c,
+//   V = sum m_p v_p / M,   omega = I^-1 sum m_p r_p x v_p,   v_p <- V + omega x r_p,
+// which keeps the body's linear and angular momentum (I = sum m_p (|r_p|^2 1 - r_p r_p^T) + the particles' own
+// inertia, m (a^2 + b^2) / 3 about their centre for a cell of half-sizes a, b in 2D, and likewise per axis in 3D),
+// then the body moves rigidly: x_c += dt V, R <- exp(dt [omega]x) R, x_p = x_c + R (x0_p - x_c0); F_p = R,
+// L_p = [omega]x. No wave speed limits its step, only |v| dt < h.
+#pragma once
+#include <type_traits>
+#include <vector>
+
+#include "engine/common/state_io.hpp"
+#include "engine/mpm/scene.hpp"
+
+namespace dmi {
+
+template <int D> class RigidBodies {
+ public:
+  // The rigid bodies of the scene (Body::rigid): initial centre, inertia and motion (the projection of the seeded
+  // velocities).
+  explicit RigidBodies(Scene<D>& s);
+  bool empty() const { return bodies_.empty(); }
+  // Particle velocities of every rigid body projected on its rigid motion (momentum and angular momentum kept).
+  void project(Scene<D>& s);
+  // The rigid bodies' nodal velocities (each in its own field) projected on the rigid motion with the nodes' masses
+  // and positions (momentum and angular momentum of the field kept). Returns the largest change of a nodal
+  // velocity relative to the body's speed scale |V| + |omega| r_max + s (s > 0, e.g. |g| dt).
+  double project_nodes(Scene<D>& s, std::vector<Vec<D>>& vel, double s_min) const;
+  // Rigid motion over dt from the projected velocities: centre, rotation, particle positions, F and L.
+  void move(Scene<D>& s, double dt);
+  void save_state(StateWriter& w) const;
+  void load_state(StateReader& r);
+
+ private:
+  using Spin = std::conditional_t<D == 2, double, Vec<3>>;
+  struct State {
+    int body = 0;
+    double mass = 0;
+    Vec<D> xc0 = Vec<D>::Zero(), xc = Vec<D>::Zero(), V = Vec<D>::Zero();
+    Mat<D> R = Mat<D>::Identity();
+    Mat<3> I0 = Mat<3>::Zero();  // inertia about the centre in the initial orientation (2D: I0(2,2))
+    Spin omega{};
+  };
+  std::vector<State> bodies_;
+};
+
+}  // namespace dmi
