@@ -6,13 +6,16 @@
 // Euler on the viscous part, forward on the elastic one):
 //   (M + dt K_v) u = M v*,   v* = (p + dt f_e) / m,   f_v = -K_v u,
 //   K_v u = sum_p V_p sigma_v(D_p(u)) grad N_ip,   D_p(u) = sym(sum_i u_i (x) grad N_ip),
-// per damped body over the nodes of its field, by conjugate gradients with a Jacobi preconditioner (K_v is symmetric
-// positive semi-definite and the lumped M positive, so the system is SPD). f_e is P2G's nodal force less the viscous
+// per damped body over the nodes of its field, by a sparse LDL^T factorisation (K_v is symmetric positive
+// semi-definite and the lumped M positive, so the system is SPD). f_e is P2G's nodal force less the viscous
 // stress of the last update, which P2G scattered with the elastic one; f_v then joins it, so that members, walls and
 // contact see one nodal force as before. The viscous part is unconditionally stable and the step is the elastic
 // CFL step.
 #pragma once
 #include <vector>
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
 
 #include "engine/mpm/scene.hpp"
 #include "engine/mpm/transfer.hpp"
@@ -35,8 +38,7 @@ template <int D> class ImplicitViscosity {
   // constraint, as an elastic force does); where body contact would change the damped field, the other field's
   // nodal mass joins it along the contact normal n (the direction of the change), m_A + m_B n n^T, so that both leave
   // the solve with one normal velocity and the contact force includes the viscous one (momentum is exchanged, not
-  // made). Wall touch sets must be current. Returns the largest number of CG iterations; throws RunError if
-  // CG fails.
+  // made). Wall touch sets must be current. Returns 1 when a body was solved; throws RunError if the solve fails.
   int apply(Scene<D>& s, const TransferKernels<D>& kernels, double dt, double t, double mass_eps, const std::vector<char>& bodies,
             const Held& held);
   // True when the last apply() ran the body contact's surface detection for this step (the grid update may reuse it).
@@ -62,7 +64,7 @@ template <int D> class ImplicitViscosity {
   std::vector<int> local_;          // field-local node -> unknown (-1: none)
   std::vector<int> entry_;          // per particle and entry: unknown (-1: none)
   std::vector<Index> nodes_;        // unknown -> field-local node
-  std::vector<Vec<D>> rhs_, u_, r_, z_, p_, q_, diag_;
+  std::vector<Vec<D>> rhs_, u_, q_;
   std::vector<Vec<D>> free_;        // per unknown: 1 for a free component, 0 for a held one
   std::vector<Vec<D>> vstar_, walled_, probe_;  // all node-fields: v*, after the walls and regions, after body contact
   std::vector<char> field_solved_;  // per field: a body of it is solved implicitly this step
@@ -72,6 +74,14 @@ template <int D> class ImplicitViscosity {
     Vec<D> n;  // contact normal
   };
   std::vector<Tie> ties_;
+  std::vector<Mat<D>> blocks_;      // per unknown and neighbour offset: the block of A
+  std::vector<char> used_;
+  std::vector<int> dof_;            // per unknown component: free index, -1 held
+  std::vector<Eigen::Triplet<double>> triplets_;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
+  Eigen::SparseMatrix<double> A_;
+  std::vector<int> outer_, inner_;  // the pattern ldlt_ was analysed for
+  std::vector<int> pair_slot_;      // per pair of stencil entries: the offset slot
   bool probed_ = false, detected_ = false;
   int iterations_ = 0;
   std::vector<Index> acc_k_;        // this step's solved node-fields ...
