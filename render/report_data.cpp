@@ -86,6 +86,11 @@ json scenario_rows(const RunData& r) {
     row("rock", fmt("E %.3g GPa", num(k, {"youngs_modulus_Pa"}) / 1e9) + fmt(", ν %.2f", num(k, {"poisson_ratio"})) +
                     fmt(", ρ %.0f kg/m³", num(k, {"density_kg_m3"})));
     row("impact energy", fmt("%.4g kJ", 0.5 * num(k, {"mass_kg"}) * std::pow(num(k, {"speed_m_s"}), 2) / 1e3));
+    if (k.value("model", "") == "rigid")
+      row("boulder model", "rigid: against the tyre buffer its deformation does not matter (same loads as an elastic boulder at the "
+                           "same step, docs/verification.md); the step is the buffer's, at CFL 0.125");
+    else if (k.value("model", "") == "elastic")
+      row("boulder model", "elastic: on a bare face the rock's stiffness sets the impact's peak");
   }
   if (b.contains("debris_surge")) {
     const json& k = b["debris_surge"];

@@ -171,7 +171,7 @@ json Builder::design_basis() const {
     const BoulderPreset& b = *p_.boulder;
     out["boulder"] = json{{"mass_kg", boulder_m_}, {"diameter_m", std::cbrt(6 * boulder_m_ / (b.density * kPi))}, {"density_kg_m3", b.density},
                           {"youngs_modulus_Pa", b.youngs_modulus}, {"poisson_ratio", b.poisson_ratio}, {"speed_m_s", boulder_speed_},
-                          {"impact_height_m", impact_y_}};
+                          {"impact_height_m", impact_y_}, {"model", b.model == "rigid" || (b.model == "auto" && p_.buffer) ? "rigid" : "elastic"}};
   }
   if (p_.debris) {
     const DebrisPreset& f = *p_.debris;
