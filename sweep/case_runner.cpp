@@ -12,6 +12,7 @@
 #include "engine/scenario/scenario.hpp"
 #include "engine/sim/run.hpp"
 #include "render/report.hpp"
+#include "render/sha256.hpp"
 
 namespace dmi::sweep {
 namespace fs = std::filesystem;
@@ -55,20 +56,59 @@ void fill_from_design(json& row, const json& design) {
   row["variants"] = vars;
 }
 
+// Hard links (copies where links fail) of every file under from into to, directories created.
+void link_tree(const fs::path& from, const fs::path& to) {
+  for (const auto& e : fs::recursive_directory_iterator(from)) {
+    const fs::path target = to / fs::relative(e.path(), from);
+    if (e.is_directory()) {
+      fs::create_directories(target);
+      continue;
+    }
+    fs::create_directories(target.parent_path());
+    fs::remove(target);
+    std::error_code ec;
+    fs::create_hard_link(e.path(), target, ec);
+    if (ec) fs::copy_file(e.path(), target, fs::copy_options::overwrite_existing);
+  }
+}
+
+bool complete(const fs::path& d) { return fs::exists(d / "results.h5") && !fs::exists(d / "results.h5.partial"); }
+
 // Simulates every variant into dir (dir/<label>/ for labelled ones); adds their run wall times to sim_wall and
-// returns the results files.
+// returns the results files. Variants identical after expansion -- the canonical JSON of the low-level scenario,
+// keys sorted -- are simulated once per sweep: the first run is kept under OUT/runs/<hash>/ and later cases link
+// its files (the without-buffer run of every buffer thickness at one boulder speed). Runs are deterministic for any
+// thread count, so a linked run is the run the case would have made.
 std::vector<std::string> run_variants(const std::vector<ScenarioVariant>& variants, const fs::path& dir, const SweepOptions& o,
                                       double& sim_wall) {
   std::vector<std::string> written;
   for (const auto& v : variants) {
+    const fs::path vd = v.label.empty() ? dir : dir / v.label;
+    const std::string& text = v.scenario.expanded_text.empty() ? v.scenario.source_text : v.scenario.expanded_text;
+    const fs::path shared = fs::path(o.out_dir) / "runs" / render::sha256_hex(json::parse(text).dump()).substr(0, 20);
+    if (complete(shared)) {
+      fs::remove_all(vd);
+      link_tree(shared, vd);
+      sim_wall += read_results((vd / "results.h5").string(), false).info.numbers.at("wall_seconds");
+      written.push_back((vd / "results.h5").string());
+      continue;
+    }
     RunOptions ro;
-    ro.out_dir = (v.label.empty() ? dir : dir / v.label).string();
+    ro.out_dir = vd.string();
     ro.threads = o.threads;
     ro.progress = ProgressMode::quiet;
     ro.software_version = o.software_version;
     const RunOutput r = run_scenario(v.scenario, ro);
     sim_wall += r.results.info.numbers.at("wall_seconds");
     written.push_back(r.results_path);
+    // Kept for the other cases: linked into a fresh folder, which is then renamed into place (another rank that
+    // simulated the same run first keeps its own; both are the same run).
+    const fs::path tmp = shared.string() + ".tmp" + std::to_string(std::hash<std::string>{}(vd.string()));
+    fs::remove_all(tmp);
+    link_tree(vd, tmp);
+    std::error_code ec;
+    fs::rename(tmp, shared, ec);
+    if (ec) fs::remove_all(tmp);
   }
   return written;
 }

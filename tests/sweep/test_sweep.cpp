@@ -175,3 +175,27 @@ TEST(Sweep, MpirunTwoRanksGivesTheSerialSummary) {
   EXPECT_EQ(without_times(a["cases"]), without_times(b["cases"]));
   fs::remove_all(dir);
 }
+
+// Two buffer thicknesses share the run without the buffer, which is identical after expansion: it is simulated once
+// (the second case's files are links to the first's) and both cases report it alike.
+TEST(Sweep, IdenticalVariantsAreSimulatedOnce) {
+  const fs::path dir = fresh_dir("shared"), study = dir / "study.json";
+  fs::create_directories(dir);
+  json base = read_json(fs::path(DMI_SOURCE_DIR) / "examples" / "concrete_dam_boulder_buffer.json");
+  base["grid"] = {{"cell_size", 0.08}};
+  base.erase("solid_check");
+  std::ofstream(dir / "base.json") << base.dump();
+  std::ofstream(study) << R"({"name": "buffer", "base": "base.json", "parameters": {"/tyre_buffer/thickness": [0.2, 0.3]}})";
+  dmi::sweep::SweepOptions o;
+  o.out_dir = (dir / "out").string();
+  o.case_reports = false, o.pdf = false, o.quiet = true, o.threads = 1;
+  ASSERT_EQ(dmi::sweep::sweep_main(study.string(), o), 0);
+  const fs::path a = dir / "out" / "cases" / "case_0001", b = dir / "out" / "cases" / "case_0002";
+  EXPECT_TRUE(fs::equivalent(a / "without_buffer" / "results.h5", b / "without_buffer" / "results.h5"));
+  EXPECT_FALSE(fs::equivalent(a / "with_buffer" / "results.h5", b / "with_buffer" / "results.h5"));
+  const json s = read_json(dir / "out" / "summary.json");
+  ASSERT_EQ(s["cases"].size(), 2u);
+  EXPECT_EQ(s["cases"][0]["variants"]["without_buffer"], s["cases"][1]["variants"]["without_buffer"]);
+  EXPECT_NE(s["cases"][0]["variants"]["with_buffer"], s["cases"][1]["variants"]["with_buffer"]);
+  fs::remove_all(dir);
+}
