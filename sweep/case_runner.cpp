@@ -134,9 +134,9 @@ json run_case(const SweepSpec& spec, std::size_t k, const SweepOptions& o) {
     std::vector<std::string> written;
     bool reused = same_scenario;
     for (const auto& v : variants) {
-      const fs::path vd = v.label.empty() ? dir : dir / v.label, res = vd / "results.h5";
-      reused = reused && fs::exists(res) && !fs::exists(res.string() + ".partial");
-      written.push_back(res.string());
+      const fs::path vd = v.label.empty() ? dir : dir / v.label;
+      reused = reused && complete(vd);
+      written.push_back((vd / "results.h5").string());
     }
     double sim_wall = 0;
     if (spec.grid_ratio > 0) {  // the case at three cell sizes: grid uncertainty of its governing numbers

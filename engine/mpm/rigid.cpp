@@ -117,8 +117,9 @@ template <int D> double RigidBodies<D>::project_nodes(Scene<D>& s, std::vector<V
   return worst;
 }
 
-template <int D> void RigidBodies<D>::move(Scene<D>& s, double dt) {
+template <int D> bool RigidBodies<D>::move(Scene<D>& s, double dt) {
   Particles<D>& P = s.particles;
+  bool ok = true;
   for (State& st : bodies_) {
     const Body& b = s.bodies[st.body];
     st.xc += dt * st.V;
@@ -131,8 +132,10 @@ template <int D> void RigidBodies<D>::move(Scene<D>& s, double dt) {
       P.F[i] = st.R;
       P.L[i] = W;
       P.C[i] = W;  // the affine velocity of APIC: exact for a rigid motion
+      ok = ok && s.grid->interior(P.x[i]) && P.v[i].allFinite();
     }
   }
+  return ok;
 }
 
 template <int D> void RigidBodies<D>::save_state(StateWriter& w) const {

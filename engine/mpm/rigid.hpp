@@ -27,8 +27,9 @@ template <int D> class RigidBodies {
   // and positions (momentum and angular momentum of the field kept). Returns the largest change of a nodal
   // velocity relative to the body's speed scale |V| + |omega| r_max + s (s > 0, e.g. |g| dt).
   double project_nodes(Scene<D>& s, std::vector<Vec<D>>& vel, double s_min) const;
-  // Rigid motion over dt from the projected velocities: centre, rotation, particle positions, F and L.
-  void move(Scene<D>& s, double dt);
+  // Rigid motion over dt from the projected velocities: centre, rotation, particle positions, F and L. False when
+  // a particle left the grid's interior or became non-finite.
+  bool move(Scene<D>& s, double dt);
   void save_state(StateWriter& w) const;
   void load_state(StateReader& r);
 

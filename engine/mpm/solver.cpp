@@ -30,8 +30,8 @@ template <int D> Solver<D>::Solver(Scene<D> scene) : scene_(std::move(scene)) {
       for (Index i = b.begin; i < b.end; ++i) scene_.particles.stress[i].setZero(), scene_.particles.stress_zz[i] = 0;
   if (scene_.frame) members_ = std::make_unique<MemberContact<D>>(*scene_.grid);
   if (scene_.options.implicit_damping && ImplicitViscosity<D>::needed(scene_)) viscosity_ = std::make_unique<ImplicitViscosity<D>>();
-  for (const Body& b : scene_.bodies)
-    if (b.rigid && !rigid_) rigid_ = std::make_unique<RigidBodies<D>>(scene_);
+  if (std::any_of(scene_.bodies.begin(), scene_.bodies.end(), [](const Body& b) { return b.rigid; }))
+    rigid_ = std::make_unique<RigidBodies<D>>(scene_);
 }
 
 // The step as named phases (docs/architecture.md, "The step").
@@ -155,7 +155,7 @@ template <int D> bool Solver<D>::grid_to_particles(double dt) {
   const auto* after = fuse ? &stress : nullptr;
   if (scene_.options.update == StressUpdate::usl) {
     r = kernels_->g2p(scene_, dt, G2PMode::full, after);
-    if (rigid_) rigid_->project(scene_), rigid_->move(scene_, dt);
+    if (rigid_) rigid_->project(scene_), r.ok = rigid_->move(scene_, dt) && r.ok;
   } else {
     // MUSL (Sulsky et al. 1995): update particle velocities, remap their momentum to the grid,
     // and take the velocity gradient from the remapped nodal velocities.
@@ -176,13 +176,8 @@ template <int D> bool Solver<D>::grid_to_particles(double dt) {
     apply_boundaries(scene_, g.v, dt, time_ + dt, false);
     if (members_) members_->constrain_remap(scene_, g.v);  // members are walls too (unlike body contact)
     r = kernels_->g2p(scene_, dt, G2PMode::kinematics, after);
-    if (rigid_) rigid_->move(scene_, dt);
+    if (rigid_) r.ok = rigid_->move(scene_, dt) && r.ok;
   }
-  if (rigid_)
-    for (const Body& b : scene_.bodies)
-      if (b.rigid)
-        for (Index i = b.begin; i < b.end; ++i)
-          if (!scene_.grid->interior(scene_.particles.x[i]) || !scene_.particles.v[i].allFinite()) r.ok = false;
   if (!r.ok) fail("particle state");
   return fuse;
 }
@@ -218,9 +213,9 @@ template <int D> double Solver<D>::stable_time_step(double limit) const {
     }
     dt_bodies.push_back(dt_b);
   }
-  // The elastic step, and the explicit one with every damping limit. The implicit viscosity costs a solve per step
-  // (~1-5x an explicit step, more CG iterations the stiffer the viscous part): it is used only where it lengthens the
-  // step by more than kImplicitGain, for the bodies whose damped limit is below the elastic step.
+  // The elastic step, and the explicit one with every damping limit. The implicit viscosity costs a sparse
+  // factorisation per step (several explicit steps' worth on the tyre buffer, docs/performance.md): it is used only
+  // where it lengthens the step by more than kImplicitGain, for the bodies whose damped limit is below the elastic step.
   const double cfl = scene_.options.cfl;
   double dt_el = dt, dt_ex = dt;
   for (std::size_t k = 0; k < dt_bodies.size(); ++k)
@@ -268,8 +263,7 @@ template <int D> void Solver<D>::load_state(StateReader& r) {
   r.expect_size("frames", r.get<std::uint8_t>(), scene_.frame ? 1 : 0);
   if (scene_.frame) scene_.frame->load_state(r);
   if (members_) members_->load_state(r);
-  ImplicitViscosity<D> none;
-  (viscosity_ ? *viscosity_ : none).load_state(r);
+  if (viscosity_) viscosity_->load_state(r); else r.get<double>();  // save_state writes 0 without one
   if (rigid_) rigid_->load_state(r);
 }
 

@@ -59,8 +59,8 @@ template <int D> class Solver {
 
  private:
   static constexpr long kSortInterval = 16;  // steps between particle reorderings (sort_particles)
-  static constexpr double kImplicitGain = 3.0;
-  static constexpr int kRigidPasses = 200;  // constraint passes on the rigid bodies' nodes per step, at most  // implicit viscosity only where it lengthens the step more than this
+  static constexpr double kImplicitGain = 3.0;  // implicit viscosity only where it lengthens the step more than this
+  static constexpr int kRigidPasses = 200;      // constraint passes on the rigid bodies' nodes per step, at most
   void sort_particles();
   void particles_to_grid();
   void implicit_viscosity(double dt);

@@ -9,9 +9,6 @@
 #include "engine/mpm/boundary.hpp"
 
 namespace dmi {
-namespace {
-
-}  // namespace
 
 template <int D> bool ImplicitViscosity<D>::needed(const Scene<D>& s) {
   std::vector<char> fields(static_cast<std::size_t>(s.grid->nfields()), 0);
@@ -24,7 +21,7 @@ template <int D> bool ImplicitViscosity<D>::needed(const Scene<D>& s) {
 }
 
 template <int D>
-int ImplicitViscosity<D>::apply(Scene<D>& s, const TransferKernels<D>& kernels, double dt, double t, double mass_eps,
+void ImplicitViscosity<D>::apply(Scene<D>& s, const TransferKernels<D>& kernels, double dt, double t, double mass_eps,
                                 const std::vector<char>& bodies, const Held& held) {
   Grid<D>& g = *s.grid;
   const Particles<D>& P = s.particles;
@@ -56,7 +53,7 @@ int ImplicitViscosity<D>::apply(Scene<D>& s, const TransferKernels<D>& kernels, 
       for (int e = 0; e < st.nn; ++e) g.f[off + st.node[k0 + e]] += so * st.grad[k0 + e];
     }
   }
-  if (!any) return 0;
+  if (!any) return;
   // 2. The predictor of every field, and what the walls, regions and body contact would make of it.
   probed_ = !s.walls.empty() || !s.regions.empty() || g.nfields() > 1;
   if (probed_) {
@@ -79,20 +76,11 @@ int ImplicitViscosity<D>::apply(Scene<D>& s, const TransferKernels<D>& kernels, 
     }
   }
   // 3. Per damped body, the implicit viscous force.
-  field_solved_.assign(g.nfields(), 0);
-  for (std::size_t k = 0; k < s.bodies.size(); ++k) {
-    double a, bv;
-    if (damped(s.bodies[k], a, bv)) field_solved_[s.bodies[k].field] = 1;
-  }
-  int worst = 0;
   for (std::size_t k = 0; k < s.bodies.size(); ++k) {
     const Body& b = s.bodies[k];
     double a, bv;
-    if (!damped(b, a, bv)) continue;
-    solve_body(s, b, stencils_[k], a, bv, dt, mass_eps, held);
-    worst = std::max(worst, iterations_);
+    if (damped(b, a, bv)) solve_body(s, b, stencils_[k], a, bv, dt, mass_eps, held);
   }
-  return worst;
 }
 
 // out = K_v u over the unknowns: sum_p V_p sigma_v(D_p(u)) grad N_ip.
@@ -132,7 +120,7 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
   for (std::size_t l = 0; l < n; ++l) {
     const Index k = off + nodes_[l];
     const double m = g.m[k];
-    u_[l] = (g.p[k] + dt * g.f[k]) / m;  // v*, the initial guess
+    u_[l] = (g.p[k] + dt * g.f[k]) / m;  // v* (kept where held)
     rhs_[l] = m * u_[l];
     if (!probed_) continue;
     bool walled = false;  // held where a wall or region would change v*
@@ -144,7 +132,7 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
     const Vec<D> nrm = dv.normalized();
     for (int f = 0; f < g.nfields(); ++f) {
       const Index kb = f * nn + nodes_[l];
-      if (f == b.field || field_solved_[f] || !(g.m[kb] > mass_eps) || probe_[kb] == walled_[kb]) continue;
+      if (f == b.field || !(g.m[kb] > mass_eps) || probe_[kb] == walled_[kb]) continue;  // partners are undamped: needed()
       ties_.push_back(Tie{kb, static_cast<int>(l), nrm});
       const double mb = g.m[kb];
       rhs_[l] += mb * vstar_[kb].dot(nrm) * nrm;
@@ -230,7 +218,6 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
         }
       }
     }
-  iterations_ = 1;
   if (nf > 0) {
     A_.resize(nf, nf);
     A_.setFromTriplets(triplets_.begin(), triplets_.end());

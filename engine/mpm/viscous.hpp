@@ -38,8 +38,8 @@ template <int D> class ImplicitViscosity {
   // constraint, as an elastic force does); where body contact would change the damped field, the other field's
   // nodal mass joins it along the contact normal n (the direction of the change), m_A + m_B n n^T, so that both leave
   // the solve with one normal velocity and the contact force includes the viscous one (momentum is exchanged, not
-  // made). Wall touch sets must be current. Returns 1 when a body was solved; throws RunError if the solve fails.
-  int apply(Scene<D>& s, const TransferKernels<D>& kernels, double dt, double t, double mass_eps, const std::vector<char>& bodies,
+  // made). Wall touch sets must be current. Throws RunError if the solve fails.
+  void apply(Scene<D>& s, const TransferKernels<D>& kernels, double dt, double t, double mass_eps, const std::vector<char>& bodies,
             const Held& held);
   // True when the last apply() ran the body contact's surface detection for this step (the grid update may reuse it).
   bool detected_contact() const { return detected_; }
@@ -67,7 +67,6 @@ template <int D> class ImplicitViscosity {
   std::vector<Vec<D>> rhs_, u_, q_;
   std::vector<Vec<D>> free_;        // per unknown: 1 for a free component, 0 for a held one
   std::vector<Vec<D>> vstar_, walled_, probe_;  // all node-fields: v*, after the walls and regions, after body contact
-  std::vector<char> field_solved_;  // per field: a body of it is solved implicitly this step
   struct Tie {
     Index k;   // the contact partner's node-field
     int l;     // the damped field's unknown
@@ -83,7 +82,6 @@ template <int D> class ImplicitViscosity {
   std::vector<int> outer_, inner_;  // the pattern ldlt_ was analysed for
   std::vector<int> pair_slot_;      // per pair of stencil entries: the offset slot
   bool probed_ = false, detected_ = false;
-  int iterations_ = 0;
   std::vector<Index> acc_k_;        // this step's solved node-fields ...
   std::vector<Vec<D>> acc_f_;       // ... and K_v u there
   std::vector<char> material_on_;

@@ -171,7 +171,7 @@ json Builder::design_basis() const {
     const BoulderPreset& b = *p_.boulder;
     out["boulder"] = json{{"mass_kg", boulder_m_}, {"diameter_m", std::cbrt(6 * boulder_m_ / (b.density * kPi))}, {"density_kg_m3", b.density},
                           {"youngs_modulus_Pa", b.youngs_modulus}, {"poisson_ratio", b.poisson_ratio}, {"speed_m_s", boulder_speed_},
-                          {"impact_height_m", impact_y_}, {"model", b.model == "rigid" || (b.model == "auto" && p_.buffer) ? "rigid" : "elastic"}};
+                          {"impact_height_m", impact_y_}, {"model", rigid_boulder_ ? "rigid" : "elastic"}};
   }
   if (p_.debris) {
     const DebrisPreset& f = *p_.debris;
@@ -355,10 +355,9 @@ void Builder::add_boulder() {
          "a boulder above the ground: its centre at least the equivalent radius " + std::to_string(r) + " m (+ half a cell) above the bed");
   if (cx + r > front(cy) + 1e-9)
     fail("/boulder/position", b.position, "a boulder upstream of the dam face or buffer (it overlaps them)");
-  const bool rigid = b.model == "rigid" || (b.model == "auto" && p_.buffer);
-  rigid_boulder_ = rigid;
+  rigid_boulder_ = b.model == "rigid" || (b.model == "auto" && p_.buffer);
   bodies_.push_back(json{{"name", "boulder"}, {"material", "rock"}, {"shape", {{"type", "ball"}, {"center", {clean(cx), clean(cy)}}, {"radius", clean(r)}}},
-                         {"velocity", {vx, vy}}, {"rigid", rigid}});
+                         {"velocity", {vx, vy}}, {"rigid", rigid_boulder_}});
   probes_.push_back(json{{"name", "boulder"}, {"type", "body"}, {"body", "boulder"}, {"quantities", {"velocity", "kinetic_energy", "position"}}});
   box_.add(cx - r, cy - r), box_.add(cx + r, cy + r);
   // End: arrival plus 0.15 s (a buffered impact lasts a few hundredths of a second; docs/verification.md).
