@@ -30,11 +30,9 @@ Grid<D>::Grid(const Vec<D>& origin, const IVec<D>& cells, double h, int nfields)
     grad_m.assign(n, Vec<D>::Zero());
     vol.assign(n, 0.0);
   }
-  if (D == 2) {
-    pf_storage_.assign(4 * n + 4, 0.0);  // + one record of slack to start on a 32-byte boundary
-    const auto addr = reinterpret_cast<std::uintptr_t>(pf_storage_.data());
-    pf_ = pf_storage_.data() + ((32 - addr % 32) % 32) / sizeof(double);
-  }
+  pf_storage_.assign(2 * D * n + 4, 0.0);  // + slack to start on a 32-byte boundary
+  const auto addr = reinterpret_cast<std::uintptr_t>(pf_storage_.data());
+  pf_ = pf_storage_.data() + ((32 - addr % 32) % 32) / sizeof(double);
   if (D == 3) flag_.assign(static_cast<std::size_t>(nnodes_), 0);
   tile_count_.assign(static_cast<std::size_t>(ntiles_), 0);
 }

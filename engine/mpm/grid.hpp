@@ -124,9 +124,9 @@ template <int D> class Grid {
   std::vector<Vec<D>> vL;       // updated velocity v^L (m/s)
   std::vector<double> vol;      // sum_p V_p N_ip, for the contact overlap test (m^3)
   std::vector<Vec<D>> grad_m;   // sum_p m_p grad N_i(x_p): outward from a body, for contact normals (kg/m)
-  // 2D P2G scratch: momentum and force of a node side by side (px, py, fx, fy) in one 32-byte-aligned record, so the
-  // scatter touches one record per node instead of two arrays and adds it as one 4-wide vector; unpacked into p, f
-  // (and zeroed) right after the scatter. The mass goes straight into m.
+  // P2G scratch: momentum and force of a node side by side (p_0..p_D-1, f_0..f_D-1) in one record (32-byte aligned in
+  // 2D), so the scatter touches one record per node instead of two arrays (in 2D it adds it as one 4-wide vector);
+  // unpacked into p, f (and zeroed) right after the scatter. The mass goes straight into m.
   double* pf() { return pf_; }
 
  private:

@@ -63,36 +63,54 @@ struct GimpShape {
   }
 };
 
-// Stencil of one particle: K^D nodes with N_i and grad N_i (1/m).
-template <int D, class Shape> struct Stencil {
-  static constexpr int K = Shape::K;
-  static constexpr int NN = D == 2 ? K * K : K * K * K;
-  IVec<D> base;
-  double N[NN];
-  Vec<D> dN[NN];
-  IVec<D> offset[NN];
+constexpr int ipow(int k, int n) { return n == 0 ? 1 : k * ipow(k, n - 1); }
 
-  // xr: grid coordinates of the particle; lp: half-size in grid units; inv_h = 1/h.
-  void compute(const Vec<D>& xr, const Vec<D>& lp, double inv_h) {
-    double w[D][K], dw[D][K];
-    for (int d = 0; d < D; ++d) Shape::eval(xr[d], lp[d], base[d], w[d], dw[d]);
-    int n = 0;
-    if constexpr (D == 2) {
-      for (int a = 0; a < K; ++a)
-        for (int b = 0; b < K; ++b, ++n) {
-          N[n] = w[0][a] * w[1][b];
-          dN[n] = Vec<2>(dw[0][a] * w[1][b], w[0][a] * dw[1][b]) * inv_h;
-          offset[n] = IVec<2>(a, b);
-        }
-    } else {
-      for (int a = 0; a < K; ++a)
-        for (int b = 0; b < K; ++b)
-          for (int c = 0; c < K; ++c, ++n) {
-            N[n] = w[0][a] * w[1][b] * w[2][c];
-            dN[n] = Vec<3>(dw[0][a] * w[1][b] * w[2][c], w[0][a] * dw[1][b] * w[2][c], w[0][a] * w[1][b] * dw[2][c]) * inv_h;
-            offset[n] = IVec<3>(a, b, c);
-          }
+// Stencil of one particle in separable form: its K^D nodes walked as R = K^(D-1) rows along x, the fastest axis of the
+// node ids, so a row's K nodes are adjacent in memory. Row r holds the nodes base + (a, b_1(r), ..., b_{D-1}(r)),
+// a = 0..K-1, with b_d(r) the d-th base-K digit of r (axis 1 fastest). The D-dimensional functions are products:
+//   N = w_0(a) W_r,  grad N = (dw_0(a)/h W_r, w_0(a) dW_r[0], ..., w_0(a) dW_r[D-2]),
+//   W_r = prod_{d>0} w_d(b_d),  dW_r[d-1] = dw_d(b_d)/h prod_{e>0, e!=d} w_e(b_e).
+template <int D, class Shape> struct Stencil {
+  static constexpr int K = Shape::K, R = ipow(K, D - 1), NN = K * R;
+  // Offset of row r from the base node along axis d (1 <= d < D).
+  static constexpr int digit(int r, int d) { return r / ipow(K, d - 1) % K; }
+
+  int base[D];
+  double xr[D];              // the particle in grid coordinates, (x - origin) / h
+  double w[D][K], dw[D][K];  // 1D weights and slopes per cell along each axis
+  double dwx[K];             // dw[0] / h (1/m)
+  double W[R], dW[D - 1][R];
+
+  // x, half: the particle's position and half-size (m); ih = 1/h.
+  [[gnu::always_inline]] inline void compute(const Vec<D>& x, const Vec<D>& half, const Vec<D>& origin, double ih) {
+    for (int d = 0; d < D; ++d) {
+      xr[d] = (x[d] - origin[d]) * ih;
+      Shape::eval(xr[d], half[d] * ih, base[d], w[d], dw[d]);
     }
+    for (int a = 0; a < K; ++a) dwx[a] = dw[0][a] * ih;
+    for (int r = 0; r < R; ++r) {
+      W[r] = 1;
+      for (int d = 1; d < D; ++d) W[r] *= w[d][digit(r, d)];
+      for (int d = 1; d < D; ++d) {
+        double s = dw[d][digit(r, d)] * ih;
+        for (int e = 1; e < D; ++e)
+          if (e != d) s *= w[e][digit(r, e)];
+        dW[d - 1][r] = s;
+      }
+    }
+  }
+  double N(int r, int a) const { return w[0][a] * W[r]; }
+  Vec<D> grad(int r, int a) const {
+    Vec<D> g;
+    g[0] = dwx[a] * W[r];
+    for (int d = 1; d < D; ++d) g[d] = w[0][a] * dW[d - 1][r];
+    return g;
+  }
+  IVec<D> node(int r, int a) const {
+    IVec<D> ijk;
+    ijk[0] = base[0] + a;
+    for (int d = 1; d < D; ++d) ijk[d] = base[d] + digit(r, d);
+    return ijk;
   }
 };
 

@@ -1,5 +1,6 @@
 // Particle <-> grid transfer kernels, one instance per (dimension, shape function), chosen once
-// when the solver is built; the transfer scheme (FLIP/PIC blend or APIC) is a flag per call.
+// when the solver is built; the transfer scheme (FLIP/PIC blend or APIC) is read per call. One implementation for
+// 2D and 3D (transfer_kernels.hpp).
 //   P2G (Lin & Yang 2024 eqs. 5-8): m_i = sum_p N_ip m_p,  p_i = sum_p N_ip m_p (v_p + C_p (x_i - x_p)),
 //        f_i = -sum_p V_p sigma_p grad N_ip + sum_p N_ip m_p g.   (C_p = 0 unless APIC)
 //   G2P (eqs. 13-14): FLIP v_p += sum N_ip (v^L_i - v^k_i), PIC v_p = sum N_ip v^L_i, blended;
@@ -38,11 +39,15 @@ template <int D> class TransferKernels {
   // eq. 25) where members need it. mx has the grid's field layout.
   // The stencils of particles [begin, end) for operators built outside the transfer (the implicit viscosity,
   // engine/mpm/viscous.hpp): NN = K^D entries per particle, node[k NN + n] the node's index in its field and
-  // grad[k NN + n] its grad N (1/m), k = particle - begin. Returns NN.
+  // grad[k NN + n] its grad N (1/m), k = particle - begin. Entry n is the node base + (n's digits base K, axis 0 least
+  // significant). Returns NN.
   virtual int stencils(const Scene<D>& s, Index begin, Index end, std::vector<Index>& node, std::vector<Vec<D>>& grad) const = 0;
   virtual void scatter_mass_position(const Scene<D>& s, const std::vector<Index>& tiles, std::vector<Vec<D>>& mx) const = 0;
 };
 
-template <int D> std::unique_ptr<TransferKernels<D>> make_transfer_kernels(ShapeKind shape);
+// fastest: the AVX2 leaf where it applies (2D, 3-node stencils, FLIP; when built for AVX2); scalar: the generic loops
+// everywhere (the cross-check of the leaf).
+enum class TransferPath { fastest, scalar };
+template <int D> std::unique_ptr<TransferKernels<D>> make_transfer_kernels(ShapeKind shape, TransferPath path = TransferPath::fastest);
 
 }  // namespace dmi

@@ -1,5 +1,5 @@
 // AVX2 forms of the 2D FLIP scatter and gather for 3-node stencils (quadratic B-splines, uGIMP): the same equations
-// as transfer2d.hpp's scalar loops (Lin & Yang 2024, eqs. 5-8 and 13-14) with 4-wide vectors: a node's (px, py, fx, fy)
+// as the generic loops of transfer_kernels.hpp (Lin & Yang 2024, eqs. 5-8 and 13-14) with 4-wide vectors: a node's (px, py, fx, fy)
 // record is one aligned vector, and a stencil row's three velocities are 6 adjacent doubles (perf: the scalar loops
 // spilled their operands to the stack and spent their time in loads and stores). Sums are the same terms in the same
 // node order; rounding differs from the scalar loops by FMA contraction only. No access reaches past a row's third node

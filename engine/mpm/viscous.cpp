@@ -149,18 +149,14 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
   constexpr int NB = D == 2 ? 25 : 125;
   const IVec<D> nodes = g.nodes();
   // The slot of the offset between stencil entries e1 and e2: entry e holds the node base + (e's digits base K,
-  // axis 0 most significant: Stencil::compute), slot = sum_d (q_d + 2) 5^d for the offset q.
+  // axis 0 least significant: TransferKernels::stencils), slot = sum_d (q_d + 2) 5^d for the offset q.
   if (static_cast<int>(pair_slot_.size()) != st.nn * st.nn) {
     const int K = D == 2 ? (st.nn == 9 ? 3 : 2) : (st.nn == 27 ? 3 : 2);
     pair_slot_.resize(static_cast<std::size_t>(st.nn * st.nn));
     for (int e1 = 0; e1 < st.nn; ++e1)
       for (int e2 = 0; e2 < st.nn; ++e2) {
-        int o = 0, r1 = e1, r2 = e2;
-        for (int d = D - 1; d >= 0; --d, r1 /= K, r2 /= K) {  // the last digit is the last axis
-          int w = 1;
-          for (int e = 0; e < d; ++e) w *= 5;
-          o += (r2 % K - r1 % K + 2) * w;
-        }
+        int o = 0;
+        for (int d = 0, kd = 1, w = 1; d < D; ++d, kd *= K, w *= 5) o += (e2 / kd % K - e1 / kd % K + 2) * w;
         pair_slot_[static_cast<std::size_t>(e1 * st.nn + e2)] = o;
       }
   }

@@ -1,42 +1,57 @@
-// Shape functions: partition of unity, linear completeness (sum N_i x_i = x_p) and gradient
-// consistency (sum grad N_i = 0, sum grad N_i (x) x_i = I), and the derivative matches a finite difference.
+// Shape functions in 2D and 3D (the separable stencil the transfers walk): partition of unity, linear completeness
+// (sum N_i x_i = x_p) and gradient consistency (sum grad N_i = 0, sum grad N_i (x) x_i = I), and the derivative matches a finite difference.
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 #include "engine/mpm/shape.hpp"
 
 namespace dmi {
 namespace {
 
-template <class Shape> void check_shape(double lp) {
+template <int D, class Shape> void check_shape(double lp) {
   const double h = 0.37, inv_h = 1 / h;
+  const Vec<D> origin = Vec<D>::Constant(-0.2);
   for (double a : {0.51, 0.73, 1.0, 1.26, 1.49, 2.5, 3.999}) {
     for (double b : {0.6, 1.5, 2.01}) {
-      Stencil<2, Shape> st;
-      const Vec<2> xr(a + 1, b + 1);
-      st.compute(xr, Vec<2>::Constant(lp), inv_h);
+      Vec<D> xr = Vec<D>::Constant(b + 1);
+      xr[0] = a + 1;
+      if constexpr (D == 3) xr[2] = 0.5 * (a + b) + 1;
+      const Vec<D> x = origin + xr * h, half = Vec<D>::Constant(lp * h);
+      Stencil<D, Shape> st;
+      st.compute(x, half, origin, inv_h);
       double sum = 0;
-      Vec<2> first = Vec<2>::Zero(), grad = Vec<2>::Zero();
-      Mat<2> gx = Mat<2>::Zero();
-      for (int n = 0; n < st.NN; ++n) {
-        const Vec<2> xi = (st.base + st.offset[n]).template cast<double>() * h;
-        sum += st.N[n];
-        first += st.N[n] * xi;
-        grad += st.dN[n];
-        gx += xi * st.dN[n].transpose();
-      }
+      Vec<D> first = Vec<D>::Zero(), grad = Vec<D>::Zero();
+      Mat<D> gx = Mat<D>::Zero();
+      for (int r = 0; r < st.R; ++r)
+        for (int k = 0; k < st.K; ++k) {
+          const Vec<D> xi = origin + st.node(r, k).template cast<double>() * h;
+          sum += st.N(r, k);
+          first += st.N(r, k) * xi;
+          grad += st.grad(r, k);
+          gx += xi * st.grad(r, k).transpose();
+        }
       EXPECT_NEAR(sum, 1.0, 1e-13);
-      EXPECT_NEAR((first - xr * h).norm(), 0.0, 1e-12);
+      EXPECT_NEAR((first - x).norm(), 0.0, 1e-12);
       EXPECT_NEAR(grad.norm(), 0.0, 1e-12);
-      EXPECT_NEAR((gx - Mat<2>::Identity()).norm(), 0.0, 1e-12);
-      // Finite-difference check of dN/dx of each node (nodes fixed, particle moved).
+      EXPECT_NEAR((gx - Mat<D>::Identity()).norm(), 0.0, 1e-12);
+      // Finite-difference check of grad N of each node along every axis (nodes fixed, particle moved).
       const double e = 1e-7;
-      Stencil<2, Shape> sp;
-      sp.compute(xr + Vec<2>(e, 0), Vec<2>::Constant(lp), inv_h);
-      if (sp.base == st.base) {
-        for (int n = 0; n < st.NN; ++n) EXPECT_NEAR((sp.N[n] - st.N[n]) / (e * h), st.dN[n][0], 1e-5);
+      for (int d = 0; d < D; ++d) {
+        Stencil<D, Shape> sp;
+        sp.compute(x + e * h * Vec<D>::Unit(d), half, origin, inv_h);
+        if (std::equal(sp.base, sp.base + D, st.base)) {
+          for (int r = 0; r < st.R; ++r)
+            for (int k = 0; k < st.K; ++k) EXPECT_NEAR((sp.N(r, k) - st.N(r, k)) / (e * h), st.grad(r, k)[d], 1e-5);
+        }
       }
     }
   }
+}
+
+template <class Shape> void check_shape(double lp) {
+  check_shape<2, Shape>(lp);
+  check_shape<3, Shape>(lp);
 }
 
 TEST(Shape, LinearPartitionOfUnityAndConsistency) { check_shape<LinearShape>(0.25); }
