@@ -323,7 +323,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> bench_cases;
   bool quick = false;
   CLI::App* bch = app.add_subcommand("bench", "performance figures (printed, not asserted): kernel throughput; docs/performance.md");
-  bch->add_option("cases", bench_cases, "cases (default: all): kernel | a5 (run time vs error) | a6 (cost vs depth) | bar | disks | skip | dam (the main job: run time vs error)");
+  bch->add_option("cases", bench_cases, "cases (default: all): kernel | a5 (run time vs error) | a6 (cost vs depth) | bar | disks | skip | dam (the main job: run time vs error) | small (the demo per particle-step against the kernel)");
   bch->add_flag("--json", json, "print JSON instead of tables");
   bch->add_flag("--quick", quick, "small problems (100 k particles), for a smoke test");
   dmi::BenchOptions bo;

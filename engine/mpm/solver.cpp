@@ -36,19 +36,33 @@ template <int D> Solver<D>::Solver(Scene<D> scene) : scene_(std::move(scene)) {
 
 // The step as named phases (docs/architecture.md, "The step").
 template <int D> void Solver<D>::step(double dt) {
+  if (profile_) lap_t_ = std::chrono::steady_clock::now();
   if (steps_ % kSortInterval == 1) sort_particles();  // locality for the scatter (from the second step on)
   scene_.grid->bin(scene_.particles.x);      // tiles, active nodes, zeroed fields
+  lap(kBinning);
   particles_to_grid();                         // m_i, p_i, f_i = f_int + f_ext (eqs. 5-8)
+  lap(kP2G);
   wall_touch(scene_);                          // nodes engaged by particles touching unilateral walls
+  lap(kWallTouch);
   implicit_viscosity(dt);                      // damped bodies: the viscous nodal force at the end of the step
+  lap(kViscosity);
   member_boundary_forces(dt);                  // stage 1: members as velocity boundaries, reactions on the frame
-  grid_update(dt);                             // v^k, v^L = v^k + dt f/m, walls, regions, body contact
+  lap(kMembers);
+  grid_update(dt);                             // v^k, v^L = v^k + dt f/m, walls, regions, body contact, rigid bodies
   // v_p, x_p, L_p, F_p (eqs. 13-14; MUSL remaps first), then per body its material law: inside G2P chunk by chunk
   // when every law is pointwise, else as a pass of its own.
   if (!grid_to_particles(dt)) update_stress(dt);
+  lap(kG2P);
   advance_members(dt);                         // stage 2: the frame under the reactions (eqs. 27-29 or Newmark)
+  lap(kFrame);
   time_ += dt;
   ++steps_;
+}
+
+template <int D> const char* Solver<D>::phase_name(int p) {
+  static const char* names[kPhases] = {"binning", "P2G", "wall touch", "implicit viscosity", "member contact", "grid update and walls",
+                                       "body contact", "rigid bodies", "G2P and stress", "frame"};
+  return names[p];
 }
 
 // P2G with gravity: f_i = f_int + m_i g, the body force added per node by the kernels (eq. 8).
@@ -121,9 +135,13 @@ template <int D> void Solver<D>::grid_update(double dt) {
     }
   });
   boundary_work_ += apply_boundaries(scene_, g.vL, dt, time_ + dt, true);
+  lap(kGridUpdate);
   body_contact(scene_, g.vL, !(viscosity_ && viscosity_->detected_contact()));  // detection once per step
+  lap(kBodyContact);
   if (rigid_) rigid_constraints(dt);
+  lap(kRigid);
   if (viscosity_) viscosity_->account(g, dt);
+  lap(kViscosity);
 }
 
 // The walls, regions and body contact act on a rigid body's nodes one by one; its motion follows from all of them at
@@ -136,6 +154,7 @@ template <int D> void Solver<D>::rigid_constraints(double dt) {
   const double s_min = scene_.gravity.norm() * dt + 1e-12;
   for (int it = 0; it < kRigidPasses; ++it) {
     if (rigid_->project_nodes(scene_, g.vL, s_min) < 1e-8) return;
+    ++rigid_passes_;
     boundary_work_ += apply_boundaries(scene_, g.vL, dt, time_ + dt, true, false);
     body_contact(scene_, g.vL, false);
   }

@@ -1,6 +1,8 @@
 // Explicit MPM solver: advances a Scene by one step at a time (Lin & Yang 2024, USL or MUSL).
 // Output, checkpoints and progress stay outside; the driver calls step() and reads diagnostics.
 #pragma once
+#include <array>
+#include <chrono>
 #include <memory>
 #include <string>
 
@@ -57,6 +59,15 @@ template <int D> class Solver {
   void save_state(StateWriter& w) const;
   void load_state(StateReader& r);
 
+  // Wall time of each phase of step() since profile(true) (the small-scene bench, engine/verify/bench.cpp). Off: one
+  // untaken branch per phase.
+  enum Phase { kBinning, kP2G, kWallTouch, kViscosity, kMembers, kGridUpdate, kBodyContact, kRigid, kG2P, kFrame, kPhases };
+  static const char* phase_name(int p);
+  void profile(bool on) { profile_ = on; }
+  const std::array<double, kPhases>& phase_seconds() const { return phase_seconds_; }
+  // Constraint passes on the rigid bodies' nodes beyond the first projection, summed over the steps (rigid_constraints).
+  long rigid_passes() const { return rigid_passes_; }
+
  private:
   static constexpr long kSortInterval = 16;  // steps between particle reorderings (sort_particles)
   static constexpr double kImplicitGain = 3.0;  // implicit viscosity only where it lengthens the step more than this
@@ -71,6 +82,16 @@ template <int D> class Solver {
   bool grid_to_particles(double dt);
   void update_stress(double dt);
   [[noreturn]] void fail(const std::string& what) const;
+  bool profile_ = false;
+  long rigid_passes_ = 0;
+  std::array<double, kPhases> phase_seconds_{};
+  std::chrono::steady_clock::time_point lap_t_;
+  void lap(Phase p) {  // the time since the last lap goes to phase p
+    if (!profile_) return;
+    const auto t = std::chrono::steady_clock::now();
+    phase_seconds_[p] += std::chrono::duration<double>(t - lap_t_).count();
+    lap_t_ = t;
+  }
 
   Scene<D> scene_;
   std::unique_ptr<TransferKernels<D>> kernels_;

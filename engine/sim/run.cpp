@@ -4,6 +4,7 @@
 
 #include <omp.h>
 
+#include <cctype>
 #include <chrono>
 #include <csignal>
 #include <cmath>
@@ -205,14 +206,19 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   Progress progress(o.progress, end, s.name);
   const SignalGuard signals;
   const long first_step = solver.steps();
+  double profile_time_step = 0, profile_recorder = 0;  // o.profile: stable_time_step; recorder, snapshots, progress
+  solver.profile(o.profile);
   auto last_ckpt = std::chrono::steady_clock::now();
   while (solver.time() < end - eps) {
     const bool stop = o.stop_after_steps > 0 && solver.steps() >= o.stop_after_steps && solver.steps() > first_step;
     if (g_signal != 0 || stop) stop_run(g_signal, solver, rec, info, writer.get(), results_path, wall_now(),
                                         checkpoint, ckpt);
+    const auto tp0 = o.profile ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
     const double dt = solver.stable_time_step(end - solver.time());
     loop.courant_max = std::max(loop.courant_max, solver.courant());
+    const auto tp1 = o.profile ? std::chrono::steady_clock::now() : tp0;
     solver.step(dt);
+    const auto tp2 = o.profile ? std::chrono::steady_clock::now() : tp0;
     rec.accumulate(solver, dt);
     loop.dt_min = std::min(loop.dt_min, dt);
     loop.dt_max = std::max(loop.dt_max, dt);
@@ -227,6 +233,11 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
       loop.next_snap = next_after(solver.time(), s.output.snapshot_interval);
     }
     progress.update(solver.time(), solver.steps(), dt);
+    if (o.profile) {
+      const auto tp3 = std::chrono::steady_clock::now();
+      profile_time_step += std::chrono::duration<double>(tp1 - tp0).count();
+      profile_recorder += std::chrono::duration<double>(tp3 - tp2).count();
+    }
     if (files && !last && o.checkpoint_every > 0 &&
         std::chrono::duration<double>(std::chrono::steady_clock::now() - last_ckpt).count() >= o.checkpoint_every) {
       checkpoint();
@@ -238,6 +249,16 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
 
   info.numbers["steps"] = static_cast<double>(solver.steps());
   info.numbers["wall_seconds"] = wall_now();
+  if (o.profile) {
+    auto key = [](std::string n) {
+      for (char& c : n) c = c == ' ' ? '_' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      return "profile_" + n + "_seconds";
+    };
+    for (int p = 0; p < Solver<D>::kPhases; ++p) info.numbers[key(Solver<D>::phase_name(p))] = solver.phase_seconds()[p];
+    info.numbers["profile_time_step_seconds"] = profile_time_step;
+    info.numbers["profile_recorder_seconds"] = profile_recorder;
+    info.numbers["rigid_passes_per_step"] = solver.steps() > first_step ? double(solver.rigid_passes()) / double(solver.steps() - first_step) : 0.0;
+  }
   info.numbers["dt_min"] = loop.dt_min;
   info.numbers["dt_max"] = loop.dt_max;
   info.numbers["courant_max"] = loop.courant_max;   // numerical health (docs/results.md)

@@ -19,6 +19,8 @@ struct RunOptions {
   double checkpoint_every = 0;
   long stop_after_steps = 0;    // > 0: stop (checkpoint + partial results, Interrupted with signal 0) after this step
   bool restart = false;
+  // Wall time per phase of the step loop into the run info (profile_<phase>_seconds; the small-scene bench).
+  bool profile = false;
 };
 
 struct RunOutput {

@@ -133,9 +133,9 @@ std::vector<KernelBench> kernel_bench(const BenchOptions& o, bool progress) {
 }
 
 int bench_main(const std::vector<std::string>& cases, bool as_json, bool quick, BenchOptions o) {
-  const std::vector<std::string> all = {"kernel", "a5", "a6", "bar", "disks", "skip", "dam"};
+  const std::vector<std::string> all = {"kernel", "a5", "a6", "bar", "disks", "skip", "dam", "small"};
   for (const auto& c : cases)
-    if (std::find(all.begin(), all.end(), c) == all.end()) throw InputError("bench: unknown case '" + c + "' (known: kernel, a5, a6, bar, disks, skip, dam)");
+    if (std::find(all.begin(), all.end(), c) == all.end()) throw InputError("bench: unknown case '" + c + "' (known: kernel, a5, a6, bar, disks, skip, dam, small)");
   auto wanted = [&](const char* c) { return cases.empty() || std::find(cases.begin(), cases.end(), c) != cases.end(); };
   const BenchOptions d;
   if (o.shapes.empty()) o.shapes = d.shapes;
@@ -161,6 +161,7 @@ int bench_main(const std::vector<std::string>& cases, bool as_json, bool quick, 
     out["skip"]["block"] = skip_block_bench(!as_json);
   }
   if (wanted("dam")) out["dam"] = bench_dam(!as_json, quick);
+  if (wanted("small")) out["small"] = bench_small(!as_json, quick);
   if (as_json) {
     std::cout << out.dump(1) << "\n";
     return 0;
@@ -177,6 +178,18 @@ int bench_main(const std::vector<std::string>& cases, bool as_json, bool quick, 
     for (const char* g : {"bare", "with buffer"})
       for (const char* k : {"base_shear", "base_moment", "contact_force"})
         std::printf("  %s, %s: %s\n", g, k, d[g][k]["statement"].get<std::string>().c_str());
+  }
+  if (out.contains("small")) {
+    const json& sm = out["small"];
+    std::printf("\nSmall scenes against the kernel (1 thread; kernel: %ld particles, %.1f ns per particle-step)\n",
+                sm["kernel_particles"].get<long>(), sm["kernel_ns_per_particle_step"].get<double>());
+    for (const auto& v : sm["variants"]) {
+      std::printf("%s: %.0f particles, %.0f steps, loop %.2f s, %.1f ns per particle-step = %.2f x kernel\n", v["variant"].get<std::string>().c_str(),
+                  v["particles"].get<double>(), v["steps"].get<double>(), v["loop_seconds"].get<double>(), v["ns_per_particle_step"].get<double>(),
+                  v["ratio_to_kernel"].get<double>());
+      for (const auto& [k, ns] : v["phases_ns"].items()) std::printf("  %-24s %8.1f ns\n", k.c_str(), ns.get<double>());
+      std::printf("  rigid constraint passes per step: %.1f\n", v["rigid_passes_per_step"].get<double>());
+    }
   }
   if (!results.empty()) {
     std::printf("\nMPM kernel throughput (2D, linear elastic, %ld particles, median of %d x %d steps)\n", o.particles, o.repeats, o.steps);

@@ -46,6 +46,9 @@ nlohmann::json bench_skip(bool progress);
 // finest cells.
 nlohmann::json bench_dam(bool progress, bool quick);
 nlohmann::json skip_block_bench(bool progress);
+// Small scenes against the kernel: the demo's variants on one thread, wall time per particle-step by phase, and the
+// kernel's (1 M particles; 100 k with quick) from the same run.
+nlohmann::json bench_small(bool progress, bool quick);
 
 // `damimpact bench [CASE...] [--json] [--quick] [--particles N] [--shape S]... [--transfer T]... [--threads N]...`;
 // cases: kernel, a5, a6, skip (default all). Empty lists keep the defaults of BenchOptions. Returns the exit code.

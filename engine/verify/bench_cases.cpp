@@ -6,12 +6,15 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <omp.h>
 #include <unistd.h>
 
 #include "engine/common/error.hpp"
 #include "engine/verify/bench.hpp"
 #include "engine/convergence/grid_convergence.hpp"
+#include "engine/mpm/solver.hpp"
 #include "engine/scenario/scenario.hpp"
+#include "engine/sim/run.hpp"
 #include "engine/verify/cases_members.hpp"
 
 namespace dmi {
@@ -326,6 +329,49 @@ json bench_dam(bool progress, bool quick) {
   out["points"] = points;
   out["reference"] = "Richardson value of the three finest cells (engine/convergence), per example and quantity";
   return out;
+}
+
+// Small scenes against the kernel (docs/performance.md): the demo's two variants (examples/
+// concrete_dam_boulder_buffer.json, snapshots and solid check off) on one thread, their step loop's wall time per
+// particle and step, phase by phase (Solver::Phase, the time-step estimate, the recorder), against the kernel's
+// (quadratic B-splines, FLIP, 1 M particles, or 100 k with quick) measured in the same run.
+json bench_small(bool progress, bool quick) {
+  const int max_threads = omp_get_max_threads();
+  BenchOptions ko;
+  ko.particles = quick ? 100000 : 1000000, ko.threads = {1}, ko.shapes = {"bspline2"}, ko.transfers = {"flip"};
+  if (quick) ko.steps = 5, ko.repeats = 3, ko.warmup = 2;
+  const KernelBench kb = kernel_bench(ko, progress).front();
+  const double kernel_ns = 1e9 * kb.seconds_per_step / static_cast<double>(kb.particles);
+  omp_set_num_threads(1);
+  const char* file = "concrete_dam_boulder_buffer.json";
+  json j = json::parse(embedded_examples().at(file));
+  j.erase("solid_check");
+  json variants = json::array();
+  for (ScenarioVariant& v : parse_scenario_variants(j.dump(), std::string("examples/") + file)) {
+    v.scenario.output.snapshot_interval = 0.0;
+    RunOptions ro;
+    ro.progress = ProgressMode::quiet, ro.profile = true;
+    const RunOutput o = run_scenario(v.scenario, ro);
+    const auto& n = o.results.info.numbers;
+    const double ps = n.at("particles") * n.at("steps");
+    json phases = json::object();
+    double loop = 0;
+    for (const auto& [k, sec] : n)
+      if (k.rfind("profile_", 0) == 0) {
+        const std::string name = k.substr(8, k.size() - 8 - 8);  // profile_<name>_seconds
+        phases[name] = 1e9 * sec / ps;
+        loop += sec;
+      }
+    json r = {{"variant", v.label}, {"particles", n.at("particles")}, {"steps", n.at("steps")}, {"loop_seconds", loop},
+              {"ns_per_particle_step", 1e9 * loop / ps}, {"ratio_to_kernel", 1e9 * loop / ps / kernel_ns}, {"phases_ns", phases},
+              {"rigid_passes_per_step", n.at("rigid_passes_per_step")}};
+    if (progress)
+      std::fprintf(stderr, "small %s: %.0f particles, %.0f steps, %.2f s, %.0f ns per particle-step (%.1f x kernel)\n", v.label.c_str(),
+                   n.at("particles"), n.at("steps"), loop, 1e9 * loop / ps, 1e9 * loop / ps / kernel_ns);
+    variants.push_back(r);
+  }
+  omp_set_num_threads(max_threads);
+  return {{"kernel_ns_per_particle_step", kernel_ns}, {"kernel_particles", kb.particles}, {"variants", variants}};
 }
 
 }  // namespace dmi
