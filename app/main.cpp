@@ -1,6 +1,7 @@
 // damimpact command line: a thin shell over the engine and the design layer. Exit 0 ok, 1 a validation case or a
 // design check failed, 2 bad input or failed run.
 #include <CLI/CLI.hpp>
+#include <omp.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <thread>
 
 #include "design/design.hpp"
 #include "design/grid_study.hpp"
@@ -83,32 +85,67 @@ Resume resume_mode(const RestartFlags& rf, const std::string& dir) {
   return Resume::fresh;
 }
 
-// Simulates every variant; `written` receives the results files.
+// Simulates every variant; `written` receives the results files. With two or more threads the variants run side by
+// side, the threads shared among them: a scene below 4 096 particles steps serially whatever -t says, so in turn they
+// left cores idle (docs/performance.md). Results do not depend on this (each run is deterministic across thread
+// counts); messages come in variant order after all have ended, and the first variant's error is the one reported.
 int simulate(const std::string& file, const std::string& out, int threads, bool quiet, const std::string& progress, bool dry_run,
              bool expand, const RestartFlags& rf, std::vector<std::string>* written = nullptr) {
   const std::vector<dmi::ScenarioVariant> variants = dmi::load_scenario_variants(file);
   if (dry_run || expand) return dry_run_report(file, variants, expand);
-  for (const auto& v : variants) {
+  const int nv = static_cast<int>(variants.size());
+  const int cores = threads > 0 ? threads : omp_get_max_threads();
+  const bool side_by_side = nv > 1 && cores >= 2;
+  struct Job {
     dmi::RunOptions o;
+    Resume mode = Resume::fresh;
+    dmi::RunOutput r;
+    std::exception_ptr error;
+  };
+  std::vector<Job> jobs(variants.size());
+  for (int k = 0; k < nv; ++k) {
+    const auto& v = variants[k];
+    dmi::RunOptions& o = jobs[k].o;
     o.out_dir = v.label.empty() ? out : (std::filesystem::path(out) / v.label).string();
-    o.threads = threads;
+    o.threads = side_by_side ? std::max(1, cores / nv) : threads;
     o.progress = progress_mode(quiet, progress);
+    if (side_by_side && o.progress != dmi::ProgressMode::quiet) o.progress = dmi::ProgressMode::lines;  // no two live bars
     o.software_version = DMI_VERSION;
     o.checkpoint_every = rf.checkpoint_every;
     o.stop_after_steps = rf.stop_after;
-    const Resume mode = resume_mode(rf, o.out_dir);
-    o.restart = mode == Resume::from_checkpoint;
-    if (!quiet && !v.label.empty()) std::printf("variant %s -> %s\n", v.label.c_str(), o.out_dir.c_str());
-    if (mode == Resume::done) {  // finished before the interruption
-      if (!quiet) std::printf("kept %s/results.h5 (complete; nothing to restart)\n", o.out_dir.c_str());
-      if (written) written->push_back((std::filesystem::path(o.out_dir) / "results.h5").string());
-      continue;
+    jobs[k].mode = resume_mode(rf, o.out_dir);
+    o.restart = jobs[k].mode == Resume::from_checkpoint;
+  }
+  auto run_one = [&](int k) {
+    if (jobs[k].mode == Resume::done) return;
+    try {
+      jobs[k].r = dmi::run_scenario(variants[k].scenario, jobs[k].o);
+    } catch (...) {
+      jobs[k].error = std::current_exception();
     }
-    if (!quiet && o.restart) std::printf("restarting from %s/checkpoint.dmi\n", o.out_dir.c_str());
-    const dmi::RunOutput r = dmi::run_scenario(v.scenario, o);
-    if (written) written->push_back(r.results_path);
-    if (!quiet) std::printf("wrote %s (%.0f steps, %.2f s wall)\n", r.results_path.c_str(), r.results.info.numbers.at("steps"),
-                            r.results.info.numbers.at("wall_seconds"));
+  };
+  auto report = [&](int k) {
+    const auto& v = variants[k];
+    const Job& j = jobs[k];
+    if (!quiet && !v.label.empty()) std::printf("variant %s -> %s\n", v.label.c_str(), j.o.out_dir.c_str());
+    if (j.mode == Resume::done) {  // finished before the interruption
+      if (!quiet) std::printf("kept %s/results.h5 (complete; nothing to restart)\n", j.o.out_dir.c_str());
+      if (written) written->push_back((std::filesystem::path(j.o.out_dir) / "results.h5").string());
+      return;
+    }
+    if (!quiet && j.o.restart) std::printf("restarting from %s/checkpoint.dmi\n", j.o.out_dir.c_str());
+    if (j.error) std::rethrow_exception(j.error);
+    if (written) written->push_back(j.r.results_path);
+    if (!quiet) std::printf("wrote %s (%.0f steps, %.2f s wall)\n", j.r.results_path.c_str(), j.r.results.info.numbers.at("steps"),
+                            j.r.results.info.numbers.at("wall_seconds"));
+  };
+  if (side_by_side) {
+    std::vector<std::thread> pool;
+    for (int k = 0; k < nv; ++k) pool.emplace_back(run_one, k);
+    for (auto& t : pool) t.join();
+    for (int k = 0; k < nv; ++k) report(k);
+  } else {
+    for (int k = 0; k < nv; ++k) run_one(k), report(k);
   }
   return 0;
 }

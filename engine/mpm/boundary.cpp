@@ -86,7 +86,8 @@ template <int D> void wall_touch(Scene<D>& s) {
   }
 }
 
-template <int D> double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double time, bool record, bool reset) {
+template <int D>
+double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double time, bool record, bool reset, const std::vector<Index>* nodes) {
   Grid<D>& g = *s.grid;
   if (record && reset) {
     for (auto& w : s.walls) w.force.setZero();
@@ -96,7 +97,7 @@ template <int D> double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, 
   const double tol = 1e-9 * g.h();
   const Index nn = g.nnodes();
   double work = 0.0;
-  for (Index id : g.active()) {
+  for (Index id : nodes ? *nodes : g.active()) {
     const Vec<D> x = g.node_pos(id);
     for (int fld = 0; fld < g.nfields(); ++fld) {
       const Index k = fld * nn + id;
@@ -262,12 +263,12 @@ template <int D> void pair_contact(Scene<D>& s, std::vector<Vec<D>>& vel, Index 
   vel[kb] -= P / mb;
 }
 
-template <int D> void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel, bool fronts) {
+template <int D> void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel, bool fronts, const std::vector<Index>* nodes) {
   Grid<D>& g = *s.grid;
   const int nf = g.nfields();
   if (nf < 2) return;
   const Index nn = g.nnodes();
-  const auto& active = g.active();
+  const auto& active = nodes ? *nodes : g.active();
   const Index na = static_cast<Index>(active.size());
   if (s.options.contact_detection == BodyDetection::surface) {
     if (fronts || s.body_pair.size() != static_cast<std::size_t>(nn)) body_fronts(s);
@@ -318,9 +319,9 @@ template <int D> void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel, bool f
 
 template void wall_touch<2>(Scene<2>&);
 template void wall_touch<3>(Scene<3>&);
-template double apply_boundaries<2>(Scene<2>&, std::vector<Vec<2>>&, double, double, bool, bool);
-template double apply_boundaries<3>(Scene<3>&, std::vector<Vec<3>>&, double, double, bool, bool);
-template void body_contact<2>(Scene<2>&, std::vector<Vec<2>>&, bool);
-template void body_contact<3>(Scene<3>&, std::vector<Vec<3>>&, bool);
+template double apply_boundaries<2>(Scene<2>&, std::vector<Vec<2>>&, double, double, bool, bool, const std::vector<Index>*);
+template double apply_boundaries<3>(Scene<3>&, std::vector<Vec<3>>&, double, double, bool, bool, const std::vector<Index>*);
+template void body_contact<2>(Scene<2>&, std::vector<Vec<2>>&, bool, const std::vector<Index>*);
+template void body_contact<3>(Scene<3>&, std::vector<Vec<3>>&, bool, const std::vector<Index>*);
 
 }  // namespace dmi

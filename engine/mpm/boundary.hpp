@@ -18,7 +18,10 @@ template <int D> void wall_touch(Scene<D>& s);
 //   slip:     if v.n < 0: v -= (v.n) n                      (unilateral, frictionless)
 //   friction: as slip, then |v_t| reduced by mu |v.n|, to 0 at most (Coulomb)
 // reset = false adds to the forces of an earlier call in the same step (the rigid bodies' constraint iterations).
-template <int D> double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double time, bool record, bool reset = true);
+// nodes: only these nodes (all fields), instead of the grid's active nodes.
+template <int D>
+double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double time, bool record, bool reset = true,
+                        const std::vector<Index>* nodes = nullptr);
 
 // Bardenhagen, Brackbill & Sulsky (2000): at nodes where several fields have mass, a field moving
 // towards the others, (v_b - v_cm) . n_b > 0, loses that normal relative velocity; its tangential
@@ -33,6 +36,7 @@ template <int D> double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, 
 //   block on a frictionless slab was braked to rest after 18 mm; with it the block slides at 0.99 g sin(theta).
 //   On curved bodies the fill lags the touch and the contact is soft (docs/verification.md).
 // fronts = false reuses the surface detection of an earlier call in the same step (the particles have not moved).
-template <int D> void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel, bool fronts = true);
+// nodes: only these nodes, instead of the grid's active nodes (with fronts = false).
+template <int D> void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel, bool fronts = true, const std::vector<Index>* nodes = nullptr);
 
 }  // namespace dmi

@@ -152,11 +152,20 @@ template <int D> void Solver<D>::grid_update(double dt) {
 template <int D> void Solver<D>::rigid_constraints(double dt) {
   Grid<D>& g = *scene_.grid;
   const double s_min = scene_.gravity.norm() * dt + 1e-12;
+  // The passes change velocities only where a rigid field has mass (the projection moves those fields; the walls and
+  // body contact act node by node, and elsewhere they already hold from grid_update), so they run over those nodes.
+  rigid_nodes_.clear();
+  for (Index id : g.active())
+    for (const Body& b : scene_.bodies)
+      if (b.rigid && g.m[b.field * g.nnodes() + id] > 0) {
+        rigid_nodes_.push_back(id);
+        break;
+      }
   for (int it = 0; it < kRigidPasses; ++it) {
     if (rigid_->project_nodes(scene_, g.vL, s_min) < 1e-8) return;
     ++rigid_passes_;
-    boundary_work_ += apply_boundaries(scene_, g.vL, dt, time_ + dt, true, false);
-    body_contact(scene_, g.vL, false);
+    boundary_work_ += apply_boundaries(scene_, g.vL, dt, time_ + dt, true, false, &rigid_nodes_);
+    body_contact(scene_, g.vL, false, &rigid_nodes_);
   }
   rigid_->project_nodes(scene_, g.vL, s_min);
 }

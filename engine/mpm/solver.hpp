@@ -84,6 +84,7 @@ template <int D> class Solver {
   [[noreturn]] void fail(const std::string& what) const;
   bool profile_ = false;
   long rigid_passes_ = 0;
+  std::vector<Index> rigid_nodes_;  // rigid_constraints: the active nodes where a rigid field has mass
   std::array<double, kPhases> phase_seconds_{};
   std::chrono::steady_clock::time_point lap_t_;
   void lap(Phase p) {  // the time since the last lap goes to phase p

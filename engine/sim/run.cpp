@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <mutex>
 
 #include "engine/common/error.hpp"
 #include "engine/io/results_writer.hpp"
@@ -29,13 +30,20 @@ namespace {
 // writes what it has into results.h5.partial (complete = 0) and throws Interrupted. Previous handlers come back after.
 volatile std::sig_atomic_t g_signal = 0;
 extern "C" void on_signal(int sig) { g_signal = sig; }
+// Runs side by side (the variants of one scenario, app/main.cpp) share it: the first installs the handlers, the last
+// restores the previous ones, and a signal stops every run.
 struct SignalGuard {
   using Handler = void (*)(int);
-  Handler old_int, old_term;
-  SignalGuard() : old_int(std::signal(SIGINT, on_signal)), old_term(std::signal(SIGTERM, on_signal)) { g_signal = 0; }
+  static inline std::mutex mu;
+  static inline int users = 0;
+  static inline Handler old_int = nullptr, old_term = nullptr;
+  SignalGuard() {
+    const std::lock_guard<std::mutex> lock(mu);
+    if (users++ == 0) g_signal = 0, old_int = std::signal(SIGINT, on_signal), old_term = std::signal(SIGTERM, on_signal);
+  }
   ~SignalGuard() {
-    std::signal(SIGINT, old_int);
-    std::signal(SIGTERM, old_term);
+    const std::lock_guard<std::mutex> lock(mu);
+    if (--users == 0) std::signal(SIGINT, old_int), std::signal(SIGTERM, old_term);
   }
 };
 

@@ -85,6 +85,35 @@ TEST(RunCli, FailedRunExitsTwoAndLeavesNoCompleteResults) {
   fs::remove_all(out);
 }
 
+// The variants of a scenario run side by side with two threads (app/main.cpp): every history is bit for bit the one
+// of the same variant run alone on one thread, and a failing variant still fails the command (exit 2, its message).
+TEST(RunCli, VariantsSideBySideGiveTheResultsOfOneByOne) {
+  const fs::path out = fresh_dir("side_by_side");
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(std::string(DMI_SOURCE_DIR) + "/examples/concrete_dam_boulder_buffer.json"));
+  j["grid"] = {{"cell_size", 0.08}};
+  j.erase("solid_check");
+  fs::create_directories(out);
+  std::ofstream(out / "dam.json") << j.dump(2);
+  for (const char* t : {"1", "2"}) {
+    const Cli r = run_cli("simulate " + (out / "dam.json").string() + " -o " + (out / t).string() + " -q -t " + t);
+    ASSERT_EQ(r.status, 0) << r.err;
+  }
+  for (const char* v : {"with_buffer", "without_buffer"}) {
+    const dmi::Results a = dmi::read_results((out / "1" / v / "results.h5").string(), false);
+    const dmi::Results b = dmi::read_results((out / "2" / v / "results.h5").string(), false);
+    ASSERT_EQ(a.series.size(), b.series.size()) << v;
+    ASSERT_GT(a.time.size(), 10u) << v;
+    EXPECT_EQ(a.time, b.time) << v;
+    for (std::size_t k = 0; k < a.series.size(); ++k) EXPECT_EQ(a.series[k].data, b.series[k].data) << v << " " << a.series[k].path;
+  }
+  j["boulder"]["velocity"] = {900, 0};  // through the dam and off the grid: both variants fail
+  std::ofstream(out / "bad.json") << j.dump(2);
+  const Cli r = run_cli("simulate " + (out / "bad.json").string() + " -o " + (out / "bad").string() + " -q -t 2");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("run failed"), std::string::npos) << r.err;
+  fs::remove_all(out);
+}
+
 TEST(RunCli, MissingScenarioFileIsOneClearError) {
   const Cli r = run_cli("simulate /nonexistent/dam.json -o /tmp/never");
   EXPECT_EQ(r.status, 2);
