@@ -168,6 +168,8 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
   const int centre = D == 2 ? 12 : 62;  // offset 0
   blocks_.assign(n * NB, Mat<D>::Zero());
   used_.assign(n * NB, 0);
+  // K is symmetric (K_ml = K_lm^T): only the blocks towards nodes of larger id are accumulated, e2 >= e1 (entries and
+  // node ids both run x fastest), and each stands for its transpose below.
   for (Index i = b.begin; i < b.end; ++i) {
     const std::size_t k0 = static_cast<std::size_t>(i - b.begin) * st.nn;
     const double w = dt * P.vol[i];
@@ -175,7 +177,7 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
       const int l1 = entry_[k0 + e1];
       if (l1 < 0) continue;
       const Vec<D>& g1 = st.grad[k0 + e1];
-      for (int e2 = 0; e2 < st.nn; ++e2) {
+      for (int e2 = e1; e2 < st.nn; ++e2) {
         if (entry_[k0 + e2] < 0) continue;
         const Vec<D>& g2 = st.grad[k0 + e2];
         const std::size_t at = static_cast<std::size_t>(l1) * NB + pair_slot_[static_cast<std::size_t>(e1 * st.nn + e2)];
@@ -201,18 +203,22 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
     for (int o = 0; o < NB; ++o) {
       if (!used_[l * NB + o]) continue;
       const int m = local_[nodes_[l] + offset_diff(o)];
-      const Mat<D>& B = blocks_[l * NB + o];
-      for (int c = 0; c < D; ++c) {
-        const int r = dof_[l * D + c];
-        if (r < 0) continue;
+      const Mat<D>& B = blocks_[l * NB + o];  // A_lm; off the diagonal also A_ml = B^T
+      for (int c = 0; c < D; ++c)
         for (int c2 = 0; c2 < D; ++c2) {
-          if (const int col = dof_[static_cast<std::size_t>(m) * D + c2]; col >= 0) {
-            if (col <= r) triplets_.emplace_back(r, col, B(c, c2));  // the lower triangle is what LDL^T reads
-          } else {
+          const int r = dof_[l * D + c], col = dof_[static_cast<std::size_t>(m) * D + c2];
+          if (r >= 0 && col >= 0) {  // the lower triangle is what LDL^T reads
+            if (col <= r) {
+              triplets_.emplace_back(r, col, B(c, c2));
+            } else if (o != centre) {
+              triplets_.emplace_back(col, r, B(c, c2));
+            }
+          } else if (r >= 0) {
             rhs[r] -= B(c, c2) * u_[m][c2];  // a held component
+          } else if (col >= 0 && o != centre) {
+            rhs[col] -= B(c, c2) * u_[l][c];
           }
         }
-      }
     }
   if (nf > 0) {
     A_.resize(nf, nf);
