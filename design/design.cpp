@@ -160,10 +160,26 @@ json verdict(const std::vector<Check>& checks) {
               {"governing", gov ? gov->to_json() : json(nullptr)}};
 }
 
+// The documents the run's own scenario promises: a file whose scenario has members (or a solid check) but not their
+// document was cut or altered, and checking what is left would read "NO CHECKS" or a partial PASS.
+void require_documents(const Results& r, const std::string& where) {
+  const std::string& text = r.info.scenario_expanded_json.empty() ? r.info.scenario_json : r.info.scenario_expanded_json;
+  if (text.empty()) throw std::runtime_error(where + ": /scenario is missing: the file does not say what was simulated; nothing to check");
+  const json sc = json::parse(text, nullptr, false);
+  if (sc.is_discarded() || !sc.is_object()) throw std::runtime_error(where + ": /scenario is not a JSON object; nothing to check");
+  const json* members = sc.contains("structure") && sc["structure"].is_object() && sc["structure"].contains("members") ? &sc["structure"]["members"] : nullptr;
+  if (members && members->is_array() && !members->empty() && !r.info.documents.count("structure"))
+    throw std::runtime_error(where + ": /documents/structure is missing although the scenario has " + std::to_string(members->size()) +
+                             " member(s): the file is incomplete or altered; nothing to check");
+  if (sc.contains("solid_check") && !r.info.documents.count("solid_check"))
+    throw std::runtime_error(where + ": /documents/solid_check is missing although the scenario has a solid_check: the file is incomplete or altered; nothing to check");
+}
+
 }  // namespace
 
 json design_run(const Results& r, const Limits& L, const std::string& where) {
   if (!r.complete) throw std::runtime_error(where + ": the run did not finish (complete = 0); nothing to check");
+  require_documents(r, where);
   json run{{"results_file", where}, {"scenario_name", r.info.scenario_name}, {"variant", r.info.variant}};
   std::vector<Check> checks;
   const json structure = parse_document(r, "structure", where);

@@ -5,6 +5,9 @@
 // Strings are accepted both variable- and fixed-length; a Series' components attribute may be a
 // 1-D string array (what the writer produces) or a single comma-joined string.
 #include <algorithm>
+#include <cmath>
+#include <string>
+#include <type_traits>
 #include <filesystem>
 #include <vector>
 
@@ -98,6 +101,14 @@ class Reader {
     out.resize(static_cast<std::size_t>(n));
     check_ok(H5Dread(ds, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()), f_,
              "cannot read " + where);
+    // Results never hold NaN or inf (a run stops at the first non-finite value): one here is damage, and read as a
+    // number it would pass every check.
+    if constexpr (std::is_floating_point_v<T>) {
+      const auto bad = std::find_if(out.begin(), out.end(), [](T v) { return !std::isfinite(v); });
+      if (bad != out.end())
+        error(where + " holds a non-finite value (" + (std::isnan(*bad) ? std::string("nan") : std::string("inf")) + ") at entry " +
+              std::to_string(bad - out.begin()) + " of " + std::to_string(out.size()) + "; results are never so: the file is damaged");
+    }
     return out;
   }
   std::vector<double> doubles(hid_t loc, const std::string& name, const std::string& where,

@@ -9,10 +9,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "engine/io/results_writer.hpp"
+
+#include <hdf5.h>
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -147,6 +150,52 @@ TEST_F(CheckCli, BadInputExitsTwoWithOneClearMessage) {
   EXPECT_FALSE(fs::exists(partial / "design.json"));
   // Exactly one line.
   EXPECT_EQ(std::count(c.err.begin(), c.err.end(), '\n'), 1) << c.err;
+}
+
+// Damaged results never become a verdict: a NaN in a history (the member end forces the checks read), a NaN in the
+// particle positions of a snapshot, or the structure document cut from a file whose scenario has members: check,
+// render and report all exit 2 naming the dataset, and no design.json or report is left behind.
+TEST_F(CheckCli, DamagedResultsAreRefusedNeverChecked) {
+  auto damaged = [&](const std::string& name, const std::function<void(hid_t)>& edit) {
+    const fs::path d = dir / name;
+    fs::create_directories(d);
+    fs::copy_file(dir / "results.h5", d / "results.h5", fs::copy_options::overwrite_existing);
+    const hid_t f = H5Fopen((d / "results.h5").c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    EXPECT_GE(f, 0);
+    edit(f);
+    H5Fclose(f);
+    return d;
+  };
+  auto set_nan = [](hid_t f, const char* path, hsize_t row, hsize_t col) {
+    const hid_t ds = H5Dopen2(f, path, H5P_DEFAULT);
+    ASSERT_GE(ds, 0) << path;
+    const hid_t space = H5Dget_space(ds);
+    const hsize_t start[2] = {row, col}, count[2] = {1, 1};
+    H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, count, nullptr);
+    const hsize_t one = 1;
+    const hid_t mem = H5Screate_simple(1, &one, nullptr);
+    const double nan = std::nan("");
+    EXPECT_GE(H5Dwrite(ds, H5T_NATIVE_DOUBLE, mem, space, H5P_DEFAULT, &nan), 0);
+    H5Sclose(mem), H5Sclose(space), H5Dclose(ds);
+  };
+  const fs::path forces = damaged("nan_forces", [&](hid_t f) { set_nan(f, "/history/frame/end_forces", 5, 3); });
+  for (const char* cmd : {"check", "render", "report"}) {
+    const Cli c = cli(std::string(cmd) + " " + forces.string());
+    EXPECT_EQ(c.status, 2) << cmd << ": " << c.err;
+    EXPECT_NE(c.err.find("/history/frame/end_forces holds a non-finite value (nan) at entry 123"), std::string::npos) << cmd << ": " << c.err;
+    EXPECT_EQ(std::count(c.err.begin(), c.err.end(), '\n'), 1) << c.err;
+  }
+  EXPECT_FALSE(fs::exists(forces / "design.json"));
+  EXPECT_FALSE(fs::exists(forces / "report.html"));
+  const fs::path positions = damaged("nan_positions", [&](hid_t f) { set_nan(f, "/snapshots/0000/position", 0, 1); });
+  Cli c = cli("render " + positions.string());
+  EXPECT_EQ(c.status, 2) << c.err;
+  EXPECT_NE(c.err.find("/snapshots/0000/position holds a non-finite value (nan) at entry 1"), std::string::npos) << c.err;
+  const fs::path cut = damaged("no_structure", [&](hid_t f) { EXPECT_GE(H5Ldelete(f, "/documents/structure", H5P_DEFAULT), 0); });
+  c = cli("check " + cut.string());
+  EXPECT_EQ(c.status, 2) << c.out << c.err;
+  EXPECT_NE(c.err.find("/documents/structure is missing although the scenario has 1 member(s)"), std::string::npos) << c.err;
+  EXPECT_FALSE(fs::exists(cut / "design.json"));
 }
 
 TEST_F(CheckCli, RunSimulatesThenChecksAndExitsByTheVerdict) {
