@@ -350,6 +350,11 @@ void Builder::add_boulder() {
     cx = front(impact_y_) - r - gap * vx / boulder_speed_;
     cy = impact_y_ - gap * vy / boulder_speed_;
   }
+  // The boulder must strike the dam (or its buffer): a centre above the crest passes over it and loads nothing, and
+  // a design check of that run would read as a safe impact.
+  if (cy > d_.height)
+    fail(b.position.empty() ? "/boulder/impact_height" : "/boulder/position", b.position.empty() ? json(impact_y_) : json(b.position),
+         "an impact point on the dam: the boulder's centre at most the dam height " + std::to_string(d_.height) + " m (above it, it passes over the crest)");
   if (cy - r < bed(cx) + 0.5 * h_)
     fail(b.position.empty() ? "/boulder/impact_height" : "/boulder/position", b.position.empty() ? json(impact_y_) : json(b.position),
          "a boulder above the ground: its centre at least the equivalent radius " + std::to_string(r) + " m (+ half a cell) above the bed");
