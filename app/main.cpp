@@ -116,6 +116,11 @@ int simulate(const std::string& file, const std::string& out, int threads, bool 
     jobs[k].mode = resume_mode(rf, o.out_dir);
     o.restart = jobs[k].mode == Resume::from_checkpoint;
   }
+  // --restart continues an interrupted run: with no checkpoint in any variant's folder (and not every variant done)
+  // there is none, and starting afresh silently would hide a wrong folder.
+  if (rf.restart && std::none_of(jobs.begin(), jobs.end(), [](const Job& j) { return j.mode != Resume::fresh; }))
+    throw dmi::InputError(out + ": --restart: no checkpoint.dmi to continue from (the run finished or was never started here); run without "
+                          "--restart to start afresh");
   auto run_one = [&](int k) {
     if (jobs[k].mode == Resume::done) return;
     try {
@@ -284,6 +289,26 @@ int bench_command(const std::vector<std::string>& cases, bool as_json, bool quic
 
 }  // namespace
 
+constexpr long kMaxThreads = 1024;
+
+// A whole number in [lo, hi], named with readable bounds (CLI11's own checks print doubles: 1.797...e308 in full).
+CLI::Validator whole_in(long lo, long hi) {
+  const std::string want = "a whole number from " + std::to_string(lo) + " to " + std::to_string(hi);
+  return CLI::Validator(
+      [lo, hi, want](std::string& s) -> std::string {
+        long v = 0;
+        std::size_t used = 0;
+        try {
+          v = std::stol(s, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used != s.size() || s.empty() || v < lo || v > hi) return "value " + s + ": expected " + want;
+        return {};
+      },
+      "INT in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+}
+
 int main(int argc, char** argv) {
   // OpenMP threads that spin while waiting stall badly when the cores are shared (a second run, a
   // parallel test job): ~100x slower on 2 cores. libgomp reads OMP_WAIT_POLICY when it loads, so set
@@ -305,14 +330,14 @@ int main(int argc, char** argv) {
   auto add_run_options = [&](CLI::App* c) {
     c->add_option("scenario", file, "scenario JSON file (docs/scenario.md)")->required();
     c->add_option("-o,--out", out, "output folder (results.h5, fields/)")->capture_default_str();
-    c->add_option("-t,--threads", threads, "OpenMP threads (0 = all cores)")->capture_default_str();
+    c->add_option("-t,--threads", threads, "OpenMP threads (0 = all cores)")->capture_default_str()->check(whole_in(0, kMaxThreads));
     c->add_flag("-q,--quiet", quiet, "no progress output");
     c->add_option("--progress", progress, "progress display: auto | terminal | lines")->check(CLI::IsMember({"auto", "terminal", "lines"}));
     c->add_flag("--restart", restart.restart, "continue an interrupted run from OUT/checkpoint.dmi (bit for bit; same scenario file)");
     c->add_option("--checkpoint-every", restart.checkpoint_every, "wall seconds between checkpoints (0 = only when interrupted)")
         ->capture_default_str()->check(CLI::NonNegativeNumber);
     c->add_option("--stop-after", restart.stop_after, "stop after this many steps with a checkpoint (exit 3; continue with --restart)")
-        ->check(CLI::PositiveNumber);
+        ->check(whole_in(1, 1000000000000L));
   };
   CLI::App* run = app.add_subcommand("run", "simulate a scenario and write results (the whole chain)");
   add_run_options(run);
@@ -327,7 +352,7 @@ int main(int argc, char** argv) {
   val->add_flag("--list", list, "list the cases and exit");
   bool stress = false;
   val->add_flag("--stress", stress, "run the stability stress suite instead (docs/reliability.md)");
-  val->add_option("-t,--threads", threads, "OpenMP threads (0 = all cores)");
+  val->add_option("-t,--threads", threads, "OpenMP threads (0 = all cores)")->check(whole_in(0, kMaxThreads));
   std::vector<std::string> check_paths;
   std::string limits_file, design_out;
   CLI::App* chk = app.add_subcommand("check", "design checks of finished runs: envelopes, reactions, strength checks -> design.json; "
@@ -379,7 +404,7 @@ int main(int argc, char** argv) {
                                               "OUT/cases/*, summary.csv/.json/.html/.pdf (docs/sweep.md)");
   swp->add_option("study", sweep_file, "sweep JSON file")->required();
   swp->add_option("-o,--out", so.out_dir, "output folder")->capture_default_str();
-  swp->add_option("-t,--threads", so.threads, "OpenMP threads per case (per MPI rank; 0 = all cores)");
+  swp->add_option("-t,--threads", so.threads, "OpenMP threads per case (per MPI rank; 0 = all cores)")->check(whole_in(0, kMaxThreads));
   swp->add_option("--limits", so.limits_file, "design limits file (docs/design-checks.md)");
   swp->add_flag("--no-case-reports", no_case_reports, "no HTML report per case (faster; the summary report is still written)");
   swp->add_flag("--no-pdf", no_pdf, "HTML only (no weasyprint)");
@@ -394,6 +419,8 @@ int main(int argc, char** argv) {
     return rc == 0 ? 0 : 2;
   }
   try {
+    for (const auto& [cmd, folder] : {std::pair{sim, &out}, std::pair{run, &out}, std::pair{swp, &so.out_dir}})
+      if (*cmd && folder->empty()) throw dmi::InputError("-o/--out = \"\": expected an output folder");
     if (*sim) return simulate(file, out, threads, quiet, progress, dry_run, expand, restart);
     if (*run) {  // the whole chain: simulation, then the design checks of what it wrote
       if (!limits_file.empty()) dmi::design::read_limits(limits_file);  // a bad limits file fails before the simulation

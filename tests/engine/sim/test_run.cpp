@@ -114,6 +114,31 @@ TEST(RunCli, VariantsSideBySideGiveTheResultsOfOneByOne) {
   fs::remove_all(out);
 }
 
+// Command-line numbers and folders: out-of-range or malformed threads and step counts, an empty output folder and a
+// --restart with nothing to restart are refused (exit 2, the bound named), and nothing is written.
+TEST(RunCli, NumbersAndFoldersAreRangeChecked) {
+  const std::string ex = std::string(DMI_SOURCE_DIR) + "/examples/wall_impact.json";
+  const fs::path out = fresh_dir("ranges");
+  const std::pair<std::string, std::string> cases[] = {
+      {"-t -1", "--threads: value -1: expected a whole number from 0 to 1024"},
+      {"-t 2x", "--threads: value 2x: expected a whole number from 0 to 1024"},
+      {"--stop-after 0", "--stop-after: value 0: expected a whole number from 1 to 1000000000000"},
+  };
+  for (const auto& [args, msg] : cases) {
+    const Cli r = run_cli("simulate " + ex + " -q -o " + out.string() + " " + args);
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_NE(r.err.find(msg), std::string::npos) << args << ": " << r.err;
+  }
+  Cli r = run_cli("simulate " + ex + " -q -o ''");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("-o/--out = \"\": expected an output folder"), std::string::npos) << r.err;
+  r = run_cli("simulate " + ex + " -q --restart -o " + out.string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--restart: no checkpoint.dmi to continue from"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out / "results.h5"));
+  fs::remove_all(out);
+}
+
 TEST(RunCli, MissingScenarioFileIsOneClearError) {
   const Cli r = run_cli("simulate /nonexistent/dam.json -o /tmp/never");
   EXPECT_EQ(r.status, 2);
