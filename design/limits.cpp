@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "engine/common/error.hpp"
+#include "engine/common/json_input.hpp"
 
 namespace dmi::design {
 
@@ -133,13 +134,11 @@ Limits parse_limits(const json& j, const std::string& file) {
 }
 
 Limits read_limits(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the limits file (does it exist and is it readable?)");
-  std::stringstream ss;
-  ss << in.rdbuf();
+  const std::string text = read_json_file(path, "limits");
+  check_json_depth(text, path);
   json j;
   try {
-    j = json::parse(ss.str());
+    j = json::parse(text);
   } catch (const json::parse_error& e) {
     throw InputError(path + ": invalid JSON (" + std::string(e.what()) + ")");
   }

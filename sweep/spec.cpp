@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "engine/common/error.hpp"
+#include "engine/common/json_input.hpp"
 #include "engine/scenario/scenario.hpp"
 
 namespace dmi::sweep {
@@ -91,12 +92,12 @@ SweepSpec parse_sweep(const nlohmann::ordered_json& j, const std::string& file, 
   if (!j.contains("base")) throw InputError(file, "/base", "", "the base scenario: a file name (relative to the sweep file) or an object");
   if (j["base"].is_string()) {
     const fs::path p = fs::path(dir) / j["base"].get<std::string>();
-    std::ifstream in(p);
-    if (!in) throw InputError(file, "/base", j["base"].dump(), "a readable scenario file (" + p.string() + " cannot be opened)");
-    std::stringstream ss;
-    ss << in.rdbuf();
+    std::ifstream probe(p);
+    if (!probe) throw InputError(file, "/base", j["base"].dump(), "a readable scenario file (" + p.string() + " cannot be opened)");
+    const std::string text = read_json_file(p.string(), "scenario");
+    check_json_depth(text, p.string());
     try {
-      s.base = json::parse(ss.str());
+      s.base = json::parse(text);
     } catch (const json::parse_error& e) {
       throw InputError(p.string() + ": not valid JSON: " + e.what());
     }
@@ -191,13 +192,11 @@ SweepSpec parse_sweep(const nlohmann::ordered_json& j, const std::string& file, 
 }
 
 SweepSpec load_sweep(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open the sweep file");
-  std::stringstream ss;
-  ss << in.rdbuf();
+  const std::string text = read_json_file(path, "sweep");
+  check_json_depth(text, path);
   nlohmann::ordered_json j;
   try {
-    j = nlohmann::ordered_json::parse(ss.str());
+    j = nlohmann::ordered_json::parse(text);
   } catch (const json::parse_error& e) {
     throw InputError(path + ": not valid JSON: " + e.what());
   }

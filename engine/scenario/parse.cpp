@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "engine/common/error.hpp"
+#include "engine/common/json_input.hpp"
 #include "engine/scenario/presets.hpp"
 #include "engine/scenario/scenario.hpp"
 #include "engine/scenario/schema.hpp"
@@ -824,6 +825,7 @@ Scenario parse_low_level(const json& j, const std::string& file) {
 }
 
 json parse_json_text(const std::string& text, const std::string& file) {
+  check_json_depth(text, file);
   try {
     return json::parse(text);
   } catch (const json::out_of_range& e) {
@@ -857,15 +859,7 @@ Scenario parse_variant(const json& j, const std::string& file, const std::string
   return s;
 }
 
-std::string read_file_text(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, not a scenario file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the scenario file (does it exist and is it readable?)");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+std::string read_file_text(const std::string& path) { return read_json_file(path, "scenario"); }
 
 // An input error is one line (README; the CLI prints it as one): keys and names taken from the input may hold
 // control characters (a JSON "\n" in a key or a name), which messages show escaped, as JSON writes them.

@@ -152,6 +152,26 @@ TEST(BadInputCli, DryRunExitsTwoWithOneLine) {
   }
 }
 
+// Every JSON reader bounds nesting and size: the limits and sweep files nested 100 000 deep (a stack overflow before),
+// and /dev/zero as a scenario, exit 2 with one line.
+TEST(BadInputCli, DeepAndEndlessInputsAreRefusedByEveryReader) {
+  TempDir tmp;
+  const fs::path deep = tmp.path / "deep.json";
+  std::ofstream(deep) << std::string(100000, '[') << std::string(100000, ']');
+  const std::pair<std::string, std::string> cases[] = {
+      {"simulate --dry-run " + quote(deep.string()), "deep.json:1:65: invalid JSON (nested deeper than 64 levels)"},
+      {"check " + quote(tmp.path.string()) + " --limits " + quote(deep.string()), "deep.json:1:65: invalid JSON (nested deeper than 64 levels)"},
+      {"sweep " + quote(deep.string()) + " -o " + quote((tmp.path / "sw").string()), "deep.json:1:65: invalid JSON (nested deeper than 64 levels)"},
+      {"simulate --dry-run /dev/zero", "/dev/zero: larger than 64 MiB: expected a scenario file"},
+  };
+  for (const auto& [args, msg] : cases) {
+    const CliResult r = run_cli(args, tmp);
+    EXPECT_EQ(r.status, 2) << args << ": " << r.err;
+    EXPECT_NE(r.err.find(msg), std::string::npos) << args << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+}
+
 TEST(BadInputCli, GoodFileDryRunExitsZero) {
   TempDir tmp;
   const fs::path good = fs::path(DMI_SOURCE_DIR) / "examples" / "free_fall.json";
