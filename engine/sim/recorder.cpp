@@ -155,6 +155,16 @@ template <int D> void Recorder<D>::sample(const Solver<D>& solver, double dt) {
       }
     }
   }
+  // Results never hold NaN or inf: a recorded quantity that overflowed (an energy of a 1e200 m/s body) stops the run
+  // here, before it is written, as a non-finite particle state stops it in the step.
+  for (const Series& s : series_) {
+    const std::size_t nc = s.components.size();
+    for (std::size_t c = 0; c < nc && s.data.size() >= nc; ++c)
+      if (const double v = s.data[s.data.size() - nc + c]; !std::isfinite(v))
+        throw RunError("run stopped at step " + std::to_string(solver.steps()) + ", t = " + std::to_string(solver.time()) + " s: the recorded " +
+                       s.path + (nc > 1 ? " (" + s.components[c] + ")" : std::string()) + " is " + (std::isnan(v) ? "NaN" : "infinite") +
+                       " (an overflow: check the velocities, moduli and loads for values far out of range)");
+  }
 }
 
 // Frame histories: energies, all nodal DOFs, section forces at element ends, support reactions.

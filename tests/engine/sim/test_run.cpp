@@ -139,6 +139,21 @@ TEST(RunCli, NumbersAndFoldersAreRangeChecked) {
   fs::remove_all(out);
 }
 
+// A recorded quantity that overflows (the kinetic energy of a body at 1e200 m/s) stops the run: exit 2 naming the
+// series, and no complete results.h5 holding inf.
+TEST(RunCli, OverflowedRecordStopsTheRun) {
+  const fs::path out = fresh_dir("overflow");
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(std::string(DMI_SOURCE_DIR) + "/examples/wall_impact.json"));
+  j["bodies"][0]["velocity"] = {-1e200, 0};
+  fs::create_directories(out);
+  std::ofstream(out / "fast.json") << j.dump(2);
+  const Cli r = run_cli("simulate " + (out / "fast.json").string() + " -o " + (out / "run").string() + " -q");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("the recorded energy/kinetic is infinite"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out / "run" / "results.h5"));
+  fs::remove_all(out);
+}
+
 TEST(RunCli, MissingScenarioFileIsOneClearError) {
   const Cli r = run_cli("simulate /nonexistent/dam.json -o /tmp/never");
   EXPECT_EQ(r.status, 2);
