@@ -72,7 +72,7 @@ json contact_json(const Contact& c) {
 json parse_document(const Results& r, const char* name, const std::string& where) {
   const auto it = r.info.documents.find(name);
   if (it == r.info.documents.end()) return nullptr;
-  check_json_depth(it->second, where + ": /documents/" + name);
+  check_json_structure(it->second, where + ": /documents/" + name);
   try {
     return json::parse(it->second);
   } catch (const json::exception& e) {
@@ -168,7 +168,7 @@ json verdict(const std::vector<Check>& checks) {
 void require_documents(const Results& r, const std::string& where) {
   const std::string& text = r.info.scenario_expanded_json.empty() ? r.info.scenario_json : r.info.scenario_expanded_json;
   if (text.empty()) throw std::runtime_error(where + ": /scenario is missing: the file does not say what was simulated; nothing to check");
-  check_json_depth(text, where + ": /scenario");
+  check_json_structure(text, where + ": /scenario");
   const json sc = json::parse(text, nullptr, false);
   if (sc.is_discarded() || !sc.is_object()) throw std::runtime_error(where + ": /scenario is not a JSON object; nothing to check");
   const json* members = sc.contains("structure") && sc["structure"].is_object() && sc["structure"].contains("members") ? &sc["structure"]["members"] : nullptr;

@@ -135,7 +135,7 @@ Limits parse_limits(const json& j, const std::string& file) {
 
 Limits read_limits(const std::string& path) {
   const std::string text = read_json_file(path, "limits");
-  check_json_depth(text, path);
+  check_json_structure(text, path);
   json j;
   try {
     j = json::parse(text);

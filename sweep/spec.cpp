@@ -95,7 +95,7 @@ SweepSpec parse_sweep(const nlohmann::ordered_json& j, const std::string& file, 
     std::ifstream probe(p);
     if (!probe) throw InputError(file, "/base", j["base"].dump(), "a readable scenario file (" + p.string() + " cannot be opened)");
     const std::string text = read_json_file(p.string(), "scenario");
-    check_json_depth(text, p.string());
+    check_json_structure(text, p.string());
     try {
       s.base = json::parse(text);
     } catch (const json::parse_error& e) {
@@ -193,7 +193,7 @@ SweepSpec parse_sweep(const nlohmann::ordered_json& j, const std::string& file, 
 
 SweepSpec load_sweep(const std::string& path) {
   const std::string text = read_json_file(path, "sweep");
-  check_json_depth(text, path);
+  check_json_structure(text, path);
   nlohmann::ordered_json j;
   try {
     j = nlohmann::ordered_json::parse(text);

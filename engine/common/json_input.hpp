@@ -1,12 +1,14 @@
 // Reading the JSON files a user hands us (scenarios, sweeps, limits) within bounds: a size limit (reading /dev/zero or a
 // mistaken multi-gigabyte file fails at once instead of filling memory), and a nesting-depth limit checked before the
 // recursive parser sees the text (100 000 nested brackets overflowed the stack). No input of this tool nests deeper
-// than a handful of levels.
+// than a handful of levels. Repeated keys are refused there too.
 #pragma once
 #include <cstddef>
 #include <filesystem>
 #include <fstream>
+#include <algorithm>
 #include <string>
+#include <vector>
 
 #include "engine/common/error.hpp"
 
@@ -31,27 +33,63 @@ inline std::string read_json_file(const std::string& path, const std::string& wh
   return text;
 }
 
-// Refuses text nested deeper than kMaxJsonDepth arrays/objects (brackets inside strings do not count).
-inline void check_json_depth(const std::string& text, const std::string& file) {
-  int depth = 0;
-  bool in_string = false, escaped = false;
+// Structural checks the recursive parser cannot make safely or at all, on the raw text before it parses it: nesting
+// deeper than kMaxJsonDepth arrays/objects, and a key repeated in one object (JSON keeps the last one silently, so
+// the first value the user wrote would be ignored). Keys compare as written (escapes not decoded).
+inline void check_json_structure(const std::string& text, const std::string& file) {
+  struct Frame {
+    bool object;
+    std::vector<std::string> keys;
+    std::string key;  // the current key (objects)
+    long index = 0;   // the current element (arrays)
+    bool want_key = true;
+  };
+  std::vector<Frame> stack;
   std::size_t line = 1, col = 0;
-  for (const char c : text) {
+  auto where = [&] { return file + ":" + std::to_string(line) + ":" + std::to_string(col); };
+  auto pointer = [&] {
+    std::string p;
+    for (const Frame& f : stack) {
+      if (!f.object) {
+        p += "/" + std::to_string(f.index);
+        continue;
+      }
+      p += "/";
+      for (char c : f.key) p += c == '~' ? std::string("~0") : c == '/' ? std::string("~1") : std::string(1, c);
+    }
+    return p;
+  };
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
     ++col;
     if (c == '\n') ++line, col = 0;
-    if (in_string) {
-      if (escaped) escaped = false;
-      else if (c == '\\') escaped = true;
-      else if (c == '"') in_string = false;
+    if (c == '"') {  // a string: a key where its object expects one
+      std::size_t j = i + 1;
+      while (j < text.size() && text[j] != '"') j += text[j] == '\\' ? 2 : 1;
+      if (!stack.empty() && stack.back().object && stack.back().want_key) {
+        Frame& f = stack.back();
+        f.key = text.substr(i + 1, std::min(j, text.size()) - i - 1);
+        f.want_key = false;
+        if (std::find(f.keys.begin(), f.keys.end(), f.key) != f.keys.end())
+          throw InputError(file, pointer(), "", "each key once in its object (repeated at line " + std::to_string(line) + ", column " +
+                                                    std::to_string(col) + "; JSON would keep only its last value)");
+        f.keys.push_back(f.key);
+      }
+      for (std::size_t k = i + 1; k < j && k < text.size(); ++k) ++col;
+      i = j;  // the closing quote (or the end)
+      ++col;
       continue;
     }
-    if (c == '"') in_string = true;
-    else if (c == '[' || c == '{') {
-      if (++depth > kMaxJsonDepth)
-        throw InputError(file + ":" + std::to_string(line) + ":" + std::to_string(col) + ": invalid JSON (nested deeper than " +
-                         std::to_string(kMaxJsonDepth) + " levels)");
+    if (c == '[' || c == '{') {
+      if (static_cast<int>(stack.size()) >= kMaxJsonDepth)
+        throw InputError(where() + ": invalid JSON (nested deeper than " + std::to_string(kMaxJsonDepth) + " levels)");
+      stack.push_back(Frame{c == '{', {}, {}, 0, true});
     } else if (c == ']' || c == '}') {
-      --depth;
+      if (!stack.empty()) stack.pop_back();
+    } else if (c == ',' && !stack.empty()) {
+      Frame& f = stack.back();
+      if (f.object) f.want_key = true;
+      else ++f.index;
     }
   }
 }

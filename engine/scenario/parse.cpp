@@ -825,7 +825,7 @@ Scenario parse_low_level(const json& j, const std::string& file) {
 }
 
 json parse_json_text(const std::string& text, const std::string& file) {
-  check_json_depth(text, file);
+  check_json_structure(text, file);
   try {
     return json::parse(text);
   } catch (const json::out_of_range& e) {
