@@ -233,7 +233,14 @@ json expand_presets(const json& j, const std::string& file, const std::string& v
   if (j.contains("boulder")) read_boulder(root.object("boulder", ""), p.boulder.emplace());
   if (j.contains("debris_surge")) read_debris(root.object("debris_surge", ""), p.debris.emplace());
   if (j.contains("tyre_buffer") && variant != "without_buffer") read_buffer(root.object("tyre_buffer", ""), p.buffer.emplace());
-  if (!p.boulder && !p.debris) throw InputError(file, "/boulder", "", "a boulder or a debris_surge hitting the dam");
+  if (!p.boulder && !p.debris) {
+    std::vector<std::string> present;
+    for (auto it = j.begin(); it != j.end(); ++it) present.push_back(it.key());
+    std::string near = schema::closest_key("boulder", present);
+    if (near.empty()) near = schema::closest_key("debris_surge", present);
+    throw InputError(file, "/boulder", "", std::string("a boulder or a debris_surge hitting the dam") +
+                                               (near.empty() ? "" : " ('" + near + "' is there instead: misspelled?)"));
+  }
   if (j.contains("grid") && j["grid"].is_object() && j["grid"].contains("cell_size") && j["grid"]["cell_size"].is_number())
     p.cell_size = j["grid"]["cell_size"].get<double>();
   if (j.contains("analysis") && j["analysis"].is_object() && j["analysis"].contains("gravity")) p.gravity_given = true;

@@ -1,8 +1,10 @@
 #include "engine/scenario/schema.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <vector>
 
 #include "engine/common/error.hpp"
 
@@ -15,6 +17,28 @@ std::string num_text(double x) {
   return os.str();
 }
 }  // namespace
+
+// Optimal-string-alignment distance (insertions, deletions, substitutions, adjacent transpositions).
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  const std::size_t n = a.size(), m = b.size();
+  std::vector<std::vector<std::size_t>> d(n + 1, std::vector<std::size_t>(m + 1));
+  for (std::size_t i = 0; i <= n; ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= m; ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= n; ++i)
+    for (std::size_t j = 1; j <= m; ++j) {
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  return d[n][m];
+}
+
+std::string closest_key(const std::string& key, const std::vector<std::string>& candidates) {
+  std::string best;
+  std::size_t bd = std::max<std::size_t>(2, key.size() / 4) + 1;  // within 2 edits (more for long keys), else none
+  for (const auto& c : candidates)
+    if (const std::size_t d = edit_distance(key, c); d < bd && c != key) bd = d, best = c;
+  return best;
+}
 
 std::string short_dump(const json& v) {
   std::string s = v.dump();
@@ -54,9 +78,16 @@ const json* Obj::get(const char* key, const Spec& s, const char* type, const std
     return nullptr;
   }
   if (!j_ || !j_->contains(key)) {
-    if (s.required)
+    if (s.required) {
+      // A misspelling of it in the object is the likely cause: name it rather than only the missing key.
+      std::vector<std::string> present;
+      if (j_)
+        for (auto it = j_->begin(); it != j_->end(); ++it) present.push_back(it.key());
+      const std::string near = closest_key(key, present);
       throw InputError(ctx_.file, child(key), "", std::string("the required key '") + key + "' (" + type +
-                                                      (s.unit.empty() ? "" : ", " + s.unit) + "): " + s.doc);
+                                                      (s.unit.empty() ? "" : ", " + s.unit) + "): " + s.doc +
+                                                      (near.empty() ? "" : " ('" + near + "' is there instead: misspelled?)"));
+    }
     return nullptr;
   }
   return &j_->at(key);
@@ -192,8 +223,10 @@ void Obj::finish() {
     if (seen_.count(it.key())) continue;
     std::string names;
     for (const auto& k : seen_) names += (names.empty() ? "" : ", ") + k;
+    const std::string near = closest_key(it.key(), std::vector<std::string>(seen_.begin(), seen_.end()));
     throw InputError(ctx_.file, child(it.key().c_str()), short_dump(it.value()),
-                     "no such key here (unknown key '" + it.key() + "'); known keys: " + names);
+                     "no such key here (unknown key '" + it.key() + "'" + (near.empty() ? "" : "; did you mean '" + near + "'?") +
+                         "); known keys: " + names);
   }
 }
 

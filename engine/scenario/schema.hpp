@@ -100,6 +100,8 @@ class Obj {
 
 std::string range_text(const Spec& s);
 std::string short_dump(const json& v);
+// The candidate closest to key within a couple of edits ("did you mean"), or "" if none is that close.
+std::string closest_key(const std::string& key, const std::vector<std::string>& candidates);
 // Markdown reference of rows, grouped by top-level section.
 std::string markdown(const std::vector<Row>& rows);
 
