@@ -711,9 +711,12 @@ void check_semantics(const Scenario& s, const std::string& file) {
     for (int d = 0; d < dim; ++d) vol *= (hi[d] - lo[d]) / h;
     est += vol * std::pow(b.particles_per_cell, dim);
   }
-  if (est > 2e8)
-    throw InputError(file, "/bodies", "", "at most 2e8 particles in all (these bodies would need about " +
-                                              std::to_string(static_cast<long long>(est)) + "); use larger cells");
+  if (est > 2e8) {
+    std::ostringstream os;  // a double: the estimate can exceed every integer type
+    os.precision(3);
+    os << "at most 2e8 particles in all (these bodies would need about " << est << "); use larger cells";
+    throw InputError(file, "/bodies", "", os.str());
+  }
   double cells = 1;
   for (int d = 0; d < dim; ++d) cells *= std::ceil(s.grid.size[d] / h);
   if (cells > 4e8) throw InputError(file, "/grid/cell_size", value_text(h), "a cell size giving at most 4e8 cells");

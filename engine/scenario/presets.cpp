@@ -2,6 +2,8 @@
 // low-level scene. Geometry conventions: presets.hpp.
 #include "engine/scenario/presets.hpp"
 
+#include <sstream>
+
 #include <algorithm>
 #include <cmath>
 
@@ -114,6 +116,20 @@ void read_dam(Obj o, DamPreset& d) {
     b.number("diameter", d.beam_d, positive("m", "outer diameter D"));
     b.number("wall_thickness", d.beam_t, positive("m", "wall thickness t <= D/2"));
     b.finish();
+    // Checked here, at the key the user wrote (the member sections the presets build check it again, at their paths).
+    auto pipe_wall = [](Obj& sec, double D, double t) {
+      if (sec.documenting() || !(D > 0) || !(t > 0.5 * D)) return;
+      std::ostringstream half;
+      half << 0.5 * D;
+      const json v = t;
+      sec.fail("wall_thickness", &v, "a wall thickness <= diameter / 2 = " + half.str() + " m");
+    };
+    pipe_wall(c, d.column_d, d.column_t);
+    if (!o.documenting() && d.row_spacing > 0 && d.column_d > 0 && d.rows > 1 && !(d.row_spacing > d.column_d)) {
+      const json v = d.row_spacing;
+      o.fail("row_spacing", &v, "a row spacing larger than the column diameter " + json(d.column_d).dump() + " m (the rows would overlap)");
+    }
+    if (d.beam_t > 0) pipe_wall(b, d.beam_d > 0 ? d.beam_d : d.column_d, d.beam_t);
     d.steel = material_object(o, "steel", json{{"model", "linear_elastic"}, {"density", 7850}, {"youngs_modulus", 205e9}, {"poisson_ratio", 0.3}},
                               "steel", "steel");
     plausible(o, "steel", d.steel, "steel", 1e11, 3e11, 7000, 8500);
