@@ -49,7 +49,7 @@ dmi::ProgressMode progress_mode(bool quiet, const std::string& p) {
 int dry_run_report(const std::string& file, const std::vector<dmi::ScenarioVariant>& variants, bool expand) {
   for (const auto& v : variants) {
     const dmi::Scenario& s = v.scenario;
-    dmi::check_scene(s);
+    dmi::preflight(s);
     std::fprintf(expand ? stderr : stdout, "%s%s%s: valid scenario '%s' (%dD, %zu bodies, %zu materials, %zu walls, %zu members)\n", file.c_str(),
                  v.label.empty() ? "" : " / ", v.label.c_str(), s.name.c_str(), s.analysis.dimension, s.bodies.size(), s.materials.size(),
                  s.walls.size(), s.structure.members.size());

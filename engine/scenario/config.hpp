@@ -25,6 +25,7 @@ struct AnalysisConfig {
   double dt_max = 0.0;                               // s, 0 = no user bound
   double cfl = 0.5;                                  // fraction of the CFL limit
   DVec gravity;                                      // m/s^2
+  double max_steps = 1e7;                            // refuse runs estimated longer (end_time / first step)
 };
 
 struct MpmConfig {

@@ -38,6 +38,9 @@ void read_analysis(Obj o, AnalysisConfig& a) {
   o.number("dt_max", a.dt_max, Spec{.unit = "s", .doc = "upper bound on the time step; 0 = only the automatic CFL step", .min = 0});
   o.number("cfl", a.cfl, Spec{.doc = "fraction of the CFL limit h/(c + |v|) used as the time step", .min = 0, .max = 1, .min_open = true});
   o.vector("gravity", a.gravity, any("m/s^2", "gravitational acceleration; default points down the last axis (y in 2D, z in 3D)"));
+  o.number("max_steps", a.max_steps, Spec{.doc = "a run whose estimated step count (end_time over the first step) exceeds this is refused "
+                                                 "before it starts; raise it for a run that is meant to be that long",
+                                          .min = 1, .max = 1e15});
   o.finish();
   if (a.dimension == 3) a.plane = Plane::none;
 }

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <sstream>
 #include <mutex>
 
 #include "engine/common/error.hpp"
@@ -130,6 +131,28 @@ RunInfo make_info(const Scenario& s, const RunOptions& o) {
   return info;
 }
 
+// A run that cannot finish is refused before anything is written: its step count estimated from the first step (the
+// step only shrinks in an impact, so this is a lower bound), against /analysis/max_steps. Returns the estimate.
+template <int D> double step_budget(const Solver<D>& solver, const Scenario& s) {
+  const double dt0 = solver.stable_time_step(s.analysis.end_time);
+  const double est = s.analysis.end_time / dt0;
+  if (!(dt0 > 0) || !std::isfinite(dt0)) {
+    std::ostringstream v;
+    v << s.analysis.end_time;
+    throw InputError(s.source_file, "/analysis/end_time", v.str(),
+                     "a run with a first step above 0 s (it is " + std::to_string(dt0) + " s: a speed or wave speed far out of range)");
+  }
+  if (!(est <= s.analysis.max_steps)) {
+    std::ostringstream os, v;
+    os.precision(3);
+    os << "a run of at most /analysis/max_steps = " << s.analysis.max_steps << " steps: at its first step (dt = " << dt0
+       << " s) it needs about " << est << " steps; shorten end_time or raise /analysis/max_steps";
+    v << s.analysis.end_time;
+    throw InputError(s.source_file, "/analysis/end_time", v.str(), os.str());
+  }
+  return est;
+}
+
 template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   namespace fs = std::filesystem;
   const auto t0 = std::chrono::steady_clock::now();
@@ -147,6 +170,8 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
     info.numbers["cfl_used"] = lim;
     if (o.progress != ProgressMode::quiet) std::fprintf(stderr, "damimpact: note: %s\n", msg);
   }
+
+  if (!o.restart) info.numbers["steps_estimate"] = step_budget(solver, s);
 
   std::unique_ptr<ResultsWriter> writer;
   const bool files = !o.out_dir.empty();
@@ -332,6 +357,12 @@ RunOutput run_solid_only(const Scenario& s, const RunOptions& o) {
 }
 
 }  // namespace
+
+void preflight(const Scenario& s) {
+  if (s.bodies.empty()) return;
+  if (s.analysis.dimension == 2) step_budget(Solver<2>(build_scene<2>(s)), s);
+  else step_budget(Solver<3>(build_scene<3>(s)), s);
+}
 
 RunOutput run_scenario(const Scenario& s, const RunOptions& o) {
   if (o.threads > 0) omp_set_num_threads(o.threads);

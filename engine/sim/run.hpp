@@ -31,5 +31,8 @@ struct RunOutput {
 // Throws InputError for a scenario that cannot be built, RunError when the run fails, and
 // std::runtime_error for file errors.
 RunOutput run_scenario(const Scenario& s, const RunOptions& o);
+// What a run checks before it writes anything (the scene builds; the estimated step count is within
+// /analysis/max_steps): --dry-run. Throws InputError.
+void preflight(const Scenario& s);
 
 }  // namespace dmi

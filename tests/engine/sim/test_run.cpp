@@ -139,15 +139,31 @@ TEST(RunCli, NumbersAndFoldersAreRangeChecked) {
   fs::remove_all(out);
 }
 
-// A recorded quantity that overflows (the kinetic energy of a body at 1e200 m/s) stops the run: exit 2 naming the
-// series, and no complete results.h5 holding inf.
+// A recorded quantity that overflows (the kinetic energy of a body of density 1e307 at 100 m/s) stops the run: exit 2
+// naming the series, and no complete results.h5 holding inf. A body at 1e200 m/s is refused before it starts (its
+// first step is 0 s), and an end time of 1e12 s as needing more steps than /analysis/max_steps; nothing is written.
 TEST(RunCli, OverflowedRecordStopsTheRun) {
   const fs::path out = fresh_dir("overflow");
   nlohmann::json j = nlohmann::json::parse(std::ifstream(std::string(DMI_SOURCE_DIR) + "/examples/wall_impact.json"));
+  const nlohmann::json j0 = j;
   j["bodies"][0]["velocity"] = {-1e200, 0};
   fs::create_directories(out);
+  std::ofstream(out / "v.json") << j.dump(2);
+  Cli r = run_cli("simulate " + (out / "v.json").string() + " -o " + (out / "v").string() + " -q");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("/analysis/end_time = 0.03: expected a run with a first step above 0 s"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out / "v"));
+  j = j0;
+  j["analysis"]["end_time"] = 1e12;
+  std::ofstream(out / "long.json") << j.dump(2);
+  r = run_cli("simulate " + (out / "long.json").string() + " --dry-run");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("expected a run of at most /analysis/max_steps = 1e+07 steps"), std::string::npos) << r.err;
+  j = j0;
+  j["materials"][0]["density"] = 1e307;
+  j["bodies"][0]["velocity"] = {-100, 0};
   std::ofstream(out / "fast.json") << j.dump(2);
-  const Cli r = run_cli("simulate " + (out / "fast.json").string() + " -o " + (out / "run").string() + " -q");
+  r = run_cli("simulate " + (out / "fast.json").string() + " -o " + (out / "run").string() + " -q");
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_NE(r.err.find("the recorded energy/kinetic is infinite"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out / "run" / "results.h5"));
