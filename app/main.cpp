@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <new>
 #include <sstream>
 #include <thread>
 
@@ -465,6 +466,10 @@ int main(int argc, char** argv) {
     return e.signal() == 0 ? 3 : 128 + e.signal();  // 3: stopped on request (--stop-after)
   } catch (const dmi::RunError& e) {
     std::fprintf(stderr, "damimpact: run failed: %s\n", e.what());
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "damimpact: error: out of memory (the scenario's own estimate passed: other processes hold memory, or a "
+                         "structure beyond the estimate; set DMI_MEMORY_LIMIT to what this run may use, or use larger cells)\n");
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "damimpact: error: %s\n", e.what());

@@ -10,6 +10,7 @@
 
 #include "engine/common/error.hpp"
 #include "engine/common/json_input.hpp"
+#include "engine/common/memory.hpp"
 #include "engine/scenario/presets.hpp"
 #include "engine/scenario/scenario.hpp"
 #include "engine/scenario/schema.hpp"
@@ -723,6 +724,26 @@ void check_semantics(const Scenario& s, const std::string& file) {
   double cells = 1;
   for (int d = 0; d < dim; ++d) cells *= std::ceil(s.grid.size[d] / h);
   if (cells > 4e8) throw InputError(file, "/grid/cell_size", value_text(h), "a cell size giving at most 4e8 cells");
+  {  // Memory the run will hold, against what it may use (engine/common/memory.hpp): refused here, not as a bad_alloc.
+    double nodes = 1;
+    for (int d = 0; d < dim; ++d) nodes *= std::ceil(s.grid.size[d] / h) + 1;
+    const bool multi = s.contact.method == ContactMethod::multi_field && s.bodies.size() > 1;
+    const double fields = multi ? static_cast<double>(s.bodies.size()) : 1.0;
+    // Per node and field: m, p, f, v, v^L and the P2G record (2D: 104 B, 3D: 152 B), the contact fields (+8 + 8 D),
+    // and per node the surface-detection scratch of multi-field contact (~100 B). Per particle ~400 B (arrays and
+    // material history).
+    const double per_field = 8.0 + 6.0 * 8 * dim + (multi ? 8.0 + 8 * dim : 0.0);
+    const double grid_bytes = nodes * (fields * per_field + (multi ? 100.0 : 0.0)), particle_bytes = 400.0 * est;
+    const double limit = memory_limit_bytes();
+    if (grid_bytes + particle_bytes > limit) {
+      std::ostringstream os;
+      os.precision(3);
+      os << "a grid and bodies that fit in memory: about " << (grid_bytes + particle_bytes) / 1073741824.0 << " GiB (grid " << grid_bytes / 1073741824.0
+         << ", particles " << particle_bytes / 1073741824.0 << "), " << limit / 1073741824.0 << " GiB available (" << memory_limit_source()
+         << "); use larger cells or a smaller grid";
+      throw InputError(file, "/grid/cell_size", value_text(h), os.str());
+    }
+  }
   for (std::size_t i = 0; i < s.walls.size(); ++i) {
     const WallConfig& w = s.walls[i];
     const std::string p = "/walls/" + std::to_string(i);

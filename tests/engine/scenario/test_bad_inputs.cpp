@@ -172,6 +172,30 @@ TEST(BadInputCli, DeepAndEndlessInputsAreRefusedByEveryReader) {
   }
 }
 
+// A grid inside the cell cap that does not fit in memory is refused with the estimate, before anything is allocated
+// (it ended in std::bad_alloc). The limit is set by DMI_MEMORY_LIMIT here (100 MB), so the case is the same on every
+// machine: 2 000 x 2 000 cells need about 0.39 GiB (4 M nodes x 104 B); the same grid fits under 1 GB.
+TEST(BadInputCli, GridBeyondMemoryIsRefusedWithTheEstimate) {
+  TempDir tmp;
+  json j = json::parse(std::ifstream(fs::path(DMI_SOURCE_DIR) / "examples" / "wall_impact.json"));
+  j["grid"] = {{"origin", {-500, -500}}, {"size", {1000, 1000}}, {"cell_size", 0.5}};
+  const fs::path f = tmp.path / "big_grid.json";
+  std::ofstream(f) << j.dump(1);
+  const fs::path out = tmp.path / "o.txt", err = tmp.path / "e.txt";
+  auto run_with = [&](const std::string& limit) {
+    const std::string c = "DMI_MEMORY_LIMIT=" + limit + " " + quote(DMI_BINARY) + " simulate --dry-run " + quote(f.string()) + " >" +
+                          quote(out.string()) + " 2>" + quote(err.string());
+    const int rc = std::system(c.c_str());
+    return std::make_pair(WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, read_text(err));
+  };
+  const auto [refused, msg] = run_with("1e8");
+  EXPECT_EQ(refused, 2) << msg;
+  EXPECT_NE(msg.find("/grid/cell_size = 0.5: expected a grid and bodies that fit in memory: about 0.388 GiB"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("available (DMI_MEMORY_LIMIT)"), std::string::npos) << msg;
+  const auto [fits, msg2] = run_with("1e9");
+  EXPECT_EQ(fits, 0) << msg2;
+}
+
 TEST(BadInputCli, GoodFileDryRunExitsZero) {
   TempDir tmp;
   const fs::path good = fs::path(DMI_SOURCE_DIR) / "examples" / "free_fall.json";
