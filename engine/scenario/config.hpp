@@ -207,6 +207,7 @@ struct SolidCheckConfig {
   std::string sloped_face = "downstream";            // upstream | downstream | both
   std::string element = "hex8";                      // hex8 (3D) | quad4 (2D plane strain)
   std::vector<int> cells = {8, 10, 20};              // through the thickness, across the width, up the height
+  double max_dofs = 1.5e5;                           // refuse larger meshes (a sparse LDL^T grows ~ DOFs^2 in 3D)
   double youngs_modulus = 25e9, poisson_ratio = 0.2; // Pa, -
   std::vector<SolidLoadConfig> loads;
 };
