@@ -2,6 +2,7 @@
 // member contact, grid, end time and probes. Every default is stated where it is chosen.
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <functional>
 #include <cstdio>
 #include <cstdlib>
@@ -134,6 +135,19 @@ json Builder::build() {
     boulder_r_ = std::sqrt(boulder_m_ / (b.density * kPi * d_.width));
   }
   h_ = choose_cell_size();
+  if (p_.cell_size > 0) {  // a cell the user chose must still resolve what the presets build
+    auto need = [&](double feature, double cells, const std::string& what) {
+      if (!(h_ <= feature / cells * (1 + 1e-9))) {
+        std::ostringstream os;
+        os << "a cell size resolving " << what << ": at most " << feature / cells << " m (" << cells << " cells across " << feature << " m)";
+        fail("/grid/cell_size", h_, os.str());
+      }
+    };
+    if (p_.buffer && p_.buffer->type == "homogenised") need(p_.buffer->thickness, 2, "the buffer layer");
+    if (p_.buffer && p_.buffer->type != "homogenised") need(p_.buffer->ring_thickness, 1, "the tyre rings");
+    if (p_.boulder) need(2 * boulder_r_, 4, "the boulder (the cylinder of its mass)");
+    if (p_.debris) need(p_.debris->depth, 3, "the surge depth");
+  }
   add_dam();
   if (p_.buffer) add_buffer();
   if (p_.boulder) add_boulder();
