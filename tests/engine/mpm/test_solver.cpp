@@ -218,10 +218,17 @@ TEST(Solver, BodyOnTheInteriorBoundIsRefusedAtBuild) {
   j["walls"] = json::array();
   try {
     Solver<2> s(build_scene<2>(parse_scenario(j, "edge.json")));
-    for (Index i = 0; i < static_cast<Index>(s.scene().particles.size()); ++i) EXPECT_TRUE(s.scene().grid->interior(s.scene().particles.x[i]));
+    ADD_FAILURE() << "a particle on the interior bound was accepted";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("/bodies/0/shape"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("edge.json: /bodies/0/shape: expected a body whose particles lie at least half a cell inside the grid"),
+              std::string::npos)
+        << e.what();
   }
+  // Half a cell further in, the same body builds and every particle is inside the interior.
+  j["bodies"][0]["shape"]["min"] = {2.45, 2.45};
+  Solver<2> s(build_scene<2>(parse_scenario(j, "edge.json")));
+  ASSERT_GT(s.scene().particles.size(), 0u);
+  for (Index i = 0; i < static_cast<Index>(s.scene().particles.size()); ++i) EXPECT_TRUE(s.scene().grid->interior(s.scene().particles.x[i]));
 }
 
 // A snapshot interval far below the time step must not stall the run (one division per step).
