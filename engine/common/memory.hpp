@@ -5,23 +5,22 @@
 #include <unistd.h>
 
 #include <cstdlib>
-#include <string>
 
 namespace dmi {
 
-inline double memory_limit_bytes() {
+struct MemoryLimit {
+  double bytes;
+  const char* source;  // for messages
+};
+
+inline MemoryLimit memory_limit() {
   if (const char* e = std::getenv("DMI_MEMORY_LIMIT")) {
     char* end = nullptr;
     const double v = std::strtod(e, &end);
-    if (end != e && v > 0) return v;
+    if (end != e && v > 0) return {v, "DMI_MEMORY_LIMIT"};
   }
   const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-  return pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 1e18;
-}
-
-inline std::string memory_limit_source() {
-  const char* e = std::getenv("DMI_MEMORY_LIMIT");
-  return e && std::strtod(e, nullptr) > 0 ? "DMI_MEMORY_LIMIT" : "this machine's physical memory";
+  return {pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 1e18, "this machine's physical memory"};
 }
 
 }  // namespace dmi

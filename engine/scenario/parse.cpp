@@ -748,12 +748,12 @@ void check_semantics(const Scenario& s, const std::string& file) {
     // material history).
     const double per_field = 8.0 + 6.0 * 8 * dim + (multi ? 8.0 + 8 * dim : 0.0);
     const double grid_bytes = nodes * (fields * per_field + (multi ? 100.0 : 0.0)), particle_bytes = 400.0 * est;
-    const double limit = memory_limit_bytes();
-    if (grid_bytes + particle_bytes > limit) {
+    const MemoryLimit limit = memory_limit();
+    if (grid_bytes + particle_bytes > limit.bytes) {
       std::ostringstream os;
       os.precision(3);
       os << "a grid and bodies that fit in memory: about " << (grid_bytes + particle_bytes) / 1073741824.0 << " GiB (grid " << grid_bytes / 1073741824.0
-         << ", particles " << particle_bytes / 1073741824.0 << "), " << limit / 1073741824.0 << " GiB available (" << memory_limit_source()
+         << ", particles " << particle_bytes / 1073741824.0 << "), " << limit.bytes / 1073741824.0 << " GiB available (" << limit.source
          << "); use larger cells or a smaller grid";
       throw InputError(file, "/grid/cell_size", value_text(h), os.str());
     }

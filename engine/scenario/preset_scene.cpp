@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "engine/common/error.hpp"
 #include "engine/scenario/preset_types.hpp"
@@ -68,6 +69,13 @@ class Builder {
   // What a boulder or surge meets first at height y: the buffer's front where there is one.
   double front(double y) const;
   double bed(double x) const { return -x * std::tan(slope_); }  // ground line through the face's foot
+  // The features the cell must resolve: their size across, the cells across them by default, and at least.
+  struct Feature {
+    double size, cells, min_cells;
+    const char* what;
+  };
+  std::vector<Feature> features() const;
+  // The default cell from the features, or the user's, which must still give each its minimum.
   double choose_cell_size() const;
   void add_dam();
   void add_concrete_members();
@@ -111,16 +119,32 @@ double Builder::front(double y) const {
   return xu(y) - (b.type == "homogenised" ? b.thickness : b.tyre_diameter);
 }
 
+std::vector<Builder::Feature> Builder::features() const {
+  std::vector<Feature> f;
+  if (p_.buffer && p_.buffer->type == "homogenised") f.push_back({p_.buffer->thickness, 5, 2, "the buffer layer"});
+  if (p_.buffer && p_.buffer->type != "homogenised") f.push_back({p_.buffer->ring_thickness, 2, 1, "the tyre rings"});
+  if (p_.boulder) f.push_back({2 * boulder_r_, 10, 4, "the boulder (the cylinder of its mass)"});
+  if (p_.debris) f.push_back({p_.debris->depth, 10, 3, "the surge depth"});
+  if (d_.type == "concrete_gravity" && d_.model == "continuum") f.push_back({d_.crest, 8, 0, "the dam crest"});
+  if (d_.type == "steel_open") f.push_back({d_.column_d, 4, 0, "the columns"});
+  return f;
+}
+
 double Builder::choose_cell_size() const {
-  if (p_.cell_size > 0) return p_.cell_size;
-  // About 5 cells across the thinnest feature that must be resolved (a boulder radius, a buffer layer),
-  // 10 through a surge, 2 through a tyre ring; never coarser than height / 40.
+  if (p_.cell_size > 0) {  // the user's cell must still resolve what the presets build
+    for (const Feature& f : features())
+      if (f.min_cells > 0 && !(p_.cell_size <= f.size / f.min_cells * (1 + 1e-9))) {
+        std::ostringstream os;
+        os << "a cell size resolving " << f.what << ": at most " << f.size / f.min_cells << " m (" << f.min_cells << " cells across " << f.size
+           << " m)";
+        fail("/grid/cell_size", p_.cell_size, os.str());
+      }
+    return p_.cell_size;
+  }
+  // About 10 cells across a boulder and through a surge, 5 through a buffer layer, 2 through a tyre ring, 8 through a
+  // continuum crest, 4 across a column; never coarser than height / 40.
   double h = d_.height / 40;
-  if (p_.boulder) h = std::min(h, boulder_r_ / 5);
-  if (p_.debris) h = std::min(h, p_.debris->depth / 10);
-  if (p_.buffer) h = std::min(h, p_.buffer->type == "homogenised" ? p_.buffer->thickness / 5 : p_.buffer->ring_thickness / 2);
-  if (d_.type == "concrete_gravity" && d_.model == "continuum") h = std::min(h, d_.crest / 8);
-  if (d_.type == "steel_open") h = std::min(h, d_.column_d / 4);
+  for (const Feature& f : features()) h = std::min(h, f.size / f.cells);
   return nice_floor(h);
 }
 
@@ -135,19 +159,6 @@ json Builder::build() {
     boulder_r_ = std::sqrt(boulder_m_ / (b.density * kPi * d_.width));
   }
   h_ = choose_cell_size();
-  if (p_.cell_size > 0) {  // a cell the user chose must still resolve what the presets build
-    auto need = [&](double feature, double cells, const std::string& what) {
-      if (!(h_ <= feature / cells * (1 + 1e-9))) {
-        std::ostringstream os;
-        os << "a cell size resolving " << what << ": at most " << feature / cells << " m (" << cells << " cells across " << feature << " m)";
-        fail("/grid/cell_size", h_, os.str());
-      }
-    };
-    if (p_.buffer && p_.buffer->type == "homogenised") need(p_.buffer->thickness, 2, "the buffer layer");
-    if (p_.buffer && p_.buffer->type != "homogenised") need(p_.buffer->ring_thickness, 1, "the tyre rings");
-    if (p_.boulder) need(2 * boulder_r_, 4, "the boulder (the cylinder of its mass)");
-    if (p_.debris) need(p_.debris->depth, 3, "the surge depth");
-  }
   add_dam();
   if (p_.buffer) add_buffer();
   if (p_.boulder) add_boulder();

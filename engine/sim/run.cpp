@@ -136,21 +136,17 @@ RunInfo make_info(const Scenario& s, const RunOptions& o) {
 template <int D> double step_budget(const Solver<D>& solver, const Scenario& s) {
   const double dt0 = solver.stable_time_step(s.analysis.end_time);
   const double est = s.analysis.end_time / dt0;
-  if (!(dt0 > 0) || !std::isfinite(dt0)) {
-    std::ostringstream v;
-    v << s.analysis.end_time;
-    throw InputError(s.source_file, "/analysis/end_time", v.str(),
-                     "a run with a first step above 0 s (it is " + std::to_string(dt0) + " s: a speed or wave speed far out of range)");
-  }
-  if (!(est <= s.analysis.max_steps)) {
-    std::ostringstream os, v;
-    os.precision(3);
+  std::ostringstream end, os;
+  end << s.analysis.end_time;
+  os.precision(3);
+  if (!(dt0 > 0) || !std::isfinite(dt0))
+    os << "a run with a first step above 0 s (it is " << dt0 << " s: a speed or wave speed far out of range)";
+  else if (!(est <= s.analysis.max_steps))
     os << "a run of at most /analysis/max_steps = " << s.analysis.max_steps << " steps: at its first step (dt = " << dt0
        << " s) it needs about " << est << " steps; shorten end_time or raise /analysis/max_steps";
-    v << s.analysis.end_time;
-    throw InputError(s.source_file, "/analysis/end_time", v.str(), os.str());
-  }
-  return est;
+  else
+    return est;
+  throw InputError(s.source_file, "/analysis/end_time", end.str(), os.str());
 }
 
 template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {

@@ -12,7 +12,6 @@
 #include "engine/common/error.hpp"
 #include "engine/verify/bench.hpp"
 #include "engine/convergence/grid_convergence.hpp"
-#include "engine/mpm/solver.hpp"
 #include "engine/scenario/scenario.hpp"
 #include "engine/sim/run.hpp"
 #include "engine/verify/cases_members.hpp"
