@@ -209,7 +209,7 @@ int grid_study_run(const std::string& file, const std::string& out, int threads,
   return verdict;
 }
 
-// `bench`, plus with --out the JSON and the Pareto chart of paper A.5 (error against wall time, the front joined).
+// `bench`, plus with --out the JSON and the Pareto chart of Lin & Yang verification 1 (error against wall time, the front joined).
 int bench_command(const std::vector<std::string>& cases, bool as_json, bool quick, const dmi::BenchOptions& o, const std::string& out) {
   if (out.empty()) return dmi::bench_main(cases, as_json, quick, o);
   std::stringstream captured;
@@ -260,7 +260,7 @@ int bench_command(const std::vector<std::string>& cases, bool as_json, bool quic
   }
   if (j.contains("a5")) {
     dmi::render::ChartSpec c;
-    c.title = "paper A.5: error against run time";
+    c.title = "Lin & Yang verification 1: error against run time";
     c.log_x = true;
     c.x_label = "wall time [s]", c.y_label = "NRMS error vs converged FE [-]";
     for (const char* integ : {"explicit", "newmark"}) {

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Paper A.5 (Lin & Yang 2024, verification 1) under joint refinement of grid, particles and elements.
+"""Lin & Yang (2024), verification 1, under joint refinement of grid, particles and elements.
 
     /usr/bin/python3 bench/a5_refinement.py [--levels 4] [--out DIR]
 

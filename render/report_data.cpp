@@ -245,7 +245,7 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
   // Model.
   d["methods"] =
       "Material Point Method for the boulder, debris and buffer (explicit, Lin & Yang 2024); beam-column finite elements for the dam "
-      "members, coupled to the particles by Lin & Yang's two-stage contact with Yang's equivalent force field (A.2-A.3); plane strain, "
+      "members, coupled to the particles by Lin & Yang's two-stage contact with Yang's equivalent force field (Lin & Yang 2024, eqs. 15–29); plane strain, "
       "the out-of-plane width as given. Checks and estimates: docs/design-checks.md.";
   json rl = json::array();
   for (const auto& r : runs) {

@@ -1,6 +1,6 @@
 // Loops that enter OpenMP only when they are long enough to pay for it. `#pragma omp parallel for if (false)` still
 // calls into libgomp (a team of one, and a futex wake per region): 0.33 us per region measured here with the passive
-// wait policy. A small scene crosses ~20 regions per step, ~7 us of a ~30 us step (paper A.5, docs/performance.md),
+// wait policy. A small scene crosses ~20 regions per step, ~7 us of a ~30 us step (Lin & Yang verification 1, docs/performance.md),
 // so below kParallelMin iterations the loop runs inline instead. Results do not depend on which way a loop ran: the
 // bodies write disjoint entries, parallel_reduce combines fixed chunks in a fixed order, and parallel_or is exact
 // in any order.

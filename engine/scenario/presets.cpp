@@ -79,7 +79,7 @@ void read_dam(Obj o, DamPreset& d) {
                                            "the column spacing across the channel of a steel dam"));
   o.choice<std::string>("base", d.base, {{"fixed", "fixed"}, {"pinned", "pinned"}}, Spec{.doc = "support at the foundation"});
   o.number("damping_ratio", d.damping_ratio, Spec{.doc = "structural damping ratio (Rayleigh, fitted to the first two cantilever modes "
-                                                         "of the dam estimated as a uniform cantilever, Lin, Cheng & Tuan; concrete 5-10 %, B.4)",
+                                                         "of the dam estimated as a uniform cantilever, Lin, Cheng & Tuan; concrete 5-10 %)",
                                                   .min = 0, .max = 0.5});
   // A short hard impact excites the dam's higher modes: its peak base shear with 2 / 4 / 8 / 16 / 32 elements was
   // 4.17 / 7.13 / 8.07 / 8.87 / 8.88 MN (bare preset, h = 0.04 m), so 16 for the concrete wall; the steel frame's

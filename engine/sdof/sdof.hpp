@@ -10,7 +10,7 @@
 namespace dmi::sdof {
 
 // ---------------------------------------------------------------------------------------------------
-// B.1 SDOF theory: m u'' + c u' + k u = 0
+// SDOF theory (Lin, Cheng & Tuan eqs. 9–20): m u'' + c u' + k u = 0
 // ---------------------------------------------------------------------------------------------------
 
 // omega_n = sqrt(k/m) (rad/s), Lin, Cheng & Tuan eq. (9).
@@ -68,7 +68,7 @@ struct ImpulsePeak {
 ImpulsePeak unit_impulse_peak(const Oscillator& o);
 
 // ---------------------------------------------------------------------------------------------------
-// B.2 Boulder on a dam: dam = SDOF (M, k), impulse I = m v0, damping neglected
+// Boulder on a dam (Lin, Cheng & Tuan eqs. 21–23): dam = SDOF (M, k), impulse I = m v0, damping neglected
 // ---------------------------------------------------------------------------------------------------
 
 struct BoulderImpact {
@@ -165,12 +165,12 @@ struct HardImpact {
 
 // EN 1991-1-7 Annex C.2.1 "hard impact": object of mass m (kg) at velocity v_r (m/s) on a struck
 // object of equivalent elastic stiffness k (N/m); rectangular pulse. Note F = m v_r sqrt(k/m) is
-// B.2's eq. (23) with the impacting mass in place of the dam's.
+// Lin, Cheng & Tuan's eq. (23) with the impacting mass in place of the dam's.
 HardImpact en1991_hard_impact(double impact_speed_m_per_s, double impacting_mass_kg,
                               double equivalent_stiffness_N_per_m);
 
 // ---------------------------------------------------------------------------------------------------
-// Continuous cantilever under a force history (beyond B.2's single mode)
+// Continuous cantilever under a force history (beyond Lin, Cheng & Tuan's single mode)
 // ---------------------------------------------------------------------------------------------------
 
 // Base shear V(t_k) (N) of a uniform, undamped Euler-Bernoulli cantilever (fixed at x = 0, free at L) under a

@@ -84,7 +84,7 @@ void Newmark::kinematics(const FrameState& n, const Eigen::VectorXd& D, double d
 
 // Numeric LDLT of A; the symbolic analysis (AMD ordering, elimination tree) is redone only when A's sparsity pattern
 // differs from the last one analysed. Under stick contact the matrix changes every step but its pattern does not,
-// and the ordering was the largest single cost of a small frame's step (perf, paper A.5: 16 elements, Newmark).
+// and the ordering was the largest single cost of a small frame's step (perf, Lin & Yang verification 1: 16 elements, Newmark).
 bool Newmark::factorize(const SpMat& A, bool throw_on_failure) {
   const auto n = static_cast<std::size_t>(A.outerSize()) + 1;
   const bool same = pattern_outer_.size() == n && std::equal(pattern_outer_.begin(), pattern_outer_.end(), A.outerIndexPtr()) &&

@@ -205,7 +205,7 @@ int bench_main(const std::vector<std::string>& cases, bool as_json, bool quick, 
   }
   if (out.contains("a5")) {
     const json& a = out["a5"];
-    std::printf("\nPaper A.5: error (NRMS vs %s) against wall time; * = Pareto front\n", a["reference"].get<std::string>().c_str());
+    std::printf("\nLin & Yang verification 1: error (NRMS vs %s) against wall time; * = Pareto front\n", a["reference"].get<std::string>().c_str());
     std::printf("%-15s %8s %-17s %10s %10s\n", "frame", "elements", "time step", "error", "wall s");
     for (const auto& p : a["points"])
       std::printf("%-15s %8d %-17s %10.4f %10.3f %s%s\n", p["integrator"].get<std::string>().c_str(), p["elements"].get<int>(),
@@ -217,12 +217,12 @@ int bench_main(const std::vector<std::string>& cases, bool as_json, bool quick, 
                 a["fastest_wall_median_s"].get<double>(), a["speed_up"].get<double>());
   }
   if (out.contains("a6")) {
-    std::printf("\nPaper A.6, beam-column members: wall time vs depth (median of 3)\n%8s %10s %8s %12s\n", "h/L", "wall s", "steps", "proj. iter.");
+    std::printf("\nLin & Yang verification 2, beam-column members: wall time vs depth (median of 3)\n%8s %10s %8s %12s\n", "h/L", "wall s", "steps", "proj. iter.");
     for (const auto& r : out["a6"]["rows"])
       std::printf("%8.3f %10.3f %8ld %12.0f\n", r["h_over_L"].get<double>(), r["wall_seconds"].get<double>(), r["steps"].get<long>(),
                   r["projection_iterations_max"].get<double>());
     std::printf("ratio h/L 0.025 : 0.2 = %.2f\n", out["a6"]["ratio_slender_to_thick"].get<double>());
-    std::printf("\nPaper A.6 at h/L 0.025: error against wall time (reference: %s), Pareto front\n%-9s %4s %8s %-16s %10s %10s\n",
+    std::printf("\nLin & Yang verification 2 at h/L 0.025: error against wall time (reference: %s), Pareto front\n%-9s %4s %8s %-16s %10s %10s\n",
                 out["a6"]["reference"].get<std::string>().c_str(), "frame", "el.", "cell m", "time step", "NRMS err", "wall s");
     std::vector<const json*> front;
     for (const auto& p : out["a6"]["points"])

@@ -34,7 +34,7 @@ Scenario block_scenario(long n, const std::string& shape, const std::string& tra
 std::vector<KernelBench> kernel_bench(const BenchOptions& o, bool progress);
 nlohmann::json to_json(const KernelBench& b);
 
-// Paper A.5 run time vs error (a Pareto front), paper A.6 cost vs depth, scene costs that should vanish
+// Lin & Yang verification 1 run time vs error (a Pareto front), Lin & Yang verification 2 cost vs depth, scene costs that should vanish
 // (bench_cases.cpp), and the block with an idle frame or a 10x grid (bench.cpp).
 nlohmann::json bench_a5(bool progress);
 nlohmann::json bench_a6(bool progress);

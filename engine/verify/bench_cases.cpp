@@ -1,4 +1,4 @@
-// Run time against error (paper A.5), cost robustness (paper A.6) and "skip what a scene does not need" ratios,
+// Run time against error (Lin & Yang verification 1), cost robustness (Lin & Yang verification 2) and "skip what a scene does not need" ratios,
 // for `damimpact bench` (docs/performance.md). Figures are printed, never asserted.
 #include <algorithm>
 #include <chrono>
@@ -48,7 +48,7 @@ void mark_front(json& points) {
 
 }  // namespace
 
-// Paper A.5 (block sticking to a simply supported beam, Lin & Yang 2024, verification 1): mid-span deflection history against the
+// Lin & Yang (2024) verification 1 (block sticking to a simply supported beam): mid-span deflection history against the
 // point-mass FE reference (64 elements, consistent mass, dt 1e-5: converged to 1e-4, docs/verification.md), NRMS
 // over 5 s after the impact. The paper's set-up: dt = 1e-4 s fixed, 8 elements, explicit frame.
 json bench_a5(bool progress) {
@@ -161,7 +161,7 @@ json bench_disks(bool progress) {
   return json{{"points", points}, {"reference", "energy conservation (E0 at t = 0)"}};
 }
 
-// Paper A.6 with beam-column members: run time at h/L = 0.025 vs 0.2 (the paper's Newton search made the slender case
+// Lin & Yang verification 2 with beam-column members: run time at h/L = 0.025 vs 0.2 (the paper's Newton search made the slender case
 // much slower). Median of 3 runs each.
 json bench_a6(bool progress) {
   json rows = json::array();

@@ -311,7 +311,7 @@ std::vector<CaseResult> paper_a6_large() {
   return stamp(r, timer.seconds());
 }
 
-// Paper B.2 against the coupled simulation (examples/sdof_boulder_on_column.json): a 1 t boulder at 5 m/s on the
+// Lin, Cheng & Tuan eqs. (21)–(23) against the coupled simulation (examples/sdof_boulder_on_column.json): a 1 t boulder at 5 m/s on the
 // 4 m concrete column. Momentum: the contact impulse equals the boulder's momentum change. Load path: the peak
 // base shear equals that of the continuous Euler-Bernoulli cantilever (exact modes, 8 dynamic + the rest static)
 // under the simulated contact force history at the impact height, to 5 % (the pulse of ~1 ms drives modes up to the
@@ -599,9 +599,9 @@ std::vector<CaseResult> impact_contact() {
 std::vector<ValidationCase> member_validation_cases() {
   return {
       {"frame_closed_forms", "beam-column frame: static deflections, moments and first frequencies vs closed forms", frame_closed_forms},
-      {"paper_a5", "Lin & Yang A.5: block sticking to a simply supported beam vs eq. (30) and a point-mass FE model", paper_a5},
-      {"paper_a6", "Lin & Yang A.6: disc on a fixed-end beam, peak deflections vs the paper, h^-1.5 scaling", paper_a6},
-      {"paper_a6_large", "Lin & Yang A.6 at h/L = 0.025 as beam-columns (dropped by the paper): corotational contact", paper_a6_large},
+      {"paper_a5", "Lin & Yang verification 1: block sticking to a simply supported beam vs eq. (30) and a point-mass FE model", paper_a5},
+      {"paper_a6", "Lin & Yang verification 2: disc on a fixed-end beam, peak deflections vs the paper, h^-1.5 scaling", paper_a6},
+      {"paper_a6_large", "Lin & Yang verification 2 at h/L = 0.025 as beam-columns (dropped by the paper): corotational contact", paper_a6_large},
       {"impact_contact", "hard elastic impact: rock cylinder on a rigid wall vs an effectively rigid and a concrete member", impact_contact},
       {"sdof_column", "paper B: boulder on a cantilever column, base shear vs the continuous cantilever, eq. (23) beside", sdof_column},
       {"tyre_buffer", "boulder on a concrete check dam without and with a bonded tyre buffer: base shear, moment, duration", tyre_buffer},

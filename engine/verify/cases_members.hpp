@@ -28,13 +28,13 @@ struct A5Run {
 };
 A5Run paper_a5_run(int elements, const std::vector<std::pair<std::string, nlohmann::json>>& overrides = {});
 
-// The paper's A.6 peaks (m) for depths 0.5, 0.25, 0.125, 0.0625 m (NaN: dropped by the paper);
+// The paper's verification 2 peaks (m) for depths 0.5, 0.25, 0.125, 0.0625 m (NaN: dropped by the paper);
 // also in tests/data/paper_a/paper_numbers.json with their source.
 constexpr double kPaperA6Depth[4] = {0.5, 0.25, 0.125, 0.0625};
 constexpr double kPaperA6PeakParticles[4] = {0.075, 0.18, 0.29, 0.28};
 constexpr double kPaperA6PeakBeamColumn[3] = {0.056, 0.19, 0.58};
 
-// Paper A.6 at beam depth h (m): the beam as 4 beam-column elements or as particles.
+// Lin & Yang verification 2 at beam depth h (m): the beam as 4 beam-column elements or as particles.
 struct A6Run {
   std::vector<double> time, top_uy, von_mises;  // top-surface mid-span: vertical displacement (m), von Mises (Pa)
   double peak_displacement = 0;                 // max downward top-surface displacement (m)

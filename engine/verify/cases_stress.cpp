@@ -333,7 +333,7 @@ std::vector<CaseResult> cfl_sweep() { return cfl_sweep_impl("cfl_sweep", kScheme
 std::vector<CaseResult> cfl_sweep_linear() { return cfl_sweep_impl("cfl_sweep_linear", kLinearSchemes); }
 
 // ---------------------------------------------------------------------------------------------------------------
-// thin_member: paper A.6 at h/L = 0.025 (beam depth 0.0625 m) as 4 corotational beam-columns, on the example's
+// thin_member: Lin & Yang verification 2 at h/L = 0.025 (beam depth 0.0625 m) as 4 corotational beam-columns, on the example's
 // grid (h = 0.25 m; regression 0.474 m as in paper_a6_large) and on a grid 4 x finer (h = 0.0625 m, the disc's
 // particle spacing kept at 1/32 m), where the member's deflection sweeps the beam through ~8 cells.
 std::vector<CaseResult> thin_member() {
@@ -534,7 +534,7 @@ std::vector<ValidationCase> stress_cases() {
       {"stiffness_contrast", "concrete dam, granite boulder, rubber buffer of 1 and 10 MPa: completes, energy, forces", stiffness_contrast},
       {"high_speed", "boulder at 30 m/s with and without buffer: completes, energy, the buffer lowers the contact force", high_speed},
       {"cfl_sweep", "CFL 0.3-1.0 x shape x transfer on the free-free bar and the colliding disks: stable at the default 0.5", cfl_sweep},
-      {"thin_member", "paper A.6 at h/L = 0.025 (corotational), and on a grid where the member sweeps ~8 cells", thin_member},
+      {"thin_member", "Lin & Yang verification 2 at h/L = 0.025 (corotational), and on a grid where the member sweeps ~8 cells", thin_member},
       {"grid_edges", "particles on grid lines, free fall across cells, a body one cell from the edges, lone particles", grid_edges},
       // Known defects (docs/reliability.md): run only when named.
       {"long_run_energy", "long_run with a two-sided energy drift bound: FLIP loses most of the bar's energy over 1e6 steps", long_run_energy, false},

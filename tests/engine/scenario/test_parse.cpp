@@ -260,7 +260,7 @@ TEST(ScenarioDefaults, GivenValuesOverrideDefaults) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// (c2) beam-column frames (Lin & Yang 2024), member contact (A.2) and member probes
+// (c2) beam-column frames (Lin & Yang 2024), member contact (Lin & Yang 2024, eqs. 15–22) and member probes
 
 // minimal_2d() plus a steel beam under the block, pinned at A and on a roller at B, with only the
 // required keys.

@@ -116,7 +116,7 @@ TEST(SdofImpulse, PeakHandValueAndUndampedLimit) {
   // zeta -> 0: exponent ~ zeta pi/2, so 1 - ratio ~ 1.5708e-6 at zeta = 1e-6.
   const double ratio = unit_impulse_peak({m, k, 1e-6}).displacement_m_per_N_s / undamped;
   EXPECT_NEAR(1.0 - ratio, 1e-6 * kPi / 2, 1e-9);
-  // B.4: more damping, lower peak; continuous through zeta = 1.
+  // Lin, Cheng & Tuan eq. (20): more damping, lower peak; continuous through zeta = 1.
   double previous = 2 * undamped;
   for (double zeta : {0.0, 0.05, 0.1, 0.2, 0.5, 0.9, 0.999999, 1.0, 1.000001, 1.5, 3.0}) {
     const double u = unit_impulse_peak({m, k, zeta}).displacement_m_per_N_s;
