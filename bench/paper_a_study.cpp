@@ -1,4 +1,4 @@
-// Paper A study (Lin & Yang 2024, verifications 1-2): prints the markdown tables of docs/verification.md.
+// Lin & Yang (2024) verifications 1-2 study: prints the markdown tables of docs/verification.md.
 //   build/bench/paper_a_study [--threads N]
 // Not a test: it runs every variant (element counts, distance modes, depths, beam models) and
 // reports errors and wall times; the pass/fail checks are the validate cases paper_a5/a6/a6_large.

@@ -1,4 +1,4 @@
-// Paper B Table 1 study (Lin, Cheng & Tuan, Table 1): prints the markdown tables of engine/solid/table1.hpp for the
+// Lin, Cheng & Tuan, Table 1 study: prints the markdown tables of engine/solid/table1.hpp for the
 // upstream-, downstream- and symmetrically sloped column.   build/bench/paper_b_table1
 #include <cstdio>
 

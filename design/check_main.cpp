@@ -55,8 +55,11 @@ void run_summary(std::ostringstream& o, const json& r) {
       << eng(c["impulse_magnitude_N_s"], "N s") << ", pulse " << eng(c["pulse"]["duration_s"], "s") << "\n";
   }
   for (const auto& e : r["estimates"]) {
-    std::snprintf(line, sizeof line, "  estimate %-41s %12s  (simulated %s: ratio %.2f)\n", e["title"].get<std::string>().c_str(),
-                  eng(e["value_N"], "N").c_str(), eng(e["simulated_N"], "N").c_str(), e["ratio"].get<double>());
+    if (e["value_N"].is_number())
+      std::snprintf(line, sizeof line, "  estimate %-41s %12s  (simulated %s: ratio %.2f)\n", e["title"].get<std::string>().c_str(),
+                    eng(e["value_N"], "N").c_str(), eng(e["simulated_N"], "N").c_str(), e["ratio"].get<double>());
+    else
+      std::snprintf(line, sizeof line, "  estimate %-41s %12s  (%s)\n", e["title"].get<std::string>().c_str(), "n/a", e["note"].get<std::string>().c_str());
     o << line;
   }
   if (r["checks"].empty()) {

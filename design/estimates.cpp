@@ -1,9 +1,11 @@
 #include "design/estimates.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <stdexcept>
 
+#include "engine/sdof/practice_loads.hpp"
 #include "engine/sdof/sdof.hpp"
 
 namespace dmi::design {
@@ -11,8 +13,9 @@ namespace dmi::design {
 using nlohmann::json;
 
 json Estimate::to_json() const {
-  return json{{"id", id}, {"title", title}, {"formula", formula}, {"source", source}, {"value_N", value}, {"compare_to", compare_to},
-              {"simulated_N", simulated}, {"ratio", ratio}, {"note", note}};
+  auto num = [&](double v) { return applicable ? json(v) : json(nullptr); };
+  return json{{"id", id}, {"title", title}, {"formula", formula}, {"source", source}, {"parameters", parameters}, {"applicable", applicable},
+              {"value_N", num(value)}, {"compare_to", compare_to}, {"simulated_N", num(simulated)}, {"ratio", num(ratio)}, {"note", note}};
 }
 
 namespace {
@@ -20,19 +23,151 @@ namespace {
 struct Basis {
   const json& j;
   const std::string& where;
+  bool has(const char* obj, const char* key) const { return j.contains(obj) && j[obj].is_object() && j[obj].contains(key); }
   double get(const char* obj, const char* key) const {
     const std::string p = std::string("/documents/design_basis/") + obj + "/" + key;
-    if (!j.contains(obj) || !j[obj].is_object() || !j[obj].contains(key) || !j[obj][key].is_number())
-      throw std::runtime_error(where + ": " + p + " missing (expected a number)");
+    if (!has(obj, key) || !j[obj][key].is_number()) throw std::runtime_error(where + ": " + p + " missing (expected a number)");
     const double v = j[obj][key];
     if (!(v > 0) || !std::isfinite(v)) throw std::runtime_error(where + ": " + p + " = " + j[obj][key].dump() + ": expected a number > 0");
     return v;
   }
+  double poisson(const char* obj) const {  // optional in old results files; in (-1, 0.5) when present
+    if (!has(obj, "poisson_ratio")) return std::nan("");
+    const json& v = j[obj]["poisson_ratio"];
+    if (!v.is_number() || !(v.get<double>() > -1 && v.get<double>() < 0.5))
+      throw std::runtime_error(where + ": /documents/design_basis/" + obj + "/poisson_ratio = " + v.dump() + ": expected a number in (-1, 0.5)");
+    return v.get<double>();
+  }
 };
 
-Estimate make(const char* id, const char* title, const char* formula, const char* source, double value, const char* compare, double sim) {
-  Estimate e{id, title, formula, source, value, compare, sim, sim > 0 ? value / sim : 0.0, ""};
-  return e;
+std::string fmt(const char* f, double a, double b = 0, double c = 0, double d = 0, double e = 0, double g = 0) {
+  char s[256];
+  std::snprintf(s, sizeof s, f, a, b, c, d, e, g);
+  return s;
+}
+
+struct Table {
+  std::vector<Estimate>& out;
+  double shear, contact;
+  Estimate& add(const char* id, const char* title, const char* formula, const char* source, const char* compare, std::string params, double value) {
+    const double sim = std::string(compare) == "peak_base_shear" ? shear : contact;
+    out.push_back(Estimate{id, title, formula, source, std::move(params), true, value, compare, sim, sim > 0 ? value / sim : 0.0, ""});
+    return out.back();
+  }
+  void not_applicable(const char* id, const char* title, const char* formula, const char* source, const char* compare, std::string why) {
+    Estimate e{id, title, formula, source, "", false, 0, compare, 0, 0, std::move(why)};
+    out.push_back(e);
+  }
+};
+
+constexpr double kG = 9.81;
+constexpr double kAssumedFrictionDeg = 30;  // ASTRA's cushion friction angle when the basis gives none
+
+void boulder_rows(const Basis& b, const json& basis, Table& t) {
+  const std::string type = basis["dam"].value("type", "");
+  const bool buffer = basis.contains("tyre_buffer");
+  const double E = b.get("dam", "youngs_modulus_Pa"), nu = basis["dam"].value("poisson_ratio", 0.2), H = b.get("dam", "height_m");
+  const double W = b.get("dam", "width_m");
+  const double m = b.get("boulder", "mass_kg"), v = b.get("boulder", "speed_m_s"), D = b.get("boulder", "diameter_m"), r = 0.5 * D;
+  const double Er = b.get("boulder", "youngs_modulus_Pa"), nur = basis["boulder"].value("poisson_ratio", 0.25);
+  const double a = std::min(b.get("boulder", "impact_height_m"), H);
+  const std::string mv = fmt("m = %.4g kg, v = %.3g m/s", m, v);
+  double kb = 0, tb = 0, Eb = 0;  // buffer layer under the boulder's projected area pi D^2 / 4 (docs/design-checks.md)
+  if (buffer) {
+    Eb = b.get("tyre_buffer", "youngs_modulus_Pa"), tb = b.get("tyre_buffer", "thickness_m");
+    kb = sdof::buffer_layer_stiffness(Eb, std::numbers::pi * D * D / 4, tb);
+  }
+  // Lin, Cheng & Tuan eqs. (21)-(23): the dam as a cantilever SDOF struck by the boulder's impulse.
+  double I = 0;
+  const char* sdof_formula = buffer ? "F_T = m v ω, ω = √(k_eff / M), k_eff = 1/(1/k + 1/k_b), k = 3EI/H³, M = ρAH/2, k_b = E_b (πD²/4) / t_b"
+                                    : "F_T = m v ω_n, ω_n = √(k / M), k = 3EI/H³, M = ρAH/2 (mean section)";
+  if (type == "concrete_gravity") {
+    const auto sec = sdof::tapered_rectangular_section(W, b.get("dam", "crest_thickness_m"), b.get("dam", "base_thickness_m"));
+    I = sec.second_moment_m4;
+    const auto c = sdof::cantilever_sdof(E, b.get("dam", "density_kg_m3"), sec, H);
+    const auto res = buffer ? sdof::buffered_boulder_on_dam(m, v, c.effective_mass_kg, c.stiffness_N_per_m, kb)
+                            : sdof::boulder_on_dam(m, v, c.effective_mass_kg, c.stiffness_N_per_m);
+    std::string p = mv + fmt(", k = %.3g N/m, M = %.4g kg", c.stiffness_N_per_m, c.effective_mass_kg);
+    if (buffer) p += fmt(", k_b = %.3g N/m", kb);
+    t.add("sdof_base_force", "SDOF peak base force (Lin, Cheng & Tuan)", sdof_formula, "Lin, Cheng & Tuan eqs. (21)-(23)", "peak_base_shear", p,
+          res.peak_base_force_N);
+  } else {
+    const double Dc = b.get("dam", "column_diameter_m"), tc = b.get("dam", "column_wall_thickness_m"), d = Dc - 2 * tc;
+    I = std::numbers::pi / 64 * (std::pow(Dc, 4) - std::pow(d, 4));
+    t.not_applicable("sdof_base_force", "SDOF peak base force (Lin, Cheng & Tuan)", sdof_formula, "Lin, Cheng & Tuan eqs. (21)-(23)",
+                     "peak_base_shear", "written for a solid gravity dam as one cantilever; a steel open dam is a frame of columns");
+  }
+  // EN 1991-1-7 C.2.1 eq. (C.1) takes k as the impacting object's stiffness on a rigid structure; here its form is used
+  // as a spring-mass estimate with the struck member's stiffness at the impact height a (a rock is far stiffer).
+  double k = 3 * E * I / (a * a * a);
+  if (buffer) k = sdof::series_stiffness(k, kb);
+  const auto en = sdof::en1991_hard_impact(v, m, k);
+  t.add("en1991_hard_impact", "spring-mass, EN 1991-1-7 eq. (C.1) form",
+        buffer ? "F = v √(k m), k = 1/(1/(3EI/a³) + 1/k_b)" : "F = v √(k m), k = 3EI/a³", "EN 1991-1-7 Annex C.2.1 eq. (C.1), k of the struck member",
+        "peak_contact_force", mv + fmt(", a = %.3g m, k = %.3g N/m", a, k), en.peak_force_N)
+      .note = fmt("pulse %.3g ms", en.duration_s * 1e3);
+  // Hertz and GEO's reduced Hertz: a boulder on the bare, rigid face.
+  const char* hz_formula = "F = (4/3) E* R^½ δ^{3/2}, δ = (15 m v² / (16 E* R^½))^{2/5}";
+  const char* geo_formula = "F = K_c 4000 v^1.2 r² kN";
+  if (!buffer) {
+    const auto hz = sdof::hertz_sphere_impact(m, v, r, Er, nur, E, nu);
+    t.add("hertz", "Hertz sphere on an elastic half-space", hz_formula, "Johnson (1985) Contact Mechanics ch. 11", "peak_contact_force",
+          mv + fmt(", R = %.3g m, E* = %.3g Pa", r, hz.effective_modulus_Pa), hz.peak_force_N)
+        .note = fmt("contact %.3g ms; the 2D model strikes with an equal-mass cylinder", hz.contact_duration_s * 1e3);
+    t.add("geo_hertz", "GEO Report 270 reduced Hertz", geo_formula, "Kwan (2012) GEO Report 270", "peak_contact_force",
+          fmt("v = %.3g m/s, r = %.3g m, K_c = 0.1", v, r), sdof::geo_hertz_impact_force_N(v, r));
+  } else {
+    const char* why = "a boulder on a bare face; here the boulder strikes the buffer (the cushion formulas below)";
+    t.not_applicable("hertz", "Hertz sphere on an elastic half-space", hz_formula, "Johnson (1985) Contact Mechanics ch. 11", "peak_contact_force", why);
+    t.not_applicable("geo_hertz", "GEO Report 270 reduced Hertz", geo_formula, "Kwan (2012) GEO Report 270", "peak_contact_force", why);
+  }
+  // Japan Road Association (2000): Hertz-type, with the Lame constant of what is struck (the buffer, or the bare face).
+  const double Hf = v * v / (2 * kG);
+  const char* jp_formula = "P = 2.108 W^{2/3} λ^{2/5} H^{3/5} (kN, kN/m², m), W = m g, H = v²/(2g)";
+  const char* jp_source = "Japan Road Association (2000) Rockfall Countermeasure Handbook";
+  const double nu_c = buffer ? b.poisson("tyre_buffer") : nu;
+  if (std::isnan(nu_c)) {
+    t.not_applicable("japanese_rockfall", "Japanese rock-fall formula", jp_formula, jp_source, "peak_contact_force",
+                     "the design basis has no tyre_buffer/poisson_ratio (results written before it was recorded)");
+  } else if (!(nu_c > 0)) {
+    t.not_applicable("japanese_rockfall", "Japanese rock-fall formula", jp_formula, jp_source, "peak_contact_force",
+                     "Lamé's λ = E ν / ((1 + ν)(1 − 2ν)) is not positive for ν ≤ 0");
+  } else {
+    const double lam = sdof::lame_first_parameter(buffer ? Eb : E, nu_c);
+    t.add("japanese_rockfall", "Japanese rock-fall formula", jp_formula, jp_source, "peak_contact_force",
+          fmt("W = %.4g kN, λ = %.3g kN/m², H = %.3g m", m * kG / 1e3, lam / 1e3, Hf), sdof::japanese_rockfall_force_N(m, lam, Hf, kG))
+        .note = buffer ? "λ of the buffer; half-space form (no thin-cushion factor)" : "λ of the bare concrete face (rigid rock on the dam)";
+  }
+  // ASTRA 12006: a granular cushion on a gallery roof.
+  const char* as_formula = "F = 2.8 e^-0.5 r^0.7 M_E^0.4 tan φ (m v²/2)^0.6 (kN, m, kN/m², kJ)";
+  const char* as_source = "ASTRA 12006 (2008)";
+  if (!buffer) {
+    t.not_applicable("astra_gallery", "ASTRA rock-fall gallery formula", as_formula, as_source, "peak_contact_force", "needs a cushion layer");
+  } else if (std::isnan(nu_c)) {
+    t.not_applicable("astra_gallery", "ASTRA rock-fall gallery formula", as_formula, as_source, "peak_contact_force",
+                     "the design basis has no tyre_buffer/poisson_ratio (results written before it was recorded)");
+  } else {
+    const bool given = b.has("tyre_buffer", "friction_angle_deg");
+    const double phi = given ? b.get("tyre_buffer", "friction_angle_deg") : kAssumedFrictionDeg;
+    const double ME = sdof::constrained_modulus(Eb, nu_c);
+    t.add("astra_gallery", "ASTRA rock-fall gallery formula", as_formula, as_source, "peak_contact_force",
+          fmt("e = %.3g m, r = %.3g m, M_E = %.3g kN/m², φ = %.3g°, E_k = %.4g kJ", tb, r, ME / 1e3, phi, 0.5 * m * v * v / 1e3),
+          sdof::astra_gallery_force_N(tb, r, ME, phi, m, v))
+        .note = std::string("calibrated on gravel cushions, a tyre buffer is outside that range; M_E taken as the buffer's constrained modulus") +
+                (given ? "" : fmt("; φ = %.0f° assumed (no tyre_buffer/friction_angle_deg)", kAssumedFrictionDeg));
+  }
+}
+
+void debris_rows(const Basis& b, Table& t) {
+  const double W = b.get("dam", "width_m");
+  const double rho = b.get("debris_surge", "density_kg_m3"), h = b.get("debris_surge", "depth_m"), v = b.get("debris_surge", "speed_m_s");
+  const std::string p = fmt("ρ = %.4g kg/m³, v = %.3g m/s, h = %.3g m, w = %.3g m", rho, v, h, W);
+  t.add("geo_debris", "GEO Report 270 dynamic debris load", "F = α ρ v² h w, α = 2.5", "Kwan (2012) GEO Report 270", "peak_contact_force", p,
+        sdof::debris_dynamic_force_N(2.5, rho, v, h, W));
+  t.add("hydrostatic_dynamic", "hydrostatic plus dynamic debris load", "F = (k ρ g h/2 + α ρ v²) h w, k = 1, α = 1",
+        "hydrostatic and hydrodynamic forms, Hübl et al. (2009)", "peak_contact_force", p, sdof::debris_hydrostatic_dynamic_force_N(1, 1, rho, v, h, W, kG));
+  t.add("surge_momentum_flux", "momentum flux of the surge", "F = ρ v² h w (a surge stopped by a rigid wall)", "momentum balance",
+        "peak_contact_force", p, sdof::debris_dynamic_force_N(1, rho, v, h, W));
 }
 
 }  // namespace
@@ -41,57 +176,30 @@ std::vector<Estimate> estimates(const json& basis, double shear, double contact,
   std::vector<Estimate> out;
   if (!basis.is_object() || !basis.contains("dam")) return out;
   const Basis b{basis, where};
-  const std::string type = basis["dam"].value("type", "");
-  const double E = b.get("dam", "youngs_modulus_Pa"), nu = basis["dam"].value("poisson_ratio", 0.2), H = b.get("dam", "height_m");
-  const double W = b.get("dam", "width_m");
-  const bool buffer = basis.contains("tyre_buffer");
-  if (basis.contains("boulder")) {
-    const double m = b.get("boulder", "mass_kg"), v = b.get("boulder", "speed_m_s"), D = b.get("boulder", "diameter_m");
-    const double Er = b.get("boulder", "youngs_modulus_Pa"), nur = basis["boulder"].value("poisson_ratio", 0.25);
-    const double a = std::min(b.get("boulder", "impact_height_m"), H);
-    double I = 0;
-    double kb = 0;  // buffer layer under the boulder's projected area pi D^2 / 4 (an assumption, docs/design-checks.md)
-    if (buffer) kb = sdof::buffer_layer_stiffness(b.get("tyre_buffer", "youngs_modulus_Pa"), std::numbers::pi * D * D / 4, b.get("tyre_buffer", "thickness_m"));
-    if (type == "concrete_gravity") {
-      const auto sec = sdof::tapered_rectangular_section(W, b.get("dam", "crest_thickness_m"), b.get("dam", "base_thickness_m"));
-      I = sec.second_moment_m4;
-      const auto c = sdof::cantilever_sdof(E, b.get("dam", "density_kg_m3"), sec, H);
-      const auto r = buffer ? sdof::buffered_boulder_on_dam(m, v, c.effective_mass_kg, c.stiffness_N_per_m, kb)
-                            : sdof::boulder_on_dam(m, v, c.effective_mass_kg, c.stiffness_N_per_m);
-      out.push_back(make("sdof_base_force", buffer ? "SDOF peak base force, buffer in series" : "SDOF peak base force",
-                         buffer ? "F_T = m v0 omega, omega = sqrt(k_eff / M), k_eff = 1/(1/k + 1/k_b), k = 3EI/H^3, M = rho A H / 2, k_b = E_b (pi D^2/4) / t_b"
-                                : "F_T = m v0 omega_n, omega_n = sqrt(k / M), k = 3EI/H^3, M = rho A H / 2 (mean section)",
-                         "Lin, Cheng & Tuan eqs. (21)-(23)", r.peak_base_force_N, "peak_base_shear", shear));
-    } else {
-      const double Dc = b.get("dam", "column_diameter_m"), tc = b.get("dam", "column_wall_thickness_m"), d = Dc - 2 * tc;
-      I = std::numbers::pi / 64 * (std::pow(Dc, 4) - std::pow(d, 4));
-    }
-    // EN 1991-1-7 C.2.1: the struck column or wall as a cantilever loaded at the impact height a.
-    double k = 3 * E * I / (a * a * a);
-    if (buffer) k = sdof::series_stiffness(k, kb);
-    const auto en = sdof::en1991_hard_impact(v, m, k);
-    // EN 1991-1-7 C.2.1 takes k as the impacting object's stiffness on a rigid structure; here the form of eq. (C.1) is
-    // used as a spring-mass estimate with the struck member's stiffness at the impact height (a rock is far stiffer).
-    Estimate e = make("en1991_hard_impact", "spring-mass, EN 1991-1-7 eq. (C.1) form", buffer ? "F = v sqrt(k m), k = 1/(1/(3EI/a^3) + 1/k_b)" : "F = v sqrt(k m), k = 3EI/a^3",
-                      "EN 1991-1-7 Annex C.2.1 eq. (C.1), k of the struck member", en.peak_force_N, "peak_contact_force", contact);
-    e.note = "pulse " + std::to_string(en.duration_s * 1e3) + " ms";
-    out.push_back(e);
-    if (!buffer) {  // rigid-barrier formulas: not for a soft buffer
-      const auto hz = sdof::hertz_sphere_impact(m, v, 0.5 * D, Er, nur, E, nu);
-      e = make("hertz", "Hertz sphere on an elastic half-space", "F = (4/3) E* R^1/2 delta^3/2, delta = (15 m v^2 / (16 E* R^1/2))^2/5",
-               "Johnson (1985) Contact Mechanics ch. 11", hz.peak_force_N, "peak_contact_force", contact);
-      e.note = "contact " + std::to_string(hz.contact_duration_s * 1e3) + " ms; the 2D model strikes with an equal-mass cylinder";
-      out.push_back(e);
-      out.push_back(make("geo_hertz", "GEO empirical Hertz (K_c = 0.1)", "F = K_c 4000 v^1.2 r^2 kN", "Kwan (2012) GEO Report 270",
-                         sdof::geo_hertz_impact_force_N(v, 0.5 * D), "peak_contact_force", contact));
-    }
-  }
-  if (basis.contains("debris_surge")) {
-    const double rho = b.get("debris_surge", "density_kg_m3"), h = b.get("debris_surge", "depth_m"), v = b.get("debris_surge", "speed_m_s");
-    out.push_back(make("surge_momentum_flux", "momentum flux of the surge", "F = rho v^2 h W (a surge stopped by a rigid wall)",
-                       "momentum balance", rho * v * v * h * W, "peak_contact_force", contact));
-  }
+  Table t{out, shear, contact};
+  if (basis.contains("boulder")) boulder_rows(b, basis, t);
+  if (basis.contains("debris_surge")) debris_rows(b, t);
   return out;
+}
+
+void add_grid_uncertainty(json& design) {
+  if (!design.contains("grid_study") || !design["grid_study"].contains("quantities")) return;
+  for (auto& run : design["runs"]) {
+    const std::string variant = run.value("variant", "");
+    for (auto& e : run["estimates"]) {
+      if (!e.value("applicable", true) || !e["ratio"].is_number()) continue;
+      const std::string id = e["compare_to"] == "peak_base_shear" ? "base_shear" : "contact_force";
+      for (const auto& q : design["grid_study"]["quantities"]) {
+        if (q.value("variant", "") != variant || q["id"] != id || !q["gci"].is_number()) continue;
+        const double gci = q["gci"], sim = e["simulated_N"], val = e["value_N"];
+        if (!(sim > 0) || !std::isfinite(gci)) continue;
+        e["simulated_gci"] = gci;
+        e["simulated_extrapolated_N"] = q["extrapolated"];
+        e["ratio_low"] = val / (sim * (1 + gci));
+        e["ratio_high"] = gci < 1 ? json(val / (sim * (1 - gci))) : json(nullptr);
+      }
+    }
+  }
 }
 
 }  // namespace dmi::design

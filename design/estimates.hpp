@@ -1,6 +1,8 @@
-// Closed-form impact estimates beside the simulation (paper B's SDOF, Hertz, GEO, EN 1991-1-7 Annex C,
-// the momentum flux of a surge), computed from the design basis the presets write (/documents/design_basis,
-// docs/design-json.md) and compared with the simulated peaks.
+// Design-practice impact loads beside the simulation: Lin, Cheng & Tuan's SDOF, EN 1991-1-7 Annex C, Hertz, GEO
+// Report 270, the Japanese rock-fall formula, ASTRA 12006, and for a debris surge GEO's alpha rho v^2 h w and a
+// hydrostatic-plus-dynamic model; computed from the design basis the presets write (/documents/design_basis,
+// docs/design-json.md) and compared with the simulated peaks. Every model of the scenario's kind is listed; one that
+// does not apply says why (value null) instead of being left out.
 #pragma once
 #include <string>
 #include <vector>
@@ -11,6 +13,8 @@ namespace dmi::design {
 
 struct Estimate {
   std::string id, title, formula, source;
+  std::string parameters;           // the values put into the formula, as text
+  bool applicable = true;           // false: value, simulated and ratio are null, note says why
   double value = 0;                 // N
   std::string compare_to;           // "peak_base_shear" | "peak_contact_force"
   double simulated = 0, ratio = 0;  // ratio = estimate / simulated (0 when nothing was simulated)
@@ -21,5 +25,10 @@ struct Estimate {
 // Throws std::runtime_error naming `where` and the basis key when a needed value is missing or not positive.
 std::vector<Estimate> estimates(const nlohmann::json& basis, double simulated_base_shear_N, double simulated_contact_N,
                                 const std::string& where);
+
+// With a grid study (design["grid_study"]): each applicable estimate of a run gets the grid uncertainty of the simulated
+// peak it is compared with (simulated_gci, simulated_extrapolated_N and the ratio band ratio_low .. ratio_high for the
+// simulated value within +-GCI). Estimates whose quantity the study did not cover are left as they are.
+void add_grid_uncertainty(nlohmann::json& design);
 
 }  // namespace dmi::design

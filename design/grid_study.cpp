@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "design/design.hpp"
+#include "design/estimates.hpp"
 #include "design/limits.hpp"
 
 namespace dmi::design {
@@ -151,6 +152,7 @@ GridStudyOutcome run_grid_study(const std::string& file, const nlohmann::json& s
   }
   r.design = designs[0];
   r.design["grid_study"] = grid_study_section(designs, r.h, folders);
+  add_grid_uncertainty(r.design);
   const Limits limits = limits_file.empty() ? Limits{} : read_limits(limits_file);
   r.passed = judge_grid_study(r.design, limits.grid_judge_on);
   write_design_json((fs::path(out) / "design.json").string(), r.design);

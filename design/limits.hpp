@@ -11,8 +11,8 @@
 namespace dmi::design {
 
 struct ConcreteLimits {
-  double compressive_strength = 28e6;  // f'c (Pa); paper B's concrete (Lin, Cheng & Tuan, Table 1)
-  // f_t (Pa): 3.28 MPa (paper B, Lin, Cheng & Tuan, Table 1; = 0.62 sqrt(28), the modulus of rupture), or by tensile_rule:
+  double compressive_strength = 28e6;  // f'c (Pa); the concrete of Lin, Cheng & Tuan, Table 1
+  // f_t (Pa): 3.28 MPa (Lin, Cheng & Tuan, Table 1; = 0.62 sqrt(28), the modulus of rupture), or by tensile_rule:
   // "aci_plain" 0.42 lambda sqrt(f'c) (ACI 318-19 Table 14.5.2.1(a), plain-concrete flexure: 2.22 MPa at 28 MPa),
   // "aci_rupture" 0.62 lambda sqrt(f'c) (ACI 318-19 eq. 19.2.3.1).
   double tensile_strength = 3.28e6;

@@ -144,7 +144,7 @@ std::vector<MemberEnvelope> member_envelopes(const Results& r, const FrameInfo& 
     const double D = f.elements[m.first].section.depth(0), t_w = f.elements[m.first].section.wall_thickness();
     // Capacities that do not vary in time (docs/design-checks.md).
     const Check tension = proto("concrete_flexural_tension", "flexural tension", env, "Pa", "sigma_t = N/A + |M| c/I <= phi_f f_t",
-                                "f_t: Lin, Cheng & Tuan, Table 1 (paper B) or ACI 318-19 14.5.2.1 / 19.2.3.1 by tensile_rule; phi: ACI 318-19 21.2.1");
+                                "f_t: Lin, Cheng & Tuan, Table 1 or ACI 318-19 14.5.2.1 / 19.2.3.1 by tensile_rule; phi: ACI 318-19 21.2.1");
     const Check compr = proto("concrete_compression", "compression", env, "Pa", "|sigma_c| = |N/A - |M| c/I| <= phi_c alpha f'c",
                               "elastic fibre stress limit alpha f'c (alpha 0.85, ACI 318-19 22.2.2.4.1); phi: ACI 318-19 21.2.1");
     const Check shear_c = C.shear_strength ? proto("concrete_shear", "shear stress", env, "Pa", "tau = k V/A <= phi_v tau_lim", "user shear limit")

@@ -29,9 +29,10 @@ std::string fmt(const char* f, double v) {
 // Engineering units: Pa -> MPa, N -> kN, N m -> kN m, N s -> kN s, s -> ms.
 std::string eng(double v, const std::string& unit) {
   if (unit == "Pa") return fmt("%.3g MPa", v / 1e6);
-  if (unit == "N") return fmt("%.4g kN", v / 1e3);
-  if (unit == "N m") return fmt("%.4g kN m", v / 1e3);
-  if (unit == "N s") return fmt("%.4g kN s", v / 1e3);
+  auto kilo = [](double x, const char* u) { return fmt(std::abs(x) < 1e4 ? "%.4g" : "%.0f", x) + " " + u; };  // 21216 kN, not 2.122e+04 kN
+  if (unit == "N") return kilo(v / 1e3, "kN");
+  if (unit == "N m") return kilo(v / 1e3, "kN m");
+  if (unit == "N s") return kilo(v / 1e3, "kN s");
   if (unit == "s") return fmt("%.4g ms", v * 1e3);
   return fmt("%.3g", v);
 }
@@ -329,17 +330,29 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
     }
   d["figures"] = figs;
   d["no_figures_reason"] = manifest.value("error", std::string("the runs have no snapshots or members"));
-  // Estimates.
+  // Design-practice loads beside the simulation.
   json est = json::array();
+  bool banded = false;
   for (const auto& r : runs)
-    for (const auto& e : r.design["estimates"])
-      est.push_back({{"run", label(r)}, {"title", e["title"]}, {"formula", e["formula"]}, {"value", eng(e["value_N"], "N")},
-                     {"simulated", eng(e["simulated_N"], "N") + " (" + (e["compare_to"] == "peak_base_shear" ? std::string("base shear") : std::string("contact")) + ")"},
-                     {"ratio", fmt("%.2f", e["ratio"].get<double>())}, {"source", e["source"]}});
+    for (const auto& e : r.design["estimates"]) {
+      const bool ok = e.value("applicable", true) && e["value_N"].is_number();
+      const std::string what = e["compare_to"] == "peak_base_shear" ? "base shear" : "contact";
+      std::string sim = ok ? eng(e["simulated_N"], "N") : "—", sim_note = ok ? what : "", ratio = ok ? fmt("%.2f", e["ratio"].get<double>()) : "—", band;
+      if (ok && e.contains("simulated_gci")) {
+        banded = true;
+        sim_note += fmt(", GCI %.0f %%", 100 * e["simulated_gci"].get<double>());
+        band = fmt("%.2f", e["ratio_low"].get<double>()) + "–" + (e["ratio_high"].is_number() ? fmt("%.2f", e["ratio_high"].get<double>()) : std::string("∞"));
+      }
+      est.push_back({{"run", label(r)}, {"title", e["title"]}, {"formula", e["formula"]}, {"parameters", e.value("parameters", "")},
+                     {"value", ok ? eng(e["value_N"], "N") : std::string("n/a")}, {"simulated", sim}, {"simulated_note", sim_note}, {"ratio", ratio}, {"ratio_band", band}, {"source", e["source"]},
+                     {"note", e.value("note", "")}, {"row_class", ok ? "" : "muted"}});
+    }
   d["estimates"] = est;
   d["estimates_intro"] =
-      "Simple design-practice formulas beside the simulation, as a sanity band (not checks): ratio = estimate / simulated. The 2D model "
-      "strikes with a cylinder of the boulder's mass, while Hertz assumes a sphere.";
+      std::string("The loads design practice would assign to this impact, beside the simulated peak they stand for (a sanity band, not checks): "
+                  "ratio = estimate / simulated. A model that does not fit the scenario is listed with the reason. The 2D model strikes with a "
+                  "cylinder of the boulder's mass, while the boulder formulas assume a sphere. Formulas, sources and assumptions: docs/design-checks.md.") +
+      (banded ? " With the grid study, the simulated peak carries its grid convergence index (GCI) and the ratio the band it spans for the simulated peak within ± GCI." : "");
   // Health.
   d["health_intro"] =
       "Energy balance error = kinetic + strain (+ frame) − work of gravity and walls − initial energy; member contact is internal, so "

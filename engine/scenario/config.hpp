@@ -189,7 +189,7 @@ struct OutputConfig {
   std::vector<ProbeConfig> probes;
 };
 
-// --- Solid-FE check of a concrete dam body (paper B, Lin, Cheng & Tuan, Table 1) ------------------------------
+// --- Solid-FE check of a concrete dam body (Lin, Cheng & Tuan, Table 1) ------------------------------
 struct SolidLoadConfig {
   std::string name, type;                            // point | patch | simulation
   double force = 0;                                  // N (point, patch)

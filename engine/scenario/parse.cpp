@@ -187,7 +187,7 @@ void read_body(Obj& o, BodyConfig& b) {
 
 void read_contact(Obj o, ContactConfig& c) {
   o.choice<ContactMethod>("method", c.method, {{"multi_field", ContactMethod::multi_field}, {"single_field", ContactMethod::single_field}},
-                          Spec{.doc = "multi_field: one velocity field per body with Bardenhagen (2000) contact, bodies can separate and slide; "
+                          Spec{.doc = "multi_field: one velocity field per body with Bardenhagen et al. (2000) contact, bodies can separate and slide; "
                                       "single_field: all bodies share one field (no-slip, they stick on touching)"});
   o.number("friction", c.friction, Spec{.doc = "Coulomb friction coefficient between bodies (multi_field)", .min = 0});
   o.choice<BodyDetection>("detection", c.detection, {{"surface", BodyDetection::surface}, {"volume", BodyDetection::volume}},
@@ -445,7 +445,7 @@ void read_solid_load(Obj& o, SolidLoadConfig& l) {
   if (!o.documenting() && l.type != "point" && l.type != "patch" && l.type != "simulation")
     o.fail("type", nullptr, "point, patch or simulation (got '" + l.type + "')");
   if (when_any(o, "type", l.type, {"point", "patch"})) {
-    o.number("force", l.force, positive("N", "horizontal force towards downstream (paper B: 980 kN)", true));
+    o.number("force", l.force, positive("N", "horizontal force towards downstream (Lin, Cheng & Tuan: 980 kN)", true));
     o.number("height", l.height, positive("m", "height of the load (patch centre) above the base", true));
     o.number("across", l.across, Spec{.unit = "m", .doc = "position across the face width from its side edge (hex8); default mid-width"});
   }
@@ -454,7 +454,7 @@ void read_solid_load(Obj& o, SolidLoadConfig& l) {
     o.number("patch_width", l.patch_width, positive("m", "patch extent across the face", true));
     o.number("patch_height", l.patch_height, positive("m", "patch extent up the face", true));
     o.choice<std::string>("shape", l.shape, {{"pyramid", "pyramid"}, {"uniform", "uniform"}},
-                          Spec{.doc = "pressure decreasing linearly from the centre to the patch edges and corners (paper B), or uniform"});
+                          Spec{.doc = "pressure decreasing linearly from the centre to the patch edges and corners (Lin, Cheng & Tuan), or uniform"});
   }
   o.end_when();
   if (o.when("type", l.type, "simulation")) {
@@ -476,9 +476,9 @@ void read_solid_check(Obj o, SolidCheckConfig& c) {
   o.choice<std::string>("sloped_face", c.sloped_face, {{"downstream", "downstream"}, {"upstream", "upstream"}, {"both", "both"}},
                         Spec{.doc = "which face is battered"});
   o.choice<std::string>("element", c.element, {{"hex8", "hex8"}, {"quad4", "quad4"}},
-                        Spec{.doc = "hex8: 3D block (paper B); quad4: 2D plane-strain section (loads per unit width x width)"});
+                        Spec{.doc = "hex8: 3D block (Lin, Cheng & Tuan); quad4: 2D plane-strain section (loads per unit width x width)"});
   DVec cells{8, 10, 20};
-  o.vector("cells", cells, Spec{.doc = "elements through the thickness, across the width (hex8 only) and up the height (paper B: 8 x 10 x 20)",
+  o.vector("cells", cells, Spec{.doc = "elements through the thickness, across the width (hex8 only) and up the height (Lin, Cheng & Tuan: 8 x 10 x 20)",
                                 .min = 1, .max = 400}, 3);
   c.cells = {static_cast<int>(cells[0]), static_cast<int>(cells[1]), static_cast<int>(cells[2])};
   o.number("max_dofs", c.max_dofs, Spec{.doc = "meshes with more degrees of freedom are refused before they are solved (8 x 10 x 20 hex8: "
@@ -529,7 +529,7 @@ void read_scenario(Obj& o, Scenario& s) {
   read_member_contact(o.object("member_contact", "how the structure's members act on the bodies (Lin & Yang 2024); only with a structure"),
                       s.member_contact, s.structure.present);
   read_output(o.object("output", "what is recorded"), s.output);
-  read_solid_check(o.object("solid_check", "a linear solid-FE check of a concrete dam body (paper B, Lin, Cheng & Tuan, Table 1): static load cases, "
+  read_solid_check(o.object("solid_check", "a linear solid-FE check of a concrete dam body (Lin, Cheng & Tuan, Table 1): static load cases, "
                                            "given or taken from this run's contact loads; absent: none"), s.solid_check);
   // Free-form here: design/ validates it where it reads it (docs/design-json.md).
   if (const json* b = o.raw("design_basis", Spec{.doc = "inputs of the closed-form impact estimates of the design checks (dam, boulder, "
@@ -851,7 +851,7 @@ Scenario parse_low_level(const json& j, const std::string& file) {
   if (!j.is_object()) throw InputError(file, "/", schema::short_dump(j), "a JSON object (a scenario)");
   Obj o(&j, "", ctx);
   if (j.contains("solid_check") && !j.contains("bodies") && !j.contains("structure")) {
-    // A solid-FE check on its own (e.g. paper B Table 1): no grid, bodies or time stepping.
+    // A solid-FE check on its own (e.g. Lin, Cheng & Tuan's Table 1): no grid, bodies or time stepping.
     read_header(o, s);
     read_solid_check(o.object("solid_check", ""), s.solid_check);
     o.finish();

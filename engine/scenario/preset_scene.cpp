@@ -207,6 +207,7 @@ json Builder::design_basis() const {
     const BufferPreset& b = *p_.buffer;
     const bool homog = b.type == "homogenised";
     out["tyre_buffer"] = json{{"type", b.type}, {"youngs_modulus_Pa", b.material.value("youngs_modulus", 0.0)},
+                              {"poisson_ratio", b.material.value("poisson_ratio", 0.0)},
                               {"thickness_m", homog ? b.thickness : b.tyre_diameter}, {"bottom_m", b.bottom}, {"top_m", b.top}};
   }
   return out;

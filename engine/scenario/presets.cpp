@@ -97,7 +97,7 @@ void read_dam(Obj o, DamPreset& d) {
                           Spec{.doc = "members: one tapered beam-column member fixed at the base (Lin & Yang 2024; stresses from N and M); "
                                       "continuum: an MPM body stuck to the ground along its base (for comparison)"});
     d.concrete = material_object(o, "concrete", json{{"model", "linear_elastic"}, {"density", 2400}, {"youngs_modulus", 25e9}, {"poisson_ratio", 0.2}},
-                                 "concrete (paper B uses E 25 GPa, rho 2300)", "concrete");
+                                 "concrete (Lin, Cheng & Tuan use E 25 GPa, rho 2300)", "concrete");
     plausible(o, "concrete", d.concrete, "concrete", 5e9, 1e11, 1500, 3500);
     if (!o.documenting() && d.base_thickness < d.crest)
       o.fail("base_thickness", nullptr, "a base thickness >= crest_thickness = " + std::to_string(d.crest) + " m");

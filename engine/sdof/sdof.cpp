@@ -1,5 +1,7 @@
-// Lin, Cheng & Tuan and the design-practice impact loads; equations are stated in sdof.hpp.
+// Lin, Cheng & Tuan and Hertz; equations are stated in sdof.hpp.
 #include "engine/sdof/sdof.hpp"
+
+#include "engine/sdof/require.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -10,28 +12,7 @@
 namespace dmi::sdof {
 namespace {
 
-[[noreturn]] void fail(const char* function, const char* argument, double value, const char* expected) {
-  std::ostringstream s;
-  s.precision(17);
-  s << "dmi::sdof::" << function << ": " << argument << " = " << value << ", expected " << expected;
-  throw std::invalid_argument(s.str());
-}
-
-void require_positive(const char* function, const char* argument, double value) {
-  if (!(std::isfinite(value) && value > 0)) fail(function, argument, value, "a finite value > 0");
-}
-
-void require_non_negative(const char* function, const char* argument, double value) {
-  if (!(std::isfinite(value) && value >= 0)) fail(function, argument, value, "a finite value >= 0");
-}
-
-void require_finite(const char* function, const char* argument, double value) {
-  if (!std::isfinite(value)) fail(function, argument, value, "a finite value");
-}
-
-void require_poisson(const char* function, const char* argument, double value) {
-  if (!(std::isfinite(value) && value > -1 && value < 0.5)) fail(function, argument, value, "-1 < nu < 0.5");
-}
+using namespace detail;
 
 void validate(const char* function, const Oscillator& o) {
   require_positive(function, "mass_kg", o.mass_kg);
@@ -195,17 +176,6 @@ BoulderImpact buffered_boulder_on_dam(double boulder_mass_kg, double boulder_spe
                         series_stiffness(dam_stiffness_N_per_m, buffer_stiffness_N_per_m));
 }
 
-double geo_hertz_impact_force_N(double boulder_speed_m_per_s, double boulder_radius_m,
-                                double reduction_factor_Kc) {
-  const char* f = "geo_hertz_impact_force_N";
-  require_non_negative(f, "boulder_speed_m_per_s", boulder_speed_m_per_s);
-  require_positive(f, "boulder_radius_m", boulder_radius_m);
-  require_positive(f, "reduction_factor_Kc", reduction_factor_Kc);
-  const double force_kN = reduction_factor_Kc * 4000.0 * std::pow(boulder_speed_m_per_s, 1.2) *
-                          boulder_radius_m * boulder_radius_m;
-  return 1000.0 * force_kN;
-}
-
 double hertz_effective_modulus(double youngs_modulus_1_Pa, double poisson_ratio_1,
                                double youngs_modulus_2_Pa, double poisson_ratio_2) {
   const char* f = "hertz_effective_modulus";
@@ -231,16 +201,6 @@ HertzImpact hertz_sphere_impact(double boulder_mass_kg, double boulder_speed_m_p
   const double delta = std::pow(15.0 * boulder_mass_kg * v * v / (16.0 * e_star * sqrt_r), 0.4);
   const double force = 4.0 / 3.0 * e_star * sqrt_r * std::pow(delta, 1.5);
   return {e_star, delta, force, 2.94 * delta / v};
-}
-
-HardImpact en1991_hard_impact(double impact_speed_m_per_s, double impacting_mass_kg,
-                              double equivalent_stiffness_N_per_m) {
-  const char* f = "en1991_hard_impact";
-  require_non_negative(f, "impact_speed_m_per_s", impact_speed_m_per_s);
-  require_positive(f, "impacting_mass_kg", impacting_mass_kg);
-  require_positive(f, "equivalent_stiffness_N_per_m", equivalent_stiffness_N_per_m);
-  return {impact_speed_m_per_s * std::sqrt(equivalent_stiffness_N_per_m * impacting_mass_kg),
-          std::sqrt(impacting_mass_kg / equivalent_stiffness_N_per_m)};
 }
 
 std::vector<double> cantilever_base_shear(double EI, double m, double L, double a, const std::vector<double>& t,

@@ -1,4 +1,4 @@
-// Paper B's closed-form tools (Lin, Cheng & Tuan): the single-degree-of-freedom oscillator, its
+// Lin, Cheng & Tuan's closed-form tools: the single-degree-of-freedom oscillator, its
 // free and impulse responses, the boulder-on-dam peak base force, a buffer in series, and three
 // design-practice impact loads (GEO/Kwan 2012 Hertz, full Hertz after Johnson 1985, EN 1991-1-7 Annex C).
 // Pure functions, SI units throughout (kg, m, s, N, Pa, rad/s); displacement u is positive in the
@@ -128,16 +128,8 @@ BoulderImpact buffered_boulder_on_dam(double boulder_mass_kg, double boulder_spe
                                       double buffer_stiffness_N_per_m);
 
 // ---------------------------------------------------------------------------------------------------
-// Design-practice impact loads
+// Hertz impact (the design-practice formulas: engine/sdof/practice_loads.hpp)
 // ---------------------------------------------------------------------------------------------------
-
-// Empirical Hertz form with the GEO parameters (Kwan 2012, GEO Report 270, "Supplementary technical
-// guidance on design of rigid debris-resisting barriers", Hong Kong):
-//   F [kN] = K_c 4000 v^1.2 r^2,  v in m/s, r = boulder radius in m,
-// the moduli of boulder and barrier are implicit in the 4000; K_c = 0.1 (the GEO default) is a
-// reduction factor for the non-elastic response. Returns Newtons.
-double geo_hertz_impact_force_N(double boulder_speed_m_per_s, double boulder_radius_m,
-                                double reduction_factor_Kc = 0.1);
 
 // E* = 1 / ((1 - nu1^2)/E1 + (1 - nu2^2)/E2) (Pa), Johnson (1985) Contact Mechanics, Hertz theory (ch. 4).
 double hertz_effective_modulus(double youngs_modulus_1_Pa, double poisson_ratio_1,
@@ -157,17 +149,6 @@ HertzImpact hertz_sphere_impact(double boulder_mass_kg, double boulder_speed_m_p
                                 double boulder_radius_m, double boulder_modulus_Pa,
                                 double boulder_poisson_ratio, double barrier_modulus_Pa,
                                 double barrier_poisson_ratio);
-
-struct HardImpact {
-  double peak_force_N;  // F = v_r sqrt(k m)
-  double duration_s;    // delta_t = sqrt(m/k), so F delta_t = m v_r
-};
-
-// EN 1991-1-7 Annex C.2.1 "hard impact": object of mass m (kg) at velocity v_r (m/s) on a struck
-// object of equivalent elastic stiffness k (N/m); rectangular pulse. Note F = m v_r sqrt(k/m) is
-// Lin, Cheng & Tuan's eq. (23) with the impacting mass in place of the dam's.
-HardImpact en1991_hard_impact(double impact_speed_m_per_s, double impacting_mass_kg,
-                              double equivalent_stiffness_N_per_m);
 
 // ---------------------------------------------------------------------------------------------------
 // Continuous cantilever under a force history (beyond Lin, Cheng & Tuan's single mode)

@@ -1,7 +1,7 @@
-// The solid-FE check of a concrete dam body (paper B, Lin, Cheng & Tuan, Table 1): the tapered dam as hex8 (3D) or
+// The solid-FE check of a concrete dam body (Lin, Cheng & Tuan, Table 1): the tapered dam as hex8 (3D) or
 // quad4 (2D plane strain) elements, base fixed, linear elastic, one static solve per load case:
 //   point      a horizontal force at the upstream-face node nearest to (across, height);
-//   patch      the same force spread over a rectangle of the face (pyramid or uniform, paper B);
+//   patch      the same force spread over a rectangle of the face (pyramid or uniform, Lin, Cheng & Tuan);
 //   simulation the horizontal contact loads this run's boulder/debris put on a dam member at the instant
 //              of the largest total contact force, binned by height (bins of one MPM cell) into a
 //              piecewise-linear face pressure with the same resultant; across the width uniform (the

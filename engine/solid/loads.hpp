@@ -4,7 +4,7 @@
 //   Patch load on an x-face (upstream i = 0, downstream i = nx) of a hex8 block: traction t(y, z) = q(y, z) d
 //   over the patch |y - y_c| <= w/2, |z - z_c| <= h/2 (z of the point on the face, so a sloped face is
 //   loaded over its vertical projection), d a fixed unit direction (default +x, i.e. horizontal, from upstream):
-//     uniform: q = p0;   pyramid: q = p0 (1 - max(|y - y_c| / (w/2), |z - z_c| / (h/2)))   (paper B: decreasing
+//     uniform: q = p0;   pyramid: q = p0 (1 - max(|y - y_c| / (w/2), |z - z_c| / (h/2)))   (Lin, Cheng & Tuan: decreasing
 //     linearly from the impact point to the patch edges and corners), nominal p0 = F / A and 3 F / A.
 //   q is a force per unit area of the face's projection on the y-z plane (a sloped face carries the same
 //   load pattern as its vertical projection). Consistent nodal forces

@@ -1,4 +1,4 @@
-// Paper B Table 1 (Lin, Cheng & Tuan, Table 1): stress dispersion of a 980 kN impact on a concrete column, hex8 model.
+// Lin, Cheng & Tuan, Table 1: stress dispersion of a 980 kN impact on a concrete column, hex8 model.
 //   Column H = 4 m, crest 1 m, base 1.6 m thick, face 2 m wide; E = 25 GPa, nu = 0.3; 8 x 10 x 20 hex8
 //   (thickness x width x height), base z = 0 fixed. Load 980 kN horizontal (+x) on the upstream face at
 //   y = 1 m, z = 3.6 m: at one node, or pyramid patches 0.4 x 0.4, 0.8 x 0.4, 0.4 x 0.8 m (width x height).

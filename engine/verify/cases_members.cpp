@@ -1,4 +1,4 @@
-// Verification of beam-column members coupled to MPM (Lin & Yang 2024, Lin & Yang 2024, verifications 1-2).
+// Verification of beam-column members coupled to MPM (Lin & Yang 2024, verifications 1-2).
 #include "engine/verify/cases_members.hpp"
 
 #include "engine/sdof/sdof.hpp"
@@ -347,7 +347,7 @@ std::vector<CaseResult> sdof_column() {
   return stamp(r, timer.seconds());
 }
 
-// Paper B Table 1 (Lin, Cheng & Tuan, Table 1) with the hex8 model of engine/solid: von Mises at element centroids with
+// Lin, Cheng & Tuan, Table 1 with the hex8 model of engine/solid: von Mises at element centroids with
 // the downstream face sloped matched best of all measures and slope choices (docs/verification.md).
 std::vector<CaseResult> paper_b_table1() {
   const CaseTimer timer;
@@ -418,7 +418,7 @@ std::vector<CaseResult> tyre_buffer() {
 // time pi / omega, wall force M v omega / cos(beta) (Clough & Penzien 1993, 18-2). A damped pad returns
 // the block with the restitution of a linear spring-dashpot contact that lets go when the force vanishes,
 // e = exp(-zeta / sqrt(1 - zeta^2) (pi - atan(2 zeta sqrt(1 - zeta^2) / (1 - 2 zeta^2)))) (Schwager &
-// Poschel 2007, Phys. Rev. E 75, 051304). The bare wall takes the block's elastic wave, rho c v A.
+// Poschel 2007, Granular Matter 9, 465-469). The bare wall takes the block's elastic wave, rho c v A.
 std::vector<CaseResult> buffer_pad() {
   const CaseTimer timer;
   const double v0 = 2.0, M = 2650 * 0.4 * 0.4, mp = 600 * 0.2 * 0.4, t = 0.2, A = 0.4;
@@ -603,10 +603,10 @@ std::vector<ValidationCase> member_validation_cases() {
       {"paper_a6", "Lin & Yang verification 2: disc on a fixed-end beam, peak deflections vs the paper, h^-1.5 scaling", paper_a6},
       {"paper_a6_large", "Lin & Yang verification 2 at h/L = 0.025 as beam-columns (dropped by the paper): corotational contact", paper_a6_large},
       {"impact_contact", "hard elastic impact: rock cylinder on a rigid wall vs an effectively rigid and a concrete member", impact_contact},
-      {"sdof_column", "paper B: boulder on a cantilever column, base shear vs the continuous cantilever, eq. (23) beside", sdof_column},
+      {"sdof_column", "Lin, Cheng & Tuan: boulder on a cantilever column, base shear vs the continuous cantilever, eq. (23) beside", sdof_column},
       {"tyre_buffer", "boulder on a concrete check dam without and with a bonded tyre buffer: base shear, moment, duration", tyre_buffer},
       {"buffer_pad", "rock block on a rubber pad against a rigid wall: contact time, wall force, restitution vs closed forms", buffer_pad},
-      {"paper_b_table1", "paper B Table 1: 980 kN on a concrete column, hex8 solid FE, point load vs pyramid patches", paper_b_table1},
+      {"paper_b_table1", "Lin, Cheng & Tuan's Table 1: 980 kN on a concrete column, hex8 solid FE, point load vs pyramid patches", paper_b_table1},
   };
 }
 

@@ -10,7 +10,7 @@
 using namespace dmi::design;
 
 TEST(DesignFormulas, ConcreteTensileAndCompressiveCapacities) {
-  ConcreteLimits c;  // defaults: f'c 28 MPa, f_t 3.28 MPa (paper B), phi 0.60, alpha 0.85
+  ConcreteLimits c;  // defaults: f'c 28 MPa, f_t 3.28 MPa (Lin, Cheng & Tuan), phi 0.60, alpha 0.85
   EXPECT_NEAR(c.tensile_capacity(), 0.60 * 3.28e6, 1e-6);            // 1.968 MPa
   EXPECT_NEAR(c.compressive_capacity(), 0.60 * 0.85 * 28e6, 1e-6);   // 14.28 MPa
   c.tensile_rule = "aci_rupture";                                    // f_r = 0.62 sqrt(28) = 0.62 x 5.29150 = 3.28073 MPa

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/sdof/practice_loads.hpp"
 #include "engine/sdof/sdof.hpp"
 
 namespace dmi::sdof {
@@ -127,7 +128,7 @@ TEST(SdofImpulse, PeakHandValueAndUndampedLimit) {
     EXPECT_NEAR(unit_impulse_peak({m, k, zeta}).displacement_m_per_N_s, undamped / std::numbers::e, 1e-5 * undamped);
 }
 
-// Paper B's concrete column (Lin, Cheng & Tuan, Table 1) as a cantilever SDOF, hit by a 1 t boulder at 5 m/s:
+// Lin, Cheng & Tuan's concrete column (Lin, Cheng & Tuan, Table 1) as a cantilever SDOF, hit by a 1 t boulder at 5 m/s:
 //   section: b = 2 m, depth 1.0 (crest) .. 1.6 m (base), mean 1.3 m: A = 2.6 m^2,
 //   I = 2 * 1.3^3 / 12 = 0.3661667 m^4, r = 1.3/sqrt(12) = 0.3752777 m
 //   k = 3 * 25e9 * 0.3661667 / 4^3 = 4.29101562e8 N/m;  M = 2300 * 2.6 * 4 / 2 = 11 960 kg
@@ -171,7 +172,7 @@ TEST(ImpactBoulderOnDam, RectangularAndTaperedSections) {
   EXPECT_DOUBLE_EQ(t.second_moment_m4, r.second_moment_m4);
 }
 
-// A rubber-like buffer (E = 50 MPa, 0.4 x 0.4 m contact, 0.3 m thick) in front of the paper B column:
+// A rubber-like buffer (E = 50 MPa, 0.4 x 0.4 m contact, 0.3 m thick) in front of the Lin, Cheng & Tuan column:
 //   k_buffer = 50e6 * 0.16 / 0.3 = 2.6666667e7 N/m
 //   k_eff = 1 / (1/4.2910156e8 + 1/2.6666667e7) = 2.5106419e7 N/m; sqrt(k_eff/k) = 0.2418869
 //   F_T,max = 947.0752 kN * 0.2418869 = 229.0851 kN

@@ -24,7 +24,7 @@ Elastic material(int dim) {
 }
 
 Mesh block(int dim, SlopedFace sloped = SlopedFace::upstream) {
-  TaperedBlock b;  // paper B's 4 m column: 1.6 m base, 1.0 m crest
+  TaperedBlock b;  // Lin, Cheng & Tuan's 4 m column: 1.6 m base, 1.0 m crest
   b.sloped = sloped, b.nx = 2, b.ny = 5, b.nz = 20;
   return dim == 3 ? hex8_tapered_block(b) : quad4_tapered_section(b);
 }

@@ -1,4 +1,4 @@
-// Paper B Table 1 model (engine/solid/table1.hpp; Lin, Cheng & Tuan, Table 1) on the paper's 8 x 10 x 20 hex8 mesh:
+// Lin, Cheng & Tuan Table 1 model (engine/solid/table1.hpp; Lin, Cheng & Tuan, Table 1) on the paper's 8 x 10 x 20 hex8 mesh:
 // 2079 nodes and 1600 elements, base reactions balance the 980 kN load exactly, spreading the load over a
 // pyramid patch cuts the peak stress far below the point-load value, and the largest nodal base reaction
 // is independent of how the load is spread (paper: 122.44 kN in every case).
