@@ -3,8 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 #include <vector>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 #include <vtkAxis.h>
 #include <vtkChartLegend.h>
@@ -12,8 +16,10 @@
 #include <vtkContextScene.h>
 #include <vtkContextView.h>
 #include <vtkDoubleArray.h>
+#include <vtkGL2PSExporter.h>
 #include <vtkPen.h>
 #include <vtkPlot.h>
+#include <vtkPlotPoints.h>
 #include <vtkRenderer.h>
 #include <vtkStringArray.h>
 #include <vtkTable.h>
@@ -25,8 +31,9 @@ namespace dmi::render {
 
 namespace {
 
-// About `target` ticks at 1-2-5 x 10^k steps covering [lo, hi]; the axis range is rounded out to whole steps.
-void nice_axis(vtkAxis* a, double lo, double hi, int target = 6) {
+// About `target` ticks at 1-2-5 x 10^k steps covering [lo, hi]; the axis range is rounded out to whole steps, or with
+// `tight` ends at the data (ticks inside it).
+void nice_axis(vtkAxis* a, double lo, double hi, int target = 6, bool tight = false) {
   if (!(hi > lo)) hi = lo + 1;
   const double raw = (hi - lo) / target, p = std::pow(10.0, std::floor(std::log10(raw)));
   double step = 10 * p;
@@ -35,11 +42,12 @@ void nice_axis(vtkAxis* a, double lo, double hi, int target = 6) {
       step = m * p;
       break;
     }
-  const double a0 = std::floor(lo / step + 1e-9) * step, a1 = std::ceil(hi / step - 1e-9) * step;
+  const double a0 = tight ? std::ceil(lo / step - 1e-9) * step : std::floor(lo / step + 1e-9) * step;
+  const double a1 = tight ? std::floor(hi / step + 1e-9) * step : std::ceil(hi / step - 1e-9) * step;
   auto ticks = vtkSmartPointer<vtkDoubleArray>::New();
   for (double t = a0; t <= a1 + 0.5 * step; t += step) ticks->InsertNextValue(std::abs(t) < 1e-12 * step ? 0.0 : t);
   a->SetBehavior(vtkAxis::FIXED);
-  a->SetRange(a0, a1);
+  a->SetRange(tight ? lo : a0, tight ? hi : a1);
   a->SetCustomTickPositions(ticks);
 }
 
@@ -125,6 +133,8 @@ void render_chart(const ChartSpec& spec, const std::string& path) {
     p->SetWidth(c.width);
     p->SetLabel(c.label);
     if (c.dashed) p->GetPen()->SetLineType(vtkPen::DASH_LINE);
+    if (!c.points)
+      if (auto* pp = vtkPlotPoints::SafeDownCast(p)) pp->SetMarkerStyle(vtkPlotPoints::NONE);  // no raster sprites in the SVG
     tables.push_back(t);
   }
   double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
@@ -136,7 +146,7 @@ void render_chart(const ChartSpec& spec, const std::string& path) {
       x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
     }
   if (spec.log_x) log_axis(bottom, x0, x1);
-  else nice_axis(bottom, x0, x1, 8);
+  else nice_axis(bottom, x0, x1, 8, spec.x_tight);
   if (spec.log_y) log_axis(left, y0, y1);
   else nice_axis(left, y0, y1, 6);
   chart->SetShowLegend(true);
@@ -145,6 +155,31 @@ void render_chart(const ChartSpec& spec, const std::string& path) {
   chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
   chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
   write_png(win, path);
+  if (!spec.svg_path.empty()) {
+    // The same chart as vector graphics (GL2PS): lines and text stay sharp in the PDF.
+    const std::string base = spec.svg_path.substr(0, spec.svg_path.size() - 4);
+    auto ex = vtkSmartPointer<vtkGL2PSExporter>::New();
+    ex->SetRenderWindow(win);
+    ex->SetFileFormatToSVG();
+    ex->SetFilePrefix((base + ".tmp").c_str());
+    ex->CompressOff();
+    ex->SetSortToOff();
+    ex->DrawBackgroundOn();  // the OpenGL2 backend draws it in any case
+    ex->TextAsPathOff();
+    {
+      // GL2PS prints a warning on stderr for the background, a raster layer it cannot embed without libpng support
+      // (Debian's build); the page behind the chart is white, so nothing is lost. fd 2 is pointed away meanwhile.
+      std::fflush(stderr);
+      const int saved = dup(2), null = open("/dev/null", O_WRONLY);
+      if (null >= 0) dup2(null, 2), close(null);
+      ex->Write();
+      std::fflush(stderr);
+      if (saved >= 0) dup2(saved, 2), close(saved);
+    }
+    std::error_code ec;
+    std::filesystem::rename(base + ".tmp.svg", spec.svg_path, ec);
+    if (ec) throw std::runtime_error(spec.svg_path + ": cannot write the SVG (" + ec.message() + ")");
+  }
 }
 
 }  // namespace dmi::render

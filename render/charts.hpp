@@ -20,10 +20,12 @@ struct ChartSpec {
   std::vector<Curve> curves;
   int width = 1600, height = 900;
   double x_max = 0;  // > 0: the x axis ends here (e.g. shortly after the contact)
+  bool x_tight = true;  // the x axis spans the data exactly (a time axis ends with the record); false: whole ticks
   bool log_x = false, log_y = false;  // logarithmic axes (VTK's own ticks)
+  std::string svg_path;               // non-empty (ending .svg): the chart also as vector graphics there
 };
 
-// Writes the chart as PNG; throws std::runtime_error when no curve has two points.
+// Writes the chart as PNG (and as SVG with spec.svg_path); throws std::runtime_error when no curve has two points.
 void render_chart(const ChartSpec& spec, const std::string& path);
 
 // A horizontal (or, with vertical = true, vertical) limit line across [a, b] as a dashed curve.

@@ -201,19 +201,54 @@ double nice_scale(double target) {  // 1, 2, 5 x 10^k not above target
 }  // namespace
 
 Range particle_range(const std::vector<Panel>& panels, const std::string& q) {
-  Range r{1e300, -1e300};
-  for (const auto& p : panels)
-    for (double v : particle_field(snap_of(p), q)) r.lo = std::min(r.lo, v), r.hi = std::max(r.hi, v);
-  if (!(r.hi >= r.lo)) r = {0, 0};
+  std::vector<double> v;
+  for (const auto& p : panels) {
+    const std::vector<double> f = particle_field(snap_of(p), q);
+    v.insert(v.end(), f.begin(), f.end());
+  }
+  if (v.empty()) return {0, 1.0};
+  auto rank = [&](double frac) {  // the value at this fraction of the sorted field (nearest rank)
+    const std::size_t k = std::min(v.size() - 1, static_cast<std::size_t>(std::ceil(frac * static_cast<double>(v.size()))) - (frac > 0 ? 1 : 0));
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+    return v[k];
+  };
+  Range r{q == "von_mises" ? *std::min_element(v.begin(), v.end()) : rank(0.01), rank(0.99)};
   if (r.hi <= r.lo) r.hi = r.lo + 1.0;  // a uniform field still gets a scale
   return r;
 }
+
+namespace {
+
+// Per element, the fibre stresses of largest magnitude over every history sample (signed): the envelope drawn on a
+// member_envelope panel, at the panel's own displaced shape.
+FrameState with_envelope(const Results& r, const design::FrameInfo& f, FrameState at) {
+  auto bigger = [](double& keep, double v) {
+    if (std::abs(v) > std::abs(keep)) keep = v;
+  };
+  for (std::size_t k = 0; k < r.time.size(); ++k) {
+    const FrameState s = frame_state(r, f, k);
+    for (std::size_t e = 0; e < at.elements.size(); ++e) {
+      ElementState& a = at.elements[e];
+      const ElementState& b = s.elements[e];
+      if (k == 0) a.top_i = b.top_i, a.bottom_i = b.bottom_i, a.top_j = b.top_j, a.bottom_j = b.bottom_j;
+      bigger(a.top_i, b.top_i), bigger(a.bottom_i, b.bottom_i), bigger(a.top_j, b.top_j), bigger(a.bottom_j, b.bottom_j);
+    }
+  }
+  return at;
+}
+
+FrameState panel_frame(const Panel& p) {
+  FrameState fs = frame_state(*p.results, *p.frame, nearest_sample(*p.results, snap_of(p).time));
+  return p.member_envelope ? with_envelope(*p.results, *p.frame, std::move(fs)) : fs;
+}
+
+}  // namespace
 
 Range member_range(const std::vector<Panel>& panels) {
   double m = 0;
   for (const auto& p : panels) {
     if (!p.frame || p.frame->members.empty()) continue;
-    const FrameState fs = frame_state(*p.results, *p.frame, nearest_sample(*p.results, snap_of(p).time));
+    const FrameState fs = panel_frame(p);
     for (const auto& e : fs.elements) m = std::max({m, std::abs(e.top_i), std::abs(e.bottom_i), std::abs(e.top_j), std::abs(e.bottom_j)});
   }
   return m > 0 ? Range{-m, m} : Range{-1.0, 1.0};
@@ -227,11 +262,23 @@ FieldImage render_field(const std::vector<Panel>& panels, const FieldSpec& spec,
   img.particles = spec.particle_range ? *spec.particle_range : particle_range(panels, spec.quantity);
   img.members = spec.member_range ? *spec.member_range : member_range(panels);
   const bool any_members = std::any_of(panels.begin(), panels.end(), [](const Panel& p) { return p.frame && !p.frame->members.empty(); });
+  img.peak.value = -1e300;
+  for (std::size_t i = 0; i < panels.size(); ++i) {
+    const Snapshot& s = snap_of(panels[i]);
+    const std::vector<double> f = particle_field(s, spec.quantity);
+    for (std::size_t k = 0; k < f.size(); ++k)
+      if (f[k] > img.peak.value) img.peak = {f[k], {s.position[s.dim * k], s.position[s.dim * k + 1]}, i};
+  }
+  img.clipped = img.peak.value > img.particles.hi * (1 + 1e-9) + 1e-9;
   auto win = Offscreen::instance().window(spec.width, spec.height);
   auto plut = lut(img.particles, spec.quantity != "von_mises");
   auto mlut = lut(img.members, true);
   const int font = std::max(16, spec.width / 54);  // ~9 pt when the picture is printed 180 mm wide
-  const double right = 0.76, top = 0.85;  // panels left of the bars and below the title
+  const double right = 0.76;  // panels left of the bars
+  // The title strip holds the title (wrapped once), the members' legend line and the particle-scale line.
+  const bool wrap = spec.title.size() * 0.55 * font > 0.97 * spec.width && spec.title.find(": ") != std::string::npos;
+  const int lines = 1 + (wrap ? 1 : 0) + (any_members ? 1 : 0) + (img.clipped ? 1 : 0);
+  const double top = std::min(0.85, 1.0 - (lines * 1.3 * font + 12) / spec.height);
   // Shared view box: all panels' particles and nodes, so the panels align.
   double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
   for (const auto& p : panels) {
@@ -250,7 +297,7 @@ FieldImage render_field(const std::vector<Panel>& panels, const FieldSpec& spec,
   std::vector<FrameState> states(panels.size());
   for (std::size_t i = 0; i < panels.size(); ++i)
     if (panels[i].frame && !panels[i].frame->members.empty()) {
-      states[i] = frame_state(*panels[i].results, *panels[i].frame, nearest_sample(*panels[i].results, snap_of(panels[i]).time));
+      states[i] = panel_frame(panels[i]);
       for (const auto& u : states[i].u) umax = std::max(umax, std::hypot(u[0], u[1]));
     }
   img.deform_scale = umax > 0 ? nice_scale(0.04 * size / umax) : 0;
@@ -306,11 +353,16 @@ FieldImage render_field(const std::vector<Panel>& panels, const FieldSpec& spec,
   auto title = make<vtkTextActor>();
   std::string text = spec.title;
   // Wrap a long title at its first ": " (scenario name, then what is shown).
-  if (text.size() * 0.55 * font > 0.97 * spec.width)
-    if (const auto k = text.find(": "); k != std::string::npos) text.replace(k, 2, ":\n");
+  if (wrap) text.replace(text.find(": "), 2, ":\n");
   if (img.deform_scale > 0 && any_members) {
     char b[160];
     std::snprintf(b, sizeof b, "\nmembers: faces coloured by fibre stress (tension +); magenta: centre line deformed × %g", img.deform_scale);
+    text += b;
+  }
+  if (img.clipped) {
+    char b[200];
+    std::snprintf(b, sizeof b, "\nparticles: scale to the 99th percentile, %.3g MPa; maximum %.3g MPa at (%.2f, %.2f) m", img.particles.hi / 1e6,
+                  img.peak.value / 1e6, img.peak.at[0], img.peak.at[1]);
     text += b;
   }
   title->SetInput(text.c_str());

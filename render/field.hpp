@@ -2,6 +2,7 @@
 // coloured by the extreme-fibre stress (top and bottom faces, so bending shows as two colours), the
 // members' centre line deformed at a stated scale, supports, two scalar bars with units, a title.
 #pragma once
+#include <array>
 #include <optional>
 #include <string>
 #include <utility>
@@ -29,6 +30,7 @@ struct Panel {
   const design::FrameInfo* frame = nullptr;  // null: no members
   std::size_t snapshot = 0;
   std::string heading;                       // e.g. "with buffer, t = 28.8 ms"
+  bool member_envelope = false;              // members coloured by their fibre-stress envelope over the whole run
 };
 
 struct FieldSpec {
@@ -38,18 +40,29 @@ struct FieldSpec {
   std::optional<Range> particle_range, member_range;  // fixed scales (a sequence or a comparison); else the data's
 };
 
+// The particle with the largest field value over the panels: what a robust colour scale clips.
+struct ParticlePeak {
+  double value = 0;                   // Pa
+  std::array<double, 2> at{0, 0};     // m
+  std::size_t panel = 0;
+};
+
 struct FieldImage {
   std::string path;
   int width = 0, height = 0;
   Range particles, members;  // the colour scales used (Pa)
   double deform_scale = 0;   // exaggeration of the deformed centre line (0: none drawn)
+  ParticlePeak peak;         // the largest particle value drawn
+  bool clipped = false;      // peak.value lies above the particle scale (drawn in its top colour)
 };
 
 // Renders one or more panels side by side on shared colour scales and writes a PNG.
 FieldImage render_field(const std::vector<Panel>& panels, const FieldSpec& spec, const std::string& path);
 
-// The data range of the particle field over the given panels, and of the members' fibre stresses
-// (symmetric about zero, as the member colour map is diverging).
+// The colour range of the particle field over the given panels: robust, from the 1st (signed quantities; else the
+// smallest value) to the 99th percentile, so that a few outlier particles do not wash out the rest (the picture
+// states the maximum and where it is); and of the members' fibre stresses (symmetric about zero, as the member colour
+// map is diverging; a panel with member_envelope contributes its envelope).
 Range particle_range(const std::vector<Panel>& panels, const std::string& quantity);
 Range member_range(const std::vector<Panel>& panels);
 

@@ -109,6 +109,35 @@ double governing_time(const RunData& r) {
   return num(r.design, {"verdict", "governing", "time_s"}, num(r.design, {"contact", "peak_time_s"}, end));
 }
 
+// The instant of a run's largest member fibre stress |sigma| (design.json envelopes), where the members carry the most;
+// NaN without members.
+struct MemberPeak {
+  double time = std::nan(""), value = 0;
+  std::string member;
+};
+
+MemberPeak member_peak(const RunData& r) {
+  MemberPeak p;
+  for (const auto& m : r.design["members"])
+    for (const auto& st : m["stations"])
+      for (const char* k : {"sigma_tension_max_Pa", "sigma_compression_min_Pa"}) {
+        const double v = std::abs(num(st, {k, "value"}, 0.0));
+        if (v > p.value) p = {num(st, {k, "time_s"}, std::nan("")), v, m.value("name", "")};
+      }
+  return p;
+}
+
+// What a robust particle scale left out, for the caption.
+std::string scale_note(const FieldImage& f, const std::vector<Panel>& panels) {
+  if (!f.clipped) return "";
+  char b[200];
+  std::snprintf(b, sizeof b, "; particle colours up to the 99th percentile, %.3g MPa; the largest particle value, %.3g MPa, is at (%.2f, %.2f) m",
+                f.particles.hi / 1e6, f.peak.value / 1e6, f.peak.at[0], f.peak.at[1]);
+  std::string s = b;
+  if (panels.size() > 1) s += " (" + panels[f.peak.panel].heading + ")";
+  return s;
+}
+
 std::array<unsigned char, 3> colour(std::size_t i) {
   static const std::array<unsigned char, 3> c[] = {{31, 119, 180}, {255, 127, 14}, {44, 160, 44}, {148, 103, 189}};
   return c[i % 4];
@@ -161,7 +190,8 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
     spec.title = name + ": " + qlabel + " near the governing instant (" + ms(tg) + (g.is_null() ? "" : ", " + g["title"].get<std::string>()) + ")";
     const std::string f1 = "field_" + tag + "_governing.png";
     const FieldImage gi = render_field({p}, spec, (fs::path(image_dir) / f1).string());
-    add(f1, "field_governing", r.variant, spec.title + "; picture at the nearest snapshot, t = " + ms(r.results.snapshots[sg].time), gi.width, gi.height, &gi);
+    add(f1, "field_governing", r.variant, spec.title + "; picture at the nearest snapshot, t = " + ms(r.results.snapshots[sg].time) + scale_note(gi, {p}),
+        gi.width, gi.height, &gi);
     // The sequence: initial state, contact start, contact peak, rebound (end of the pulse).
     const double t_peak = num(r.design, {"contact", "peak_time_s"}, tg);
     const double t_start = num(r.design, {"contact", "pulse", "start_s"}, 0.0), t_end = num(r.design, {"contact", "pulse", "end_s"}, t_peak);
@@ -180,25 +210,49 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
       if (!done.insert(s).second) continue;
       sspec.title = name + ": " + qlabel + ", " + what + " (t = " + ms(r.results.snapshots[s].time) + "), one colour scale for the sequence";
       const std::string f = "field_" + tag + "_seq" + std::to_string(k++) + ".png";
-      const FieldImage si = render_field({{&r.results, fr, s, what + ", t = " + ms(r.results.snapshots[s].time)}}, sspec, (fs::path(image_dir) / f).string());
-      add(f, "field_sequence", r.variant, sspec.title, si.width, si.height, &si);
+      const std::vector<Panel> one{{&r.results, fr, s, what + ", t = " + ms(r.results.snapshots[s].time)}};
+      const FieldImage si = render_field(one, sspec, (fs::path(image_dir) / f).string());
+      add(f, "field_sequence", r.variant, sspec.title + scale_note(si, one), si.width, si.height, &si);
     }
   }
-  // With vs without buffer side by side, one colour scale.
+  // With vs without buffer side by side on one colour scale, each run at its own peak member stress (comparable instants:
+  // the governing instant may be another check's, e.g. the solid FE's), then the members' envelopes over the whole run.
   if (runs.size() == 2 && !runs[0].results.snapshots.empty() && !runs[1].results.snapshots.empty()) {
-    std::vector<Panel> panels;
+    std::vector<Panel> panels, envelope;
+    std::string instants;
+    bool members = true;
     for (const auto& r : runs) {
-      const std::size_t s = nearest_snapshot(r.results, governing_time(r));
-      panels.push_back({&r.results, r.frame ? &*r.frame : nullptr, s, nice_variant(r.variant) + ", t = " + ms(r.results.snapshots[s].time)});
+      const MemberPeak mp = member_peak(r);
+      members = members && r.frame && std::isfinite(mp.time);
+      const double t = std::isfinite(mp.time) ? mp.time : governing_time(r);
+      const std::size_t s = nearest_snapshot(r.results, t);
+      const std::string at = ms(r.results.snapshots[s].time);
+      panels.push_back({&r.results, r.frame ? &*r.frame : nullptr, s, nice_variant(r.variant) + ", t = " + at});
+      envelope.push_back({&r.results, r.frame ? &*r.frame : nullptr, s, nice_variant(r.variant) + ": member envelope", true});
+      char b[160];
+      if (std::isfinite(mp.time))
+        std::snprintf(b, sizeof b, "%s%s at t = %s (peak member fibre stress %.3g MPa, %s, at %s)", instants.empty() ? "" : "; ",
+                      nice_variant(r.variant).c_str(), at.c_str(), mp.value / 1e6, mp.member.c_str(), ms(mp.time).c_str());
+      else
+        std::snprintf(b, sizeof b, "%s%s at t = %s (its governing instant, %s)", instants.empty() ? "" : "; ", nice_variant(r.variant).c_str(), at.c_str(),
+                      ms(governing_time(r)).c_str());
+      instants += b;
     }
     FieldSpec spec;
     spec.quantity = o.quantity;
     spec.width = 2400, spec.height = 1100;
     std::string name = runs[0].results.info.scenario_name;
     if (const auto k = name.rfind(" (with buffer)"); k != std::string::npos && k + 14 == name.size()) name.erase(k);
-    spec.title = name + ": " + qlabel + " near each run's governing instant, one colour scale";
+    spec.title = name + ": " + qlabel + (members ? " at each run's peak member stress" : " near each run's governing instant") + ", one colour scale";
     const FieldImage ci = render_field(panels, spec, (fs::path(image_dir) / "field_comparison.png").string());
-    add("field_comparison.png", "field_comparison", "", spec.title, ci.width, ci.height, &ci);
+    add("field_comparison.png", "field_comparison", "", spec.title + ": " + instants + scale_note(ci, panels), ci.width, ci.height, &ci);
+    if (members) {
+      spec.title = name + ": members coloured by their fibre-stress envelope over the run, one colour scale";
+      const FieldImage ei = render_field(envelope, spec, (fs::path(image_dir) / "field_envelope.png").string());
+      add("field_envelope.png", "field_comparison", "",
+          spec.title + " (at each face the largest |fibre stress| of any instant); particles at the instants of the comparison above" + scale_note(ei, envelope),
+          ei.width, ei.height, &ei);
+    }
   }
   // Charts: every run overlaid (the bare run dashed).
   auto overlay = [&](const std::string& file, const std::string& title, const std::string& ylabel, auto&& series_of, double scale,
@@ -218,8 +272,10 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
     }
     for (auto& e : extra) c.curves.push_back(e);
     if (c.curves.empty()) return;
+    c.svg_path = (fs::path(image_dir) / fs::path(file).replace_extension(".svg")).string();
     render_chart(c, (fs::path(image_dir) / file).string());
     add(file, "chart", "", title, c.width, c.height, nullptr);
+    manifest.back()["vector_file"] = fs::path(c.svg_path).filename().string();
   };
   const bool frames = std::all_of(runs.begin(), runs.end(), [](const RunData& r) { return r.frame && !r.frame->supports.empty(); });
   if (frames) {
@@ -261,6 +317,7 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
       ChartSpec e;
       e.title = "fibre stress envelope along " + member;
       e.x_label = "stress [MPa] (tension +)", e.y_label = "distance from the member start [m]";
+      e.x_tight = false;
       double smax = 0;
       for (std::size_t i = 0; i < runs.size(); ++i)
         for (const auto& m : runs[i].design["members"]) {
@@ -284,8 +341,10 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
         e.curves.push_back(limit_line("tension limit", ft, 0, smax, true));
       }
       if (!e.curves.empty()) {
+        e.svg_path = (fs::path(image_dir) / "chart_envelope.svg").string();
         render_chart(e, (fs::path(image_dir) / "chart_envelope.png").string());
         add("chart_envelope.png", "chart", "", e.title, e.width, e.height, nullptr);
+        manifest.back()["vector_file"] = "chart_envelope.svg";
       }
     }
   }

@@ -321,12 +321,14 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
   for (const char* kind : {"field_comparison", "field_governing", "chart", "field_sequence"})
     for (const auto& img : manifest.value("images", json::array())) {
       if (img["kind"] != kind) continue;
-      std::ifstream in(fs::path(image_dir) / img["file"].get<std::string>(), std::ios::binary);
+      // Charts as vector graphics where the renderer wrote them (sharp lines and text in the PDF), else the PNG.
+      const bool vector = img.contains("vector_file") && fs::exists(fs::path(image_dir) / img["vector_file"].get<std::string>());
+      std::ifstream in(fs::path(image_dir) / img[vector ? "vector_file" : "file"].get<std::string>(), std::ios::binary);
       std::stringstream ss;
       ss << in.rdbuf();
       std::string caption = img["caption"];
       if (img.contains("deform_scale") && img["deform_scale"].get<double>() > 0) caption += fmt("; members' centre line deformed × %g", img["deform_scale"].get<double>());
-      figs.push_back({{"n", std::to_string(n++)}, {"kind", img["kind"]}, {"caption", caption}, {"src", "data:image/png;base64," + base64(ss.str())}});
+      figs.push_back({{"n", std::to_string(n++)}, {"kind", img["kind"]}, {"caption", caption}, {"src", std::string(vector ? "data:image/svg+xml;base64," : "data:image/png;base64,") + base64(ss.str())}});
     }
   d["figures"] = figs;
   d["no_figures_reason"] = manifest.value("error", std::string("the runs have no snapshots or members"));

@@ -21,6 +21,7 @@
 #include "design/design.hpp"
 #include "render/charts.hpp"
 #include "render/field.hpp"
+#include "render/frame_state.hpp"
 #include "render/render_main.hpp"
 #include "render/report.hpp"
 #include "render/sha256.hpp"
@@ -113,6 +114,63 @@ TEST_F(Render, FieldPictureHasTheSizeColoursAndTheDataRangeOnItsScalarBar) {
   }
 }
 
+// One particle a hundred times hotter than the rest must not wash out the picture: the scale ends at the 99th
+// percentile, and the picture reports the clipped maximum and where it is.
+TEST_F(Render, RobustParticleScaleClipsAnOutlierAndStatesIt) {
+  json doc;
+  auto runs = dmi::render::load_runs(dir.string(), doc);
+  dmi::Results& r = runs[0].results;
+  const std::size_t snap = r.snapshots.size() - 1;
+  dmi::Snapshot& s = r.snapshots[snap];
+  // 400 particles (the percentile needs more than 100 to differ from the maximum): the run's particles repeated
+  // across the picture, von Mises rising from 0 to 399 kPa.
+  const dmi::Snapshot one = s;
+  const std::size_t n = 400;
+  s.count = n;
+  for (auto* v : {&s.position, &s.displacement, &s.velocity}) v->resize(n * s.dim);
+  s.stress.resize(6 * n), s.von_mises.resize(n), s.volume.resize(n), s.body.resize(n), s.material.resize(n);
+  for (std::size_t p = 0; p < n; ++p) {
+    const std::size_t q = p % one.count;
+    for (int d = 0; d < s.dim; ++d) s.position[s.dim * p + d] = one.position[one.dim * q + d] + (d == 1 ? 0.01 * static_cast<double>(p / one.count) : 0.0);
+    s.von_mises[p] = 1e3 * static_cast<double>(p);
+    s.volume[p] = one.volume[q], s.body[p] = one.body[q], s.material[p] = one.material[q];
+  }
+  const double top = *std::max_element(s.von_mises.begin(), s.von_mises.end());
+  const std::size_t hot = s.count / 2;
+  s.von_mises[hot] = 100 * top;
+  std::vector<double> sorted(s.von_mises.begin(), s.von_mises.end());
+  std::sort(sorted.begin(), sorted.end());
+  const double p99 = sorted[static_cast<std::size_t>(std::ceil(0.99 * static_cast<double>(s.count))) - 1];
+  dmi::render::FieldSpec spec;
+  spec.width = 1000, spec.height = 600, spec.title = "outlier";
+  const auto img = dmi::render::render_field({{&r, &*runs[0].frame, snap, "t"}}, spec, (dir / "outlier.png").string());
+  EXPECT_DOUBLE_EQ(img.particles.hi, p99);
+  EXPECT_LE(img.particles.hi, top);  // the rest of the field keeps its colours
+  EXPECT_TRUE(img.clipped);
+  EXPECT_DOUBLE_EQ(img.peak.value, 100 * top);
+  EXPECT_DOUBLE_EQ(img.peak.at[0], s.position[s.dim * hot]);
+  EXPECT_DOUBLE_EQ(img.peak.at[1], s.position[s.dim * hot + 1]);
+}
+
+// The envelope panel colours the members by the largest |fibre stress| of any history sample: the cantilever released
+// under self-weight overshoots its static 981 kPa.
+TEST_F(Render, MemberEnvelopeSpansEverySample) {
+  json doc;
+  const auto runs = dmi::render::load_runs(dir.string(), doc);
+  const dmi::Results& r = runs[0].results;
+  const auto& f = *runs[0].frame;
+  double expected = 0;
+  for (std::size_t k = 0; k < r.time.size(); ++k)
+    for (const auto& e : dmi::render::frame_state(r, f, k).elements)
+      expected = std::max({expected, std::abs(e.top_i), std::abs(e.bottom_i), std::abs(e.top_j), std::abs(e.bottom_j)});
+  const std::size_t snap = r.snapshots.size() - 1;
+  const auto env = dmi::render::member_range({{&r, &f, snap, "t", true}});
+  const auto at = dmi::render::member_range({{&r, &f, snap, "t"}});
+  EXPECT_DOUBLE_EQ(env.hi, expected);
+  EXPECT_GE(env.hi, at.hi);
+  EXPECT_GT(env.hi, 981e3);
+}
+
 TEST_F(Render, ChartIsDrawnAtItsSize) {
   dmi::render::ChartSpec c;
   c.title = "sine", c.x_label = "time [ms]", c.y_label = "force [kN]", c.width = 800, c.height = 500;
@@ -121,11 +179,20 @@ TEST_F(Render, ChartIsDrawnAtItsSize) {
   for (int k = 0; k <= 100; ++k) s.x.push_back(k), s.y.push_back(std::sin(k / 10.0));
   c.curves = {s, dmi::render::limit_line("limit", 0.8, 0, 100)};
   const fs::path png = dir / "chart.png";
+  c.svg_path = (dir / "chart.svg").string();
   dmi::render::render_chart(c, png.string());
   const Png p = read_png(png.string());
   EXPECT_EQ(p.w, 800);
   EXPECT_EQ(p.h, 500);
   EXPECT_GT(p.colours, 20u);
+  // The vector copy: lines as polylines, the title and labels as text, no raster inside.
+  std::ifstream in(c.svg_path);
+  const std::string svg((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  EXPECT_NE(svg.find("<polyline"), std::string::npos);
+  EXPECT_NE(svg.find(">sine<"), std::string::npos);
+  EXPECT_NE(svg.find(">time [ms]<"), std::string::npos);
+  EXPECT_EQ(svg.find("<image"), std::string::npos);
   EXPECT_THROW(dmi::render::render_chart({"empty", "x", "y", {}, 400, 300}, (dir / "empty.png").string()), std::runtime_error);
 }
 
@@ -141,6 +208,7 @@ TEST_F(Render, ReportHoldsEveryCheckAndItsPdfPagesRender) {
   for (const auto& c : design["runs"][0]["checks"])
     EXPECT_NE(html.find("data-check-id=\"" + c["id"].get<std::string>() + "\""), std::string::npos) << c["id"];
   EXPECT_NE(html.find("data:image/png;base64,"), std::string::npos);  // self-contained
+  EXPECT_NE(html.find("data:image/svg+xml;base64,"), std::string::npos);  // charts as vector graphics
   EXPECT_EQ(html.find("src=\"images/"), std::string::npos);
   if (files.pdf.empty()) GTEST_SKIP() << files.pdf_note;  // weasyprint is optional
   // pdftoppm renders every page; the report has at least the cover, the checks, figures, cross-checks.
