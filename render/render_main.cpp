@@ -16,6 +16,7 @@
 #include "render/charts.hpp"
 #include "render/field.hpp"
 #include "render/frame_state.hpp"
+#include "render/solid.hpp"
 
 namespace dmi::render {
 
@@ -213,6 +214,26 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
       const std::vector<Panel> one{{&r.results, fr, s, what + ", t = " + ms(r.results.snapshots[s].time)}};
       const FieldImage si = render_field(one, sspec, (fs::path(image_dir) / f).string());
       add(f, "field_sequence", r.variant, sspec.title + scale_note(si, one), si.width, si.height, &si);
+    }
+  }
+  // The solid-FE dam body of each run (its load case with the largest principal tension).
+  for (const auto& r : runs) {
+    const std::string tag = r.variant.empty() ? "run" : r.variant;
+    const std::string file = "solid_" + tag + ".png";
+    const std::string title = r.results.info.scenario_name + ": solid-FE check of the dam body (linear, static, base fixed)";
+    try {
+      if (const auto sp = render_solid(r.results, title, (fs::path(image_dir) / file).string())) {
+        char b[1024];
+        std::snprintf(b, sizeof b,
+                      "%s: load case '%s'; left the body seen from upstream and above, von Mises stress (up to %.3g MPa); right the "
+                      "vertical section across the middle of the face (y = %.2f m), maximum principal stress; the largest principal tension, "
+                      "%.3g MPa, is at x = %.2f, y = %.2f, z = %.2f m (x through the thickness, y across, z up)",
+                      title.c_str(), sp->case_name.c_str(), sp->von_mises_max / 1e6, sp->section_y, sp->principal_max / 1e6, sp->principal_at[0],
+                      sp->principal_at[1], sp->principal_at[2]);
+        add(file, "field_solid", r.variant, b, sp->width, sp->height, nullptr);
+      }
+    } catch (const std::runtime_error& e) {
+      throw InputError(r.file + ": " + e.what());
     }
   }
   // With vs without buffer side by side on one colour scale, each run at its own peak member stress (comparable instants:

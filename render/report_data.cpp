@@ -318,7 +318,7 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
   // Figures, embedded: the comparison, the governing pictures, the charts, then the sequences.
   json figs = json::array();
   int n = 1;
-  for (const char* kind : {"field_comparison", "field_governing", "chart", "field_sequence"})
+  for (const char* kind : {"field_comparison", "field_solid", "field_governing", "chart", "field_sequence"})
     for (const auto& img : manifest.value("images", json::array())) {
       if (img["kind"] != kind) continue;
       // Charts as vector graphics where the renderer wrote them (sharp lines and text in the PDF), else the PNG.

@@ -308,7 +308,8 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   if (s.solid_check.present) {
     const auto t1 = std::chrono::steady_clock::now();
     const auto it = info.documents.find("peak_contact");
-    info.documents["solid_check"] = run_solid_check(s, it == info.documents.end() ? "" : it->second);
+    auto docs = run_solid_check(s, it == info.documents.end() ? "" : it->second);
+    info.documents["solid_check"] = std::move(docs.check), info.documents["solid_field"] = std::move(docs.field);
     info.numbers["solid_check_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
   }
   info.strings["status"] = "complete";
@@ -335,7 +336,8 @@ RunOutput run_solid_only(const Scenario& s, const RunOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   RunInfo info = make_info(s, o);
   RunOutput out;
-  info.documents["solid_check"] = run_solid_check(s, "");
+  auto docs = run_solid_check(s, "");
+  info.documents["solid_check"] = std::move(docs.check), info.documents["solid_field"] = std::move(docs.field);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   info.numbers["steps"] = 0;
   info.numbers["wall_seconds"] = wall;

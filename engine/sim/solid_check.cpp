@@ -117,16 +117,32 @@ std::shared_ptr<const Factorised> factorised(const SolidCheckConfig& c) {
   return f;
 }
 
+
+// v to 6 significant digits: the field document stays compact (its JSON prints the shortest round-trip form).
+double sig6(double v) {
+  if (v == 0 || !std::isfinite(v)) return v;
+  const double p = std::pow(10.0, 5 - std::floor(std::log10(std::abs(v))));
+  return std::round(v * p) / p;
+}
+
+json field_case(const Model& m, const std::string& name, const Eigen::VectorXd& u) {
+  const StressField field = recover_stress(m.mesh, m.mat, u);
+  json vm = json::array(), s1 = json::array(), du = json::array();
+  for (const Stress6& st : field.nodal) vm.push_back(sig6(measure(st, Measure::von_mises))), s1.push_back(sig6(measure(st, Measure::max_principal)));
+  for (Eigen::Index k = 0; k < u.size(); ++k) du.push_back(sig6(u[k]));
+  return json{{"name", name}, {"von_mises_Pa", vm}, {"max_principal_Pa", s1}, {"displacement_m", du}};
+}
+
 }  // namespace
 
-std::string run_solid_check(const Scenario& s, const std::string& peak_contact_json) {
+SolidCheckDocuments run_solid_check(const Scenario& s, const std::string& peak_contact_json) {
   const SolidCheckConfig& c = s.solid_check;
   const std::shared_ptr<const Factorised> fm = factorised(c);
   const Model& m = fm->m;
   const StaticSolver& solver = fm->solver;
   const int dim = m.mesh.dim;
   const json contact = peak_contact_json.empty() ? json() : json::parse(peak_contact_json);
-  json cases = json::array();
+  json cases = json::array(), field_cases = json::array();
   for (std::size_t i = 0; i < c.loads.size(); ++i) {
     const SolidLoadConfig& l = c.loads[i];
     Eigen::VectorXd f = Eigen::VectorXd::Zero(m.mesh.n_dofs());
@@ -190,12 +206,20 @@ std::string run_solid_check(const Scenario& s, const std::string& peak_contact_j
     entry["total_base_reaction_N"] = std::vector<double>(total.data(), total.data() + total.size());
     entry["max_displacement_m"] = umax;
     cases.push_back(entry);
+    field_cases.push_back(field_case(m, l.name, sol.u));
   }
   json model{{"element", c.element}, {"cells", c.cells}, {"nodes", m.mesh.n_nodes()}, {"elements", m.mesh.n_elements()},
              {"height_m", c.height}, {"crest_thickness_m", c.crest_thickness}, {"base_thickness_m", c.base_thickness},
              {"width_m", c.width}, {"sloped_face", c.sloped_face}, {"youngs_modulus_Pa", c.youngs_modulus}, {"poisson_ratio", c.poisson_ratio},
              {"axes", dim == 3 ? "x through the thickness (downstream), y across the face, z up" : "x through the thickness (downstream), z up"}};
-  return json{{"model", model}, {"cases", cases}}.dump();
+  json nodes = json::array(), elements = json::array();
+  for (int n = 0; n < m.mesh.n_nodes(); ++n)
+    for (int d = 0; d < dim; ++d) nodes.push_back(sig6(m.mesh.nodes(n, d)));
+  for (int e = 0; e < m.mesh.n_elements(); ++e)
+    for (int c2 = 0; c2 < m.mesh.nodes_per_element(); ++c2) elements.push_back(m.mesh.elements(e, c2));
+  json field{{"dim", dim}, {"nodes_per_element", m.mesh.nodes_per_element()}, {"axes", model["axes"]}, {"nodes_m", nodes},
+             {"elements", elements}, {"cases", field_cases}};
+  return {json{{"model", model}, {"cases", cases}}.dump(), field.dump()};
 }
 
 }  // namespace dmi

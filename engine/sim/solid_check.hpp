@@ -16,8 +16,14 @@
 
 namespace dmi {
 
+struct SolidCheckDocuments {
+  std::string check;  // "solid_check": the peaks per case (design checks read this)
+  std::string field;  // "solid_field": the mesh (nodes, VTK-ordered corners) and per case the nodal von Mises, max
+                      // principal stress and displacement, 6 significant digits (the pictures read this)
+};
+
 // peak_contact_json: the run's "peak_contact" document ("" when the run had none). Throws
 // InputError when a simulation load case has no contact loads to take.
-std::string run_solid_check(const Scenario& s, const std::string& peak_contact_json);
+SolidCheckDocuments run_solid_check(const Scenario& s, const std::string& peak_contact_json);
 
 }  // namespace dmi

@@ -24,6 +24,7 @@
 #include "render/frame_state.hpp"
 #include "render/render_main.hpp"
 #include "render/report.hpp"
+#include "render/solid.hpp"
 #include "render/sha256.hpp"
 
 namespace fs = std::filesystem;
@@ -229,4 +230,48 @@ TEST_F(Render, WithoutWeasyprintTheHtmlIsStillWritten) {
   EXPECT_TRUE(fs::exists(files.html));
   EXPECT_TRUE(files.pdf.empty());
   EXPECT_NE(files.pdf_note.find("weasyprint not found"), std::string::npos) << files.pdf_note;
+}
+
+// The solid-FE body picture of Lin, Cheng & Tuan's Table 1 model: drawn at its size, its stated peaks those of the
+// field document and, to its 6 digits, of the check's own nodal peaks; a damaged field is refused with its key.
+TEST(RenderSolid, TableOnePictureStatesThePeaksOfTheCheck) {
+  unsetenv("DISPLAY");
+  const fs::path d = fs::temp_directory_path() / ("dmi_solid_" + std::to_string(::getpid()));
+  fs::remove_all(d);
+  ASSERT_EQ(sh(std::string(DMI_BINARY) + " simulate " + DMI_SOURCE_DIR + "/examples/paper_b_table1.json -o " + d.string() + " -q"), 0);
+  json doc;
+  auto runs = dmi::render::load_runs(d.string(), doc);
+  ASSERT_EQ(runs.size(), 1u);
+  const auto pic = dmi::render::render_solid(runs[0].results, "table 1", (d / "solid.png").string(), 1200, 600);
+  ASSERT_TRUE(pic.has_value());
+  const Png p = read_png((d / "solid.png").string());
+  EXPECT_EQ(p.w, 1200);
+  EXPECT_EQ(p.h, 600);
+  EXPECT_GT(p.colours, 100u);
+  // The case drawn is the one of largest nodal principal tension; its peaks agree with the solid_check document.
+  const json check = json::parse(runs[0].results.info.documents.at("solid_check"));
+  double best = -1, vm = 0;
+  std::string name;
+  for (const auto& c : check["cases"]) {
+    const double s1 = c["peaks"]["max_principal"]["node"]["value_Pa"];
+    if (s1 > best) best = s1, vm = c["peaks"]["von_mises"]["node"]["value_Pa"], name = c["name"];
+  }
+  EXPECT_EQ(pic->case_name, name);
+  EXPECT_NEAR(pic->principal_max / best, 1.0, 1e-5);  // the field holds 6 significant digits
+  EXPECT_NEAR(pic->von_mises_max / vm, 1.0, 1e-5);
+  EXPECT_NEAR(pic->section_y, 1.0, 1e-9);  // the 2 m face's middle
+  // A non-finite stress (written as null) is an error naming the document, never a picture.
+  json field = json::parse(runs[0].results.info.documents.at("solid_field"));
+  field["cases"][0]["von_mises_Pa"][5] = nullptr;
+  runs[0].results.info.documents["solid_field"] = field.dump();
+  try {
+    dmi::render::render_solid(runs[0].results, "bad", (d / "bad.png").string(), 600, 300);
+    ADD_FAILURE() << "a damaged field was drawn";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("/documents/solid_field von_mises_Pa"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(d / "bad.png"));
+  runs[0].results.info.documents.erase("solid_field");
+  EXPECT_FALSE(dmi::render::render_solid(runs[0].results, "none", (d / "none.png").string()).has_value());
+  fs::remove_all(d);
 }
