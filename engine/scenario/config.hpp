@@ -26,6 +26,7 @@ struct AnalysisConfig {
   double cfl = 0.5;                                  // fraction of the CFL limit
   DVec gravity;                                      // m/s^2
   double max_steps = 1e7;                            // refuse runs estimated longer (end_time / first step)
+  double max_wall_hours = 48;                        // refuse runs estimated longer on one core (a lower bound)
 };
 
 struct MpmConfig {

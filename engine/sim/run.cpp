@@ -132,10 +132,13 @@ RunInfo make_info(const Scenario& s, const RunOptions& o) {
 }
 
 // A run that cannot finish is refused before anything is written: its step count estimated from the first step (the
-// step only shrinks in an impact, so this is a lower bound), against /analysis/max_steps. Returns the estimate.
-template <int D> double step_budget(const Solver<D>& solver, const Scenario& s) {
+// step only shrinks in an impact, so this is a lower bound), against /analysis/max_steps, and its wall time on one core
+// at the particle kernel's speed (50 ns per particle and step plus 10 us per step, docs/performance.md: a lower bound,
+// scenes with damping or members cost more per particle) against /analysis/max_wall_hours.
+template <int D> RunEstimate step_budget(const Solver<D>& solver, const Scenario& s) {
   const double dt0 = solver.stable_time_step(s.analysis.end_time);
-  const double est = s.analysis.end_time / dt0;
+  const double est = s.analysis.end_time / dt0, np = static_cast<double>(solver.scene().particles.size());
+  const double wall = est * (np * 50e-9 + 10e-6);
   std::ostringstream end, os;
   end << s.analysis.end_time;
   os.precision(3);
@@ -144,8 +147,12 @@ template <int D> double step_budget(const Solver<D>& solver, const Scenario& s) 
   else if (!(est <= s.analysis.max_steps))
     os << "a run of at most /analysis/max_steps = " << s.analysis.max_steps << " steps: at its first step (dt = " << dt0
        << " s) it needs about " << est << " steps; shorten end_time or raise /analysis/max_steps";
+  else if (!(wall <= 3600 * s.analysis.max_wall_hours))
+    os << "a run of at most /analysis/max_wall_hours = " << s.analysis.max_wall_hours << " h: about " << est << " steps of " << np
+       << " particles take at least " << wall / 3600 << " h on one core (50 ns per particle and step); shorten end_time, coarsen the "
+       << "grid or raise /analysis/max_wall_hours";
   else
-    return est;
+    return {est, wall};
   throw InputError(s.source_file, "/analysis/end_time", end.str(), os.str());
 }
 
@@ -167,7 +174,10 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
     if (o.progress != ProgressMode::quiet) std::fprintf(stderr, "damimpact: note: %s\n", msg);
   }
 
-  if (!o.restart) info.numbers["steps_estimate"] = step_budget(solver, s);
+  if (!o.restart) {
+    const RunEstimate e = step_budget(solver, s);
+    info.numbers["steps_estimate"] = e.steps, info.numbers["wall_estimate_s"] = e.wall_s;
+  }
 
   std::unique_ptr<ResultsWriter> writer;
   const bool files = !o.out_dir.empty();
@@ -356,10 +366,10 @@ RunOutput run_solid_only(const Scenario& s, const RunOptions& o) {
 
 }  // namespace
 
-void preflight(const Scenario& s) {
-  if (s.bodies.empty()) return;
-  if (s.analysis.dimension == 2) step_budget(Solver<2>(build_scene<2>(s)), s);
-  else step_budget(Solver<3>(build_scene<3>(s)), s);
+RunEstimate preflight(const Scenario& s) {
+  if (s.bodies.empty()) return {};
+  if (s.analysis.dimension == 2) return step_budget(Solver<2>(build_scene<2>(s)), s);
+  return step_budget(Solver<3>(build_scene<3>(s)), s);
 }
 
 RunOutput run_scenario(const Scenario& s, const RunOptions& o) {

@@ -31,8 +31,13 @@ struct RunOutput {
 // Throws InputError for a scenario that cannot be built, RunError when the run fails, and
 // std::runtime_error for file errors.
 RunOutput run_scenario(const Scenario& s, const RunOptions& o);
-// What a run checks before it writes anything (the scene builds; the estimated step count is within
-// /analysis/max_steps): --dry-run. Throws InputError.
-void preflight(const Scenario& s);
+struct RunEstimate {
+  double steps = 0;   // end_time over the first step (a lower bound)
+  double wall_s = 0;  // on one core at the particle kernel's speed (a lower bound)
+};
+// What a run checks before it writes anything (the scene builds; the estimated step count and wall time are within
+// /analysis/max_steps and /analysis/max_wall_hours): --dry-run. Returns the estimate (zero without bodies). Throws
+// InputError.
+RunEstimate preflight(const Scenario& s);
 
 }  // namespace dmi

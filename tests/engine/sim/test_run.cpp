@@ -159,6 +159,17 @@ TEST(RunCli, OverflowedRecordStopsTheRun) {
   r = run_cli("simulate " + (out / "long.json").string() + " --dry-run");
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_NE(r.err.find("expected a run of at most /analysis/max_steps = 1e+07 steps"), std::string::npos) << r.err;
+  // The dry run states the estimate; a wall-time limit below it refuses the run with the estimate.
+  r = run_cli("simulate " + std::string(DMI_SOURCE_DIR) + "/examples/wall_impact.json --dry-run --expand");  // the summary on stderr
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find(" steps, at least "), std::string::npos) << r.err;
+  j = j0;
+  j["analysis"]["max_wall_hours"] = 1e-9;
+  std::ofstream(out / "slow.json") << j.dump(2);
+  r = run_cli("simulate " + (out / "slow.json").string() + " --dry-run");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("expected a run of at most /analysis/max_wall_hours = 1e-09 h: about"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("raise /analysis/max_wall_hours"), std::string::npos) << r.err;
   j = j0;
   j["materials"][0]["density"] = 1e307;
   j["bodies"][0]["velocity"] = {-100, 0};
