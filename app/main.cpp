@@ -48,6 +48,19 @@ dmi::ProgressMode progress_mode(bool quiet, const std::string& p) {
 // print the low-level scenario the presets expand to instead (stdout, runnable as a scenario file;
 // the summaries go to stderr).
 int dry_run_report(const std::string& file, const std::vector<dmi::ScenarioVariant>& variants, bool expand) {
+  // The parser kept each variant's expansion (or, without presets, the file as given): printed first, so that a
+  // scene that cannot be built can be read at the paths its error names.
+  auto low_level = [](const dmi::Scenario& s) { return nlohmann::json::parse(s.expanded_text.empty() ? s.source_text : s.expanded_text); };
+  if (expand) {
+    if (variants.size() == 1) {
+      std::cout << low_level(variants[0].scenario).dump(1) << "\n";
+    } else {
+      nlohmann::json all = nlohmann::json::object();
+      for (const auto& v : variants) all[v.label] = low_level(v.scenario);
+      std::cout << all.dump(1) << "\n";
+    }
+    std::cout.flush();
+  }
   for (const auto& v : variants) {
     const dmi::Scenario& s = v.scenario;
     const dmi::RunEstimate e = dmi::preflight(s);
@@ -56,16 +69,6 @@ int dry_run_report(const std::string& file, const std::vector<dmi::ScenarioVaria
     std::fprintf(expand ? stderr : stdout, "%s%s%s: valid scenario '%s' (%dD, %zu bodies, %zu materials, %zu walls, %zu members%s)\n", file.c_str(),
                  v.label.empty() ? "" : " / ", v.label.c_str(), s.name.c_str(), s.analysis.dimension, s.bodies.size(), s.materials.size(),
                  s.walls.size(), s.structure.members.size(), cost);
-  }
-  if (!expand) return 0;
-  // The parser kept each variant's expansion (or, without presets, the file as given).
-  auto low_level = [](const dmi::Scenario& s) { return nlohmann::json::parse(s.expanded_text.empty() ? s.source_text : s.expanded_text); };
-  if (variants.size() == 1) {
-    std::cout << low_level(variants[0].scenario).dump(1) << "\n";
-  } else {
-    nlohmann::json all = nlohmann::json::object();
-    for (const auto& v : variants) all[v.label] = low_level(v.scenario);
-    std::cout << all.dump(1) << "\n";
   }
   return 0;
 }

@@ -233,6 +233,8 @@ struct Scenario {
   std::string expanded_text; // the low-level scenario the presets expanded into ("" without presets)
   std::string variant;       // "" or with_buffer / without_buffer (compare)
   std::string design_basis_text;  // the design_basis object ("" when absent), for design/'s estimates
+  // The file for messages about the scene as built: a preset scenario's paths are those of its expansion, said so.
+  std::string message_source() const { return expanded_text.empty() ? source_file : source_file + " (expanded presets; see --dry-run --expand)"; }
 };
 
 }  // namespace dmi

@@ -22,7 +22,7 @@ template <int D> void check_overlaps(const Scenario& s, const Scene<D>& sc) {
         std::ostringstream os;
         os << "a body that does not overlap body '" << s.bodies[a].name << "' (its particle " << i - body.begin << " at ("
            << sc.particles.x[i].transpose() << ") lies inside it); move or resize one of them";
-        throw InputError(s.source_file, "/bodies/" + std::to_string(b) + "/shape", "", os.str());
+        throw InputError(s.message_source(), "/bodies/" + std::to_string(b) + "/shape", "", os.str());
       }
     }
 }
@@ -45,7 +45,7 @@ void check_member_overlaps(const Scenario& s, const Scene<2>& sc) {
         std::ostringstream os;
         os << "a body clear of member '" << f.model().members[els[e].member].name << "' (its particle " << i - sc.bodies[b].begin
            << " at (" << p.transpose() << ") lies inside the member's section, " << d << " m from its centre-line); move the body or the member";
-        throw InputError(s.source_file, "/bodies/" + std::to_string(b) + "/shape", "", os.str());
+        throw InputError(s.message_source(), "/bodies/" + std::to_string(b) + "/shape", "", os.str());
       }
     }
 }
@@ -150,10 +150,10 @@ template <int D> Scene<D> build_scene(const Scenario& s) {
       std::ostringstream os;
       os << "a body whose particles lie at least half a cell inside the grid; particle " << i - body.begin << " at ("
          << sc.particles.x[i].transpose() << ") does not";
-      throw InputError(s.source_file, "/bodies/" + std::to_string(b) + "/shape", "", os.str());
+      throw InputError(s.message_source(), "/bodies/" + std::to_string(b) + "/shape", "", os.str());
     }
     if (body.end == body.begin)
-      throw InputError(s.source_file, "/bodies/" + std::to_string(b) + "/shape", "",
+      throw InputError(s.message_source(), "/bodies/" + std::to_string(b) + "/shape", "",
                        "a shape that contains at least one particle position (it is smaller than the particle spacing)");
     sc.bodies.push_back(body);
   }
@@ -200,7 +200,7 @@ template <int D> Scene<D> build_scene(const Scenario& s) {
       // A built structure stands in equilibrium under its own weight at t = 0.
       if (s.structure.self_weight && s.structure.initial_state == FrameInitialState::static_equilibrium) sc.frame->solve_static();
     } catch (const std::invalid_argument& e) {  // e.g. a mechanism: the parser cannot see it
-      throw InputError(s.source_file, "/structure", "", std::string("a stable frame (") + e.what() + ")");
+      throw InputError(s.message_source(), "/structure", "", std::string("a stable frame (") + e.what() + ")");
     }
     sc.coupling = build_coupling(s, sc);
     if constexpr (D == 2) check_member_overlaps(s, sc);

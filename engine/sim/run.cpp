@@ -153,7 +153,7 @@ template <int D> RunEstimate step_budget(const Solver<D>& solver, const Scenario
        << "grid or raise /analysis/max_wall_hours";
   else
     return {est, wall};
-  throw InputError(s.source_file, "/analysis/end_time", end.str(), os.str());
+  throw InputError(s.message_source(), "/analysis/end_time", end.str(), os.str());
 }
 
 template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {

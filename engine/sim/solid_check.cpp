@@ -166,7 +166,7 @@ SolidCheckDocuments run_solid_check(const Scenario& s, const std::string& peak_c
         add_pressure_profile(m.mesh, m.mat, Face::upstream, {l.height - h, l.height, l.height + h}, {0.0, l.force / (W * h), 0.0}, f);
     } else {
       if (contact.is_null())
-        throw InputError(s.source_file, "/solid_check/loads/" + std::to_string(i) + "/type", "\"simulation\"",
+        throw InputError(s.message_source(), "/solid_check/loads/" + std::to_string(i) + "/type", "\"simulation\"",
                          "a run in which the members were touched (no contact loads were recorded)");
       const std::string member = l.member.empty() ? s.structure.members.front().name : l.member;
       double resultant = 0;

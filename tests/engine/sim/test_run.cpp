@@ -203,3 +203,23 @@ TEST(RunHealth, CourantAndJacobianAreRecorded) {
   EXPECT_GT(j, 0.3);
   EXPECT_LT(j, 1.0);
 }
+
+// A preset scenario's scene-building and run-budget errors name the expansion's paths and say so, and --dry-run
+// --expand prints that expansion even when the scene cannot be built.
+TEST(RunCli, PresetBuildErrorsPointToTheExpansion) {
+  const fs::path out = fresh_dir("preset_budget");
+  fs::create_directories(out);
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(std::string(DMI_SOURCE_DIR) + "/examples/concrete_dam_boulder_buffer.json"));
+  j["analysis"] = {{"end_time", 1e12}};
+  std::ofstream(out / "long.json") << j.dump(2);
+  Cli r = run_cli("simulate " + (out / "long.json").string() + " --dry-run");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("long.json (expanded presets; see --dry-run --expand): /analysis/end_time = 1e+12"), std::string::npos) << r.err;
+  const std::string cmd = std::string(DMI_BINARY) + " simulate " + (out / "long.json").string() + " --dry-run --expand > " + (out / "x.json").string() +
+                          " 2> /dev/null";
+  const int rc = std::system(cmd.c_str());
+  EXPECT_EQ(WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, 2);
+  const nlohmann::json x = nlohmann::json::parse(std::ifstream(out / "x.json"));
+  EXPECT_EQ(x["with_buffer"]["analysis"]["end_time"], 1e12);  // the expansion, readable at the error's path
+  fs::remove_all(out);
+}
