@@ -421,8 +421,10 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int rc = app.exit(e);
-    return rc == 0 ? 0 : 2;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    // One line on stderr, like every other input error.
+    std::fprintf(stderr, "damimpact: error: %s (run with --help for the options)\n", e.what());
+    return 2;
   }
   try {
     for (const auto& [cmd, folder] : {std::pair{sim, &out}, std::pair{run, &out}, std::pair{swp, &so.out_dir}})

@@ -1,6 +1,8 @@
 // The run driver end to end through the CLI: files written, readable and consistent; a failed run
 // exits 2 with one message and leaves no complete-looking results.
 #include <gtest/gtest.h>
+
+#include <algorithm>
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -128,7 +130,13 @@ TEST(RunCli, NumbersAndFoldersAreRangeChecked) {
     const Cli r = run_cli("simulate " + ex + " -q -o " + out.string() + " " + args);
     EXPECT_EQ(r.status, 2) << args;
     EXPECT_NE(r.err.find(msg), std::string::npos) << args << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
   }
+  // An option the command does not have is named, on one line.
+  Cli u = run_cli("simulate " + ex + " --bogus");
+  EXPECT_EQ(u.status, 2);
+  EXPECT_NE(u.err.find("damimpact: error: The following argument was not expected: --bogus"), std::string::npos) << u.err;
+  EXPECT_EQ(std::count(u.err.begin(), u.err.end(), '\n'), 1) << u.err;
   Cli r = run_cli("simulate " + ex + " -q -o ''");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("-o/--out = \"\": expected an output folder"), std::string::npos) << r.err;
