@@ -66,7 +66,6 @@ double TaperedBlock::x_upstream(double z) const {
   }
   return NAN;
 }
-double TaperedBlock::x_downstream(double z) const { return x_upstream(z) + thickness(z); }
 
 void TaperedBlock::validate(int dim) const {
   auto positive = [](double v, const char* what) {

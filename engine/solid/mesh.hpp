@@ -47,11 +47,11 @@ struct TaperedBlock {
   SlopedFace sloped = SlopedFace::upstream;
   int nx = 8, ny = 10, nz = 20;    // elements through thickness, across width, up the height
 
-  // x of the upstream and downstream faces at height z. The vertical face (if any) stays on its
-  // side of the base: downstream face at x = t_b when the upstream face slopes, upstream at x = 0 otherwise.
+  // Thickness and x of the upstream face at height z (the downstream face is at x_upstream + thickness). The vertical
+  // face (if any) stays on its side of the base: downstream face at x = t_b when the upstream face slopes, upstream at
+  // x = 0 otherwise.
   double thickness(double z) const;
   double x_upstream(double z) const;
-  double x_downstream(double z) const;
   void validate(int dim) const;
 };
 

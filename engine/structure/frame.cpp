@@ -65,7 +65,6 @@ int Frame::nnodes() const { return impl_->sys.ndof() / 3; }
 int Frame::nelements() const { return impl_->sys.nelements(); }
 const Eigen::VectorXd& Frame::displacement() const { return impl_->state.d; }
 const Eigen::VectorXd& Frame::velocity() const { return impl_->state.v; }
-const Eigen::VectorXd& Frame::acceleration() const { return impl_->state.a; }
 double Frame::time() const { return impl_->state.t; }
 
 Vec2 Frame::node_position(int n) const {

@@ -114,7 +114,6 @@ class Frame {
   // State, global DOF vectors of size ndof() (constrained entries stay 0).
   const Eigen::VectorXd& displacement() const;
   const Eigen::VectorXd& velocity() const;
-  const Eigen::VectorXd& acceleration() const;
   double time() const;
   Vec2 node_position(int n) const;   // current (X + u)
 
