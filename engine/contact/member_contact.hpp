@@ -93,12 +93,17 @@ template <int D> class MemberContact {
     w.put(stats_), w.put(force_);
     save_loads(w, loads_);
     w.put(held_);
+    // The next step's implicit damping holds the stuck nodes of this one.
+    w.put<std::uint64_t>(loaded_.size());
+    for (const Loaded& l : loaded_) w.put(l.k), w.put(l.n), w.put(l.vstar), w.put(l.q), w.put(l.mode), w.put(l.pressed);
   }
   void load_state(StateReader& r) {
     r.tag("member_contact");
     r.get(stats_), r.get(force_);
     load_loads(r, loads_);
     r.get(held_);
+    loaded_.resize(r.get<std::uint64_t>());
+    for (Loaded& l : loaded_) r.get(l.k), r.get(l.n), r.get(l.vstar), r.get(l.q), r.get(l.mode), r.get(l.pressed);
   }
 
  private:

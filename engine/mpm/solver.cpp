@@ -272,7 +272,7 @@ template <int D> void Solver<D>::save_state(StateWriter& w) const {
   w.put<std::uint8_t>(scene_.frame ? 1 : 0);
   if (scene_.frame) scene_.frame->save_state(w);
   if (members_) members_->save_state(w);
-  w.put(viscosity_ ? viscosity_->dissipated() : 0.0);
+  if (viscosity_) viscosity_->save_state(w); else w.put(0.0);  // load_state reads one or the other
   if (rigid_) rigid_->save_state(w);
 }
 

@@ -53,6 +53,7 @@ template <int D> class Solver {
   double min_jacobian() const;
   const Scene<D>& scene() const { return scene_; }
   const MemberContact<D>* member_contact() const { return members_.get(); }
+  const ImplicitViscosity<D>* viscosity() const { return viscosity_.get(); }
   Scene<D>& scene() { return scene_; }
   // The whole dynamic state (time, step count, particles, material history, members, the last binning's order),
   // for checkpoints: a solver built from the same scenario and given load_state() steps on bit for bit.

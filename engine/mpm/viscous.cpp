@@ -224,17 +224,36 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
     A_.resize(nf, nf);
     A_.setFromTriplets(triplets_.begin(), triplets_.end());
     // The ordering and symbolic factorisation are kept while the pattern is (the body moves a fraction of a cell
-    // per step: the node set changes every few steps).
+    // per step: the node set changes every few steps), and so is the numeric factor: while the pattern holds, the
+    // last factor preconditions conjugate gradients on this step's matrix (A changes little per step), and the
+    // matrix is factorised afresh only when that does not converge within a few iterations.
     const bool same = outer_.size() == static_cast<std::size_t>(nf + 1) && inner_.size() == static_cast<std::size_t>(A_.nonZeros()) &&
                       std::equal(outer_.begin(), outer_.end(), A_.outerIndexPtr()) && std::equal(inner_.begin(), inner_.end(), A_.innerIndexPtr());
-    if (!same) {
-      ldlt_.analyzePattern(A_);
-      outer_.assign(A_.outerIndexPtr(), A_.outerIndexPtr() + nf + 1);
-      inner_.assign(A_.innerIndexPtr(), A_.innerIndexPtr() + A_.nonZeros());
+    Eigen::VectorXd x;
+    if (!(same && factored_ && !stale_ && preconditioned_solve(rhs, x))) {
+      if (!same) {
+        ldlt_.analyzePattern(A_);
+        outer_.assign(A_.outerIndexPtr(), A_.outerIndexPtr() + nf + 1);
+        inner_.assign(A_.innerIndexPtr(), A_.innerIndexPtr() + A_.nonZeros());
+      }
+      ldlt_.factorize(A_);
+      factored_ = ldlt_.info() == Eigen::Success, stale_ = false;
+      factored_values_.assign(A_.valuePtr(), A_.valuePtr() + A_.nonZeros());
+      ++stats_.factorisations;
+      if (!factored_) throw RunError("body '" + b.name + "': the implicit viscous system could not be factorised");
+      // What a factorisation costs in solves (~sum of squared column counts of L against a solve and a product):
+      // CG on an older factor may take that many iterations before refactorising is cheaper (a count, not a clock,
+      // so that runs repeat exactly).
+      const auto& L = ldlt_.matrixL().nestedExpression();
+      double flops = 0;
+      for (Eigen::Index j = 0; j < L.outerSize(); ++j) {
+        const double c = static_cast<double>(L.outerIndexPtr()[j + 1] - L.outerIndexPtr()[j]);
+        flops += c * c;
+      }
+      const double per_iteration = 4.0 * static_cast<double>(L.nonZeros()) + 4.0 * static_cast<double>(A_.nonZeros()) + 10.0 * nf;
+      budget_ = static_cast<int>(std::clamp(flops / per_iteration, 1.0, 40.0));
+      x = ldlt_.solve(rhs);
     }
-    ldlt_.factorize(A_);
-    if (ldlt_.info() != Eigen::Success) throw RunError("body '" + b.name + "': the implicit viscous system could not be factorised");
-    const Eigen::VectorXd x = ldlt_.solve(rhs);
     if (!x.allFinite()) throw RunError("body '" + b.name + "': the implicit viscous solve gave a non-finite velocity");
     for (std::size_t l = 0; l < n; ++l)
       for (int c = 0; c < D; ++c)
@@ -253,6 +272,60 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
     g.f[off + nodes_[c.l]] -= fc;
   }
   for (Index id : nodes_) local_[id] = -1;
+}
+
+// Conjugate gradients on A_ (its lower triangle stored) preconditioned by the last factor, from x = LDL^-1 b, to a
+// relative residual of 1e-10 (the step's own truncation error is far larger), within budget_ solves. Returns false
+// (x undefined) when that is not enough; a solve that needed more than half of them marks the factor stale, so
+// that the next step factorises afresh rather than try.
+template <int D> bool ImplicitViscosity<D>::preconditioned_solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+  const auto A = A_.template selfadjointView<Eigen::Lower>();
+  const double tol = 1e-10 * b.norm();
+  x = ldlt_.solve(b);
+  Eigen::VectorXd r = b - A * x;
+  int solves = 1;
+  auto done = [&] {
+    ++stats_.reused, stats_.iterations += solves - 1;
+    stale_ = 2 * solves > budget_;
+    return x.allFinite();
+  };
+  if (r.norm() <= tol) return done();
+  Eigen::VectorXd z = ldlt_.solve(r), p = z, q(b.size());
+  double rz = r.dot(z);
+  for (++solves; solves <= budget_; ++solves) {
+    q.noalias() = A * p;
+    const double alpha = rz / p.dot(q);
+    x += alpha * p, r -= alpha * q;
+    if (r.norm() <= tol) return done();
+    z = ldlt_.solve(r);
+    const double rz1 = r.dot(z);
+    p = z + (rz1 / rz) * p, rz = rz1;
+  }
+  stats_.iterations += solves - 1;
+  return false;
+}
+
+template <int D> void ImplicitViscosity<D>::save_state(StateWriter& w) const {
+  w.put(dissipated_);
+  w.put<std::uint8_t>(factored_ ? 1 : 0), w.put<std::uint8_t>(stale_ ? 1 : 0), w.put(budget_);
+  w.put(outer_), w.put(inner_), w.put(factored_values_);
+  w.put(stats_);
+}
+
+template <int D> void ImplicitViscosity<D>::load_state(StateReader& r) {
+  r.get(dissipated_);
+  factored_ = r.get<std::uint8_t>() != 0, stale_ = r.get<std::uint8_t>() != 0, r.get(budget_);
+  r.get(outer_), r.get(inner_), r.get(factored_values_);
+  r.get(stats_);
+  if (!factored_) return;
+  const Eigen::Index n = static_cast<Eigen::Index>(outer_.size()) - 1;
+  r.expect_size("the viscous factor's values", factored_values_.size(), inner_.size());
+  if (n < 1 || static_cast<std::size_t>(outer_.back()) != inner_.size()) r.expect_size("the viscous factor's pattern", inner_.size(), outer_.empty() ? 0 : static_cast<std::size_t>(outer_.back()));
+  Eigen::Map<const Eigen::SparseMatrix<double>> m(n, n, static_cast<Eigen::Index>(inner_.size()), outer_.data(), inner_.data(), factored_values_.data());
+  A_ = m;
+  ldlt_.analyzePattern(A_);
+  ldlt_.factorize(A_);
+  factored_ = ldlt_.info() == Eigen::Success;
 }
 
 template <int D> void ImplicitViscosity<D>::account(const Grid<D>& g, double dt) {

@@ -47,8 +47,14 @@ template <int D> class ImplicitViscosity {
   // dt sum_i (K_v u)_i . v^L_i.
   void account(const Grid<D>& g, double dt);
   double dissipated() const { return dissipated_; }  // J, since t = 0
-  void save_state(StateWriter& w) const { w.put(dissipated_); }
-  void load_state(StateReader& r) { r.get(dissipated_); }
+  // The dissipated energy and the factor CG reuses (as the matrix it factorised, refactorised on load), so that a
+  // restart repeats the uninterrupted run exactly.
+  void save_state(StateWriter& w) const;
+  void load_state(StateReader& r);
+  struct Stats {
+    long factorisations = 0, reused = 0, iterations = 0;  // solves by a fresh factor; by the last one (CG), CG iterations
+  };
+  const Stats& stats() const { return stats_; }
 
  private:
   struct Stencils {
@@ -59,6 +65,7 @@ template <int D> class ImplicitViscosity {
   void solve_body(Scene<D>& s, const Body& b, const Stencils& st, double a, double bv, double dt, double mass_eps, const Held& held);
   void operate(const Scene<D>& s, const Body& b, const Stencils& st, double a, double bv, const std::vector<Vec<D>>& u,
                std::vector<Vec<D>>& out) const;
+  bool preconditioned_solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
 
   std::vector<Stencils> stencils_;  // per body (damped ones only)
   std::vector<int> local_;          // field-local node -> unknown (-1: none)
@@ -80,6 +87,11 @@ template <int D> class ImplicitViscosity {
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
   Eigen::SparseMatrix<double> A_;
   std::vector<int> outer_, inner_;  // the pattern ldlt_ was analysed for
+  bool factored_ = false;           // ldlt_ holds a numeric factor (of an earlier step's matrix of that pattern)
+  std::vector<double> factored_values_;  // that matrix's values (pattern outer_, inner_)
+  bool stale_ = false;              // the last reuse came close to the budget: factorise at the next step
+  int budget_ = 1;                  // solves a preconditioned CG may take: the factorisation's cost in solves
+  Stats stats_;
   std::vector<int> pair_slot_;      // per pair of stencil entries: the offset slot
   bool probed_ = false, detected_ = false;
   std::vector<Index> acc_k_;        // this step's solved node-fields ...

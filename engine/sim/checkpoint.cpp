@@ -10,7 +10,7 @@
 
 namespace dmi {
 namespace {
-constexpr char kMagic[8] = {'D', 'M', 'I', 'C', 'K', 'P', 'T', '2'};  // 2: particles carry their surface reach
+constexpr char kMagic[8] = {'D', 'M', 'I', 'C', 'K', 'P', 'T', '3'};  // 2: particles carry their surface reach; 3: member contact's loaded nodes, the viscous factor
 }
 
 std::uint64_t fnv1a(const std::string& bytes, std::uint64_t h) {

@@ -308,6 +308,11 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
     const std::string doc = rec.peak_contact_document(*solver.scene().frame);
     if (!doc.empty()) info.documents["peak_contact"] = doc;
   }
+  if (const auto* iv = solver.viscosity()) {
+    info.numbers["viscous_factorisations"] = static_cast<double>(iv->stats().factorisations);
+    info.numbers["viscous_factor_reuses"] = static_cast<double>(iv->stats().reused);
+    info.numbers["viscous_cg_iterations"] = static_cast<double>(iv->stats().iterations);
+  }
   if (const auto* mc = solver.member_contact()) {
     const MemberContactStats& st = mc->stats();
     info.numbers["member_contact_candidates"] = static_cast<double>(st.candidates);
