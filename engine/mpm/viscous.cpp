@@ -223,14 +223,15 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
   if (nf > 0) {
     A_.resize(nf, nf);
     A_.setFromTriplets(triplets_.begin(), triplets_.end());
-    // The ordering and symbolic factorisation are kept while the pattern is (the body moves a fraction of a cell
-    // per step: the node set changes every few steps), and so is the numeric factor: while the pattern holds, the
-    // last factor preconditions conjugate gradients on this step's matrix (A changes little per step), and the
-    // matrix is factorised afresh only when that does not converge within a few iterations.
-    const bool same = outer_.size() == static_cast<std::size_t>(nf + 1) && inner_.size() == static_cast<std::size_t>(A_.nonZeros()) &&
-                      std::equal(outer_.begin(), outer_.end(), A_.outerIndexPtr()) && std::equal(inner_.begin(), inner_.end(), A_.innerIndexPtr());
+    // The last step's factor preconditions conjugate gradients on this step's matrix (A changes little per step),
+    // mapped onto this step's unknowns by node and component (the body moves a fraction of a cell per step and
+    // contact holds and releases components: the set changes, most of it stays; new unknowns take Jacobi). The
+    // matrix is factorised afresh when too few unknowns map or CG does not converge within the budget; the ordering
+    // and symbolic factorisation are kept while the pattern is.
     Eigen::VectorXd x;
-    if (!(same && factored_ && !stale_ && preconditioned_solve(rhs, x))) {
+    if (!(factored_ && !stale_ && map_onto_factor(off, nf) && preconditioned_solve(rhs, x))) {
+      const bool same = outer_.size() == static_cast<std::size_t>(nf + 1) && inner_.size() == static_cast<std::size_t>(A_.nonZeros()) &&
+                        std::equal(outer_.begin(), outer_.end(), A_.outerIndexPtr()) && std::equal(inner_.begin(), inner_.end(), A_.innerIndexPtr());
       if (!same) {
         ldlt_.analyzePattern(A_);
         outer_.assign(A_.outerIndexPtr(), A_.outerIndexPtr() + nf + 1);
@@ -241,6 +242,11 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
       factored_values_.assign(A_.valuePtr(), A_.valuePtr() + A_.nonZeros());
       ++stats_.factorisations;
       if (!factored_) throw RunError("body '" + b.name + "': the implicit viscous system could not be factorised");
+      factor_key_.assign(static_cast<std::size_t>(nf), 0);
+      for (std::size_t l = 0; l < n; ++l)
+        for (int c = 0; c < D; ++c)
+          if (const int r = dof_[l * D + c]; r >= 0) factor_key_[static_cast<std::size_t>(r)] = (off + nodes_[l]) * D + c;
+      index_factor_keys(g.m.size() * D);
       // What a factorisation costs in solves (~sum of squared column counts of L against a solve and a product):
       // CG on an older factor may take that many iterations before refactorising is cheaper (a count, not a clock,
       // so that runs repeat exactly).
@@ -274,14 +280,62 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
   for (Index id : nodes_) local_[id] = -1;
 }
 
-// Conjugate gradients on A_ (its lower triangle stored) preconditioned by the last factor, from x = LDL^-1 b, to a
+// The factor's unknowns by key (node-field x D + component) -> index, in a table over all node-fields; the previous
+// factor's entries are cleared first.
+template <int D> void ImplicitViscosity<D>::index_factor_keys(std::size_t keys) {
+  if (factor_slot_.size() != keys) factor_slot_.assign(keys, -1);
+  for (Index k : slot_keys_) factor_slot_[static_cast<std::size_t>(k)] = -1;
+  for (std::size_t i = 0; i < factor_key_.size(); ++i) factor_slot_[static_cast<std::size_t>(factor_key_[i])] = static_cast<int>(i);
+  slot_keys_ = factor_key_;
+}
+
+// This step's unknowns onto the factor's (map_: -1 where the factor has none); false when fewer than 90 % map (a
+// different body or a large change: factorise instead) or the table does not fit this grid.
+template <int D> bool ImplicitViscosity<D>::map_onto_factor(Index off, int nf) {
+  if (factor_slot_.empty()) return false;
+  map_.assign(static_cast<std::size_t>(nf), -1);
+  identity_ = nf == static_cast<int>(factor_key_.size());
+  int mapped = 0;
+  for (std::size_t l = 0; l < nodes_.size(); ++l)
+    for (int c = 0; c < D; ++c)
+      if (const int r = dof_[l * D + c]; r >= 0) {
+        const std::size_t key = static_cast<std::size_t>((off + nodes_[l]) * D + c);
+        if (key >= factor_slot_.size()) return false;
+        map_[static_cast<std::size_t>(r)] = factor_slot_[key];
+        mapped += map_[static_cast<std::size_t>(r)] >= 0;
+        identity_ = identity_ && map_[static_cast<std::size_t>(r)] == r;
+      }
+  if (10 * static_cast<long>(mapped) < 9 * static_cast<long>(nf)) return false;
+  if (!identity_) jacobi_ = A_.diagonal();
+  return true;
+}
+
+// z = M^-1 r: the factor's solve on the mapped unknowns (the others zero in its right-hand side), Jacobi on the rest.
+// Block diagonal with SPD blocks (S^T A_f^-1 S, S the injection of the mapped unknowns), so CG's preconditioner.
+template <int D> void ImplicitViscosity<D>::precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) {
+  if (identity_) {
+    z = ldlt_.solve(r);
+    return;
+  }
+  work_.setZero(static_cast<Eigen::Index>(factor_key_.size()));
+  for (Eigen::Index i = 0; i < r.size(); ++i)
+    if (const int j = map_[static_cast<std::size_t>(i)]; j >= 0) work_[j] = r[i];
+  work_ = ldlt_.solve(work_);
+  z.resize(r.size());
+  for (Eigen::Index i = 0; i < r.size(); ++i) {
+    const int j = map_[static_cast<std::size_t>(i)];
+    z[i] = j >= 0 ? work_[j] : r[i] / jacobi_[i];
+  }
+}
+
+// Conjugate gradients on A_ (its lower triangle stored) preconditioned by the last factor, from x = M^-1 b, to a
 // relative residual of 1e-10 (the step's own truncation error is far larger), within budget_ solves. Returns false
 // (x undefined) when that is not enough; a solve that needed more than half of them marks the factor stale, so
 // that the next step factorises afresh rather than try.
 template <int D> bool ImplicitViscosity<D>::preconditioned_solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
   const auto A = A_.template selfadjointView<Eigen::Lower>();
   const double tol = 1e-10 * b.norm();
-  x = ldlt_.solve(b);
+  precondition(b, x);
   Eigen::VectorXd r = b - A * x;
   int solves = 1;
   auto done = [&] {
@@ -290,14 +344,16 @@ template <int D> bool ImplicitViscosity<D>::preconditioned_solve(const Eigen::Ve
     return x.allFinite();
   };
   if (r.norm() <= tol) return done();
-  Eigen::VectorXd z = ldlt_.solve(r), p = z, q(b.size());
+  Eigen::VectorXd z, q(b.size());
+  precondition(r, z);
+  Eigen::VectorXd p = z;
   double rz = r.dot(z);
   for (++solves; solves <= budget_; ++solves) {
     q.noalias() = A * p;
     const double alpha = rz / p.dot(q);
     x += alpha * p, r -= alpha * q;
     if (r.norm() <= tol) return done();
-    z = ldlt_.solve(r);
+    precondition(r, z);
     const double rz1 = r.dot(z);
     p = z + (rz1 / rz) * p, rz = rz1;
   }
@@ -308,16 +364,21 @@ template <int D> bool ImplicitViscosity<D>::preconditioned_solve(const Eigen::Ve
 template <int D> void ImplicitViscosity<D>::save_state(StateWriter& w) const {
   w.put(dissipated_);
   w.put<std::uint8_t>(factored_ ? 1 : 0), w.put<std::uint8_t>(stale_ ? 1 : 0), w.put(budget_);
-  w.put(outer_), w.put(inner_), w.put(factored_values_);
+  w.put(outer_), w.put(inner_), w.put(factored_values_), w.put(factor_key_), w.put(static_cast<std::uint64_t>(factor_slot_.size()));
   w.put(stats_);
 }
 
 template <int D> void ImplicitViscosity<D>::load_state(StateReader& r) {
   r.get(dissipated_);
   factored_ = r.get<std::uint8_t>() != 0, stale_ = r.get<std::uint8_t>() != 0, r.get(budget_);
-  r.get(outer_), r.get(inner_), r.get(factored_values_);
+  r.get(outer_), r.get(inner_), r.get(factored_values_), r.get(factor_key_);
+  const auto keys = r.get<std::uint64_t>();
   r.get(stats_);
+  factor_slot_.clear(), slot_keys_.clear();
   if (!factored_) return;
+  for (Index k : factor_key_)
+    if (k < 0 || static_cast<std::uint64_t>(k) >= keys) r.fail("the viscous factor names an unknown outside the grid");
+  index_factor_keys(static_cast<std::size_t>(keys));
   const Eigen::Index n = static_cast<Eigen::Index>(outer_.size()) - 1;
   r.expect_size("the viscous factor's values", factored_values_.size(), inner_.size());
   if (n < 1 || static_cast<std::size_t>(outer_.back()) != inner_.size()) r.expect_size("the viscous factor's pattern", inner_.size(), outer_.empty() ? 0 : static_cast<std::size_t>(outer_.back()));

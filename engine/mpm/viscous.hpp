@@ -66,6 +66,9 @@ template <int D> class ImplicitViscosity {
   void operate(const Scene<D>& s, const Body& b, const Stencils& st, double a, double bv, const std::vector<Vec<D>>& u,
                std::vector<Vec<D>>& out) const;
   bool preconditioned_solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
+  bool map_onto_factor(Index off, int nf);
+  void index_factor_keys(std::size_t keys);
+  void precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z);
 
   std::vector<Stencils> stencils_;  // per body (damped ones only)
   std::vector<int> local_;          // field-local node -> unknown (-1: none)
@@ -89,6 +92,12 @@ template <int D> class ImplicitViscosity {
   std::vector<int> outer_, inner_;  // the pattern ldlt_ was analysed for
   bool factored_ = false;           // ldlt_ holds a numeric factor (of an earlier step's matrix of that pattern)
   std::vector<double> factored_values_;  // that matrix's values (pattern outer_, inner_)
+  std::vector<Index> factor_key_;   // per unknown of the factor: node-field x D + component
+  std::vector<int> factor_slot_;    // key -> the factor's unknown (-1: none), over all node-fields
+  std::vector<Index> slot_keys_;    // the keys set in factor_slot_
+  std::vector<int> map_;            // this step's unknown -> the factor's (-1: Jacobi)
+  bool identity_ = false;           // map_ is the identity
+  Eigen::VectorXd jacobi_, work_;
   bool stale_ = false;              // the last reuse came close to the budget: factorise at the next step
   int budget_ = 1;                  // solves a preconditioned CG may take: the factorisation's cost in solves
   Stats stats_;

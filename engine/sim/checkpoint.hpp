@@ -1,6 +1,6 @@
 // Checkpoint files (OUT/checkpoint.dmi): the solver, recorder and step-loop state of a run, so that
 // `damimpact simulate|run --restart` continues it bit for bit (docs/reliability.md, "Checkpoint and restart").
-// Layout: magic "DMICKPT3", u32 dimension, u64 scenario fingerprint, u64 payload size, payload, u64 FNV-1a
+// Layout: magic "DMICKPT4", u32 dimension, u64 scenario fingerprint, u64 payload size, payload, u64 FNV-1a
 // checksum of the payload. Written to <path>.tmp and renamed, so a checkpoint is either whole or absent.
 #pragma once
 #include <cstdint>
