@@ -60,7 +60,8 @@ TEST(DesignEstimates, BufferedRowsHandValues) {
   EXPECT_NE(as.note.find("30° assumed"), std::string::npos) << as.note;
   json b = basis(true);
   b["tyre_buffer"]["friction_angle_deg"] = 40.0;  // a given angle is used and the note drops the assumption
-  const Estimate& as40 = row(estimates(b, 1.0e5, 2.0e5, "r.h5"), "astra_gallery");
+  const auto t40 = estimates(b, 1.0e5, 2.0e5, "r.h5");
+  const Estimate& as40 = row(t40, "astra_gallery");
   EXPECT_NEAR(as40.value / as.value, std::tan(40 * M_PI / 180) / std::tan(30 * M_PI / 180), 1e-12);
   EXPECT_EQ(as40.note.find("assumed"), std::string::npos);
   // A results file written before the buffer's Poisson ratio was recorded: the two cushion rows say why they are empty.
