@@ -168,6 +168,25 @@ void debris_rows(const Basis& b, Table& t) {
         "hydrostatic and hydrodynamic forms, Hübl et al. (2009)", "peak_contact_force", p, sdof::debris_hydrostatic_dynamic_force_N(1, 1, rho, v, h, W, kG));
   t.add("surge_momentum_flux", "momentum flux of the surge", "F = ρ v² h w (a surge stopped by a rigid wall)", "momentum balance",
         "peak_contact_force", p, sdof::debris_dynamic_force_N(1, rho, v, h, W));
+  const char* wave = "blunt-front elastic wave (a bound, not a design load)";
+  const char* wave_f = "F = ρ c v h w, c = √(M/ρ), M = E(1−ν)/((1+ν)(1−2ν))";
+  if (!b.has("debris_surge", "youngs_modulus_Pa") || !b.has("debris_surge", "poisson_ratio") || !b.has("debris_surge", "front_length_m")) {
+    t.not_applicable("blunt_front_wave", wave, wave_f, "Joukowsky (1900)", "peak_contact_force",
+                     "needs the debris modulus and front length in the design basis (a granular surge; results written before they were recorded)");
+    return;
+  }
+  const double E = b.get("debris_surge", "youngs_modulus_Pa"), nu = b.poisson("debris_surge");
+  const json& fl = b.j["debris_surge"]["front_length_m"];
+  if (!fl.is_number() || !(fl.get<double>() >= 0) || !std::isfinite(fl.get<double>()))
+    throw std::runtime_error(b.where + ": /documents/design_basis/debris_surge/front_length_m = " + fl.dump() + ": expected a number >= 0");
+  const double front = fl.get<double>();
+  t.add("blunt_front_wave", wave, wave_f, "Joukowsky (1900)", "peak_contact_force", p + fmt(", E = %.3g MPa, ν = %.2f", E / 1e6, nu),
+        sdof::debris_elastic_wave_force_N(rho, E, nu, v, h, W))
+      .note = front > 0 ? fmt("reached only by a vertical, full-depth front; this surge's snout is %.2f m long, so its peak is set by the "
+                              "momentum of the arriving flow, not by E",
+                              front)
+                        : "this surge has a blunt front (front_length 0): its arrival peak is this elastic wave, which scales with √E, a "
+                          "stiffness real loose fronts do not have";
 }
 
 }  // namespace

@@ -69,6 +69,7 @@ class Builder {
   // What a boulder or surge meets first at height y: the buffer's front where there is one.
   double front(double y) const;
   double bed(double x) const { return -x * std::tan(slope_); }  // ground line through the face's foot
+  double front_length() const;
   // The features the cell must resolve: their size across, the cells across them by default, and at least.
   struct Feature {
     double size, cells, min_cells;
@@ -201,7 +202,9 @@ json Builder::design_basis() const {
   if (p_.debris) {
     const DebrisPreset& f = *p_.debris;
     out["debris_surge"] = json{{"density_kg_m3", f.material.value("density", 2000.0)}, {"depth_m", f.depth}, {"length_m", f.length},
-                               {"speed_m_s", f.velocity}, {"channel_slope_deg", f.slope}};
+                               {"speed_m_s", f.velocity}, {"channel_slope_deg", f.slope}, {"front_length_m", front_length()}};
+    if (f.material.value("model", std::string("drucker_prager")) == "drucker_prager")
+      out["debris_surge"].update(json{{"youngs_modulus_Pa", f.material.value("youngs_modulus", 0.0)}, {"poisson_ratio", f.material.value("poisson_ratio", 0.0)}});
   }
   if (p_.buffer) {
     const BufferPreset& b = *p_.buffer;
@@ -408,6 +411,20 @@ void Builder::add_boulder() {
   }
 }
 
+// A blunt, full-depth surge front strikes like a rigid block: its peak is the elastic wave rho c v h w, set by
+// the debris modulus (docs/verification.md, "Debris surge: the front"). A cohesionless front steeper than its
+// angle of repose slumps before it arrives, so by default the snout's surface stands at the friction angle to
+// the horizontal: at phi - theta to a bed falling at theta towards the dam, front_length = depth / tan(phi - theta),
+// at most half the surge. Slurries have no friction angle: their snout is taken at 45 degrees to the bed.
+double Builder::front_length() const {
+  const DebrisPreset& f = *p_.debris;
+  if (f.front_length >= 0) return f.front_length;
+  const bool granular = f.material.value("model", std::string("drucker_prager")) == "drucker_prager";
+  const double beta = granular ? f.material.value("friction_angle", 30.0) * kPi / 180 - slope_ : kPi / 4;
+  const double most = 0.5 * f.length;
+  return beta <= 0 ? most : std::min(most, f.depth / std::tan(beta));
+}
+
 void Builder::add_debris() {
   const DebrisPreset& f = *p_.debris;
   json m = f.material;
@@ -424,7 +441,11 @@ void Builder::add_debris() {
     x = face - gap;
   }
   const double xb = x - f.length * c;  // back edge: the surge is `length` long along the bed
-  json poly = json::array({{xb, bed(xb)}, {x, bed(x)}, {x, bed(x) + height}, {xb, bed(xb) + height}});
+  // The snout: the depth rises from nothing at the front to the full depth over front_length() along the bed.
+  json poly = json::array({{xb, bed(xb)}, {x, bed(x)}});
+  const double lf = front_length(), xf = x - lf * c;
+  poly.push_back({xf, bed(xf) + height});
+  if (lf < f.length) poly.push_back({xb, bed(xb) + height});
   const double vx = f.velocity * c, vy = -f.velocity * std::sin(slope_);
   bodies_.push_back(json{{"name", "debris"}, {"material", "debris"}, {"shape", {{"type", "polygon"}, {"vertices", poly}}}, {"velocity", {vx, vy}}});
   probes_.push_back(json{{"name", "debris"}, {"type", "body"}, {"body", "debris"}, {"quantities", {"velocity", "kinetic_energy", "position"}}});

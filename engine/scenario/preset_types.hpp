@@ -29,6 +29,7 @@ struct BoulderPreset {
 
 struct DebrisPreset {
   double depth = 0, length = 0, velocity = 0, slope = 0, gap = -1, bed_friction = 0.4;
+  double front_length = -1;  // < 0: the Coulomb wedge (preset_scene.cpp)
   nlohmann::json material;
 };
 

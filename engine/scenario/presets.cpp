@@ -168,6 +168,16 @@ void read_debris(Obj o, DebrisPreset& d) {
   o.number("channel_slope", d.slope, Spec{.unit = "deg", .doc = "bed inclination (rising upstream)", .min = 0, .max = 45, .max_open = true});
   o.number("gap", d.gap, nonneg("m", "distance from the surge front to the dam face (or buffer) at t = 0; default 2 cells"));
   o.number("bed_friction", d.bed_friction, nonneg("", "Coulomb friction coefficient of the bed"));
+  o.number("front_length", d.front_length, nonneg("m", "length along the bed over which the depth rises from nothing at the front "
+                                                       "to the full depth (a wedge-shaped snout); 0 is a blunt, vertical front. Default: the "
+                                                       "Coulomb wedge depth / (bed_friction - tan(channel_slope)), at least the depth and at most "
+                                                       "half the length"));
+  if (!o.documenting() && d.front_length > d.length) {
+    const json v = d.front_length;
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "at most the surge length (%g m)", d.length);
+    o.fail("front_length", &v, buf);
+  }
   d.material = material_object(o, "material", json{{"model", "drucker_prager"}, {"density", 2000}, {"youngs_modulus", 20e6}, {"poisson_ratio", 0.3},
                                                    {"cohesion", 0}, {"friction_angle", 30}},
                                "debris law: drucker_prager (granular, default) or a slurry (bingham, newtonian)", "debris");

@@ -83,4 +83,16 @@ double debris_hydrostatic_dynamic_force_N(double k, double alpha, double rho, do
   return 0.5 * k * rho * g * h * h * w + debris_dynamic_force_N(alpha, rho, v, h, w);
 }
 
+double debris_elastic_wave_force_N(double rho, double E, double nu, double v, double h, double w) {
+  const char* f = "debris_elastic_wave_force_N";
+  require_positive(f, "density_kg_m3", rho);
+  require_positive(f, "youngs_modulus_Pa", E);
+  if (!(std::isfinite(nu) && nu > -1 && nu < 0.5)) fail(f, "poisson_ratio", nu, "-1 < nu < 0.5");
+  const double M = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
+  require_non_negative(f, "speed_m_per_s", v);
+  require_positive(f, "depth_m", h);
+  require_positive(f, "width_m", w);
+  return rho * std::sqrt(M / rho) * v * h * w;
+}
+
 }  // namespace dmi::sdof

@@ -56,4 +56,11 @@ double debris_dynamic_force_N(double alpha, double density_kg_m3, double speed_m
 double debris_hydrostatic_dynamic_force_N(double k, double alpha, double density_kg_m3, double speed_m_per_s, double depth_m,
                                           double width_m, double g = 9.81);
 
+// A blunt, full-depth surge front stopped by a rigid wall as a coherent elastic continuum: the compression wave that
+// brings it to rest carries the pressure rho c v (the water-hammer pressure of Joukowsky 1900) with c = sqrt(M / rho),
+// M = E (1 - nu) / ((1 + nu)(1 - 2 nu)) the constrained modulus: F = rho c v h w over the wave's return time through
+// the depth. Not a design load: the bound a continuum model reaches with a vertical front, set by the debris modulus.
+double debris_elastic_wave_force_N(double density_kg_m3, double youngs_modulus_Pa, double poisson_ratio, double speed_m_per_s,
+                                   double depth_m, double width_m);
+
 }  // namespace dmi::sdof

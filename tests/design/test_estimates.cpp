@@ -78,11 +78,21 @@ TEST(DesignEstimates, DebrisRowsHandValues) {
   b.erase("boulder");
   b["debris_surge"] = json{{"density_kg_m3", 2000}, {"depth_m", 1}, {"speed_m_s", 6}};
   const auto t = estimates(b, 0, 3.0e5, "r.h5");
-  ASSERT_EQ(t.size(), 3u);
+  ASSERT_EQ(t.size(), 4u);
   EXPECT_NEAR(row(t, "geo_debris").value, 360000.0, 1e-6);
   EXPECT_NEAR(row(t, "hydrostatic_dynamic").value, 163620.0, 1e-6);
   EXPECT_NEAR(row(t, "surge_momentum_flux").value, 144000.0, 1e-6);
   EXPECT_NEAR(row(t, "geo_debris").ratio, 1.2, 1e-12);
+  EXPECT_FALSE(row(t, "blunt_front_wave").applicable);  // results written before the modulus was recorded
+  // With E 20 MPa, nu 0.3: rho c v h w = 2000 * 116.024 * 6 * 1 * 2 = 2 784.6 kN; the note names the snout.
+  b["debris_surge"].update(json{{"youngs_modulus_Pa", 20e6}, {"poisson_ratio", 0.3}, {"front_length_m", 2.47}});
+  const auto w = estimates(b, 0, 3.0e5, "r.h5");
+  EXPECT_NEAR(row(w, "blunt_front_wave").value, 2784572.9, 0.1);
+  EXPECT_NE(row(w, "blunt_front_wave").note.find("snout is 2.47 m long"), std::string::npos) << row(w, "blunt_front_wave").note;
+  b["debris_surge"]["front_length_m"] = 0;
+  EXPECT_NE(row(estimates(b, 0, 3.0e5, "r.h5"), "blunt_front_wave").note.find("blunt front"), std::string::npos);
+  b["debris_surge"]["front_length_m"] = "long";
+  EXPECT_THROW(estimates(b, 0, 3.0e5, "r.h5"), std::runtime_error);
 }
 
 TEST(DesignEstimates, MissingBasisNumberNamesTheKey) {

@@ -136,12 +136,42 @@ TEST(Presets, DebrisSurgeLiesOnTheInclinedBed) {
   for (int k : {0, 1}) EXPECT_NEAR(v[k][1].get<double>(), -v[k][0].get<double>() * t, 1e-12);  // on the bed y = -x tan
   EXPECT_NEAR(v[1][0].get<double>(), -0.2, 1e-12);                                           // front gap upstream of the face
   EXPECT_NEAR(v[1][0].get<double>() - v[0][0].get<double>(), 6 * c, 1e-12);                  // 6 m along the bed
-  EXPECT_NEAR(v[2][1].get<double>() - v[1][1].get<double>(), 1.0 / c, 1e-12);                // 1 m normal depth
+  // The snout: default, the surface at the friction angle (30 deg) to the horizontal, 15 deg to this bed:
+  // 1 / tan 15 = 3.73 m along the bed, capped at half the 6 m surge.
+  EXPECT_NEAR(v[1][0].get<double>() - v[2][0].get<double>(), 3.0 * c, 1e-12);
+  EXPECT_NEAR(v[2][1].get<double>() + v[2][0].get<double>() * t, 1.0 / c, 1e-12);           // 1 m normal depth behind it
+  EXPECT_NEAR(v[3][1].get<double>() + v[3][0].get<double>() * t, 1.0 / c, 1e-12);
+  EXPECT_DOUBLE_EQ(low["design_basis"]["debris_surge"]["front_length_m"].get<double>(), 3.0);
   const json& vel = named(low["bodies"], "debris")["velocity"];
   EXPECT_NEAR(std::atan2(-vel[1].get<double>(), vel[0].get<double>()), 15 * kPi / 180, 1e-12);
   EXPECT_NEAR(named(low["walls"], "ground")["normal"][0].get<double>(), std::sin(15 * kPi / 180), 1e-12);
   EXPECT_EQ(named(low["materials"], "debris")["model"], "drucker_prager");
   EXPECT_NO_THROW(parse_scenario(j.dump(), "t.json"));
+}
+
+// phi 40 deg on a 15 deg bed: 1 / tan 25 deg = 2.1445 m; front_length 0 is the blunt front of a rigid block.
+TEST(Presets, DebrisSnoutStandsAtTheAngleOfRepose) {
+  json j = json::parse(R"({"schema_version": 1, "name": "d",
+    "dam": {"type": "concrete_gravity", "height": 4, "crest_thickness": 1.0, "base_thickness": 1.6},
+    "debris_surge": {"depth": 1.0, "length": 6, "velocity": 8, "channel_slope": 15, "gap": 0.2, "material": {"friction_angle": 40}}})");
+  const double c = std::cos(15 * kPi / 180);
+  auto vertices = [](const json& low) { return named(low["bodies"], "debris")["shape"]["vertices"]; };
+  json v = vertices(expand_presets(j, "t.json"));
+  ASSERT_EQ(v.size(), 4u);
+  EXPECT_NEAR(v[1][0].get<double>() - v[2][0].get<double>(), c / std::tan(25 * kPi / 180), 1e-12);
+  j["debris_surge"]["front_length"] = 0;
+  v = vertices(expand_presets(j, "t.json"));
+  EXPECT_NEAR(v[2][0].get<double>(), v[1][0].get<double>(), 1e-12);  // vertical front
+  j["debris_surge"]["front_length"] = 6;                                // all snout: a triangle
+  EXPECT_EQ(vertices(expand_presets(j, "t.json")).size(), 3u);
+  j["debris_surge"]["front_length"] = 7;
+  try {
+    expand_presets(j, "t.json");
+    FAIL() << "a snout longer than the surge was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/debris_surge/front_length"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("at most the surge length (6 m)"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Presets, ContinuumDamAndDiscreteTyresSeedTheRightMass) {

@@ -66,6 +66,11 @@ TEST(PracticeLoads, DebrisHandValues) {
   EXPECT_NEAR(debris_hydrostatic_dynamic_force_N(1, 1, 2000, 6, 1, 2, 9.81), 163620.0, 1e-6);
   EXPECT_NEAR(debris_hydrostatic_dynamic_force_N(0, 1, 2000, 6, 1, 2), debris_dynamic_force_N(1, 2000, 6, 1, 2), 1e-9);
   EXPECT_THROW(debris_dynamic_force_N(2.5, 2000, 6, 0, 2), std::invalid_argument);
+  // E 20 MPa, nu 0.3: M = 20e6 * 0.7 / (1.3 * 0.4) = 26.923 MPa, c = sqrt(M / 2000) = 116.024 m/s,
+  // F = 2000 * 116.024 * 6 * 1 * 2 = 2 784.6 kN.
+  EXPECT_NEAR(debris_elastic_wave_force_N(2000, 20e6, 0.3, 6, 1, 2), 2000 * std::sqrt(20e6 * 0.7 / (1.3 * 0.4) / 2000) * 12, 1e-6);
+  EXPECT_NEAR(debris_elastic_wave_force_N(2000, 20e6, 0.3, 6, 1, 2), 2784572.0, 1.0);
+  EXPECT_THROW(debris_elastic_wave_force_N(2000, 20e6, 0.5, 6, 1, 2), std::invalid_argument);
 }
 
 }  // namespace
