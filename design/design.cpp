@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "design/estimates.hpp"
+#include "design/phases.hpp"
 #include "design/loads.hpp"
 #include "design/members.hpp"
 
@@ -216,6 +217,7 @@ json design_run(const Results& r, const Limits& L, const std::string& where) {
   if (!basis.is_null())
     for (const auto& e : estimates(basis, base_shear, c.present ? c.peak_N : 0.0, where)) est.push_back(e.to_json());
   run["estimates"] = est;
+  run["debris_phases"] = debris_phases(r, basis, where);
   run["checks"] = json::array();
   for (const auto& k : checks) run["checks"].push_back(k.to_json());
   run["verdict"] = verdict(checks);

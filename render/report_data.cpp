@@ -350,6 +350,27 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
                      {"note", e.value("note", "")}, {"row_class", ok ? "" : "muted"}});
     }
   d["estimates"] = est;
+  // The debris load in its three phases, against the momentum flux of the surge.
+  json phases = json::array();
+  for (const auto& r : runs) {
+    const json& p = r.design.value("debris_phases", json());
+    if (!p.is_object()) continue;
+    auto force = [&](const char* key, const char* alpha) {
+      return p[key].is_number() ? eng(p[key], "N") + fmt(" (α %.2f)", p[alpha].get<double>()) : std::string("— (the run ends within the passage)");
+    };
+    phases.push_back({{"run", label(r)}, {"flux", eng(p["flux_N"], "N")}, {"arrival", fmt("%.3f s", p["arrival_s"].get<double>())},
+                      {"passage", fmt("%.3f s", p["passage_s"].get<double>())},
+                      {"peak", force("peak_N", "alpha_peak") + fmt(" at %.3f s", p["peak_time_s"].get<double>())},
+                      {"dynamic", force("dynamic_N", "alpha_dynamic")}, {"static", force("static_N", "alpha_static")}});
+  }
+  d["has_debris_phases"] = !phases.empty();
+  d["debris_phases"] = phases;
+  d["debris_phases_intro"] =
+      "The contact force of the surge in its three phases (Cui, Zeng & Lei 2015): the peak while the surge passes (from its arrival, the "
+      "first 1 % of the momentum flux, for T = L / v), the dynamic load of its body (mean over the last three quarters of T) and the static "
+      "load of the deposit (mean over the last 10 % of the run). α = F / (ρ v² h w), the dynamic impact coefficient (GEO Report 270 takes "
+      "α = 2.5 for a rigid barrier). The surge's snout is set by debris_surge.front_length; a blunt front strikes as an elastic wave set by "
+      "the debris modulus (the bound row of the table above).";
   d["estimates_intro"] =
       std::string("The loads design practice would assign to this impact, beside the simulated peak they stand for (a sanity band, not checks): "
                   "ratio = estimate / simulated. A model that does not fit the scenario is listed with the reason. The 2D model strikes with a "

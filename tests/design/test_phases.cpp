@@ -1,0 +1,50 @@
+// The three phases of a debris load read from a hand-made contact history (design/phases.hpp).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "design/phases.hpp"
+
+using dmi::design::debris_phases;
+
+namespace {
+// Samples every 0.01 s over [0, t_end]: nothing until 0.10 s, 250 N over (0.10, 0.20], 80 N to 1.10 s, then 50 N,
+// with one 999 N sample at 1.50 s (after the passage: it must not be taken as the surge's peak).
+void history(double t_end, std::vector<double>& t, std::vector<double>& F) {
+  for (int k = 0; k * 0.01 <= t_end + 1e-9; ++k) {
+    const double s = k * 0.01;
+    t.push_back(s);
+    F.push_back(s <= 0.10 + 1e-9 ? 0.0 : s <= 0.20 + 1e-9 ? 250.0 : s <= 1.10 + 1e-9 ? 80.0 : std::abs(s - 1.5) < 1e-9 ? 999.0 : 50.0);
+  }
+}
+}  // namespace
+
+// F0 = 100 N, T = 1 s: arrival 0.10 s (the start of the first interval above 1 N), peak 250 N (alpha 2.5) at 0.11 s,
+// dynamic mean over (0.35, 1.10] = 80 N, static mean over the last 10 % of 2 s, (1.8, 2.0], = 50 N.
+TEST(DebrisPhases, HandMadeHistory) {
+  std::vector<double> t, F;
+  history(2.0, t, F);
+  const auto p = debris_phases(t, F, 100.0, 1.0);
+  ASSERT_TRUE(p);
+  EXPECT_NEAR(p->arrival_s, 0.10, 1e-12);
+  EXPECT_DOUBLE_EQ(p->peak_N, 250.0);
+  EXPECT_NEAR(p->peak_time_s, 0.11, 1e-12);
+  EXPECT_NEAR(p->dynamic_N, 80.0, 1e-9);
+  ASSERT_TRUE(p->static_N);
+  EXPECT_NEAR(*p->static_N, 50.0, 1e-9);
+  const auto j = p->to_json();
+  EXPECT_NEAR(j["alpha_peak"].get<double>(), 2.5, 1e-12);
+  EXPECT_NEAR(j["alpha_static"].get<double>(), 0.5, 1e-9);
+}
+
+// A run that ends within the passage has no static phase; a surge that never arrives has no phases at all.
+TEST(DebrisPhases, ShortRunAndNoArrival) {
+  std::vector<double> t, F;
+  history(1.0, t, F);
+  const auto p = debris_phases(t, F, 100.0, 1.0);
+  ASSERT_TRUE(p);
+  EXPECT_FALSE(p->static_N);
+  EXPECT_TRUE(p->to_json()["static_N"].is_null());
+  EXPECT_FALSE(debris_phases(t, std::vector<double>(t.size(), 0.5), 100.0, 1.0));
+  EXPECT_FALSE(debris_phases(t, F, 0.0, 1.0));
+}
