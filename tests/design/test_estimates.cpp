@@ -89,6 +89,10 @@ TEST(DesignEstimates, DebrisRowsHandValues) {
   const auto w = estimates(b, 0, 3.0e5, "r.h5");
   EXPECT_NEAR(row(w, "blunt_front_wave").value, 2784572.9, 0.1);
   EXPECT_NE(row(w, "blunt_front_wave").note.find("snout is 2.47 m long"), std::string::npos) << row(w, "blunt_front_wave").note;
+  EXPECT_EQ(row(w, "blunt_front_wave").note.find("above the 20 MPa"), std::string::npos);
+  b["debris_surge"]["youngs_modulus_Pa"] = 80e6;  // beyond the range shown: the note says so
+  EXPECT_NE(row(estimates(b, 0, 3.0e5, "r.h5"), "blunt_front_wave").note.find("E = 80 MPa is above the 20 MPa"), std::string::npos);
+  b["debris_surge"]["youngs_modulus_Pa"] = 20e6;
   b["debris_surge"]["front_length_m"] = 0;
   EXPECT_NE(row(estimates(b, 0, 3.0e5, "r.h5"), "blunt_front_wave").note.find("blunt front"), std::string::npos);
   b["debris_surge"]["front_length_m"] = "long";
