@@ -11,6 +11,19 @@
 namespace dmi {
 namespace {
 
+// The front of a connected body: the farthest particle reached from the rest through gaps under a cell h, plus
+// half the particle spacing dx.
+double connected_front(const Particles<2>& P, double h, double dx) {
+  std::vector<double> xs;
+  for (std::size_t i = 0; i < P.size(); ++i) xs.push_back(P.x[i].x());
+  std::sort(xs.begin(), xs.end());
+  double front = xs.back();
+  for (std::size_t i = 1; i < xs.size(); ++i)
+    if (xs[i] - xs[i - 1] > h) { front = xs[i - 1]; break; }
+  return front + 0.5 * dx;
+}
+
+
 // examples/granular_collapse.json: a = H0/L0 = 1 column of Drucker-Prager sand (phi 35 deg, APIC, 20 cells
 // across L0) against a symmetry wall on a Coulomb base. Lube, Huppert, Sparks & Freundt (2005), Phys. Rev. E
 // 72, 041301: (L_inf - L0)/L0 = 1.2 a for a < 1.8; final height H_inf = H0 for a < 1.15. The front is the
@@ -24,14 +37,9 @@ std::vector<CaseResult> granular_collapse() {
   while (solver.time() < s.analysis.end_time * (1 - 1e-12)) solver.step(solver.stable_time_step(s.analysis.end_time - solver.time()));
   const auto& P = solver.scene().particles;
   const double L0 = 0.5, h = s.grid.cell_size, dx = h / s.bodies[0].particles_per_cell;
-  std::vector<double> xs;
   double top = 0;
-  for (std::size_t i = 0; i < P.size(); ++i) xs.push_back(P.x[i].x()), top = std::max(top, P.x[i].y());
-  std::sort(xs.begin(), xs.end());
-  double front = xs.back();
-  for (std::size_t i = 1; i < xs.size(); ++i)
-    if (xs[i] - xs[i - 1] > h) { front = xs[i - 1]; break; }
-  front += 0.5 * dx;
+  for (std::size_t i = 0; i < P.size(); ++i) top = std::max(top, P.x[i].y());
+  const double front = connected_front(P, h, dx);
   const double runout = (front - L0) / L0, height = (top + 0.5 * dx) / L0;
   std::vector<CaseResult> r;
   r.push_back(metric("granular_collapse", "run-out (L_inf - L0)/L0, a = 1 (Lube 2005: 1.2 a)", "-", runout, 1.2, 0.15));
@@ -39,18 +47,6 @@ std::vector<CaseResult> granular_collapse() {
   return stamp(r, timer.seconds());
 }
 
-
-// The surge front of a connected body: the farthest particle whose gap to the next nearer one is under a cell,
-// plus a quarter cell (half of the 2 x 2 particle spacing).
-double connected_front(const Particles<2>& P, double h) {
-  std::vector<double> xs;
-  for (std::size_t i = 0; i < P.size(); ++i) xs.push_back(P.x[i].x());
-  std::sort(xs.begin(), xs.end());
-  double front = xs.back();
-  for (std::size_t i = 1; i < xs.size(); ++i)
-    if (xs[i] - xs[i - 1] > h) { front = xs[i - 1]; break; }
-  return front + 0.25 * h;
-}
 
 // T at which a piecewise-linear Z(T) first reaches z (NaN if never).
 double time_at(const std::vector<double>& T, const std::vector<double>& Z, double z) {
@@ -69,11 +65,11 @@ std::vector<CaseResult> dam_break() {
   const CaseTimer timer;
   const Scenario s = example_scenario("dam_break_water.json");
   Solver<2> solver(build_scene<2>(s));
-  const double a = 0.05715, h = s.grid.cell_size, scale = std::sqrt(2 * 9.81 / a);
-  std::vector<double> T{0.0}, Z{connected_front(solver.scene().particles, h) / a};
+  const double a = 0.05715, h = s.grid.cell_size, dx = h / s.bodies[0].particles_per_cell, scale = std::sqrt(2 * 9.81 / a);
+  std::vector<double> T{0.0}, Z{connected_front(solver.scene().particles, h, dx) / a};
   while (solver.time() < s.analysis.end_time * (1 - 1e-12)) {
     solver.step(solver.stable_time_step(s.analysis.end_time - solver.time()));
-    T.push_back(solver.time() * scale), Z.push_back(connected_front(solver.scene().particles, h) / a);
+    T.push_back(solver.time() * scale), Z.push_back(connected_front(solver.scene().particles, h, dx) / a);
   }
   const std::vector<double> T1{0.849, 1.212, 1.602, 2.283, 2.950, 3.598, 3.905, 4.592, 4.961, 5.316},  // a = 1.125 in
       Z1{1.245, 1.443, 1.884, 2.689, 3.728, 4.528, 4.999, 5.841, 6.271, 6.717};
