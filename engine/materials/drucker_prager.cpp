@@ -9,6 +9,14 @@
 // The full 3D stress is updated (sigma_zz kept in plane strain; plane stress is refused by the parser).
 // Dissipated power per particle: sigma : d_eps_p with d_eps_p = C^-1 (sigma_tr - sigma) (exact for any return).
 // Stored energy: the elastic complementary energy of the stress, as for linear elasticity.
+// mu_i (the same elastic predictor; Dunatunga & Kamrin 2015's elastic-viscoplastic form of the mu(I) rheology):
+//   yield q = mu(I) P, P = -p >= 0 the pressure, mu(I) = mu_s + (mu_2 - mu_s) / (I0 / I + 1) (Jop, Forterre &
+//   Pouliquen 2006), I = gamma_dot_p d / sqrt(P / rho_s), with the plastic shear rate
+//   gamma_dot_p = dgamma / dt (dgamma = sqrt(2 de_p' : de_p'), the engineering shear in simple shear).
+//   Return at constant pressure (no dilatancy): q = q_tr - G dgamma, dgamma the root of
+//   f(dgamma) = q_tr - G dgamma - mu(dgamma / dt) P, strictly decreasing from f(0) = q_tr - mu_s P > 0 to
+//   f(q_tr / G) < 0 (bracketed Newton). The rate dependence is implicit, so it does not bound the step; as
+//   dt -> 0 at a fixed rate the law tends to the rigid-viscoplastic mu(I) fluid. P <= 0: stress free (separated).
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -25,12 +33,16 @@ using Mat3 = Eigen::Matrix3d;
 template <int D> class DruckerPrager final : public Material<D> {
  public:
   DruckerPrager(const MaterialConfig& c, Plane plane) : rho_(c.density), el_(c.youngs_modulus, c.poisson_ratio), plane_(plane) {
+    K_ = el_.lambda + 2 * el_.mu / 3;
+    if (c.model == "mu_i") {
+      mu_i_ = true, mu_s_ = c.mu_s, mu_2_ = c.mu_2, I0_ = c.inertial_I0, d_ = c.grain_diameter, rho_s_ = c.grain_density;
+      return;  // alpha_psi_ = k_ = 0: no dilatancy, no cohesion
+    }
     const double deg = 3.14159265358979323846 / 180;
     auto match = [](double angle) { const double t = std::tan(angle); return 3 / std::sqrt(9 + 12 * t * t); };
     alpha_ = match(c.friction_angle * deg) * std::tan(c.friction_angle * deg);
     alpha_psi_ = match(c.dilation_angle * deg) * std::tan(c.dilation_angle * deg);
     k_ = match(c.friction_angle * deg) * c.cohesion;
-    K_ = el_.lambda + 2 * el_.mu / 3;
   }
   double density() const override { return rho_; }
   double wave_speed() const override { return el_.wave_speed(rho_, plane_); }
@@ -48,20 +60,53 @@ template <int D> class DruckerPrager final : public Material<D> {
     return s;
   }
 
+  // mu(I) at plastic shear rate `rate` under pressure P > 0 (Jop, Forterre & Pouliquen 2006).
+  double friction(double rate, double P) const {
+    const double I = rate * d_ / std::sqrt(P / rho_s_);
+    return I > 0 ? mu_s_ + (mu_2_ - mu_s_) * I / (I0_ + I) : mu_s_;
+  }
+
+  // The mu_i plastic shear increment: the root of q - G dg - mu(dg / dt) P on [0, q / G] (bracketed Newton).
+  double mu_i_increment(double q, double P, double dt) const {
+    const double G = el_.mu;
+    double lo = 0, hi = q / G, x = std::min(hi, (q - mu_s_ * P) / G);
+    for (int it = 0; it < 60; ++it) {
+      const double f = q - G * x - friction(x / dt, P) * P;
+      if (f > 0) lo = x; else hi = x;
+      const double I = x / dt * d_ / std::sqrt(P / rho_s_);  // d mu / d dg = (mu_2 - mu_s) I0 / (I0 + I)^2 * I / dg
+      const double dmu = x > 0 ? (mu_2_ - mu_s_) * I0_ / ((I0_ + I) * (I0_ + I)) * I / x : 0.0;
+      double next = x + f / (G + dmu * P);
+      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+      if (std::abs(next - x) <= 1e-14 * (q / G)) return next;
+      x = next;
+    }
+    return x;
+  }
+
   // Returns sigma onto the yield surface; the plastic strain increment's work sigma : C^-1 (tr - sigma).
-  double return_map(Mat3& s) const {
+  double return_map(Mat3& s, double dt) const {
     const double G = el_.mu, K = K_;
     const double p = s.trace() / 3;
     const Mat3 dev = s - p * Mat3::Identity();
     const double q = std::sqrt(0.5 * dev.squaredNorm());
-    const double f = q + alpha_ * p - k_;
-    if (f <= 0) return 0.0;
     const Mat3 trial = s;
-    const double dg = f / (G + K * alpha_ * alpha_psi_);
-    if (q - G * dg >= 0) {
-      s = (q > 0 ? (q - G * dg) / q : 0.0) * dev + (p - K * alpha_psi_ * dg) * Mat3::Identity();
-    } else {  // apex (cohesionless: p = 0 and no stress)
-      s = (alpha_ > 0 ? k_ / alpha_ : p) * Mat3::Identity();
+    if (mu_i_) {
+      if (p >= 0) {  // no pressure: the grains separate
+        s.setZero();
+      } else {
+        if (q - mu_s_ * (-p) <= 0) return 0.0;
+        const double dg = mu_i_increment(q, -p, dt);
+        s = (q > 0 ? std::max(q - G * dg, 0.0) / q : 0.0) * dev + p * Mat3::Identity();
+      }
+    } else {
+      const double f = q + alpha_ * p - k_;
+      if (f <= 0) return 0.0;
+      const double dg = f / (G + K * alpha_ * alpha_psi_);
+      if (q - G * dg >= 0) {
+        s = (q > 0 ? (q - G * dg) / q : 0.0) * dev + (p - K * alpha_psi_ * dg) * Mat3::Identity();
+      } else {  // apex (cohesionless: p = 0 and no stress)
+        s = (alpha_ > 0 ? k_ / alpha_ : p) * Mat3::Identity();
+      }
     }
     const Mat3 d = trial - s;  // C^-1 d = dev(d) / 2G + tr(d) / 9K I
     const double trd = d.trace();
@@ -77,7 +122,7 @@ template <int D> class DruckerPrager final : public Material<D> {
       const Mat3 Dm = 0.5 * (L + L.transpose()), W = 0.5 * (L - L.transpose());
       Mat3 s = full(p, i);
       s += dt * (lam * Dm.trace() * Mat3::Identity() + 2 * mu * Dm) + dt * (W * s - s * W);  // elastic trial
-      const double w = return_map(s);
+      const double w = return_map(s, dt);
       p.stress[i] = s.template topLeftCorner<D, D>();
       if constexpr (D == 2) p.stress_zz[i] = s(2, 2);
       p.vol[i] = p.vol0[i] * p.F[i].determinant();
@@ -100,6 +145,8 @@ template <int D> class DruckerPrager final : public Material<D> {
   Elastic el_;
   Plane plane_;
   double alpha_ = 0, alpha_psi_ = 0, k_ = 0, K_ = 0;
+  bool mu_i_ = false;
+  double mu_s_ = 0, mu_2_ = 0, I0_ = 0, d_ = 0, rho_s_ = 0;  // mu_i
   std::vector<double> power_;
   double dissipated_ = 0;
 };

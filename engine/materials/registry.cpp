@@ -19,6 +19,7 @@ template <int D> void register_materials(MaterialRegistry<D>& r) {
   r.add("linear_elastic", make_linear_elastic<D>);
   r.add("neo_hookean", make_neo_hookean<D>);
   r.add("drucker_prager", make_drucker_prager<D>);
+  r.add("mu_i", make_drucker_prager<D>);
   r.add("newtonian", make_viscous_fluid<D>);
   r.add("bingham", make_viscous_fluid<D>);
 }

@@ -88,12 +88,14 @@ void read_material(Obj& o, MaterialConfig& m) {
                                          "large strain; rubber, tyre buffers) | drucker_prager (elastic-perfectly plastic "
                                          "Drucker-Prager matched to Mohr-Coulomb in plane strain; granular debris) | newtonian "
                                          "(weakly compressible viscous fluid; slurry) | bingham (weakly compressible Bingham fluid, "
-                                         "Papanastasiou-regularised; mud and debris slurry). The fluids need plane strain or 3D"});
+                                         "Papanastasiou-regularised; mud and debris slurry) | mu_i (elastic-viscoplastic dense granular "
+                                         "flow, the mu(I) rheology of Jop, Forterre & Pouliquen 2006). The fluids, drucker_prager and mu_i "
+                                         "need plane strain or 3D"});
   if (!o.documenting() && m.model != "linear_elastic" && m.model != "neo_hookean" && m.model != "drucker_prager" &&
-      m.model != "newtonian" && m.model != "bingham")
-    o.fail("model", nullptr, "linear_elastic, neo_hookean, drucker_prager, newtonian or bingham (got '" + m.model + "')");
+      m.model != "newtonian" && m.model != "bingham" && m.model != "mu_i")
+    o.fail("model", nullptr, "linear_elastic, neo_hookean, drucker_prager, newtonian, bingham or mu_i (got '" + m.model + "')");
   o.number("density", m.density, positive("kg/m^3", "mass density", true));
-  if (when_any(o, "model", m.model, {"linear_elastic", "neo_hookean", "drucker_prager"})) {
+  if (when_any(o, "model", m.model, {"linear_elastic", "neo_hookean", "drucker_prager", "mu_i"})) {
     o.number("youngs_modulus", m.youngs_modulus, positive("Pa", "Young's modulus E", true));
     o.number("poisson_ratio", m.poisson_ratio, Spec{.doc = "Poisson's ratio", .min = -1, .max = 0.5, .min_open = true, .max_open = true, .required = true});
   }
@@ -134,6 +136,18 @@ void read_material(Obj& o, MaterialConfig& m) {
                                                       .min = 0, .max = 70});
     if (!o.documenting() && m.dilation_angle > m.friction_angle)
       o.fail("dilation_angle", nullptr, "a dilation angle <= friction_angle (" + std::to_string(m.friction_angle) + " deg)");
+  }
+  o.end_when();
+  if (o.when("model", m.model, "mu_i")) {
+    o.number("mu_s", m.mu_s, Spec{.doc = "static friction coefficient mu_s = tan(theta_1): q = mu(I) p with q = sqrt(J2)", .min = 0, .min_open = true, .required = true});
+    o.number("mu_2", m.mu_2, Spec{.doc = "limiting friction coefficient mu_2 = tan(theta_2) at large I, greater than mu_s", .min = 0, .min_open = true, .required = true});
+    o.number("I0", m.inertial_I0, Spec{.doc = "inertial number scale I0 of mu(I) = mu_s + (mu_2 - mu_s) / (I0 / I + 1)", .min = 0, .min_open = true, .required = true});
+    o.number("grain_diameter", m.grain_diameter, positive("m", "grain diameter d in I = gamma_dot d / sqrt(p / grain_density)", true));
+    o.number("grain_density", m.grain_density, positive("kg/m^3", "density of the grains rho_s in I (default 2650)"));
+    if (!o.documenting() && !(m.mu_2 > m.mu_s)) {
+      const nlohmann::json v = m.mu_2;
+      o.fail("mu_2", &v, "a limiting friction mu_2 greater than mu_s (" + std::to_string(m.mu_s) + ")");
+    }
   }
   o.end_when();
 }
@@ -711,7 +725,7 @@ void check_semantics(const Scenario& s, const std::string& file) {
     dup(bodies, b.name, p + "/name");
     if (!mats.count(b.material)) throw InputError(file, p + "/material", "\"" + b.material + "\"", "the name of one of the materials");
     for (const auto& m : s.materials)
-      if (m.name == b.material && (m.model == "drucker_prager" || m.model == "newtonian" || m.model == "bingham") &&
+      if (m.name == b.material && (m.model == "drucker_prager" || m.model == "mu_i" || m.model == "newtonian" || m.model == "bingham") &&
           s.analysis.plane == Plane::stress)
         throw InputError(file, p + "/material", "\"" + b.material + "\"", "a material other than " + m.model + " in plane stress "
                                                                         "(Drucker-Prager debris and slurries need plane strain or 3D)");

@@ -203,7 +203,7 @@ json Builder::design_basis() const {
     const DebrisPreset& f = *p_.debris;
     out["debris_surge"] = json{{"density_kg_m3", f.material.value("density", 2000.0)}, {"depth_m", f.depth}, {"length_m", f.length},
                                {"speed_m_s", f.velocity}, {"channel_slope_deg", f.slope}, {"front_length_m", front_length()}};
-    if (f.material.value("model", std::string("drucker_prager")) == "drucker_prager")
+    if (const std::string model = f.material.value("model", std::string("drucker_prager")); model == "drucker_prager" || model == "mu_i")
       out["debris_surge"].update(json{{"youngs_modulus_Pa", f.material.value("youngs_modulus", 0.0)}, {"poisson_ratio", f.material.value("poisson_ratio", 0.0)}});
   }
   if (p_.buffer) {
@@ -415,12 +415,16 @@ void Builder::add_boulder() {
 // the debris modulus (docs/verification.md, "Debris surge: the front"). A cohesionless front steeper than its
 // angle of repose slumps before it arrives, so by default the snout's surface stands at the friction angle to
 // the horizontal: at phi - theta to a bed falling at theta towards the dam, front_length = depth / tan(phi - theta),
-// at most half the surge. Slurries have no friction angle: their snout is taken at 45 degrees to the bed.
+// at most half the surge (mu_i: phi = atan mu_s). Slurries have no friction angle: their snout is taken at 45 degrees
+// to the bed.
 double Builder::front_length() const {
   const DebrisPreset& f = *p_.debris;
   if (f.front_length >= 0) return f.front_length;
-  const bool granular = f.material.value("model", std::string("drucker_prager")) == "drucker_prager";
-  const double beta = granular ? f.material.value("friction_angle", 30.0) * kPi / 180 - slope_ : kPi / 4;
+  const std::string model = f.material.value("model", std::string("drucker_prager"));
+  const double phi = model == "drucker_prager" ? f.material.value("friction_angle", 30.0) * kPi / 180
+                     : model == "mu_i"         ? std::atan(f.material.value("mu_s", 0.0))  // the static friction of mu(I)
+                                               : -1.0;
+  const double beta = phi >= 0 ? phi - slope_ : kPi / 4;
   const double most = 0.5 * f.length;
   return beta <= 0 ? most : std::min(most, f.depth / std::tan(beta));
 }

@@ -180,7 +180,7 @@ void read_debris(Obj o, DebrisPreset& d) {
   }
   d.material = material_object(o, "material", json{{"model", "drucker_prager"}, {"density", 2000}, {"youngs_modulus", 20e6}, {"poisson_ratio", 0.3},
                                                    {"cohesion", 0}, {"friction_angle", 30}},
-                               "debris law: drucker_prager (granular, default) or a slurry (bingham, newtonian)", "debris");
+                               "debris law: drucker_prager (granular, default), mu_i (dense granular flow) or a slurry (bingham, newtonian)", "debris");
   o.finish();
 }
 

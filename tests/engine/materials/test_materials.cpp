@@ -147,6 +147,42 @@ TEST(DruckerPrager, PureShearPlateauAndPlasticWork) {
   EXPECT_NEAR(mat->dissipated(), tau_y * gamma_p * 1e-3, 2e-3 * tau_y * gamma_p * 1e-3);  // volume 1e-3 m^3
 }
 
+// mu(I) (Jop, Forterre & Pouliquen 2006) in steady pure shear at pressure P = 2e4 Pa, d = 1 mm, rho_s = 2500:
+// gamma_dot 500 1/s gives I = 500 * 1e-3 / sqrt(2e4 / 2500) = 0.176777, mu = 0.38 + 0.26 I / (0.279 + I) = 0.480843;
+// the shear stress settles at mu(I) P = 9 616.9 Pa with P unchanged; 1e-3 1/s sits at mu_s P within 1e-5.
+TEST(MuI, SteadyShearFollowsMuOfI) {
+  MaterialConfig m = dp(0, 30, 0);
+  m.model = "mu_i", m.mu_s = 0.38, m.mu_2 = 0.64, m.inertial_I0 = 0.279, m.grain_diameter = 1e-3, m.grain_density = 2500;
+  const double P = 2e4;
+  for (const double rate : {500.0, 1e-3}) {
+    auto mat = make<2>(m, Plane::strain);
+    auto p = one_particle<2>();
+    p.stress[0] = -P * Mat<2>::Identity();
+    p.stress_zz[0] = -P;
+    mat->attach(p, 0, 1);
+    p.L[0] << 0, 0.5 * rate, 0.5 * rate, 0;
+    const double dt = 4e-3 / rate;  // 4000 steps to a shear of 16 times the elastic yield strain
+    for (int k = 0; k < 4000; ++k) mat->update(p, 0, 1, dt);
+    const double I = rate * 1e-3 / std::sqrt(P / 2500), mu = 0.38 + 0.26 * I / (0.279 + I);
+    EXPECT_NEAR(p.stress[0](0, 1), mu * P, 1e-9 * P) << rate;
+    EXPECT_NEAR(p.stress[0].trace() + p.stress_zz[0], -3 * P, 1e-9 * P);
+    if (rate < 1) EXPECT_NEAR(p.stress[0](0, 1), 0.38 * P, 1e-5 * P);
+  }
+  EXPECT_NEAR(0.38 + 0.26 * 0.1767767 / (0.279 + 0.1767767), 0.480843, 1e-6);
+}
+
+// Without pressure the grains separate: mu_i carries no stress when pulled apart.
+TEST(MuI, NoPressureNoStress) {
+  MaterialConfig m = dp(0, 30, 0);
+  m.model = "mu_i", m.mu_s = 0.38, m.mu_2 = 0.64, m.inertial_I0 = 0.279, m.grain_diameter = 1e-3;
+  auto mat = make<3>(m, Plane::none);
+  auto p = one_particle<3>();
+  mat->attach(p, 0, 1);
+  p.L[0] = 1e-2 * Mat<3>::Identity();
+  mat->update(p, 0, 1, 1e-3);
+  EXPECT_LT(p.stress[0].norm(), 1e-9);
+}
+
 // Cohesionless material pulled apart cannot carry tension: it returns to the apex, zero stress, and
 // the plastic flow at zero stress does no work.
 TEST(DruckerPrager, CohesionlessCarriesNoTension) {

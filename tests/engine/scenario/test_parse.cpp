@@ -544,7 +544,7 @@ TEST(ScenarioErrors, OutOfRange) {
   expect_error(with([](json& j) { j["analysis"]["cfl"] = 1.5; }), "/analysis/cfl", {"> 0 and <= 1"});
   expect_error(with([](json& j) { j["analysis"]["dimension"] = 4; }), "/analysis/dimension", {">= 2 and <= 3"});
   expect_error(with([](json& j) { j["bodies"][0]["particles_per_cell"] = 0; }), "/bodies/0/particles_per_cell", {">= 1 and <= 8"});
-  expect_error(with([](json& j) { j["materials"][0]["model"] = "mohr_coulomb"; }), "/materials/0/model", {"linear_elastic, neo_hookean, drucker_prager, newtonian or bingham", "mohr_coulomb"});
+  expect_error(with([](json& j) { j["materials"][0]["model"] = "mohr_coulomb"; }), "/materials/0/model", {"linear_elastic, neo_hookean, drucker_prager, newtonian, bingham or mu_i", "mohr_coulomb"});
   expect_error(with([](json& j) { j["bodies"][0]["shape"]["type"] = "cylinder"; }), "/bodies/0/shape/type", {"box, ball or polygon", "cylinder"});
 }
 

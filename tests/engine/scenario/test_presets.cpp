@@ -164,6 +164,13 @@ TEST(Presets, DebrisSnoutStandsAtTheAngleOfRepose) {
   EXPECT_NEAR(v[2][0].get<double>(), v[1][0].get<double>(), 1e-12);  // vertical front
   j["debris_surge"]["front_length"] = 6;                                // all snout: a triangle
   EXPECT_EQ(vertices(expand_presets(j, "t.json")).size(), 3u);
+  // mu_i: the angle of repose atan(mu_s) = 28.81 deg, 13.81 deg to this bed: 1 / tan = 4.064 m of a 10 m surge.
+  json k = j;
+  k["debris_surge"].erase("front_length"), k["debris_surge"]["length"] = 10;
+  k["debris_surge"]["material"] = json{{"model", "mu_i"}, {"youngs_modulus", 2e7}, {"poisson_ratio", 0.3}, {"mu_s", 0.55}, {"mu_2", 0.85},
+                                       {"I0", 0.3}, {"grain_diameter", 0.05}};
+  v = vertices(expand_presets(k, "t.json"));
+  EXPECT_NEAR(v[1][0].get<double>() - v[2][0].get<double>(), c / std::tan(std::atan(0.55) - 15 * kPi / 180), 1e-12);
   j["debris_surge"]["front_length"] = 7;
   try {
     expand_presets(j, "t.json");
