@@ -356,11 +356,13 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
     const json& p = r.design.value("debris_phases", json());
     if (!p.is_object()) continue;
     auto force = [&](const char* key, const char* alpha) {
-      return p[key].is_number() ? eng(p[key], "N") + fmt(" (α %.2f)", p[alpha].get<double>()) : std::string("— (the run ends within the passage)");
+      const double f = num(p, {key}), a = num(p, {alpha});
+      return std::isfinite(f) && std::isfinite(a) ? eng(p[key], "N") + fmt(" (α %.2f)", a) : std::string("— (the run ends within the passage)");
     };
-    phases.push_back({{"run", label(r)}, {"flux", eng(p["flux_N"], "N")}, {"arrival", fmt("%.3f s", p["arrival_s"].get<double>())},
-                      {"passage", fmt("%.3f s", p["passage_s"].get<double>())},
-                      {"peak", force("peak_N", "alpha_peak") + fmt(" at %.3f s", p["peak_time_s"].get<double>())},
+    auto seconds = [&](const char* key) { const double t = num(p, {key}); return std::isfinite(t) ? fmt("%.3f s", t) : std::string("—"); };
+    phases.push_back({{"run", label(r)}, {"flux", std::isfinite(num(p, {"flux_N"})) ? eng(p["flux_N"], "N") : std::string("—")},
+                      {"arrival", seconds("arrival_s")}, {"passage", seconds("passage_s")},
+                      {"peak", force("peak_N", "alpha_peak") + " at " + seconds("peak_time_s")},
                       {"dynamic", force("dynamic_N", "alpha_dynamic")}, {"static", force("static_N", "alpha_static")}});
   }
   d["has_debris_phases"] = !phases.empty();
