@@ -355,14 +355,15 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
   for (const auto& r : runs) {
     const json& p = r.design.value("debris_phases", json());
     if (!p.is_object()) continue;
-    auto force = [&](const char* key, const char* alpha) {
+    auto force = [&](const char* key, const char* alpha) {  // the force, and α under it
       const double f = num(p, {key}), a = num(p, {alpha});
-      return std::isfinite(f) && std::isfinite(a) ? eng(p[key], "N") + fmt(" (α %.2f)", a) : std::string("— (the run ends within the passage)");
+      return std::isfinite(f) && std::isfinite(a) ? json{{"v", eng(p[key], "N")}, {"a", fmt("α %.2f", a)}}
+                                                  : json{{"v", "—"}, {"a", "the run ends within the passage"}};
     };
     auto seconds = [&](const char* key) { const double t = num(p, {key}); return std::isfinite(t) ? fmt("%.3f s", t) : std::string("—"); };
     phases.push_back({{"run", label(r)}, {"flux", std::isfinite(num(p, {"flux_N"})) ? eng(p["flux_N"], "N") : std::string("—")},
                       {"arrival", seconds("arrival_s")}, {"passage", seconds("passage_s")},
-                      {"peak", force("peak_N", "alpha_peak") + " at " + seconds("peak_time_s")},
+                      {"peak", force("peak_N", "alpha_peak")}, {"peak_at", seconds("peak_time_s")},
                       {"dynamic", force("dynamic_N", "alpha_dynamic")}, {"static", force("static_N", "alpha_static")}});
   }
   d["has_debris_phases"] = !phases.empty();
