@@ -174,16 +174,28 @@ void debris_rows(const Basis& b, Table& t) {
         "peak_contact_force", p, sdof::debris_dynamic_force_N(1, rho, v, h, W));
   const char* wave = "blunt-front elastic wave (a bound, not a design load)";
   const char* wave_f = "F = ρ c v h w, c = √(M/ρ), M = E(1−ν)/((1+ν)(1−2ν))";
-  if (!b.has("debris_surge", "youngs_modulus_Pa") || !b.has("debris_surge", "poisson_ratio") || !b.has("debris_surge", "front_length_m")) {
+  const bool slurry = b.has("debris_surge", "bulk_modulus_Pa");
+  if ((!slurry && (!b.has("debris_surge", "youngs_modulus_Pa") || !b.has("debris_surge", "poisson_ratio"))) || !b.has("debris_surge", "front_length_m")) {
     t.not_applicable("blunt_front_wave", wave, wave_f, "Joukowsky (1900)", "peak_contact_force",
-                     "needs the debris modulus and front length in the design basis (a granular surge; results written before they were recorded)");
+                     "needs the debris modulus and front length in the design basis (results written before they were recorded)");
     return;
   }
-  const double E = b.get("debris_surge", "youngs_modulus_Pa"), nu = b.poisson("debris_surge");
   const json& fl = b.j["debris_surge"]["front_length_m"];
   if (!fl.is_number() || !(fl.get<double>() >= 0) || !std::isfinite(fl.get<double>()))
     throw std::runtime_error(b.where + ": /documents/design_basis/debris_surge/front_length_m = " + fl.dump() + ": expected a number >= 0");
   const double front = fl.get<double>();
+  if (slurry) {  // a fluid: M = K (nu = 0 in the same formula), c0 its numerical sound speed
+    const double K = b.get("debris_surge", "bulk_modulus_Pa");
+    t.add("blunt_front_wave", wave, "F = ρ c₀ v h w, c₀ = √(K/ρ)", "Joukowsky (1900)", "peak_contact_force", p + fmt(", K = %.3g MPa", K / 1e6),
+          sdof::debris_elastic_wave_force_N(rho, K, 0.0, v, h, W))
+        .note = front > 0 ? fmt("a slurry's peak still grows with its sound speed c₀ = %.0f m/s behind a %.2f m snout (a weakly "
+                                "compressible fluid has no friction to spread the arrival): keep c₀ near ten times the flow speed and read "
+                                "the peak against this bound (docs/verification.md)",
+                                std::sqrt(K / rho), front)
+                          : "this slurry has a blunt front (front_length 0): its arrival peak is this wave, set by the numerical sound speed c₀";
+    return;
+  }
+  const double E = b.get("debris_surge", "youngs_modulus_Pa"), nu = b.poisson("debris_surge");
   t.add("blunt_front_wave", wave, wave_f, "Joukowsky (1900)", "peak_contact_force", p + fmt(", E = %.3g MPa, ν = %.2f", E / 1e6, nu),
         sdof::debris_elastic_wave_force_N(rho, E, nu, v, h, W))
       .note = front > 0 ? fmt("reached only by a vertical, full-depth front; this surge's snout is %.2f m long, so its peak is set by the "

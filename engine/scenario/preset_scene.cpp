@@ -205,6 +205,8 @@ json Builder::design_basis() const {
                                {"speed_m_s", f.velocity}, {"channel_slope_deg", f.slope}, {"front_length_m", front_length()}};
     if (const std::string model = f.material.value("model", std::string("drucker_prager")); model == "drucker_prager" || model == "mu_i")
       out["debris_surge"].update(json{{"youngs_modulus_Pa", f.material.value("youngs_modulus", 0.0)}, {"poisson_ratio", f.material.value("poisson_ratio", 0.0)}});
+    else
+      out["debris_surge"]["bulk_modulus_Pa"] = f.material.value("bulk_modulus", 0.0);
   }
   if (p_.buffer) {
     const BufferPreset& b = *p_.buffer;

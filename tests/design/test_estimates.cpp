@@ -95,6 +95,13 @@ TEST(DesignEstimates, DebrisRowsHandValues) {
   b["debris_surge"]["youngs_modulus_Pa"] = 20e6;
   b["debris_surge"]["front_length_m"] = 0;
   EXPECT_NE(row(estimates(b, 0, 3.0e5, "r.h5"), "blunt_front_wave").note.find("blunt front"), std::string::npos);
+  // A slurry: K = 7.2 MPa, c0 = 60 m/s: rho c0 v h w = 2000 * 60 * 6 * 1 * 2 = 1 440 kN.
+  json sl = b;
+  sl["debris_surge"].erase("youngs_modulus_Pa"), sl["debris_surge"].erase("poisson_ratio");
+  sl["debris_surge"]["bulk_modulus_Pa"] = 7.2e6, sl["debris_surge"]["front_length_m"] = 1.0;
+  const auto ts = estimates(sl, 0, 3.0e5, "r.h5");
+  EXPECT_NEAR(row(ts, "blunt_front_wave").value, 1440000.0, 1e-6);
+  EXPECT_NE(row(ts, "blunt_front_wave").note.find("c₀ = 60 m/s"), std::string::npos) << row(ts, "blunt_front_wave").note;
   b["debris_surge"]["front_length_m"] = "long";
   EXPECT_THROW(estimates(b, 0, 3.0e5, "r.h5"), std::runtime_error);
 }
