@@ -546,6 +546,14 @@ TEST(ScenarioErrors, OutOfRange) {
   expect_error(with([](json& j) { j["bodies"][0]["particles_per_cell"] = 0; }), "/bodies/0/particles_per_cell", {">= 1 and <= 8"});
   expect_error(with([](json& j) { j["materials"][0]["model"] = "mohr_coulomb"; }), "/materials/0/model", {"linear_elastic, neo_hookean, drucker_prager, newtonian, bingham or mu_i", "mohr_coulomb"});
   expect_error(with([](json& j) { j["bodies"][0]["shape"]["type"] = "cylinder"; }), "/bodies/0/shape/type", {"box, ball or polygon", "cylinder"});
+  // mu(I): the limiting friction must exceed the static one.
+  auto mu_i = [](json& j) {
+    j["analysis"]["plane"] = "strain";
+    j["materials"][0] = json{{"name", j["materials"][0]["name"]}, {"model", "mu_i"}, {"density", 2000}, {"youngs_modulus", 1e7},
+                             {"poisson_ratio", 0.3}, {"mu_s", 0.5}, {"mu_2", 0.4}, {"I0", 0.3}, {"grain_diameter", 0.01}};
+  };
+  expect_error(with(mu_i), "/materials/0/mu_2", {"= 0.4", "greater than mu_s"});
+  expect_error(with([&](json& j) { mu_i(j), j["materials"][0].erase("grain_diameter"); }), "/materials/0/grain_diameter", {"required key"});
 }
 
 TEST(ScenarioErrors, VectorOfWrongLength) {
