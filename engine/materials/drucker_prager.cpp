@@ -11,11 +11,12 @@
 // Stored energy: the elastic complementary energy of the stress, as for linear elasticity.
 // mu_i (the same elastic predictor; Dunatunga & Kamrin 2015's elastic-viscoplastic form of the mu(I) rheology):
 //   yield q = mu(I) P, P = -p >= 0 the pressure, mu(I) = mu_s + (mu_2 - mu_s) / (I0 / I + 1) (Jop, Forterre &
-//   Pouliquen 2006), I = gamma_dot_p d / sqrt(P / rho_s), with the plastic shear rate
+//   Pouliquen 2006; below I_N1 Barker & Gray's 2017 partial regularisation, mu_of_i.hpp), I = gamma_dot_p d / sqrt(P / rho_s),
+//   with the plastic shear rate
 //   gamma_dot_p = dgamma / dt (dgamma = sqrt(2 de_p' : de_p'), the engineering shear in simple shear).
 //   Return at constant pressure (no dilatancy): q = q_tr - G dgamma, dgamma the root of
-//   f(dgamma) = q_tr - G dgamma - mu(dgamma / dt) P, strictly decreasing from f(0) = q_tr - mu_s P > 0 to
-//   f(q_tr / G) < 0 (bracketed Newton). The rate dependence is implicit, so it does not bound the step; as
+//   f(dgamma) = q_tr - G dgamma - mu(dgamma / dt) P, strictly decreasing from f(0) = q_tr - mu(0) P > 0 to
+//   f(q_tr / G) < 0 (bracketed Newton); regularised, mu(0) = 0 and every sheared state creeps. The rate dependence is implicit, so it does not bound the step; as
 //   dt -> 0 at a fixed rate the law tends to the rigid-viscoplastic mu(I) fluid. P <= 0: stress free (separated).
 #include <cmath>
 #include <memory>
@@ -23,6 +24,7 @@
 
 #include "engine/common/parallel.hpp"
 #include "engine/materials/material.hpp"
+#include "engine/materials/mu_of_i.hpp"
 #include "engine/mpm/reduce.hpp"
 
 namespace dmi {
@@ -35,7 +37,9 @@ template <int D> class DruckerPrager final : public Material<D> {
   DruckerPrager(const MaterialConfig& c, Plane plane) : rho_(c.density), el_(c.youngs_modulus, c.poisson_ratio), plane_(plane) {
     K_ = el_.lambda + 2 * el_.mu / 3;
     if (c.model == "mu_i") {
-      mu_i_ = true, mu_s_ = c.mu_s, mu_2_ = c.mu_2, I0_ = c.inertial_I0, d_ = c.grain_diameter, rho_s_ = c.grain_density;
+      mu_i_ = true, d_ = c.grain_diameter, rho_s_ = c.grain_density;
+      law_.mu_s = c.mu_s, law_.mu_2 = c.mu_2, law_.I0 = c.inertial_I0;
+      law_.regularise(c.regularisation_alpha);
       return;  // alpha_psi_ = k_ = 0: no dilatancy, no cohesion
     }
     const double deg = 3.14159265358979323846 / 180;
@@ -60,24 +64,17 @@ template <int D> class DruckerPrager final : public Material<D> {
     return s;
   }
 
-  // mu(I) at plastic shear rate `rate` under pressure P > 0 (Jop, Forterre & Pouliquen 2006).
-  double friction(double rate, double P) const {
-    const double I = rate * d_ / std::sqrt(P / rho_s_);
-    return I > 0 ? mu_s_ + (mu_2_ - mu_s_) * I / (I0_ + I) : mu_s_;
-  }
-
-  // The mu_i plastic shear increment: the root of q - G dg - mu(dg / dt) P on [0, q / G] (bracketed Newton).
+  // The mu_i plastic shear increment: the root of q - G dg - mu(I(dg / dt)) P on [0, q / G] (bracketed Newton);
+  // I = (dg / dt) d / sqrt(P / rho_s).
   double mu_i_increment(double q, double P, double dt) const {
-    const double G = el_.mu;
-    double lo = 0, hi = q / G, x = std::min(hi, (q - mu_s_ * P) / G);
-    for (int it = 0; it < 60; ++it) {
-      const double f = q - G * x - friction(x / dt, P) * P;
+    const double G = el_.mu, scale = d_ / (dt * std::sqrt(P / rho_s_));  // I per unit dg
+    double lo = 0, hi = q / G, x = std::clamp((q - law_.mu_s * P) / G, 0.0, hi);
+    for (int it = 0; it < 100; ++it) {
+      const double f = q - G * x - law_.mu(x * scale) * P;
       if (f > 0) lo = x; else hi = x;
-      const double I = x / dt * d_ / std::sqrt(P / rho_s_);  // d mu / d dg = (mu_2 - mu_s) I0 / (I0 + I)^2 * I / dg
-      const double dmu = x > 0 ? (mu_2_ - mu_s_) * I0_ / ((I0_ + I) * (I0_ + I)) * I / x : 0.0;
-      double next = x + f / (G + dmu * P);
+      double next = x + f / (G + law_.slope(x * scale) * scale * P);
       if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-      if (std::abs(next - x) <= 1e-14 * (q / G)) return next;
+      if (std::abs(next - x) <= 1e-14 * (q / G) || hi - lo <= 1e-15 * (q / G)) return next;
       x = next;
     }
     return x;
@@ -94,7 +91,7 @@ template <int D> class DruckerPrager final : public Material<D> {
       if (p >= 0) {  // no pressure: the grains separate
         s.setZero();
       } else {
-        if (q - mu_s_ * (-p) <= 0) return 0.0;
+        if (q <= 0 || (law_.I_N1 == 0 && q - law_.mu_s * (-p) <= 0)) return 0.0;  // regularised: no rigid range
         const double dg = mu_i_increment(q, -p, dt);
         s = (q > 0 ? std::max(q - G * dg, 0.0) / q : 0.0) * dev + p * Mat3::Identity();
       }
@@ -146,7 +143,8 @@ template <int D> class DruckerPrager final : public Material<D> {
   Plane plane_;
   double alpha_ = 0, alpha_psi_ = 0, k_ = 0, K_ = 0;
   bool mu_i_ = false;
-  double mu_s_ = 0, mu_2_ = 0, I0_ = 0, d_ = 0, rho_s_ = 0;  // mu_i
+  MuOfI law_;                 // mu_i
+  double d_ = 0, rho_s_ = 0;  // mu_i: grain diameter, grain density
   std::vector<double> power_;
   double dissipated_ = 0;
 };

@@ -144,6 +144,11 @@ void read_material(Obj& o, MaterialConfig& m) {
     o.number("I0", m.inertial_I0, Spec{.doc = "inertial number scale I0 of mu(I) = mu_s + (mu_2 - mu_s) / (I0 / I + 1)", .min = 0, .min_open = true, .required = true});
     o.number("grain_diameter", m.grain_diameter, positive("m", "grain diameter d in I = gamma_dot d / sqrt(p / grain_density)", true));
     o.number("grain_density", m.grain_density, positive("kg/m^3", "density of the grains rho_s in I (default 2650)"));
+    o.number("regularisation_alpha", m.regularisation_alpha,
+             Spec{.doc = "alpha of Barker & Gray's (2017) partial regularisation: below I_N1, where mu(I) is ill posed, mu = sqrt(alpha / "
+                         "ln(A / I)), joined continuously at I_N1; the material then creeps below mu_s instead of standing rigid "
+                         "(default 1.9; 0 = Jop's law unregularised)",
+                  .min = 0});
     if (!o.documenting() && !(m.mu_2 > m.mu_s)) {
       const nlohmann::json v = m.mu_2;
       o.fail("mu_2", &v, "a limiting friction mu_2 greater than mu_s (" + std::to_string(m.mu_s) + ")");

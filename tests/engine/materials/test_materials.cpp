@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "engine/materials/material.hpp"
+#include "engine/materials/mu_of_i.hpp"
 
 namespace dmi {
 namespace {
@@ -148,13 +149,17 @@ TEST(DruckerPrager, PureShearPlateauAndPlasticWork) {
 }
 
 // mu(I) (Jop, Forterre & Pouliquen 2006) in steady pure shear at pressure P = 2e4 Pa, d = 1 mm, rho_s = 2500:
-// gamma_dot 500 1/s gives I = 500 * 1e-3 / sqrt(2e4 / 2500) = 0.176777, mu = 0.38 + 0.26 I / (0.279 + I) = 0.480843;
-// the shear stress settles at mu(I) P = 9 616.9 Pa with P unchanged; 1e-3 1/s sits at mu_s P within 1e-5.
+// gamma_dot 500 1/s gives I = 500 * 1e-3 / sqrt(2e4 / 2500) = 0.176777, mu = 0.38 + 0.26 I / (0.279 + I) = 0.480843,
+// above I_N1 = 0.019128 (hand-computed root of Barker & Gray's C, below): the shear stress settles at mu(I) P =
+// 9 616.9 Pa with P unchanged. At 1e-3 1/s, I = 3.5355e-7 lies in the regularised range: A = I_N1 exp(1.9 / mu(I_N1)^2)
+// = 3 353.97 (mu(I_N1) = 0.396682), mu = sqrt(1.9 / ln(A / I)) = 0.287585: the material creeps below mu_s; without
+// the regularisation (alpha 0) it stands at mu_s P.
 TEST(MuI, SteadyShearFollowsMuOfI) {
   MaterialConfig m = dp(0, 30, 0);
   m.model = "mu_i", m.mu_s = 0.38, m.mu_2 = 0.64, m.inertial_I0 = 0.279, m.grain_diameter = 1e-3, m.grain_density = 2500;
   const double P = 2e4;
-  for (const double rate : {500.0, 1e-3}) {
+  auto steady = [&](double rate, double alpha) {
+    m.regularisation_alpha = alpha;
     auto mat = make<2>(m, Plane::strain);
     auto p = one_particle<2>();
     p.stress[0] = -P * Mat<2>::Identity();
@@ -163,12 +168,31 @@ TEST(MuI, SteadyShearFollowsMuOfI) {
     p.L[0] << 0, 0.5 * rate, 0.5 * rate, 0;
     const double dt = 4e-3 / rate;  // 4000 steps to a shear of 16 times the elastic yield strain
     for (int k = 0; k < 4000; ++k) mat->update(p, 0, 1, dt);
-    const double I = rate * 1e-3 / std::sqrt(P / 2500), mu = 0.38 + 0.26 * I / (0.279 + I);
-    EXPECT_NEAR(p.stress[0](0, 1), mu * P, 1e-9 * P) << rate;
     EXPECT_NEAR(p.stress[0].trace() + p.stress_zz[0], -3 * P, 1e-9 * P);
-    if (rate < 1) EXPECT_NEAR(p.stress[0](0, 1), 0.38 * P, 1e-5 * P);
-  }
-  EXPECT_NEAR(0.38 + 0.26 * 0.1767767 / (0.279 + 0.1767767), 0.480843, 1e-6);
+    return p.stress[0](0, 1) / P;
+  };
+  EXPECT_NEAR(steady(500, 1.9), 0.480843, 1e-6);
+  EXPECT_NEAR(steady(500, 0), 0.480843, 1e-6);
+  EXPECT_NEAR(steady(1e-3, 1.9), 0.287585, 1e-6);
+  EXPECT_NEAR(steady(1e-3, 0), 0.38, 1e-5);
+}
+
+// Barker & Gray's criterion for Jop's glass-bead constants: C > 0 (ill posed) below I_N1 = 0.019128 and above
+// I_N2 = 0.86338, C < 0 between (hand-computed by bisection); the regularised branch joins Jop's law at I_N1.
+TEST(MuI, RegularisationStartsWhereTheLawIsIllPosed) {
+  MuOfI law{0.38, 0.64, 0.279};
+  law.regularise(1.9);
+  EXPECT_NEAR(law.I_N1, 0.019128, 1e-6);
+  EXPECT_NEAR(law.C(law.I_N1), 0.0, 1e-12);
+  EXPECT_GT(law.C(0.5 * law.I_N1), 0.0);
+  EXPECT_LT(law.C(0.1), 0.0);
+  EXPECT_GT(law.C(0.9), 0.0);  // the high-I range, left unregularised
+  EXPECT_NEAR(law.mu(law.I_N1 * (1 - 1e-12)), law.jop(law.I_N1), 1e-9);
+  EXPECT_NEAR(law.A, 3353.97, 0.01);
+  EXPECT_DOUBLE_EQ(law.mu(0.1), law.jop(0.1));
+  EXPECT_LT(law.mu(1e-9), 0.38);
+  const double I = 1e-5, e = 1e-9;  // the slope used by the Newton step
+  EXPECT_NEAR(law.slope(I), (law.mu(I * (1 + e)) - law.mu(I * (1 - e))) / (2 * e * I), 1e-5 * law.slope(I));
 }
 
 // Without pressure the grains separate: mu_i carries no stress when pulled apart.
