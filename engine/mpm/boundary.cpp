@@ -92,8 +92,9 @@ double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double
   if (record && reset) {
     for (auto& w : s.walls) w.force.setZero();
     for (auto& r : s.regions) r.force.setZero();
+    for (auto& in : s.inflows) in.force.setZero();
   }
-  if (s.walls.empty() && s.regions.empty()) return 0.0;
+  if (s.walls.empty() && s.regions.empty() && s.inflows.empty()) return 0.0;
   const double tol = 1e-9 * g.h();
   const Index nn = g.nnodes();
   double work = 0.0;
@@ -145,6 +146,16 @@ double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double
         if (record) {
           const Vec<D> dp = m * (vel[k] - before);
           r.force -= dp / dt;
+          work += dp.dot(vel[k]);
+        }
+      }
+      for (auto& in : s.inflows) {  // the driven zone of an inflow (engine/mpm/inflow.hpp), on its body's field
+        if (fld != s.bodies[static_cast<std::size_t>(in.body)].field || !in.driving(time) || !in.in_zone(x, tol)) continue;
+        const Vec<D> before = vel[k];
+        vel[k] = in.velocity(time);
+        if (record) {
+          const Vec<D> dp = m * (vel[k] - before);
+          in.force -= dp / dt;
           work += dp.dot(vel[k]);
         }
       }

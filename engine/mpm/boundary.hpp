@@ -10,7 +10,7 @@ namespace dmi {
 // (Wall::touch); apply_boundaries then holds only engaged nodes.
 template <int D> void wall_touch(Scene<D>& s);
 
-// Walls and prescribed-velocity regions on vel (v^L, or the MUSL remapped velocity).
+// Walls, prescribed-velocity regions and inflows' driven zones on vel (v^L, or the MUSL remapped velocity).
 // When record is true, the force on every wall/region (N) is stored and the work done by the
 // boundaries on the material during this step, sum m_i (v_after - v_before) . v_after, returned (J).
 //   stick:    v = 0

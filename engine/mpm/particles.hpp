@@ -66,7 +66,7 @@ template <int D> struct Particles {
     for (std::size_t i = 0; i < id.size(); ++i) slot[id[i]] = static_cast<Index>(i);
   }
 
-  // Every field, for checkpoints. load_state() requires the particle count the scenario built.
+  // Every field, for checkpoints. The count is the saved one (an inflow adds particles as the run goes).
   void save_state(StateWriter& w) const {
     w.tag("particles");
     w.put(x), w.put(x0), w.put(v), w.put(half_size), w.put(reach_lo), w.put(reach_hi), w.put(F), w.put(L), w.put(C), w.put(stress), w.put(stress_zz);
@@ -74,8 +74,9 @@ template <int D> struct Particles {
   }
   void load_state(StateReader& r) {
     r.tag("particles");
+    r.get(x);
     const std::size_t n = size();
-    r.get(x), r.get(x0), r.get(v), r.get(half_size), r.get(reach_lo), r.get(reach_hi), r.get(F), r.get(L), r.get(C), r.get(stress), r.get(stress_zz);
+    r.get(x0), r.get(v), r.get(half_size), r.get(reach_lo), r.get(reach_hi), r.get(F), r.get(L), r.get(C), r.get(stress), r.get(stress_zz);
     r.get(mass), r.get(vol0), r.get(vol), r.get(body), r.get(id), r.get(slot);
     for (std::size_t k : {x0.size(), v.size(), half_size.size(), reach_lo.size(), reach_hi.size(), F.size(), L.size(), C.size(), stress.size(),
                           stress_zz.size(), mass.size(), vol0.size(), vol.size(), body.size(), id.size(), slot.size()})

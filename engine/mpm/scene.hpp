@@ -9,6 +9,7 @@
 
 #include "engine/materials/material.hpp"
 #include "engine/mpm/grid.hpp"
+#include "engine/mpm/inflow.hpp"
 #include "engine/mpm/particles.hpp"
 #include "engine/mpm/touch.hpp"
 #include "engine/scenario/config.hpp"
@@ -86,6 +87,7 @@ template <int D> struct Scene {
   std::unique_ptr<Grid<D>> grid;
   std::vector<Wall<D>> walls;
   std::vector<VelocityRegion<D>> regions;
+  std::vector<Inflow<D>> inflows;  // at most one, feeding the last body
   Vec<D> gravity = Vec<D>::Zero();
   SolverOptions options;
   std::unique_ptr<Frame> frame;   // beam-column members (2D only), or none

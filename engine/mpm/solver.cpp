@@ -23,6 +23,7 @@ template <int D> Solver<D>::Solver(Scene<D> scene) : scene_(std::move(scene)) {
   kernels_ = make_transfer_kernels<D>(scene_.options.shape);
   double mmin = std::numeric_limits<double>::infinity();
   for (double m : scene_.particles.mass) mmin = std::min(mmin, m);
+  for (const Inflow<D>& in : scene_.inflows) mmin = std::min(mmin, in.min_particle_mass());
   mass_eps_ = std::isfinite(mmin) ? 1e-12 * mmin : 0.0;
   for (const Body& b : scene_.bodies) scene_.materials[b.material]->attach(scene_.particles, b.begin, b.end);
   for (const Body& b : scene_.bodies)  // a rigid body has no stress (its material gives its density)
@@ -38,6 +39,7 @@ template <int D> Solver<D>::Solver(Scene<D> scene) : scene_(std::move(scene)) {
 template <int D> void Solver<D>::step(double dt) {
   if (profile_) lap_t_ = std::chrono::steady_clock::now();
   if (steps_ % kSortInterval == 1) sort_particles();  // locality for the scatter (from the second step on)
+  for (Inflow<D>& in : scene_.inflows) inject(scene_, in, time_, dt);  // debris entering the driven zone
   scene_.grid->bin(scene_.particles.x);      // tiles, active nodes, zeroed fields
   lap(kBinning);
   particles_to_grid();                         // m_i, p_i, f_i = f_int + f_ext (eqs. 5-8)
@@ -224,10 +226,18 @@ template <int D> double Solver<D>::stable_time_step(double limit) const {
   implicit_now_.assign(scene_.bodies.size(), 0);
   for (std::size_t k = 0; k < scene_.bodies.size(); ++k) {
     const Body& b = scene_.bodies[k];
-    const double vmax = parallel_reduce(b.begin, b.end, 0.0, [&](Index i) { return P.v[i].norm(); }, [](double a, double v) { return std::max(a, v); });
+    double vmax = parallel_reduce(b.begin, b.end, 0.0, [&](Index i) { return P.v[i].norm(); }, [](double a, double v) { return std::max(a, v); });
     const Material<D>& mat = *scene_.materials[b.material];
     // A rigid body has no waves: its speed bound is sqrt(|g| h), so that a body at rest falls a fraction of a cell.
-    const double h = scene_.grid->h(), c = b.rigid ? std::sqrt(scene_.gravity.norm() * h) : mat.wave_speed();
+    const double h = scene_.grid->h();
+    double c = b.rigid ? std::sqrt(scene_.gravity.norm() * h) : mat.wave_speed();
+    // An inflow's debris may be lighter than its material (the hydrograph's density): c ~ 1/sqrt(rho); and it enters
+    // at up to the hydrograph's fastest velocity.
+    for (const Inflow<D>& in : scene_.inflows)
+      if (in.body == static_cast<int>(k)) {
+        c *= std::sqrt(std::max(1.0, mat.density() / in.min_density()));
+        vmax = std::max(vmax, in.hydrograph.max_velocity());
+      }
     double dt_b = h / (c + vmax);
     // Kelvin-Voigt: the grid's highest frequency is omega_max ~ 2 sqrt(D) (c + |v|) / h (the checkerboard mode
     // along a diagonal); the 1D value 2 (c + |v|) / h let a damped rubber pad blow up in 2D at cfl 0.5
@@ -264,6 +274,8 @@ template <int D> void Solver<D>::save_state(StateWriter& w) const {
   w.tag("solver");
   w.put(time_), w.put(steps_), w.put(boundary_work_), w.put(courant_);
   scene_.particles.save_state(w);
+  for (const Body& b : scene_.bodies) w.put(b.end);  // an inflow's body grows
+  for (const Inflow<D>& in : scene_.inflows) in.save_state(w);
   w.put(scene_.grid->tile_particles());
   w.put<std::uint64_t>(scene_.materials.size());
   for (const auto& m : scene_.materials) m->save_state(w);
@@ -280,6 +292,9 @@ template <int D> void Solver<D>::load_state(StateReader& r) {
   r.tag("solver");
   r.get(time_), r.get(steps_), r.get(boundary_work_), r.get(courant_);
   scene_.particles.load_state(r);
+  for (Body& b : scene_.bodies) r.get(b.end);
+  r.expect_size("the bodies' particles", scene_.bodies.empty() ? 0 : static_cast<std::size_t>(scene_.bodies.back().end), scene_.particles.size());
+  for (Inflow<D>& in : scene_.inflows) in.load_state(r);
   std::vector<Index> order;
   r.get(order);
   if (!order.empty()) r.expect_size("the particle order", order.size(), scene_.particles.size());
@@ -306,6 +321,7 @@ template <int D> Diagnostics<D> Solver<D>::diagnostics() const {
   for (const auto& m : scene_.materials) d.dissipated += m->dissipated();
   if (viscosity_) d.dissipated += viscosity_->dissipated();
   d.boundary_work = boundary_work_;
+  for (const Inflow<D>& in : scene_.inflows) d.inflow_mass += in.mass, d.inflow_momentum += in.momentum, d.inflow_energy += in.energy;
   if (const Frame* f = scene_.frame.get()) {
     d.frame_kinetic = f->kinetic_energy();
     d.frame_strain = f->strain_energy();

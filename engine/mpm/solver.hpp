@@ -23,13 +23,16 @@ template <int D> struct Diagnostics {
   double frame_kinetic = 0, frame_strain = 0;  // J, beam-column members
   double frame_gravity_work = 0;   // J, work of the members' self-weight
   double contact_work = 0;         // J, work of the material on the members (contact reactions)
+  // What inflows brought in since t = 0: mass (kg), momentum (kg m/s) and kinetic energy (J) of the debris as created.
+  double inflow_mass = 0, inflow_energy = 0;
+  Vec<D> inflow_momentum = Vec<D>::Zero();
   double frame_damping = 0;        // J, dissipated by the frame's Rayleigh damping
   // Energy balance error (J) of the whole system, continua and frame: stored energy minus the work of
-  // gravity and walls, minus E_0. Member contact is internal to the system, so its losses (and any
+  // gravity and walls (and inflow zones) and the energy inflows brought in, minus E_0. Member contact is internal to the system, so its losses (and any
   // numerical loss or gain) show here: negative = dissipated.
   double balance(double e0) const {
     return kinetic + strain + dissipated + frame_kinetic + frame_strain + frame_damping - gravity_work - boundary_work -
-           frame_gravity_work - e0;
+           frame_gravity_work - inflow_energy - e0;
   }
 };
 

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/scenario/hydrograph.hpp"
+
 namespace dmi {
 
 using DVec = std::vector<double>;  // length = analysis dimension
@@ -70,9 +72,19 @@ struct ShapeConfig {
   std::vector<DVec> vertices;                        // m, polygon (2D), in order
 };
 
+// Debris entering through a channel section from a hydrograph (engine/mpm/inflow.hpp). 2D.
+struct InflowConfig {
+  bool present = false;
+  DVec point;                                        // m, the section's foot on the bed
+  DVec direction;                                    // flow direction along the bed (normalised by the parser)
+  double zone = 0.0;                                 // m, length of the driven zone upstream of the section; 0 = 3 cells
+  Hydrograph hydrograph;
+};
+
 struct BodyConfig {
   std::string name, material;
-  ShapeConfig shape;
+  ShapeConfig shape;                                 // type "" for a body that only an inflow fills
+  InflowConfig inflow;
   int particles_per_cell = 2;                        // per direction
   bool rigid = false;                                // rigid body: no stress, translation and rotation only
   DVec velocity;                                     // m/s

@@ -11,6 +11,7 @@
 #include "engine/common/error.hpp"
 #include "engine/common/json_input.hpp"
 #include "engine/common/memory.hpp"
+#include "engine/scenario/hydrograph_io.hpp"
 #include "engine/scenario/presets.hpp"
 #include "engine/scenario/scenario.hpp"
 #include "engine/scenario/schema.hpp"
@@ -26,6 +27,7 @@ namespace {
 
 using schema::any;
 using schema::positive;
+using schema::nonneg;
 
 void read_analysis(Obj o, AnalysisConfig& a) {
   o.integer("dimension", a.dimension, Spec{.doc = "2 (plane strain or plane stress) or 3", .min = 2, .max = 3});
@@ -187,10 +189,41 @@ void read_shape(Obj o, ShapeConfig& s) {
   o.finish();
 }
 
+void read_inflow(Obj o, InflowConfig& in) {
+  in.present = true;
+  if (!o.documenting() && o.context().dim != 2) o.fail("point", nullptr, "a 2D scenario (the inflow section is a line across a 2D channel)");
+  o.vector("point", in.point, any("m", "the section's foot on the bed: where the inflowing debris leaves the driven zone", true));
+  o.vector("direction", in.direction, any("", "flow direction along the bed, downstream (normalised); the depth is measured normal to it, "
+                                              "on its left (counter-clockwise)", true));
+  o.number("zone_length", in.zone, nonneg("m", "length along the bed of the driven zone upstream of the section, where the debris is created "
+                                               "and moves with the hydrograph's velocity; 0 = 3 cells"));
+  const json* h = o.raw("hydrograph", Spec{.doc = "depth (m, normal to the bed), velocity (m/s, along the bed) and optionally density "
+                                                  "(kg/m^3; default the material's) against time (s): a CSV file name (relative to the "
+                                                  "scenario's folder; a header row names the columns time, depth, velocity, density) or "
+                                                  "an object of equal-length arrays {\"time\": [...], \"depth\": [...], \"velocity\": [...]}",
+                                           .required = true},
+                        "string or object", "");
+  if (h) in.hydrograph = read_hydrograph(*h, o.context().file, o.path() + "/hydrograph");
+  if (o.documenting()) return;
+  double n2 = 0;
+  for (double x : in.direction) n2 += x * x;
+  if (!(n2 > 0)) o.fail("direction", nullptr, "a non-zero direction vector");
+  for (double& x : in.direction) x /= std::sqrt(n2);
+  o.finish();
+}
+
 void read_body(Obj& o, BodyConfig& b) {
   o.string("name", b.name, Spec{.doc = "body name, used by probes and in messages", .required = true});
   o.string("material", b.material, Spec{.doc = "name of an entry in materials", .required = true});
-  read_shape(o.object("shape", "region the body fills; particles are seeded on a regular sub-grid of every cell inside it"), b.shape);
+  Obj in = o.object("inflow", "debris entering through a channel section from a hydrograph (2D; the body grows as it enters): give this "
+                              "or shape. Only the last body may have one");
+  if (in.present()) read_inflow(in, b.inflow);
+  if (!o.documenting() && b.inflow.present) {
+    if (const json* sh = o.raw("shape", Spec{}, "object", ""))
+      o.fail("shape", sh, "no shape on a body that an inflow fills (give either shape or inflow)");
+  } else {
+    read_shape(o.object("shape", "region the body fills; particles are seeded on a regular sub-grid of every cell inside it"), b.shape);
+  }
   o.integer("particles_per_cell", b.particles_per_cell, Spec{.doc = "particles per cell along each axis", .min = 1, .max = 8});
   o.boolean("rigid", b.rigid, Spec{.doc = "move as a rigid body: translation and rotation from the particles' momentum and angular momentum "
                                           "after each grid update, no stress, no step limit from the material's stiffness (its density "
@@ -707,6 +740,34 @@ void check_solid_check(const Scenario& s, const std::string& file) {
   }
 }
 
+// An inflow body: the last one (it grows), its driven zone and the deepest flow inside the grid. Returns the number of
+// particles it will create.
+double check_inflow(const Scenario& s, const std::string& file, std::size_t i) {
+  const BodyConfig& b = s.bodies[i];
+  const InflowConfig& in = b.inflow;
+  const std::string p = "/bodies/" + std::to_string(i) + "/inflow";
+  const double h = s.grid.cell_size;
+  if (i + 1 != s.bodies.size())
+    throw InputError(file, p, "", "an inflow on the last body only (the body grows as debris enters; list it after the others)");
+  if (in.zone > 0 && in.zone < h) throw InputError(file, p + "/zone_length", value_text(in.zone), "a driven zone at least one cell long (" + value_text(h) + " m)");
+  const double zone = in.zone > 0 ? in.zone : 3 * h, depth = in.hydrograph.max_depth();
+  const double t[2] = {in.direction[0], in.direction[1]}, n[2] = {-t[1], t[0]};
+  for (double a : {-zone, 0.0})
+    for (double d : {0.0, depth})
+      for (int k = 0; k < 2; ++k) {
+        const double x = in.point[k] + a * t[k] + d * n[k];
+        const double lo = s.grid.origin[k] + 0.5 * h, hi = s.grid.origin[k] + s.grid.size[k] - 0.5 * h;
+        if (x < lo - 1e-12 || x > hi + 1e-12) {
+          std::ostringstream os;
+          os << "a section whose driven zone (" << zone << " m upstream) and deepest flow (" << depth << " m) lie in the grid interior ["
+             << lo << ", " << hi << "] m along axis " << k << "; a corner lies at " << x;
+          throw InputError(file, p + "/point", value_text(in.point), os.str());
+        }
+      }
+  const double dx = h / b.particles_per_cell;
+  return in.hydrograph.volume_per_width() / (dx * dx) + depth / dx;
+}
+
 // Cross-references and geometry: what a single key cannot check.
 void check_semantics(const Scenario& s, const std::string& file) {
   const int dim = s.analysis.dimension;
@@ -734,6 +795,10 @@ void check_semantics(const Scenario& s, const std::string& file) {
           s.analysis.plane == Plane::stress)
         throw InputError(file, p + "/material", "\"" + b.material + "\"", "a material other than " + m.model + " in plane stress "
                                                                         "(Drucker-Prager debris and slurries need plane strain or 3D)");
+    if (b.inflow.present) {
+      est += check_inflow(s, file, i);
+      continue;
+    }
     DVec lo, hi;
     shape_bounds(b.shape, dim, lo, hi);
     for (int d = 0; d < dim; ++d) {
@@ -837,6 +902,8 @@ void check_semantics(const Scenario& s, const std::string& file) {
                          s.structure.present ? "the name of one of the structure's members" : "a structure member (there is no structure)");
     } else if (!bodies.count(pr.target)) {
       throw InputError(file, p + "/body", quoted(pr.target), "the name of one of the bodies");
+    } else if (pr.type == "particle" && std::any_of(s.bodies.begin(), s.bodies.end(), [&](const BodyConfig& b) { return b.name == pr.target && b.inflow.present; })) {
+      throw InputError(file, p + "/type", quoted(pr.type), "a body probe on an inflow body (its particles do not exist at t = 0)");
     }
   }
 }

@@ -15,7 +15,7 @@ namespace {
 template <int D> void check_overlaps(const Scenario& s, const Scene<D>& sc) {
   for (std::size_t b = sc.bodies.size(); b-- > 0;)  // the later body is named: it is the one that was added wrongly
     for (std::size_t a = 0; a < sc.bodies.size(); ++a) {
-      if (a == b) continue;
+      if (a == b || s.bodies[a].inflow.present) continue;  // an inflow body has no shape
       const Body& body = sc.bodies[b];
       for (Index i = body.begin; i < body.end; ++i) {
         if (!shape_contains(s.bodies[a].shape, sc.particles.x[i].data(), D)) continue;
@@ -118,6 +118,23 @@ template <int D> void seed_body(Scene<D>& sc, const Scenario& s, const BodyConfi
   }
 }
 
+template <int D> void add_inflow(Scene<D>& sc, const Scenario& s, int body, int mat) {
+  const BodyConfig& bc = s.bodies[static_cast<std::size_t>(body)];
+  const InflowConfig& c = bc.inflow;
+  Inflow<D> in;
+  in.name = bc.name;
+  in.body = body;
+  in.point = vec<D>(c.point);
+  in.along = vec<D>(c.direction).normalized();
+  if constexpr (D == 2) in.up = Vec<D>(-in.along[1], in.along[0]);  // the parser refuses 3D inflows
+  in.zone = c.zone > 0 ? c.zone : 3 * s.grid.cell_size;
+  in.spacing = s.grid.cell_size / bc.particles_per_cell;
+  in.thickness = D == 2 ? s.analysis.thickness : 1.0;
+  in.density = s.materials[static_cast<std::size_t>(mat)].density;
+  in.hydrograph = c.hydrograph;
+  sc.inflows.push_back(std::move(in));
+}
+
 }  // namespace
 
 template <int D> Scene<D> build_scene(const Scenario& s) {
@@ -143,6 +160,12 @@ template <int D> Scene<D> build_scene(const Scenario& s) {
     body.field = multi ? static_cast<int>(b) : 0;
     body.rigid = bc.rigid;
     body.begin = static_cast<Index>(sc.particles.size());
+    if (bc.inflow.present) {  // created as the debris enters (engine/mpm/inflow.hpp)
+      body.end = body.begin;
+      sc.bodies.push_back(body);
+      add_inflow(sc, s, static_cast<int>(b), mat);
+      continue;
+    }
     seed_body(sc, s, bc, static_cast<int>(b), s.materials[mat].density);
     body.end = static_cast<Index>(sc.particles.size());
     for (Index i = body.begin; i < body.end; ++i) {

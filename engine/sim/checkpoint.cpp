@@ -10,7 +10,7 @@
 
 namespace dmi {
 namespace {
-constexpr char kMagic[8] = {'D', 'M', 'I', 'C', 'K', 'P', 'T', '4'};  // 2: particles carry their surface reach; 3: member contact's loaded nodes, the viscous factor; 4: its unknowns
+constexpr char kMagic[8] = {'D', 'M', 'I', 'C', 'K', 'P', 'T', '5'};  // 2: particles carry their surface reach; 3: member contact's loaded nodes, the viscous factor; 4: its unknowns; 5: bodies' ranges, inflows
 }
 
 std::uint64_t fnv1a(const std::string& bytes, std::uint64_t h) {

@@ -26,6 +26,12 @@ template <int D> Recorder<D>::Recorder(const Solver<D>& solver, const Scenario& 
   add("step", "-", {"value"});
   for (const auto& w : sc.walls) add("walls/" + w.name + "/force", "N", axes<D>());
   for (const auto& r : sc.regions) add("regions/" + r.name + "/force", "N", axes<D>());
+  for (const auto& in : sc.inflows) {  // what entered since t = 0, and the driven zone's force (engine/mpm/inflow.hpp)
+    add("inflows/" + in.name + "/force", "N", axes<D>());
+    add("inflows/" + in.name + "/mass", "kg", {"value"});
+    add("inflows/" + in.name + "/momentum", "kg m/s", axes<D>());
+    add("inflows/" + in.name + "/energy", "J", {"value"});
+  }
   if (sc.frame) add_frame_series(*sc.frame, s);
   const auto& P = sc.particles;
   for (const auto& pc : s.output.probes) {
@@ -69,7 +75,7 @@ template <int D> Recorder<D>::Recorder(const Solver<D>& solver, const Scenario& 
     }
     probes_.push_back(p);
   }
-  impulse_.assign(sc.walls.size() + sc.regions.size(), Vec<D>::Zero());
+  impulse_.assign(sc.walls.size() + sc.regions.size() + sc.inflows.size(), Vec<D>::Zero());
   const auto d0 = solver.diagnostics();
   e0_ = d0.kinetic + d0.strain + d0.frame_kinetic + d0.frame_strain;
 }
@@ -79,6 +85,7 @@ template <int D> void Recorder<D>::accumulate(const Solver<D>& solver, double dt
   std::size_t b = 0;
   for (const auto& w : sc.walls) impulse_[b++] += w.force * dt;
   for (const auto& r : sc.regions) impulse_[b++] += r.force * dt;
+  for (const auto& in : sc.inflows) impulse_[b++] += in.force * dt;
   if (const auto* mc = solver.member_contact()) {
     member_impulse_ += mc->force() * dt;
     if (mc->force().norm() > peak_contact_) {
@@ -117,9 +124,15 @@ template <int D> void Recorder<D>::sample(const Solver<D>& solver, double dt) {
   push<D>(series_[k++], d.momentum);
   series_[k++].data.push_back(dt);
   series_[k++].data.push_back(static_cast<double>(solver.steps()));
-  std::size_t j = 0;  // index into impulse_: walls, then regions
+  std::size_t j = 0;  // index into impulse_: walls, regions, then inflows
   for (const auto& w : sc.walls) push<D>(series_[k++], elapsed_ > 0 ? Vec<D>(impulse_[j++] / elapsed_) : w.force);
   for (const auto& r : sc.regions) push<D>(series_[k++], elapsed_ > 0 ? Vec<D>(impulse_[j++] / elapsed_) : r.force);
+  for (const auto& in : sc.inflows) {
+    push<D>(series_[k++], elapsed_ > 0 ? Vec<D>(impulse_[j++] / elapsed_) : in.force);
+    series_[k++].data.push_back(in.mass);
+    push<D>(series_[k++], in.momentum);
+    series_[k++].data.push_back(in.energy);
+  }
   for (auto& i : impulse_) i.setZero();
   if (sc.frame) sample_frame(*sc.frame, *solver.member_contact(), d, k);
   elapsed_ = 0;
@@ -143,10 +156,12 @@ template <int D> void Recorder<D>::sample(const Solver<D>& solver, double dt) {
     }
     for (const auto& q : p.quantities) {
       Series& s = series_[k++];
-      const Index i = solver.scene().particles.slot[p.index];  // p.index: creation order
-      if (q == "position") push<D>(s, p.particle ? P.x[i] : Vec<D>(mx / m));
-      else if (q == "displacement") push<D>(s, p.particle ? Vec<D>(P.x[i] - P.x0[i]) : Vec<D>(mu / m));
-      else if (q == "velocity") push<D>(s, p.particle ? P.v[i] : Vec<D>(mv / m));
+      const Index i = p.particle ? solver.scene().particles.slot[p.index] : 0;  // p.index: creation order
+      // A body with no particles yet (an inflow before its debris enters) records zeros.
+      const double w = m > 0 ? 1 / m : 0.0;
+      if (q == "position") push<D>(s, p.particle ? P.x[i] : Vec<D>(mx * w));
+      else if (q == "displacement") push<D>(s, p.particle ? Vec<D>(P.x[i] - P.x0[i]) : Vec<D>(mu * w));
+      else if (q == "velocity") push<D>(s, p.particle ? P.v[i] : Vec<D>(mv * w));
       else if (q == "kinetic_energy") s.data.push_back(ke);
       else if (q == "von_mises") s.data.push_back(von_mises(voigt_stress(P, static_cast<std::size_t>(i))));
       else if (q == "stress") {
@@ -302,7 +317,7 @@ template <int D> void Recorder<D>::load_state(StateReader& r) {
   }
   const std::size_t ni = impulse_.size();
   r.get(impulse_);
-  r.expect_size("wall and region impulses", impulse_.size(), ni);
+  r.expect_size("wall, region and inflow impulses", impulse_.size(), ni);
   r.get(member_impulse_), r.get(elapsed_), r.get(peak_contact_), r.get(peak_contact_time_), r.get(e0_);
   load_loads(r, peak_loads_);
 }

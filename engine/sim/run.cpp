@@ -135,9 +135,16 @@ RunInfo make_info(const Scenario& s, const RunOptions& o) {
 // step only shrinks in an impact, so this is a lower bound), against /analysis/max_steps, and its wall time on one core
 // at the particle kernel's speed (50 ns per particle and step plus 10 us per step, docs/performance.md: a lower bound,
 // scenes with damping or members cost more per particle) against /analysis/max_wall_hours.
+// Particles at the end of the run: those built, and those an inflow will create.
+template <int D> double final_particles(const Scene<D>& sc) {
+  double n = static_cast<double>(sc.particles.size());
+  for (const Inflow<D>& in : sc.inflows) n += in.hydrograph.volume_per_width() / (in.spacing * in.spacing) + in.hydrograph.max_depth() / in.spacing;
+  return n;
+}
+
 template <int D> RunEstimate step_budget(const Solver<D>& solver, const Scenario& s) {
   const double dt0 = solver.stable_time_step(s.analysis.end_time);
-  const double est = s.analysis.end_time / dt0, np = static_cast<double>(solver.scene().particles.size());
+  const double est = s.analysis.end_time / dt0, np = final_particles(solver.scene());
   const double wall = est * (np * 50e-9 + 10e-6);
   std::ostringstream end, os;
   end << s.analysis.end_time;
@@ -190,7 +197,7 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
     if (s.output.vtk) fs::create_directories(fs::path(o.out_dir) / "fields");
     results_path = (fs::path(o.out_dir) / "results.h5").string();
     ckpt = (fs::path(o.out_dir) / kCheckpointName).string();
-    if (!o.restart) check_disk_space(s, solver.scene().particles.size(), o.out_dir);
+    if (!o.restart) check_disk_space(s, static_cast<std::size_t>(final_particles(solver.scene())), o.out_dir);
   }
   if (o.restart) {  // the state of the checkpoint, and the partial results up to it
     StateReader r(read_checkpoint(ckpt, D, fingerprint), ckpt);
