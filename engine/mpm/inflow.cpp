@@ -64,9 +64,29 @@ template <int D> Index inject(Scene<D>& s, Inflow<D>& in, double t, double dt) {
   return last - first;
 }
 
+template <int D> bool backed_up(const Scene<D>& s, const Inflow<D>& in, double t) {
+  if (!in.driving(t)) return false;
+  const Hydrograph::State st = in.hydrograph.at(t, in.density);
+  if (!(st.velocity > 0) || !(st.depth > 0)) return false;
+  const Particles<D>& P = s.particles;
+  const Body& b = s.bodies[static_cast<std::size_t>(in.body)];
+  const double reach = std::max(st.depth, 2 * s.grid->h());
+  double m = 0, mv = 0;
+  for (Index i = b.begin; i < b.end; ++i) {
+    const Vec<D> r = P.x[i] - in.point;
+    const double a = r.dot(in.along), d = r.dot(in.up);
+    if (a > 0 && a <= reach && d >= 0 && d <= st.depth) m += P.mass[i], mv += P.mass[i] * P.v[i].dot(in.along);
+  }
+  // At least half the mass of a full-depth strip that long: the front has passed.
+  const double strip = 0.5 * in.min_density() * st.depth * reach * (D == 2 ? in.thickness : in.spacing);
+  return m >= strip && mv < 0.5 * st.velocity * m;
+}
+
 template struct Inflow<2>;
 template struct Inflow<3>;
 template Index inject<2>(Scene<2>&, Inflow<2>&, double, double);
 template Index inject<3>(Scene<3>&, Inflow<3>&, double, double);
+template bool backed_up<2>(const Scene<2>&, const Inflow<2>&, double);
+template bool backed_up<3>(const Scene<3>&, const Inflow<3>&, double);
 
 }  // namespace dmi

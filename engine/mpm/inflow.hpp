@@ -57,6 +57,12 @@ template <int D> struct Inflow {
   void load_state(StateReader& r);
 };
 
+// Whether the debris has backed up to the section: while the zone drives, the debris within one flow depth (at least
+// two cells) downstream of the section moves along the bed at less than half the hydrograph's velocity (mass
+// average). The zone would then push a deposit as a piston, which the flow behind a real section cannot do (it slows
+// as the bore from the dam passes it): the run must stop and the section move upstream.
+template <int D> bool backed_up(const Scene<D>& s, const Inflow<D>& in, double t);
+
 // Creates the slices whose plug length entered the zone during [t, t + dt]; extends the body's particle range and its
 // material's per-particle arrays. Returns the particles created.
 template <int D> Index inject(Scene<D>& s, Inflow<D>& in, double t, double dt);

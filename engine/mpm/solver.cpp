@@ -39,7 +39,17 @@ template <int D> Solver<D>::Solver(Scene<D> scene) : scene_(std::move(scene)) {
 template <int D> void Solver<D>::step(double dt) {
   if (profile_) lap_t_ = std::chrono::steady_clock::now();
   if (steps_ % kSortInterval == 1) sort_particles();  // locality for the scatter (from the second step on)
-  for (Inflow<D>& in : scene_.inflows) inject(scene_, in, time_, dt);  // debris entering the driven zone
+  for (Inflow<D>& in : scene_.inflows) {  // debris entering the driven zone
+    if (steps_ % kSortInterval == 0 && backed_up(scene_, in, time_)) {
+      std::ostringstream os;
+      os << "run stopped at step " << steps_ + 1 << ", t = " << time_ << " s: the debris has backed up to the inflow section of '" << in.name
+         << "' (it moves at less than half the hydrograph's velocity just downstream of it, " << in.mass << " kg of "
+         << in.hydrograph.mass_per_width(in.density) * in.thickness << " kg entered): the driven zone would push the deposit as a piston. "
+         << "Place the section further upstream (debris_surge.section_distance, or the inflow's point)";
+      throw RunError(os.str());
+    }
+    inject(scene_, in, time_, dt);
+  }
   scene_.grid->bin(scene_.particles.x);      // tiles, active nodes, zeroed fields
   lap(kBinning);
   particles_to_grid();                         // m_i, p_i, f_i = f_int + f_ext (eqs. 5-8)

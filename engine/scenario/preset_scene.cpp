@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/common/error.hpp"
+#include "engine/scenario/hydrograph_io.hpp"
 #include "engine/scenario/preset_types.hpp"
 
 namespace dmi {
@@ -70,6 +71,7 @@ class Builder {
   double front(double y) const;
   double bed(double x) const { return -x * std::tan(slope_); }  // ground line through the face's foot
   double front_length() const;
+  double section_distance() const;
   // The features the cell must resolve: their size across, the cells across them by default, and at least.
   struct Feature {
     double size, cells, min_cells;
@@ -84,6 +86,11 @@ class Builder {
   void add_buffer();
   void add_boulder();
   void add_debris();
+  void add_inflow();
+  // With a hydrograph: its flowing time (from the first flow to its end), the rise to its deepest flow, and the
+  // row of the largest momentum flux rho v^2 h (the design basis's surge).
+  double flow_duration() const;
+  double rise_time() const;
   void add_grid_walls_and_time();
   json design_basis() const;
   double buffer_damping_frequency(double E, double thickness) const;
@@ -151,6 +158,12 @@ double Builder::choose_cell_size() const {
 
 json Builder::build() {
   members_ = !(d_.type == "concrete_gravity" && d_.model == "continuum");
+  if (p_.debris && !p_.debris->hydrograph.empty()) {  // the surge's size for the cell, the grid and the estimates
+    DebrisPreset& f = *p_.debris;
+    f.depth = f.hydrograph.max_depth();
+    f.velocity = f.hydrograph.max_velocity();
+    f.length = f.velocity * flow_duration();
+  }
   if (p_.debris) slope_ = p_.debris->slope * kPi / 180;
   if (p_.boulder) {
     const BoulderPreset& b = *p_.boulder;
@@ -203,6 +216,21 @@ json Builder::design_basis() const {
     const DebrisPreset& f = *p_.debris;
     out["debris_surge"] = json{{"density_kg_m3", f.material.value("density", 2000.0)}, {"depth_m", f.depth}, {"length_m", f.length},
                                {"speed_m_s", f.velocity}, {"channel_slope_deg", f.slope}, {"front_length_m", front_length()}};
+    if (const Hydrograph& g = f.hydrograph; !g.empty()) {
+      // The estimates take the row of the largest momentum flux at the section; the phases' passage L / v is the
+      // hydrograph's flowing time; the snout is what passes the section while the depth rises to its deepest.
+      const double rho = f.material.value("density", 2000.0);
+      const std::size_t k = g.peak_flux_row(rho);
+      const double v = g.velocity[k];
+      json& s = out["debris_surge"];
+      s["density_kg_m3"] = g.density.empty() ? rho : g.density[k];
+      s["depth_m"] = g.depth[k];
+      s["speed_m_s"] = v;
+      s["length_m"] = v * flow_duration();
+      s["front_length_m"] = v * rise_time();
+      s["hydrograph"] = json{{"source", g.source}, {"duration_s", flow_duration()}, {"volume_m3_per_m", g.volume_per_width()},
+                             {"mass_kg_per_m", g.mass_per_width(rho)}, {"peak_flux_time_s", g.time[k]}, {"section_distance_m", section_distance()}};
+    }
     if (const std::string model = f.material.value("model", std::string("drucker_prager")); model == "drucker_prager" || model == "mu_i")
       out["debris_surge"].update(json{{"youngs_modulus_Pa", f.material.value("youngs_modulus", 0.0)}, {"poisson_ratio", f.material.value("poisson_ratio", 0.0)}});
     else
@@ -431,11 +459,57 @@ double Builder::front_length() const {
   return beta <= 0 ? most : std::min(most, f.depth / std::tan(beta));
 }
 
+double Builder::flow_duration() const {
+  const Hydrograph& g = p_.debris->hydrograph;
+  std::size_t a = 0;
+  while (a + 1 < g.time.size() && !(g.depth[a] * g.velocity[a] > 0 || g.depth[a + 1] * g.velocity[a + 1] > 0)) ++a;
+  return g.end() - g.time[a];
+}
+
+double Builder::rise_time() const {
+  const Hydrograph& g = p_.debris->hydrograph;
+  std::size_t a = 0, k = 0;
+  while (a + 1 < g.time.size() && !(g.depth[a] * g.velocity[a] > 0 || g.depth[a + 1] * g.velocity[a + 1] > 0)) ++a;
+  while (g.depth[k] < g.max_depth()) ++k;
+  return std::max(0.0, g.time[k] - g.time[a]);
+}
+
+double Builder::section_distance() const {
+  const DebrisPreset& f = *p_.debris;
+  // By default the deposit should not reach the section while debris still enters (the run stops if it does): the
+  // hydrograph's volume V (per metre) held in a triangle as high as the dam at its face, 2 V / H long, plus two depths.
+  return f.section_distance > 0 ? f.section_distance : std::max(1.0, 2 * f.hydrograph.volume_per_width() / d_.height + 2 * f.depth);
+}
+
+// A surge from a hydrograph enters through a section section_distance upstream of the dam, perpendicular to the bed
+// (engine/mpm/inflow.hpp); its driven zone, 3 cells long, lies upstream of the section. The run lasts until the
+// hydrograph's end, plus the time its last debris needs to reach the dam at half the fastest velocity, plus 0.5 s of
+// pile-up.
+void Builder::add_inflow() {
+  const DebrisPreset& f = *p_.debris;
+  const double c = std::cos(slope_), s = std::sin(slope_), height = f.depth / c;
+  double x = 0;  // where the flow meets the face (or buffer) at the bed, as for a block's front
+  for (int pass = 0; pass < 3; ++pass) {
+    const double y0 = bed(x);
+    double face = 1e300;
+    for (int k = 0; k <= 50; ++k) face = std::min(face, front(std::min(y0 + height * k / 50, d_.height)));
+    x = face;
+  }
+  const double dist = section_distance(), xs = x - dist * c, zone = 3 * h_;
+  bodies_.push_back(json{{"name", "debris"}, {"material", "debris"},
+                         {"inflow", {{"point", {clean(xs), clean(bed(xs))}}, {"direction", {clean(c), clean(-s)}}, {"hydrograph", hydrograph_json(f.hydrograph)}}}});
+  probes_.push_back(json{{"name", "debris"}, {"type", "body"}, {"body", "debris"}, {"quantities", {"velocity", "kinetic_energy", "position"}}});
+  const double xz = xs - zone * c;
+  box_.add(xz, bed(xz)), box_.add(xz + f.depth * s, bed(xz) + f.depth * c), box_.add(xs + f.depth * s, bed(xs) + f.depth * c);
+  end_time_ = std::max(end_time_, f.hydrograph.end() + dist / (0.5 * f.velocity) + 0.5);
+}
+
 void Builder::add_debris() {
   const DebrisPreset& f = *p_.debris;
   json m = f.material;
   m["name"] = "debris";
   materials_.push_back(m);
+  if (!f.hydrograph.empty()) return add_inflow();
   const double c = std::cos(slope_), gap = f.gap >= 0 ? f.gap : 2 * h_, height = f.depth / c;  // vertical flow height
   // Front: a vertical edge gap upstream of whatever it meets first over its height (found by a
   // fixed-point pass, since the bed height at the front depends on where the front is).

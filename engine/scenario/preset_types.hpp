@@ -30,6 +30,8 @@ struct BoulderPreset {
 struct DebrisPreset {
   double depth = 0, length = 0, velocity = 0, slope = 0, gap = -1, bed_friction = 0.4;
   double front_length = -1;  // < 0: the Coulomb wedge (preset_scene.cpp)
+  Hydrograph hydrograph;     // given: an inflow section section_distance upstream of the dam, instead of a block
+  double section_distance = -1;  // m; < 0: 2 V / H + 2 h_max (preset_scene.cpp)
   nlohmann::json material;
 };
 

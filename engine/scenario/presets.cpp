@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "engine/common/error.hpp"
+#include "engine/scenario/hydrograph_io.hpp"
 #include "engine/scenario/preset_types.hpp"
 
 namespace dmi {
@@ -162,9 +163,23 @@ void read_boulder(Obj o, BoulderPreset& b) {
 }
 
 void read_debris(Obj o, DebrisPreset& d) {
-  o.number("depth", d.depth, positive("m", "flow depth, normal to the bed", true));
-  o.number("length", d.length, positive("m", "surge length along the bed", true));
-  o.number("velocity", d.velocity, positive("m/s", "front speed along the bed, towards the dam", true));
+  const json* hg = o.raw("hydrograph", Spec{.doc = "instead of depth, length and velocity: the flow entering the channel through a section "
+                                                   "section_distance upstream of the dam, as depth (m, normal to the bed), velocity (m/s, along "
+                                                   "the bed) and optionally density (kg/m^3) against time (s) from a run-out model: a CSV file "
+                                                   "(relative to the scenario's folder; header row time, depth, velocity[, density]) or an object "
+                                                   "of equal-length arrays {\"time\": [...], \"depth\": [...], \"velocity\": [...]}"},
+                         "string or object", "");
+  if (hg) d.hydrograph = read_hydrograph(*hg, o.context().file, o.path() + "/hydrograph");
+  const bool given = !d.hydrograph.empty();
+  if (!o.documenting() && given)
+    for (const char* k : {"depth", "length", "velocity", "gap", "front_length"})
+      if (const json* v = o.raw(k, Spec{}, "number", "")) o.fail(k, v, "no " + std::string(k) + " with a hydrograph (the hydrograph gives the flow)");
+  o.number("depth", d.depth, positive("m", "flow depth, normal to the bed (without a hydrograph)", !given));
+  o.number("length", d.length, positive("m", "surge length along the bed (without a hydrograph)", !given));
+  o.number("velocity", d.velocity, positive("m/s", "front speed along the bed, towards the dam (without a hydrograph)", !given));
+  o.number("section_distance", d.section_distance, positive("m", "with a hydrograph: distance along the bed from the dam face (or buffer) "
+                                                                 "to the inflow section; default 2 V / H + 2 h_max (V the hydrograph's volume per metre, H the dam height: its deposit "
+                                                                 "as a triangle as high as the dam), at least 1 m. The run stops if the deposit reaches the section"));
   o.number("channel_slope", d.slope, Spec{.unit = "deg", .doc = "bed inclination (rising upstream)", .min = 0, .max = 45, .max_open = true});
   o.number("gap", d.gap, nonneg("m", "distance from the surge front to the dam face (or buffer) at t = 0; default 2 cells"));
   o.number("bed_friction", d.bed_friction, nonneg("", "Coulomb friction coefficient of the bed"));
@@ -178,6 +193,7 @@ void read_debris(Obj o, DebrisPreset& d) {
     std::snprintf(buf, sizeof buf, "at most the surge length (%g m)", d.length);
     o.fail("front_length", &v, buf);
   }
+  if (!o.documenting() && !given && d.section_distance > 0) o.fail("section_distance", nullptr, "a hydrograph to go with section_distance");
   d.material = material_object(o, "material", json{{"model", "drucker_prager"}, {"density", 2000}, {"youngs_modulus", 20e6}, {"poisson_ratio", 0.3},
                                                    {"cohesion", 0}, {"friction_angle", 30}},
                                "debris law: drucker_prager (granular, default), mu_i (dense granular flow) or a slurry (bingham, newtonian)", "debris");

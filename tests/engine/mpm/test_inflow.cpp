@@ -165,5 +165,22 @@ TEST(Inflow, ZoneThrustIsHydrostaticForWater) {
   EXPECT_NEAR(impulse / span, thrust, 0.10 * thrust);
 }
 
+// A section too close to the dam: the deposit backs up to it while debris still enters, and the run stops with a
+// message naming the inflow and what to do, rather than pushing the deposit as a piston.
+TEST(Inflow, DepositReachingTheSectionStopsTheRun) {
+  const json j = json::parse(R"({"schema_version": 1, "name": "d",
+    "dam": {"type": "concrete_gravity", "height": 4.0, "crest_thickness": 1.0, "base_thickness": 1.6},
+    "debris_surge": {"hydrograph": {"time": [0, 0.4, 2.0], "depth": [0, 1.0, 1.0], "velocity": [6, 6, 6]}, "section_distance": 1.0,
+                     "channel_slope": 0, "material": {"friction_angle": 32}}})");
+  Solver<2> s(build_scene<2>(parse_scenario(j.dump(), "near.json")));
+  try {
+    while (s.time() < 2.0) s.step(s.stable_time_step(2.0 - s.time()));
+    FAIL() << "the deposit pushed by the driven zone was not noticed";
+  } catch (const RunError& e) {
+    EXPECT_NE(std::string(e.what()).find("backed up to the inflow section of 'debris'"), std::string::npos) << e.what();
+    EXPECT_LT(s.time(), 2.0);
+  }
+}
+
 }  // namespace
 }  // namespace dmi

@@ -149,6 +149,38 @@ TEST(Presets, DebrisSurgeLiesOnTheInclinedBed) {
   EXPECT_NO_THROW(parse_scenario(j.dump(), "t.json"));
 }
 
+// A hydrograph instead of a block: the debris body is an inflow, last, whose section lies section_distance upstream of
+// the face's foot along the bed (default 2 V / H + 2 h_max: V = 9.05 m^2 for the bundled CSV, H = 4 m -> 6.525 m); the
+// design basis takes the row of the largest momentum flux (1 m at 6 m/s), the flowing time 3 s and the 0.4 s rise.
+TEST(Presets, HydrographBecomesAnInflowSectionUpstreamOfTheDam) {
+  json j = json::parse(R"({"schema_version": 1, "name": "d",
+    "dam": {"type": "concrete_gravity", "height": 4, "crest_thickness": 1.0, "base_thickness": 1.6},
+    "debris_surge": {"hydrograph": "debris_hydrograph.csv", "channel_slope": 10}})");
+  const std::string file = std::string(DMI_SOURCE_DIR) + "/examples/scenario.json";
+  const json low = expand_presets(j, file);
+  const json& b = low["bodies"].back();
+  ASSERT_EQ(b["name"], "debris");
+  ASSERT_TRUE(b.contains("inflow"));
+  const double c = std::cos(10 * kPi / 180), s = std::sin(10 * kPi / 180);
+  EXPECT_NEAR(b["inflow"]["point"][0].get<double>(), -(2 * 9.05 / 4 + 2) * c, 1e-9);
+  EXPECT_NEAR(b["inflow"]["point"][1].get<double>(), (2 * 9.05 / 4 + 2) * s, 1e-9);
+  EXPECT_NEAR(b["inflow"]["direction"][1].get<double>(), -s, 1e-9);
+  const json& d = low["design_basis"]["debris_surge"];
+  EXPECT_DOUBLE_EQ(d["depth_m"].get<double>(), 1.0);
+  EXPECT_DOUBLE_EQ(d["speed_m_s"].get<double>(), 6.0);
+  EXPECT_DOUBLE_EQ(d["length_m"].get<double>(), 18.0);
+  EXPECT_NEAR(d["front_length_m"].get<double>(), 2.4, 1e-12);
+  EXPECT_NEAR(d["hydrograph"]["volume_m3_per_m"].get<double>(), 9.05, 1e-12);
+  EXPECT_NO_THROW(parse_scenario(j.dump(), file));
+  j["debris_surge"]["depth"] = 1.0;
+  try {
+    expand_presets(j, file);
+    FAIL() << "depth and a hydrograph were both accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/debris_surge/depth = 1"), std::string::npos) << e.what();
+  }
+}
+
 // phi 40 deg on a 15 deg bed: 1 / tan 25 deg = 2.1445 m; front_length 0 is the blunt front of a rigid block.
 TEST(Presets, DebrisSnoutStandsAtTheAngleOfRepose) {
   json j = json::parse(R"({"schema_version": 1, "name": "d",

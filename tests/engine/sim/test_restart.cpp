@@ -102,6 +102,15 @@ TEST(Restart, ImplicitlyDampedBufferIsBitIdentical) {
   expect_bit_identical_restart(s, "damped", 400, 1);
 }
 
+// Debris entering from a CSV hydrograph: the particle count grows; stopped while it enters, the restart restores the
+// body's range, the plug length and the totals, and continues bit for bit.
+TEST(Restart, InflowIsBitIdentical) {
+  const auto variants = dmi::load_scenario_variants(std::string(DMI_SOURCE_DIR) + "/examples/concrete_dam_debris_hydrograph.json");
+  dmi::Scenario s = variants.at(0).scenario;
+  s.analysis.end_time = 1.3;
+  expect_bit_identical_restart(s, "inflow", 1601, 2);
+}
+
 TEST(Restart, RefusesAMissingCorruptOrForeignCheckpoint) {
   const dmi::Scenario s = dmi::example_scenario("free_fall.json");
   const fs::path dir = fresh_dir("bad");
