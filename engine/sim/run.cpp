@@ -295,6 +295,7 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
 
   info.numbers["steps"] = static_cast<double>(solver.steps());
   info.numbers["wall_seconds"] = wall_now();
+  info.numbers["particles"] = static_cast<double>(solver.scene().particles.size());  // at the end (an inflow adds them)
   if (o.profile) {
     auto key = [](std::string n) {
       for (char& c : n) c = c == ' ' ? '_' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
