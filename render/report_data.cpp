@@ -93,7 +93,21 @@ json scenario_rows(const RunData& r) {
     else if (k.value("model", "") == "elastic")
       row("boulder model", "elastic: on a bare face the rock's stiffness sets the impact's peak");
   }
-  if (b.contains("debris_surge")) {
+  if (b.contains("debris_surge") && b["debris_surge"].contains("hydrograph")) {
+    const json& k = b["debris_surge"];
+    const json& g = k["hydrograph"];
+    row("debris surge", "from a hydrograph (" + g.value("source", std::string("?")) + "): flowing " + fmt("%.3g s", num(g, {"duration_s"})) +
+                            fmt(", %.3g m³", num(g, {"volume_m3_per_m"})) + fmt(" (%.4g kg) per metre", num(g, {"mass_kg_per_m"})) +
+                            fmt(", entering %.3g m upstream of the face", num(g, {"section_distance_m"})) +
+                            fmt(", channel slope %.3g°", num(k, {"channel_slope_deg"})));
+    row("largest momentum flux", fmt("at %.3g s: ", num(g, {"peak_flux_time_s"})) + fmt("depth %.3g m", num(k, {"depth_m"})) +
+                                     fmt(", %.3g m/s", num(k, {"speed_m_s"})) + fmt(", ρ %.0f kg/m³", num(k, {"density_kg_m3"})) +
+                                     " (the estimates' surge; its passage T is the flowing time)");
+    if (const Series* m = r.results.find("inflows/debris/mass"); m && !m->data.empty()) {
+      const double want = num(g, {"mass_kg_per_m"}) * num(dam, {"width_m"});
+      row("debris entered", fmt("%.5g kg", m->data.back()) + fmt(" of the hydrograph's %.5g kg", want) + fmt(" (%.2f %%)", 100 * m->data.back() / want));
+    }
+  } else if (b.contains("debris_surge")) {
     const json& k = b["debris_surge"];
     row("debris surge", fmt("depth %.3g m", num(k, {"depth_m"})) + fmt(", length %.3g m", num(k, {"length_m"})) + fmt(", front speed %.3g m/s", num(k, {"speed_m_s"})) +
                             fmt(", ρ %.0f kg/m³", num(k, {"density_kg_m3"})) + fmt(", channel slope %.3g°", num(k, {"channel_slope_deg"})));
@@ -381,7 +395,8 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
       (banded ? " With the grid study, the simulated peak carries its grid convergence index (GCI) and the ratio the band it spans for the simulated peak within ± GCI." : "");
   // Health.
   d["health_intro"] =
-      "Energy balance error = kinetic + strain (+ frame) − work of gravity and walls − initial energy; member contact is internal, so "
+      "Energy balance error = kinetic + strain (+ frame) − work of gravity and walls − energy brought in by inflows − initial energy; member "
+      "contact is internal, so "
       "its losses show as a negative error. Reference: the largest kinetic + strain energy of the run.";
   d["health_rows"] = per_run_rows(runs, {
       {"status", [](const RunData& r) { return r.results.complete ? std::string("complete") : std::string("incomplete"); }},
