@@ -19,6 +19,7 @@
 
 #include "design/design.hpp"
 #include "design/grid_study.hpp"
+#include "engine/scenario/hydrograph_io.hpp"
 #include "render/field.hpp"
 #include "render/render_main.hpp"
 #include "render/charts.hpp"
@@ -175,6 +176,7 @@ int grid_study_run(const std::string& file, const std::string& out, int threads,
   std::stringstream text;
   text << in.rdbuf();
   nlohmann::json source = nlohmann::json::parse(text.str());
+  dmi::resolve_file_references(source, file);  // the coarser levels are written into OUT/grid_study/
   const std::array<double, 3> h{h1, h1 * ratio, h1 * ratio * ratio};
   const double c1 = std::pow(ratio, -(dim + 1)), c2 = c1 * c1;
   if (!quiet) std::printf("grid study: cell sizes %.4g, %.4g, %.4g m (ratio %.3g); estimated cost %.2f times the single run at %.4g m "

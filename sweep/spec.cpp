@@ -9,6 +9,7 @@
 
 #include "engine/common/error.hpp"
 #include "engine/common/json_input.hpp"
+#include "engine/scenario/hydrograph_io.hpp"
 #include "engine/scenario/scenario.hpp"
 
 namespace dmi::sweep {
@@ -102,9 +103,11 @@ SweepSpec parse_sweep(const nlohmann::ordered_json& j, const std::string& file, 
       throw InputError(p.string() + ": not valid JSON: " + e.what());
     }
     s.base_file = p.string();
+    resolve_file_references(s.base, p.string());  // the cases are written into OUT/cases/
   } else if (j["base"].is_object()) {
     s.base = json::parse(j["base"].dump());
     s.base_file = file + " (/base)";
+    resolve_file_references(s.base, file);
   } else {
     throw InputError(file, "/base", j["base"].dump().substr(0, 60), "a file name or a scenario object");
   }

@@ -152,6 +152,19 @@ Hydrograph read_hydrograph(const nlohmann::json& value, const std::string& file,
                    "{\"time\": [...], \"depth\": [...], \"velocity\": [...]}");
 }
 
+void resolve_file_references(nlohmann::json& j, const std::string& source_file) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::absolute(fs::path(source_file)).parent_path();
+  auto fix = [&](nlohmann::json& v) {
+    if (v.is_string() && !fs::path(v.get<std::string>()).is_absolute()) v = (dir / v.get<std::string>()).lexically_normal().string();
+  };
+  if (!j.is_object()) return;
+  if (j.contains("debris_surge") && j["debris_surge"].is_object() && j["debris_surge"].contains("hydrograph")) fix(j["debris_surge"]["hydrograph"]);
+  if (j.contains("bodies") && j["bodies"].is_array())
+    for (auto& b : j["bodies"])
+      if (b.is_object() && b.contains("inflow") && b["inflow"].is_object() && b["inflow"].contains("hydrograph")) fix(b["inflow"]["hydrograph"]);
+}
+
 nlohmann::json hydrograph_json(const Hydrograph& h) {
   nlohmann::json j{{"time", h.time}, {"depth", h.depth}, {"velocity", h.velocity}};
   if (!h.density.empty()) j["density"] = h.density;

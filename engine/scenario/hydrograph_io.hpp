@@ -14,6 +14,9 @@ namespace dmi {
 // columns are ignored, lines starting with '#' are comments). Throws InputError naming the scenario file, the path,
 // the value and, for a CSV, its line and column.
 Hydrograph read_hydrograph(const nlohmann::json& value, const std::string& file, const std::string& path);
+// A scenario written elsewhere (a grid-study level, a sweep case) keeps its hydrograph files: relative names at
+// /debris_surge/hydrograph and /bodies/*/inflow/hydrograph become absolute, resolved against source_file's folder.
+void resolve_file_references(nlohmann::json& scenario, const std::string& source_file);
 // The hydrograph as the inline JSON object read_hydrograph accepts.
 nlohmann::json hydrograph_json(const Hydrograph& h);
 

@@ -97,6 +97,19 @@ TEST(Hydrograph, BadInputNamesTheKeyTheFileTheLineAndTheColumn) {
   for (const auto& f : {bad, back, nocol}) std::filesystem::remove(f);
 }
 
+// A scenario copied into another folder (a grid-study level, a sweep case) still finds its CSV.
+TEST(Hydrograph, FileNamesResolveAgainstTheScenarioFolder) {
+  json j = {{"debris_surge", {{"hydrograph", "flow.csv"}}},
+            {"bodies", {{{"inflow", {{"hydrograph", "sub/in.csv"}}}}, {{"inflow", {{"hydrograph", "/abs/x.csv"}}}}, {{"shape", {}}}}}};
+  resolve_file_references(j, "/data/case/scenario.json");
+  EXPECT_EQ(j["debris_surge"]["hydrograph"], "/data/case/flow.csv");
+  EXPECT_EQ(j["bodies"][0]["inflow"]["hydrograph"], "/data/case/sub/in.csv");
+  EXPECT_EQ(j["bodies"][1]["inflow"]["hydrograph"], "/abs/x.csv");
+  json inline_one = {{"debris_surge", {{"hydrograph", {{"time", {0, 1}}}}}}};
+  resolve_file_references(inline_one, "/data/case/scenario.json");
+  EXPECT_TRUE(inline_one["debris_surge"]["hydrograph"].is_object());
+}
+
 // A 0.4 m deep stream at 4 m/s entering a frictionless horizontal channel for 0.7 s (depth ramps of 0.1 s).
 json channel(const json& material, double end_time) {
   return json{{"schema_version", 1},
