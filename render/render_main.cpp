@@ -193,13 +193,19 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
     const FieldImage gi = render_field({p}, spec, (fs::path(image_dir) / f1).string());
     add(f1, "field_governing", r.variant, spec.title + "; picture at the nearest snapshot, t = " + ms(r.results.snapshots[sg].time) + scale_note(gi, {p}),
         gi.width, gi.height, &gi);
-    // The sequence: initial state, contact start, contact peak, rebound (end of the pulse).
+    // The sequence: initial state, contact start, contact peak, rebound (end of the pulse); for a surge, its phases.
     const double t_peak = num(r.design, {"contact", "peak_time_s"}, tg);
     const double t_start = num(r.design, {"contact", "pulse", "start_s"}, 0.0), t_end = num(r.design, {"contact", "pulse", "end_s"}, t_peak);
     std::vector<std::pair<std::string, std::size_t>> seq = {{"initial state", 0},
                                                             {"contact start", nearest_snapshot(r.results, t_start)},
                                                             {"contact peak", nearest_snapshot(r.results, t_peak)},
                                                             {"rebound", nearest_snapshot(r.results, t_end + 0.5 * (t_end - t_start))}};
+    // A debris surge: its arrival, its peak and the deposit it leaves (the last snapshot), not a rebound.
+    if (const json& dp = r.design.contains("debris_phases") ? r.design["debris_phases"] : json(); dp.is_object())
+      seq = {{"initial state", 0},
+             {"surge arrival", nearest_snapshot(r.results, num(dp, {"arrival_s"}, t_start))},
+             {"load peak", nearest_snapshot(r.results, num(dp, {"peak_time_s"}, t_peak))},
+             {"deposit", r.results.snapshots.size() - 1}};
     std::vector<Panel> all;
     for (const auto& [what, s] : seq) all.push_back({&r.results, fr, s, ""});
     FieldSpec sspec = spec;
