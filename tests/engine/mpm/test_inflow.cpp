@@ -195,5 +195,21 @@ TEST(Inflow, DepositReachingTheSectionStopsTheRun) {
   }
 }
 
+// Debris lighter than its material (a hydrograph density of 500 against 2000 kg/m^3) has a wave speed twice the
+// material's, c ~ 1/sqrt(rho): the step halves (the empty channel's step is the wave speed's, the entering
+// velocity 4 m/s added), and the created particles carry the hydrograph's density.
+TEST(Inflow, LighterDebrisShortensTheStepAndCarriesItsDensity) {
+  json light = channel(kDebris, 0.2), heavy = light;
+  light["bodies"][0]["inflow"]["hydrograph"]["density"] = {500, 500, 500, 500};
+  Solver<2> a(build_scene<2>(parse_scenario(heavy, "heavy.json"))), b(build_scene<2>(parse_scenario(light, "light.json")));
+  const double c = a.scene().materials[0]->wave_speed(), h = 0.05, cfl = a.scene().options.cfl;
+  EXPECT_NEAR(a.stable_time_step(1.0), cfl * h / (c + 4), 1e-12);
+  EXPECT_NEAR(b.stable_time_step(1.0), cfl * h / (2 * c + 4), 1e-12);
+  while (b.time() < 0.2 - 1e-12) b.step(b.stable_time_step(0.2 - b.time()));
+  const auto& P = b.scene().particles;
+  ASSERT_GT(P.size(), 0u);
+  for (std::size_t i = 0; i < P.size(); ++i) ASSERT_NEAR(P.mass[i] / P.vol0[i], 500.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace dmi
