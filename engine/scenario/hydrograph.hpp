@@ -31,6 +31,11 @@ struct Hydrograph {
   double min_density(double rho) const;
   // The row with the largest momentum flux rho v^2 h (design loads).
   std::size_t peak_flux_row(double rho) const;
+  // The first row of the first interval that carries flow (depth and velocity above zero at one of its ends).
+  std::size_t first_flow_row() const;
+  // Particles an inflow of spacing dx creates from it in 2D: its volume per width over dx^2, plus one column's worth
+  // for the depth rounding (run-time and memory estimates).
+  double particle_estimate(double dx) const { return volume_per_width() / (dx * dx) + max_depth() / dx; }
 };
 
 inline Hydrograph::State Hydrograph::at(double t, double rho) const {
@@ -84,6 +89,12 @@ inline double Hydrograph::mass_per_width(double rho) const {
 inline double Hydrograph::max_depth() const { return empty() ? 0.0 : *std::max_element(depth.begin(), depth.end()); }
 inline double Hydrograph::max_velocity() const { return empty() ? 0.0 : *std::max_element(velocity.begin(), velocity.end()); }
 inline double Hydrograph::min_density(double rho) const { return density.empty() ? rho : *std::min_element(density.begin(), density.end()); }
+
+inline std::size_t Hydrograph::first_flow_row() const {
+  std::size_t a = 0;
+  while (a + 1 < time.size() && !(depth[a] * velocity[a] > 0 || depth[a + 1] * velocity[a + 1] > 0)) ++a;
+  return a;
+}
 
 inline std::size_t Hydrograph::peak_flux_row(double rho) const {
   std::size_t best = 0;

@@ -764,8 +764,7 @@ double check_inflow(const Scenario& s, const std::string& file, std::size_t i) {
           throw InputError(file, p + "/point", value_text(in.point), os.str());
         }
       }
-  const double dx = h / b.particles_per_cell;
-  return in.hydrograph.volume_per_width() / (dx * dx) + depth / dx;
+  return in.hydrograph.particle_estimate(h / b.particles_per_cell);
 }
 
 // Cross-references and geometry: what a single key cannot check.

@@ -87,10 +87,12 @@ class Builder {
   void add_boulder();
   void add_debris();
   void add_inflow();
-  // With a hydrograph: its flowing time (from the first flow to its end), the rise to its deepest flow, and the
-  // row of the largest momentum flux rho v^2 h (the design basis's surge).
+  // With a hydrograph: its flowing time (from the first flow to its end) and the rise to its deepest flow.
   double flow_duration() const;
   double rise_time() const;
+  // x of the foot of a front `gap` upstream of whatever a flow `height` high (vertically) meets first: the face or
+  // the buffer (a fixed-point pass, since the bed height at the front depends on where the front is).
+  double front_foot(double height, double gap) const;
   void add_grid_walls_and_time();
   json design_basis() const;
   double buffer_damping_frequency(double E, double thickness) const;
@@ -461,17 +463,25 @@ double Builder::front_length() const {
 
 double Builder::flow_duration() const {
   const Hydrograph& g = p_.debris->hydrograph;
-  std::size_t a = 0;
-  while (a + 1 < g.time.size() && !(g.depth[a] * g.velocity[a] > 0 || g.depth[a + 1] * g.velocity[a + 1] > 0)) ++a;
-  return g.end() - g.time[a];
+  return g.end() - g.time[g.first_flow_row()];
 }
 
 double Builder::rise_time() const {
   const Hydrograph& g = p_.debris->hydrograph;
-  std::size_t a = 0, k = 0;
-  while (a + 1 < g.time.size() && !(g.depth[a] * g.velocity[a] > 0 || g.depth[a + 1] * g.velocity[a + 1] > 0)) ++a;
+  std::size_t k = 0;
   while (g.depth[k] < g.max_depth()) ++k;
-  return std::max(0.0, g.time[k] - g.time[a]);
+  return std::max(0.0, g.time[k] - g.time[g.first_flow_row()]);
+}
+
+double Builder::front_foot(double height, double gap) const {
+  double x = -gap;
+  for (int pass = 0; pass < 3; ++pass) {
+    const double y0 = bed(x);
+    double face = 1e300;
+    for (int k = 0; k <= 50; ++k) face = std::min(face, front(std::min(y0 + height * k / 50, d_.height)));
+    x = face - gap;
+  }
+  return x;
 }
 
 double Builder::section_distance() const {
@@ -487,14 +497,8 @@ double Builder::section_distance() const {
 // pile-up.
 void Builder::add_inflow() {
   const DebrisPreset& f = *p_.debris;
-  const double c = std::cos(slope_), s = std::sin(slope_), height = f.depth / c;
-  double x = 0;  // where the flow meets the face (or buffer) at the bed, as for a block's front
-  for (int pass = 0; pass < 3; ++pass) {
-    const double y0 = bed(x);
-    double face = 1e300;
-    for (int k = 0; k <= 50; ++k) face = std::min(face, front(std::min(y0 + height * k / 50, d_.height)));
-    x = face;
-  }
+  const double c = std::cos(slope_), s = std::sin(slope_);
+  const double x = front_foot(f.depth / c, 0.0);  // where the flow meets the face (or buffer) at the bed
   const double dist = section_distance(), xs = x - dist * c, zone = 3 * h_;
   bodies_.push_back(json{{"name", "debris"}, {"material", "debris"},
                          {"inflow", {{"point", {clean(xs), clean(bed(xs))}}, {"direction", {clean(c), clean(-s)}}, {"hydrograph", hydrograph_json(f.hydrograph)}}}});
@@ -511,15 +515,7 @@ void Builder::add_debris() {
   materials_.push_back(m);
   if (!f.hydrograph.empty()) return add_inflow();
   const double c = std::cos(slope_), gap = f.gap >= 0 ? f.gap : 2 * h_, height = f.depth / c;  // vertical flow height
-  // Front: a vertical edge gap upstream of whatever it meets first over its height (found by a
-  // fixed-point pass, since the bed height at the front depends on where the front is).
-  double x = -gap;
-  for (int pass = 0; pass < 3; ++pass) {
-    const double y0 = bed(x);
-    double face = 1e300;
-    for (int k = 0; k <= 50; ++k) face = std::min(face, front(std::min(y0 + height * k / 50, d_.height)));
-    x = face - gap;
-  }
+  const double x = front_foot(height, gap);  // the front's foot, gap upstream of what it meets first
   const double xb = x - f.length * c;  // back edge: the surge is `length` long along the bed
   // The snout: the depth rises from nothing at the front to the full depth over front_length() along the bed.
   json poly = json::array({{xb, bed(xb)}, {x, bed(x)}});

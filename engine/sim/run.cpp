@@ -138,7 +138,7 @@ RunInfo make_info(const Scenario& s, const RunOptions& o) {
 // Particles at the end of the run: those built, and those an inflow will create.
 template <int D> double final_particles(const Scene<D>& sc) {
   double n = static_cast<double>(sc.particles.size());
-  for (const Inflow<D>& in : sc.inflows) n += in.hydrograph.volume_per_width() / (in.spacing * in.spacing) + in.hydrograph.max_depth() / in.spacing;
+  for (const Inflow<D>& in : sc.inflows) n += in.hydrograph.particle_estimate(in.spacing);
   return n;
 }
 
