@@ -1,5 +1,6 @@
 #include "engine/common/parallel.hpp"
 #include "engine/mpm/boundary.hpp"
+#include "engine/mpm/rigid.hpp"
 
 #include <cmath>
 #include <limits>
@@ -98,6 +99,7 @@ double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double
   const double tol = 1e-9 * g.h();
   const Index nn = g.nnodes();
   double work = 0.0;
+  const std::vector<char> hull = hull_fields(s);  // plane unilateral walls meet these fields at the rigid hull
   for (Index id : nodes ? *nodes : g.active()) {
     const Vec<D> x = g.node_pos(id);
     for (int fld = 0; fld < g.nfields(); ++fld) {
@@ -105,6 +107,7 @@ double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double
       const double m = g.m[k];
       if (m <= 0) continue;
       for (auto& w : s.walls) {
+        if (hull[fld] && !w.box && unilateral(w.condition)) continue;  // RigidBodies::wall_contact
         // Surface detection: only nodes engaged by particles touching the wall, so the held patch is the contact
         // patch to within a node spacing (not the stencil's reach), among the nodes within h/2 of the plane on
         // either side: a plane between grid lines acts at the nearest node row, not at the row behind it.

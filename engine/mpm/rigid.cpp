@@ -37,12 +37,9 @@ template <int D> RigidBodies<D>::RigidBodies(Scene<D>& s) {
     st.xc0 /= st.mass;
     st.xc = st.xc0;
     for (Index i = b.begin; i < b.end; ++i) {
-      Vec<3> r = Vec<3>::Zero(), a = Vec<3>::Zero();  // offset and half-sizes, padded to 3D
+      Vec<3> r = Vec<3>::Zero();  // offset, padded to 3D
       r.head<D>() = P.x0[i] - st.xc0;
-      a.head<D>() = P.half_size[i];
-      Mat<3> own = Mat<3>::Zero();  // a uniform box of half-sizes a about its centre: m (a_j^2 + a_k^2) / 3
-      for (int c = 0; c < 3; ++c) own(c, c) = (a.squaredNorm() - a[c] * a[c]) / 3;
-      st.I0 += P.mass[i] * (r.squaredNorm() * Mat<3>::Identity() - r * r.transpose() + own);
+      st.I0 += P.mass[i] * (r.squaredNorm() * Mat<3>::Identity() - r * r.transpose());
     }
     bodies_.push_back(st);
   }
@@ -75,40 +72,144 @@ template <int D> void RigidBodies<D>::project(Scene<D>& s) {
   }
 }
 
+namespace {
+
+// The rigid motion of a field's nodal velocities: mass, mass centre, momentum velocity, inertia about the centre and
+// spin (momentum and angular momentum of the field kept).
+template <int D> struct NodalMotion {
+  double M = 0, rmax = 0;
+  Vec<D> xc = Vec<D>::Zero(), V = Vec<D>::Zero();
+  Mat<3> I = Mat<3>::Zero();
+  Vec<3> w = Vec<3>::Zero();  // 2D: (0, 0, w)
+  Vec<D> at(const Vec<D>& x) const {
+    Vec<3> r = Vec<3>::Zero();
+    r.head<D>() = x - xc;
+    return V + w.cross(r).head<D>();
+  }
+};
+
+template <int D> NodalMotion<D> nodal_motion(const Grid<D>& g, const std::vector<Vec<D>>& vel, Index off) {
+  NodalMotion<D> m;
+  Vec<D> mx = Vec<D>::Zero(), p = Vec<D>::Zero();
+  for (Index id : g.active())
+    if (const double mi = g.m[off + id]; mi > 0) m.M += mi, mx += mi * g.node_pos(id), p += mi * vel[off + id];
+  if (!(m.M > 0)) return m;
+  m.xc = mx / m.M, m.V = p / m.M;
+  Vec<3> l = Vec<3>::Zero();
+  for (Index id : g.active())
+    if (const double mi = g.m[off + id]; mi > 0) {
+      Vec<3> r = Vec<3>::Zero(), v = Vec<3>::Zero();
+      r.head<D>() = g.node_pos(id) - m.xc, v.head<D>() = vel[off + id];
+      m.I += mi * (r.squaredNorm() * Mat<3>::Identity() - r * r.transpose());
+      l += mi * r.cross(v);
+      m.rmax = std::max(m.rmax, r.norm());
+    }
+  if constexpr (D == 2) {
+    m.w.z() = l.z() / m.I(2, 2);
+  } else {
+    m.w = m.I.ldlt().solve(l);
+  }
+  return m;
+}
+
+}  // namespace
+
+template <int D> std::vector<char> hull_fields(const Scene<D>& s) {
+  std::vector<int> bodies(s.grid->nfields(), 0);
+  std::vector<char> hull(s.grid->nfields(), 1);
+  for (const Body& b : s.bodies) {
+    ++bodies[b.field];
+    if (!b.rigid || b.hull_points.empty()) hull[b.field] = 0;
+  }
+  for (std::size_t f = 0; f < hull.size(); ++f) hull[f] = hull[f] && bodies[f] == 1;
+  return hull;
+}
+
+template <int D> double RigidBodies<D>::wall_contact(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, bool& acted) const {
+  const Grid<D>& g = *s.grid;
+  const std::vector<char> hull = hull_fields(s);
+  double work = 0;
+  acted = false;
+  struct Contact { Wall<D>* wall; Vec<3> r, n, P; double gap, lambda; };
+  for (const State& st : bodies_) {
+    const Body& b = s.bodies[st.body];
+    const Index off = b.field * g.nnodes();
+    if (!hull[b.field] || !(dt > 0)) continue;
+    NodalMotion<D> m = nodal_motion(g, vel, off);
+    if (!(m.M > 0)) continue;
+    Mat<3> Iinv = Mat<3>::Zero();  // 2D: rotation about z only
+    if constexpr (D == 2) Iinv(2, 2) = 1 / m.I(2, 2); else Iinv = m.I.inverse();
+    std::vector<Contact> cs;
+    for (Wall<D>& w : s.walls) {
+      if (w.box || !(w.condition == WallCondition::slip || w.condition == WallCondition::friction)) continue;
+      for (std::size_t k = 0; k < b.hull_points.size(); k += D) {
+        const Vec<D> p0 = Eigen::Map<const Vec<D>>(&b.hull_points[k]);
+        const Vec<D> c = st.xc + st.R * (p0 - st.xc0) - b.hull_radius * w.normal;
+        const double gap = (c - w.point).dot(w.normal);
+        if (gap + dt * m.at(c).dot(w.normal) >= 0) continue;
+        Contact ct{&w, Vec<3>::Zero(), Vec<3>::Zero(), Vec<3>::Zero(), gap, 0.0};
+        ct.r.template head<D>() = c - m.xc, ct.n.template head<D>() = w.normal;
+        cs.push_back(ct);
+      }
+    }
+    if (cs.empty()) continue;
+    Vec<3> V = Vec<3>::Zero();
+    V.head<D>() = m.V;
+    Vec<3> W = m.w;
+    const auto apply = [&](const Contact& c, const Vec<3>& P) { V += P / m.M, W += Iinv * c.r.cross(P); };
+    const auto eff = [&](const Contact& c, const Vec<3>& u) { return 1 / m.M + u.dot((Iinv * c.r.cross(u)).cross(c.r)); };
+    for (int it = 0; it < 50; ++it) {
+      double change = 0;
+      for (Contact& c : cs) {
+        const double target = c.gap > 0 ? -c.gap / dt : 0.0;  // reach the wall within the step, no deeper
+        const double vn = (V + W.cross(c.r)).dot(c.n);
+        const double lam = std::max(0.0, c.lambda + (target - vn) / eff(c, c.n)), dl = lam - c.lambda;
+        c.lambda = lam;
+        apply(c, dl * c.n);
+        c.P += dl * c.n;
+        change = std::max(change, std::abs(dl));
+        const double mu = c.wall->condition == WallCondition::friction ? c.wall->friction : 0.0;
+        if (mu <= 0) continue;
+        const Vec<3> v = V + W.cross(c.r), vt = v - v.dot(c.n) * c.n;
+        const double st_norm = vt.norm();
+        if (st_norm <= 0) continue;
+        const Vec<3> t = vt / st_norm;
+        Vec<3> Pt = c.P - c.P.dot(c.n) * c.n, Pt_new = Pt - st_norm / eff(c, t) * t;
+        if (Pt_new.norm() > mu * c.lambda) Pt_new *= mu * c.lambda / Pt_new.norm();
+        apply(c, Pt_new - Pt);
+        c.P += Pt_new - Pt;
+        change = std::max(change, (Pt_new - Pt).norm());
+      }
+      if (change <= 1e-14 * m.M * (m.V.norm() + W.norm() * m.rmax + 1e-300)) break;
+    }
+    for (const Contact& c : cs) {
+      c.wall->force -= c.P.template head<D>() / dt;
+      acted = acted || c.P.norm() > 0;
+    }
+    NodalMotion<D> after = m;
+    after.V = V.head<D>(), after.w = W;
+    for (Index id : g.active())
+      if (const double mi = g.m[off + id]; mi > 0) {
+        const Vec<D> v = after.at(g.node_pos(id));
+        work += 0.5 * mi * (v.squaredNorm() - vel[off + id].squaredNorm());
+        vel[off + id] = v;
+      }
+  }
+  return work;
+}
+
 template <int D> double RigidBodies<D>::project_nodes(Scene<D>& s, std::vector<Vec<D>>& vel, double s_min) const {
   const Grid<D>& g = *s.grid;
-  const Index nn = g.nnodes();
   double worst = 0;
   for (const State& st : bodies_) {
-    const Index off = s.bodies[st.body].field * nn;
-    double M = 0;
-    Vec<D> mx = Vec<D>::Zero(), p = Vec<D>::Zero();
-    for (Index id : g.active())
-      if (const double m = g.m[off + id]; m > 0) M += m, mx += m * g.node_pos(id), p += m * vel[off + id];
-    if (!(M > 0)) continue;
-    const Vec<D> xc = mx / M, V = p / M;
-    Mat<3> I = Mat<3>::Zero();
-    Vec<3> l = Vec<3>::Zero();
-    double rmax = 0;
-    for (Index id : g.active())
-      if (const double m = g.m[off + id]; m > 0) {
-        Vec<3> r = Vec<3>::Zero(), v = Vec<3>::Zero();
-        r.head<D>() = g.node_pos(id) - xc, v.head<D>() = vel[off + id];
-        I += m * (r.squaredNorm() * Mat<3>::Identity() - r * r.transpose());
-        l += m * r.cross(v);
-        rmax = std::max(rmax, r.norm());
-      }
-    Spin w;
-    if constexpr (D == 2) {
-      w = l.z() / I(2, 2);
-    } else {
-      w = I.ldlt().solve(l);
-    }
-    double scale = s_min + V.norm(), change = 0;
-    if constexpr (D == 2) scale += std::abs(w) * rmax; else scale += w.norm() * rmax;
+    const Index off = s.bodies[st.body].field * g.nnodes();
+    const NodalMotion<D> m = nodal_motion(g, vel, off);
+    if (!(m.M > 0)) continue;
+    const double scale = s_min + m.V.norm() + m.w.norm() * m.rmax;
+    double change = 0;
     for (Index id : g.active())
       if (g.m[off + id] > 0) {
-        const Vec<D> vr = V + cross(w, Vec<D>(g.node_pos(id) - xc));
+        const Vec<D> vr = m.at(g.node_pos(id));
         change = std::max(change, (vr - vel[off + id]).norm());
         vel[off + id] = vr;
       }
@@ -152,5 +253,7 @@ template <int D> void RigidBodies<D>::load_state(StateReader& r) {
 
 template class RigidBodies<2>;
 template class RigidBodies<3>;
+template std::vector<char> hull_fields(const Scene<2>&);
+template std::vector<char> hull_fields(const Scene<3>&);
 
 }  // namespace dmi

@@ -2,9 +2,9 @@
 // internal force), and meet walls, members and other bodies through the same nodal constraints. After G2P their
 // velocities are projected on the rigid motions: with M = sum m_p, r_p = x_p - x_c,
 //   V = sum m_p v_p / M,   omega = I^-1 sum m_p r_p x v_p,   v_p <- V + omega x r_p,
-// which keeps the body's linear and angular momentum (I = sum m_p (|r_p|^2 1 - r_p r_p^T) + the particles' own
-// inertia, m (a^2 + b^2) / 3 about their centre for a cell of half-sizes a, b in 2D, and likewise per axis in 3D),
-// then the body moves rigidly: x_c += dt V, R <- exp(dt [omega]x) R, x_p = x_c + R (x0_p - x_c0); F_p = R,
+// which keeps the body's linear and angular momentum (I = sum m_p (|r_p|^2 1 - r_p r_p^T), the particles as points,
+// the inertia their velocities carry: with the particles' own inertia added, a rigid motion would not be a fixed point
+// of the projection and every step would take a fraction of the spin away), then the body moves rigidly: x_c += dt V, R <- exp(dt [omega]x) R, x_p = x_c + R (x0_p - x_c0); F_p = R,
 // L_p = [omega]x. No wave speed limits its step, only |v| dt < h.
 #pragma once
 #include <type_traits>
@@ -27,6 +27,14 @@ template <int D> class RigidBodies {
   // and positions (momentum and angular momentum of the field kept). Returns the largest change of a nodal
   // velocity relative to the body's speed scale |V| + |omega| r_max + s (s > 0, e.g. |g| dt).
   double project_nodes(Scene<D>& s, std::vector<Vec<D>>& vel, double s_min) const;
+  // Plane walls (slip, friction) on the rigid bodies' hulls (Body::hull_points): the hull points that would pass the
+  // wall within dt are contacts; sequential impulses on the body's nodal motion (V, omega about the nodes' mass
+  // centre, with their mass and inertia) make each contact's normal velocity at least -gap/dt (0 once touching) and,
+  // with friction, keep its tangential impulse within mu times the normal one (Catto 2005: accumulated impulses,
+  // clamped); the nodes then take the new rigid motion. Adds the impulses / dt to the walls' forces; returns the
+  // work done on the nodes (J), and in acted whether any impulse was applied. The contact is at the shape's surface,
+  // so a disc rolls on its lowest point, not on a patch of held nodes a cell wide.
+  double wall_contact(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, bool& acted) const;
   // Rigid motion over dt from the projected velocities: centre, rotation, particle positions, F and L. False when
   // a particle left the grid's interior or became non-finite.
   bool move(Scene<D>& s, double dt);
@@ -45,5 +53,9 @@ template <int D> class RigidBodies {
   };
   std::vector<State> bodies_;
 };
+
+// Per velocity field: 1 when plane walls act on it through wall_contact rather than node by node (the field holds
+// one body, rigid, with a hull).
+template <int D> std::vector<char> hull_fields(const Scene<D>& s);
 
 }  // namespace dmi

@@ -23,6 +23,11 @@ struct Body {
   int field = 0;        // velocity field (multi-field contact) this body scatters to
   Index begin = 0, end = 0;  // particle range
   bool rigid = false;   // moves as a rigid body (engine/mpm/rigid.hpp): no stress, no wave-speed step limit
+  // A rigid body's shape for its contact with plane walls, in its initial configuration: the convex hull of these
+  // points (D coordinates each) swept by a ball of hull_radius (a ball: its centre and radius; a box or polygon:
+  // its corners and 0).
+  std::vector<double> hull_points;
+  double hull_radius = 0.0;
 };
 
 // Rigid, fixed wall: a half-space behind a plane (normal n points into the free side) or a box.

@@ -137,6 +137,20 @@ template <int D> void add_inflow(Scene<D>& sc, const Scenario& s, int body, int 
 
 }  // namespace
 
+// The hull a rigid body meets plane walls with (Body::hull_points): a ball's centre and radius, a box's 2^D corners, a
+// polygon's vertices (the support of a convex hull is that of its points).
+static void rigid_hull(const ShapeConfig& shape, int dim, Body& body) {
+  if (shape.type == "ball") {
+    body.hull_points.assign(shape.center.begin(), shape.center.end());
+    body.hull_radius = shape.radius;
+  } else if (shape.type == "polygon") {
+    for (const auto& v : shape.vertices) body.hull_points.insert(body.hull_points.end(), v.begin(), v.end());
+  } else {
+    for (int c = 0; c < (1 << dim); ++c)
+      for (int d = 0; d < dim; ++d) body.hull_points.push_back((c >> d) & 1 ? shape.max[d] : shape.min[d]);
+  }
+}
+
 template <int D> Scene<D> build_scene(const Scenario& s) {
   Scene<D> sc;
   const double h = s.grid.cell_size;
@@ -159,6 +173,7 @@ template <int D> Scene<D> build_scene(const Scenario& s) {
     body.material = mat;
     body.field = multi ? static_cast<int>(b) : 0;
     body.rigid = bc.rigid;
+    if (bc.rigid) rigid_hull(bc.shape, D, body);
     body.begin = static_cast<Index>(sc.particles.size());
     if (bc.inflow.present) {  // created as the debris enters (engine/mpm/inflow.hpp)
       body.end = body.begin;
