@@ -64,6 +64,7 @@ template <int D> void Solver<D>::step(double dt) {
   // v_p, x_p, L_p, F_p (eqs. 13-14; MUSL remaps first), then per body its material law: inside G2P chunk by chunk
   // when every law is pointwise, else as a pass of its own.
   if (!grid_to_particles(dt)) update_stress(dt);
+  keep_in_front_of_walls(scene_);              // positions only: no particle creeps behind a plane wall
   lap(kG2P);
   advance_members(dt);                         // stage 2: the frame under the reactions (eqs. 27-29 or Newmark)
   lap(kFrame);
