@@ -3,6 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/mpm/solver.hpp"
 #include "engine/scenario/scenario.hpp"
 #include "engine/sim/build_scene.hpp"
 #include "engine/verify/validate.hpp"
@@ -63,6 +64,41 @@ TEST(Boundaries, CoulombBaseStopsASlidingBlock) {
     const auto& x = series(out.results, "probes/b/position");
     const double slide = x.data[2 * (x.samples() - 1)] - x.data[0];
     EXPECT_NEAR(slide / (4 / (2 * 0.5 * 9.81)), 1.0, 0.01) << "thickness " << thick;
+  }
+}
+
+// Water at rest in a tank 0.6 m wide, 0.5 m deep (slip walls): each side wall carries rho g H^2 / 2 and the bed the
+// weight (time means over the last second of 2 s), and no particle passes a wall (keep_in_front_of_walls; before it
+// the corner particles settled half a cell behind the walls). Tolerances: the free surface is known to a quarter
+// cell, h/4 of H = 0.5 m at h 0.05 m gives 2 h/(4H) = 5 % on the thrust; the bed's mean is the weight to 1 %.
+TEST(Boundaries, WaterInATankLoadsItsWallsHydrostatically) {
+  const json j = json::parse(R"({"schema_version": 1, "name": "tank",
+    "analysis": {"dimension": 2, "plane": "strain", "end_time": 2.0, "gravity": [0, -9.81]},
+    "mpm": {"shape_function": "bspline2", "transfer": "apic"},
+    "grid": {"origin": [-0.4, -0.4], "size": [1.8, 1.8], "cell_size": 0.05},
+    "materials": [{"name": "water", "model": "newtonian", "density": 1000, "bulk_modulus": 4e5, "viscosity": 1e-3}],
+    "bodies": [{"name": "w", "material": "water", "shape": {"type": "box", "min": [0, 0], "max": [0.6, 0.5]}}],
+    "walls": [{"name": "bed", "type": "plane", "point": [0, 0], "normal": [0, 1], "condition": "slip"},
+              {"name": "left", "type": "plane", "point": [0, 0], "normal": [1, 0], "condition": "slip"},
+              {"name": "right", "type": "plane", "point": [0.6, 0], "normal": [-1, 0], "condition": "slip"}],
+    "output": {"history_interval": 0.01}})");
+  Solver<2> s(build_scene<2>(parse_scenario(j, "tank.json")));
+  Vec2 impulse[3] = {Vec2::Zero(), Vec2::Zero(), Vec2::Zero()};  // of the walls over the last second
+  while (s.time() < 2.0 - 1e-12) {
+    const double dt = s.stable_time_step(2.0 - s.time());
+    s.step(dt);
+    if (s.time() > 1.0)
+      for (int w = 0; w < 3; ++w) impulse[w] += dt * s.scene().walls[w].force;
+  }
+  const double thrust = 0.5 * 1000 * 9.81 * 0.25, weight = 1000 * 9.81 * 0.3;
+  EXPECT_NEAR(-impulse[0].y() / weight, 1.0, 0.01);
+  EXPECT_NEAR(-impulse[1].x() / thrust, 1.0, 0.05);
+  EXPECT_NEAR(impulse[2].x() / thrust, 1.0, 0.05);
+  const auto& P = s.scene().particles;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    ASSERT_GE(P.x[i].y(), 0.0);
+    ASSERT_GE(P.x[i].x(), 0.0);
+    ASSERT_LE(P.x[i].x(), 0.6);
   }
 }
 
