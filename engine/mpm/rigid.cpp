@@ -218,6 +218,22 @@ template <int D> double RigidBodies<D>::project_nodes(Scene<D>& s, std::vector<V
   return worst;
 }
 
+template <int D> void RigidBodies<D>::take_nodal_motion(Scene<D>& s, const std::vector<Vec<D>>& vel, bool affine) {
+  Particles<D>& P = s.particles;
+  for (State& st : bodies_) {
+    const Body& b = s.bodies[st.body];
+    const NodalMotion<D> m = nodal_motion(*s.grid, vel, b.field * s.grid->nnodes());
+    if (!(m.M > 0)) continue;
+    st.V = m.V;
+    if constexpr (D == 2) {
+      st.omega = affine ? m.w.z() : m.I(2, 2) * m.w.z() / st.I0(2, 2);
+    } else {
+      st.omega = affine ? m.w : Vec<3>((st.R * st.I0 * st.R.transpose()).ldlt().solve(m.I * m.w));
+    }
+    for (Index i = b.begin; i < b.end; ++i) P.v[i] = st.V + cross(st.omega, Vec<D>(st.R * (P.x0[i] - st.xc0)));
+  }
+}
+
 template <int D> bool RigidBodies<D>::move(Scene<D>& s, double dt) {
   Particles<D>& P = s.particles;
   bool ok = true;

@@ -198,15 +198,16 @@ template <int D> bool Solver<D>::grid_to_particles(double dt) {
       if (const Index a = std::max(b.begin, i0), e = std::min(b.end, i1); a < e && !b.rigid) scene_.materials[b.material]->update(scene_.particles, a, e, dt);
   };
   const auto* after = fuse ? &stress : nullptr;
+  const bool apic = scene_.options.transfer == TransferKind::apic;  // the particles carry an affine velocity
   if (scene_.options.update == StressUpdate::usl) {
     r = kernels_->g2p(scene_, dt, G2PMode::full, after);
-    if (rigid_) rigid_->project(scene_), r.ok = rigid_->move(scene_, dt) && r.ok;
+    if (rigid_) rigid_->take_nodal_motion(scene_, g.vL, apic), r.ok = rigid_->move(scene_, dt) && r.ok;
   } else {
     // MUSL (Sulsky et al. 1995): update particle velocities, remap their momentum to the grid,
     // and take the velocity gradient from the remapped nodal velocities.
     r = kernels_->g2p(scene_, dt, G2PMode::velocity_only);
     if (!r.ok) fail("non-finite particle velocity");
-    if (rigid_) rigid_->project(scene_);
+    if (rigid_) rigid_->take_nodal_motion(scene_, g.vL, apic);
     for (Index id : g.active())
       for (int fld = 0; fld < g.nfields(); ++fld) g.p[fld * g.nnodes() + id].setZero();
     kernels_->p2g(scene_, true);

@@ -50,13 +50,14 @@ TEST(RigidBody, SlipsDownAFrictionInclineAsTheClosedForm) {
 // With mu = 0.5 above tan(30)/3 the rigid disc rolls: a = 2/3 g sin 30 = 3.270 m/s^2 (a uniform disc, I = M R^2 / 2).
 // The plane wall meets the disc at its surface (RigidBodies::wall_contact), a single point, so nothing brakes the
 // rotation; the grid's nodes carry the disc's inertia spread by the B-spline, I + M h^2/2 (-0.5 % at h = R/8,
-// -0.13 % at R/16) with APIC, which carries a rigid spin through the grid exactly. Tolerance 2 %. Before this contact
-// (and before the projection kept a rigid motion fixed) a patch of held nodes braked it: -26 % at R/8.
+// -0.13 % at R/16), with APIC (its affine velocity carries the spin through the grid) and FLIP (the body keeps the
+// nodes' angular momentum). Tolerance 2 %. Before this contact, the orbital projection and the nodal motion, a patch
+// of held nodes braked it and FLIP lost spin: -26 % (APIC), -32 % (FLIP) at R/8.
 TEST(RigidBody, RollsDownAFrictionInclineAsTheClosedForm) {
-  for (const double h : {0.025, 0.0125}) {
+  for (const auto& [transfer, h] : {std::pair{"apic", 0.025}, std::pair{"apic", 0.0125}, std::pair{"flip", 0.025}}) {
     json j = json::parse(embedded_examples().at("incline_sliding.json"));
     j["grid"]["cell_size"] = h;
-    j["mpm"] = {{"transfer", "apic"}};
+    j["mpm"] = {{"transfer", transfer}};
     j["bodies"] = json::array({{{"name", "disc"}, {"material", "rock"}, {"rigid", true}, {"particles_per_cell", 2},
                                 {"shape", {{"type", "ball"}, {"center", {0.5, 0.2}}, {"radius", 0.2}}}}});
     j["walls"][0]["friction"] = 0.5;
@@ -67,7 +68,7 @@ TEST(RigidBody, RollsDownAFrictionInclineAsTheClosedForm) {
     const double v0 = mean_velocity(s, b).x();
     run_to(s, 1.0);
     const double a = (mean_velocity(s, b).x() - v0) / 0.8;
-    EXPECT_NEAR(a / (9.81 * 0.5 * 2 / 3), 1.0, 0.02) << "h " << h;
+    EXPECT_NEAR(a / (9.81 * 0.5 * 2 / 3), 1.0, 0.02) << transfer << " h " << h;
     // rolling: the lowest point is at rest, v = omega R (the spin from the particles' velocities about the centre)
     const auto& P = s.scene().particles;
     Vec2 xc = Vec2::Zero();
@@ -78,7 +79,7 @@ TEST(RigidBody, RollsDownAFrictionInclineAsTheClosedForm) {
       const Vec2 r = P.x[i] - xc;
       l += P.mass[i] * (r.x() * P.v[i].y() - r.y() * P.v[i].x()), I += P.mass[i] * r.squaredNorm();
     }
-    EXPECT_NEAR(-l / I * 0.2 / mean_velocity(s, b).x(), 1.0, 0.02) << "h " << h;
+    EXPECT_NEAR(-l / I * 0.2 / mean_velocity(s, b).x(), 1.0, 0.02) << transfer << " h " << h;
   }
 }
 
