@@ -87,18 +87,16 @@ template <int D> void wall_touch(Scene<D>& s) {
   }
 }
 
-template <int D> Index keep_in_front_of_walls(Scene<D>& s) {
+template <int D> void keep_in_front_of_walls(Scene<D>& s, Index i0, Index i1) {
   Particles<D>& P = s.particles;
-  Index moved = 0;
-  for (const auto& w : s.walls) {
-    if (w.box) continue;
-    for (const Body& b : s.bodies) {
-      if (b.rigid) continue;
-      for (Index i = b.begin; i < b.end; ++i)
-        if (const double gap = (P.x[i] - w.point).dot(w.normal); gap < 0) P.x[i] -= gap * w.normal, ++moved;
+  for (const Body& b : s.bodies) {
+    if (b.rigid) continue;
+    for (const auto& w : s.walls) {
+      if (w.box) continue;
+      for (Index i = std::max(b.begin, i0); i < std::min(b.end, i1); ++i)
+        if (const double gap = (P.x[i] - w.point).dot(w.normal); gap < 0) P.x[i] -= gap * w.normal;
     }
   }
-  return moved;
 }
 
 template <int D>
@@ -347,8 +345,8 @@ template <int D> void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel, bool f
 
 template void wall_touch<2>(Scene<2>&);
 template void wall_touch<3>(Scene<3>&);
-template Index keep_in_front_of_walls<2>(Scene<2>&);
-template Index keep_in_front_of_walls<3>(Scene<3>&);
+template void keep_in_front_of_walls<2>(Scene<2>&, Index, Index);
+template void keep_in_front_of_walls<3>(Scene<3>&, Index, Index);
 template double apply_boundaries<2>(Scene<2>&, std::vector<Vec<2>>&, double, double, bool, bool, const std::vector<Index>*);
 template double apply_boundaries<3>(Scene<3>&, std::vector<Vec<3>>&, double, double, bool, bool, const std::vector<Index>*);
 template void body_contact<2>(Scene<2>&, std::vector<Vec<2>>&, bool, const std::vector<Index>*);

@@ -27,9 +27,9 @@ double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double
 // so momentum, energy and the deformation gradient are untouched. The walls act on nodes; where material presses
 // into a corner, the velocity interpolated to the particles next to it kept a part into the wall and they crept
 // behind it (0.55 h in a water tank at rest; 7.5 cells at the foot of a wall under a steady stream, until one left
-// the grid). Rigid bodies move as a whole and meet walls at their hull (RigidBodies::wall_contact). Returns the
-// number of particles moved.
-template <int D> Index keep_in_front_of_walls(Scene<D>& s);
+// the grid). Rigid bodies move as a whole and meet walls at their hull (RigidBodies::wall_contact). Particles
+// [i0, i1): G2P calls it chunk by chunk, on positions still in cache.
+template <int D> void keep_in_front_of_walls(Scene<D>& s, Index i0, Index i1);
 
 // Bardenhagen, Brackbill & Sulsky (2000): at nodes where several fields have mass, a field moving
 // towards the others, (v_b - v_cm) . n_b > 0, loses that normal relative velocity; its tangential

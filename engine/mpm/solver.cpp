@@ -64,7 +64,6 @@ template <int D> void Solver<D>::step(double dt) {
   // v_p, x_p, L_p, F_p (eqs. 13-14; MUSL remaps first), then per body its material law: inside G2P chunk by chunk
   // when every law is pointwise, else as a pass of its own.
   if (!grid_to_particles(dt)) update_stress(dt);
-  keep_in_front_of_walls(scene_);              // positions only: no particle creeps behind a plane wall
   lap(kG2P);
   advance_members(dt);                         // stage 2: the frame under the reactions (eqs. 27-29 or Newmark)
   lap(kFrame);
@@ -193,11 +192,15 @@ template <int D> bool Solver<D>::grid_to_particles(double dt) {
   G2PResult r;
   bool fuse = true;
   for (const Body& b : scene_.bodies) fuse = fuse && (b.rigid || scene_.materials[b.material]->pointwise());
-  const typename TransferKernels<D>::ChunkHook stress = [this, dt](Index i0, Index i1) {
+  // After each chunk's gather, on data still in cache: no particle left behind a plane wall, and the stress update when
+  // every law is pointwise.
+  const typename TransferKernels<D>::ChunkHook after_chunk = [this, dt, fuse](Index i0, Index i1) {
+    keep_in_front_of_walls(scene_, i0, i1);
+    if (!fuse) return;
     for (const Body& b : scene_.bodies)
       if (const Index a = std::max(b.begin, i0), e = std::min(b.end, i1); a < e && !b.rigid) scene_.materials[b.material]->update(scene_.particles, a, e, dt);
   };
-  const auto* after = fuse ? &stress : nullptr;
+  const auto* after = &after_chunk;
   const bool apic = scene_.options.transfer == TransferKind::apic;  // the particles carry an affine velocity
   if (scene_.options.update == StressUpdate::usl) {
     r = kernels_->g2p(scene_, dt, G2PMode::full, after);

@@ -373,7 +373,7 @@ G2PResult gather(Scene<D>& s, double dt, const typename TransferKernels<D>::Chun
   const Index np = static_cast<Index>(P.size());
   constexpr Index kChunk = 1024;
   const Index nchunks = (np + kChunk - 1) / kChunk;
-  // A chunk's stress update (after) runs right after its gather, on data still in cache.
+  // A chunk's hook (after: particles kept in front of walls, the stress update) runs right after its gather, on data still in cache.
   const int bad = parallel_or(nchunks, np > kParallelMin, [c, np, after](Index k) {
     const Index i0 = k * kChunk, i1 = std::min(np, (k + 1) * kChunk);
     const int b = gather_range<D, Shape, Scheme, Mode, SIMD>(c, i0, i1);
