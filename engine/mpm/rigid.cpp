@@ -33,6 +33,7 @@ template <int D> RigidBodies<D>::RigidBodies(Scene<D>& s) {
     if (!b.rigid) continue;
     State st;
     st.body = static_cast<int>(k);
+    if constexpr (D == 2) st.omega = 0; else st.omega.setZero();
     for (Index i = b.begin; i < b.end; ++i) st.mass += P.mass[i], st.xc0 += P.mass[i] * P.x0[i];
     st.xc0 /= st.mass;
     st.xc = st.xc0;
