@@ -3,6 +3,7 @@
 // d = D - 2 t; the tapered rectangle uses the rectangle formulas with h(s) = h0 + s (h1 - h0).
 #include "engine/structure/section.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -88,6 +89,23 @@ double Section::inertia(double s) const {
   }
   const double h = depth(s);
   return b_ * h * h * h / 12;
+}
+
+double Section::inertia_y(double s) const {
+  require_fraction(s);
+  if (kind_ == SectionKind::pipe) return inertia(s);
+  return depth(s) * b_ * b_ * b_ / 12;
+}
+
+double Section::torsion_constant(double s) const {
+  require_fraction(s);
+  if (kind_ == SectionKind::pipe) return 2 * inertia(s);
+  // J = t^3 b / 3 [1 - (192 / pi^5) (t / b) sum_{n odd} tanh(n pi b / (2 t)) / n^5], b >= t (Timoshenko & Goodier
+  // 1970, eq. 159); the terms fall as n^-5, so 20 of them leave < 1e-9 of J.
+  const double h = depth(s), b = std::max(b_, h), t = std::min(b_, h);
+  double sum = 0;
+  for (int n = 1; n < 40; n += 2) sum += std::tanh(n * std::numbers::pi * b / (2 * t)) / std::pow(n, 5);
+  return t * t * t * b / 3 * (1 - 192 / std::pow(std::numbers::pi, 5) * (t / b) * sum);
 }
 
 double Section::shear_coefficient() const { return kind_ == SectionKind::pipe ? 0.5 : 5.0 / 6.0; }

@@ -23,6 +23,11 @@ class Section {
   double wall_thickness() const;       // m, pipe wall t (0 for rectangles)
   double area(double s) const;         // A (m^2)
   double inertia(double s) const;      // I about the out-of-plane axis (m^4)
+  // For members bent out of the plane and twisted (space frames): I about the in-plane axis y' (rectangle h b^3 / 12,
+  // pipe = inertia) and the St Venant torsion constant J (m^4): pipe pi (D^4 - d^4) / 32 (exact); rectangle
+  // beta(b/t) b t^3, t the smaller side, by the series of Timoshenko & Goodier (1970, sec. 109, eq. 159).
+  double inertia_y(double s) const;
+  double torsion_constant(double s) const;
   // Shear coefficient kappa: A_s = kappa A (Timoshenko). Rectangle 5/6; thin pipe 1/2 (Cowper 1966 limits).
   double shear_coefficient() const;
   // Peak shear stress over the section = factor * V / A: rectangle 3/2, pipe 2 (thin wall, V Q / (I t)).

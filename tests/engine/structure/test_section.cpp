@@ -59,6 +59,27 @@ TEST(Section, TaperedDepthVariesLinearlyAndInertiaCubically) {
   EXPECT_NEAR(s.inertia(0.5), b * 0.027 / 12, 1e-17);
 }
 
+// Space-frame properties. Rectangle torsion constant J = beta b t^3 against Timoshenko & Goodier's (1970) table of
+// beta: 0.141 (b/t = 1), 0.229 (2), 0.263 (3), 0.312 (10), to their three digits, and 1/3 as b/t grows; the square
+// by the series to 1e-4 (0.1406). Pipe J = 2 I exactly (polar moment); in-plane I_y of a rectangle h b^3 / 12.
+TEST(Section, TorsionConstantsAndOutOfPlaneInertia) {
+  const struct { double ratio, beta; } table[] = {{1, 0.141}, {2, 0.229}, {3, 0.263}, {10, 0.312}};
+  for (const auto& r : table) {
+    const Section wide = Section::rectangle(r.ratio * 0.1, 0.1), deep = Section::rectangle(0.1, r.ratio * 0.1);
+    EXPECT_NEAR(wide.torsion_constant(0.5) / (r.ratio * 0.1 * 1e-3), r.beta, 5e-4) << "b/t " << r.ratio;
+    EXPECT_DOUBLE_EQ(deep.torsion_constant(0.5), wide.torsion_constant(0.5));
+  }
+  EXPECT_NEAR(Section::rectangle(1, 1).torsion_constant(0), 0.1406, 1e-4);
+  EXPECT_NEAR(Section::rectangle(1000, 1).torsion_constant(0) / 1000, 1.0 / 3, 1e-3);
+  const Section p = Section::pipe(0.5, 0.02);
+  EXPECT_DOUBLE_EQ(p.torsion_constant(0.3), 2 * p.inertia(0.3));
+  EXPECT_DOUBLE_EQ(p.inertia_y(0.3), p.inertia(0.3));
+  EXPECT_DOUBLE_EQ(Section::rectangle(0.3, 0.5).inertia_y(0), 0.5 * 0.027 / 12);
+  const Section t = Section::tapered(0.4, 0.8, 0.2);  // width 0.4: the thinner side changes along the member
+  EXPECT_DOUBLE_EQ(t.torsion_constant(0), Section::rectangle(0.4, 0.8).torsion_constant(0));
+  EXPECT_NEAR(t.torsion_constant(1) / Section::rectangle(0.4, 0.2).torsion_constant(0), 1.0, 1e-12);  // h(1) = 0.8 - 0.6
+}
+
 TEST(Section, RejectsNonPositiveDimensionsAndThickWalls) {
   EXPECT_THROW(Section::rectangle(0, 0.2), std::invalid_argument);
   EXPECT_THROW(Section::rectangle(0.1, -1), std::invalid_argument);
