@@ -37,11 +37,19 @@ template <int D> RigidBodies<D>::RigidBodies(Scene<D>& s) {
     for (Index i = b.begin; i < b.end; ++i) st.mass += P.mass[i], st.xc0 += P.mass[i] * P.x0[i];
     st.xc0 /= st.mass;
     st.xc = st.xc0;
+    Mat<3> own = Mat<3>::Zero();  // the particles' own (cell) inertia, m (a_j^2 + a_k^2) / 3 for half-sizes a
     for (Index i = b.begin; i < b.end; ++i) {
-      Vec<3> r = Vec<3>::Zero();  // offset, padded to 3D
+      Vec<3> r = Vec<3>::Zero(), a = Vec<3>::Zero();  // offset and half-sizes, padded to 3D
       r.head<D>() = P.x0[i] - st.xc0;
+      a.head<D>() = P.half_size[i];
       st.I0 += P.mass[i] * (r.squaredNorm() * Mat<3>::Identity() - r * r.transpose());
+      for (int c = 0; c < 3; ++c) own(c, c) += P.mass[i] * (a.squaredNorm() - a[c] * a[c]) / 3;
     }
+    // A body of one particle (or one row of them, about its axis) has no orbital inertia: the own inertia keeps its
+    // spin finite there, and only there (elsewhere it would make the projection shrink a rigid spin every step).
+    const Mat<3> spin_plane = D == 2 ? Mat<3>(Vec<3>(0, 0, 1).asDiagonal()) : Mat<3>::Identity();
+    for (int c = 0; c < 3; ++c)
+      if (spin_plane(c, c) > 0 && !(st.I0(c, c) > 1e-6 * own(c, c))) st.I0(c, c) += own(c, c);
     bodies_.push_back(st);
   }
   project(s);
@@ -126,11 +134,12 @@ template <int D> std::vector<char> hull_fields(const Scene<D>& s) {
   return hull;
 }
 
-template <int D> double RigidBodies<D>::wall_contact(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, bool& acted) const {
+template <int D>
+double RigidBodies<D>::wall_contact(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double s_min, double& change) const {
   const Grid<D>& g = *s.grid;
   const std::vector<char> hull = hull_fields(s);
   double work = 0;
-  acted = false;
+  change = 0;
   struct Contact { Wall<D>* wall; Vec<3> r, n, P; double gap, lambda; };
   for (const State& st : bodies_) {
     const Body& b = s.bodies[st.body];
@@ -185,14 +194,16 @@ template <int D> double RigidBodies<D>::wall_contact(Scene<D>& s, std::vector<Ve
     }
     for (const Contact& c : cs) {
       c.wall->force -= c.P.template head<D>() / dt;
-      acted = acted || c.P.norm() > 0;
+      const Vec<3> v = V + W.cross(c.r);  // friction's work where the point slips; the fixed wall's normal impulse does none
+      work += (c.P - c.P.dot(c.n) * c.n).dot(v - v.dot(c.n) * c.n);
     }
     NodalMotion<D> after = m;
     after.V = V.head<D>(), after.w = W;
+    const double scale = s_min + m.V.norm() + m.w.norm() * m.rmax;
     for (Index id : g.active())
       if (const double mi = g.m[off + id]; mi > 0) {
         const Vec<D> v = after.at(g.node_pos(id));
-        work += 0.5 * mi * (v.squaredNorm() - vel[off + id].squaredNorm());
+        change = std::max(change, (v - vel[off + id]).norm() / scale);
         vel[off + id] = v;
       }
   }

@@ -40,9 +40,12 @@ template <int D> class RigidBodies {
   // centre, with their mass and inertia) make each contact's normal velocity at least -gap/dt (0 once touching) and,
   // with friction, keep its tangential impulse within mu times the normal one (Catto 2005: accumulated impulses,
   // clamped); the nodes then take the new rigid motion. Adds the impulses / dt to the walls' forces; returns the
-  // work done on the nodes (J), and in acted whether any impulse was applied. The contact is at the shape's surface,
-  // so a disc rolls on its lowest point, not on a patch of held nodes a cell wide.
-  double wall_contact(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, bool& acted) const;
+  // work of the walls on the body (J): friction's tangential impulse times the point's final slip velocity (a fixed
+  // wall's normal impulse does none; an impact's loss is the contact's, in the energy balance as for the node-level
+  // walls), and in change the largest change of a nodal velocity
+  // relative to the body's speed scale (as project_nodes). The contact is at the shape's surface, so a disc rolls on
+  // its lowest point, not on a patch of held nodes a cell wide.
+  double wall_contact(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double s_min, double& change) const;
   // Rigid motion over dt from the projected velocities: centre, rotation, particle positions, F and L. False when
   // a particle left the grid's interior or became non-finite.
   bool move(Scene<D>& s, double dt);

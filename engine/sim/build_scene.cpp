@@ -145,7 +145,7 @@ static void rigid_hull(const ShapeConfig& shape, int dim, Body& body) {
     body.hull_radius = shape.radius;
   } else if (shape.type == "polygon") {
     for (const auto& v : shape.vertices) body.hull_points.insert(body.hull_points.end(), v.begin(), v.end());
-  } else {
+  } else if (shape.type == "box") {
     for (int c = 0; c < (1 << dim); ++c)
       for (int d = 0; d < dim; ++d) body.hull_points.push_back((c >> d) & 1 ? shape.max[d] : shape.min[d]);
   }
