@@ -229,7 +229,8 @@ void read_body(Obj& o, BodyConfig& b) {
                                           "after each grid update, no stress, no step limit from the material's stiffness (its density "
                                           "gives the mass); contacts act on it as on any body. For a boulder whose deformation does not "
                                           "matter (against a soft buffer), not for a hard impact whose peak the boulder's elasticity sets"});
-  if (!o.documenting() && b.rigid && b.inflow.present) o.fail("rigid", nullptr, "false on a body that an inflow fills (debris is not rigid)");
+  if (!o.documenting() && b.rigid && b.inflow.present)
+    o.fail("rigid", o.raw("rigid", Spec{}, "boolean", ""), "false on a body that an inflow fills (debris is not rigid)");
   b.velocity.assign(o.context().dim, 0.0);
   o.vector("velocity", b.velocity, any("m/s", "initial velocity"));
   Obj m = o.object("velocity_sine", "optional sine mode added to the initial velocity, v += amplitude sin(wavevector . (x - origin)); "
