@@ -97,15 +97,15 @@ template <int D> struct NodalMotion {
   }
 };
 
-template <int D> NodalMotion<D> nodal_motion(const Grid<D>& g, const std::vector<Vec<D>>& vel, Index off) {
+template <int D> NodalMotion<D> nodal_motion(const Grid<D>& g, const std::vector<Vec<D>>& vel, Index off, const std::vector<Index>& nodes) {
   NodalMotion<D> m;
   Vec<D> mx = Vec<D>::Zero(), p = Vec<D>::Zero();
-  for (Index id : g.active())
+  for (Index id : nodes)
     if (const double mi = g.m[off + id]; mi > 0) m.M += mi, mx += mi * g.node_pos(id), p += mi * vel[off + id];
   if (!(m.M > 0)) return m;
   m.xc = mx / m.M, m.V = p / m.M;
   Vec<3> l = Vec<3>::Zero();
-  for (Index id : g.active())
+  for (Index id : nodes)
     if (const double mi = g.m[off + id]; mi > 0) {
       Vec<3> r = Vec<3>::Zero(), v = Vec<3>::Zero();
       r.head<D>() = g.node_pos(id) - m.xc, v.head<D>() = vel[off + id];
@@ -135,8 +135,10 @@ template <int D> std::vector<char> hull_fields(const Scene<D>& s) {
 }
 
 template <int D>
-double RigidBodies<D>::wall_contact(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double s_min, double& change) const {
+double RigidBodies<D>::wall_contact(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double s_min, double& change,
+                                    const std::vector<Index>* only) const {
   const Grid<D>& g = *s.grid;
+  const std::vector<Index>& nodes = only ? *only : g.active();
   const std::vector<char> hull = hull_fields(s);
   double work = 0;
   change = 0;
@@ -145,7 +147,7 @@ double RigidBodies<D>::wall_contact(Scene<D>& s, std::vector<Vec<D>>& vel, doubl
     const Body& b = s.bodies[st.body];
     const Index off = b.field * g.nnodes();
     if (!hull[b.field] || !(dt > 0)) continue;
-    NodalMotion<D> m = nodal_motion(g, vel, off);
+    NodalMotion<D> m = nodal_motion(g, vel, off, nodes);
     if (!(m.M > 0)) continue;
     Mat<3> Iinv = Mat<3>::Zero();  // 2D: rotation about z only
     if constexpr (D == 2) Iinv(2, 2) = 1 / m.I(2, 2); else Iinv = m.I.inverse();
@@ -200,7 +202,7 @@ double RigidBodies<D>::wall_contact(Scene<D>& s, std::vector<Vec<D>>& vel, doubl
     NodalMotion<D> after = m;
     after.V = V.head<D>(), after.w = W;
     const double scale = s_min + m.V.norm() + m.w.norm() * m.rmax;
-    for (Index id : g.active())
+    for (Index id : nodes)
       if (const double mi = g.m[off + id]; mi > 0) {
         const Vec<D> v = after.at(g.node_pos(id));
         change = std::max(change, (v - vel[off + id]).norm() / scale);
@@ -210,16 +212,18 @@ double RigidBodies<D>::wall_contact(Scene<D>& s, std::vector<Vec<D>>& vel, doubl
   return work;
 }
 
-template <int D> double RigidBodies<D>::project_nodes(Scene<D>& s, std::vector<Vec<D>>& vel, double s_min) const {
+template <int D>
+double RigidBodies<D>::project_nodes(Scene<D>& s, std::vector<Vec<D>>& vel, double s_min, const std::vector<Index>* only) const {
   const Grid<D>& g = *s.grid;
+  const std::vector<Index>& nodes = only ? *only : g.active();
   double worst = 0;
   for (const State& st : bodies_) {
     const Index off = s.bodies[st.body].field * g.nnodes();
-    const NodalMotion<D> m = nodal_motion(g, vel, off);
+    const NodalMotion<D> m = nodal_motion(g, vel, off, nodes);
     if (!(m.M > 0)) continue;
     const double scale = s_min + m.V.norm() + m.w.norm() * m.rmax;
     double change = 0;
-    for (Index id : g.active())
+    for (Index id : nodes)
       if (g.m[off + id] > 0) {
         const Vec<D> vr = m.at(g.node_pos(id));
         change = std::max(change, (vr - vel[off + id]).norm());
@@ -234,7 +238,7 @@ template <int D> void RigidBodies<D>::take_nodal_motion(Scene<D>& s, const std::
   Particles<D>& P = s.particles;
   for (State& st : bodies_) {
     const Body& b = s.bodies[st.body];
-    const NodalMotion<D> m = nodal_motion(*s.grid, vel, b.field * s.grid->nnodes());
+    const NodalMotion<D> m = nodal_motion(*s.grid, vel, b.field * s.grid->nnodes(), s.grid->active());
     if (!(m.M > 0)) continue;
     st.V = m.V;
     if constexpr (D == 2) {

@@ -34,7 +34,8 @@ template <int D> class RigidBodies {
   // The rigid bodies' nodal velocities (each in its own field) projected on the rigid motion with the nodes' masses
   // and positions (momentum and angular momentum of the field kept). Returns the largest change of a nodal
   // velocity relative to the body's speed scale |V| + |omega| r_max + s (s > 0, e.g. |g| dt).
-  double project_nodes(Scene<D>& s, std::vector<Vec<D>>& vel, double s_min) const;
+  // only: the nodes where a rigid field has mass (a subset of the active nodes, in their order), else all active.
+  double project_nodes(Scene<D>& s, std::vector<Vec<D>>& vel, double s_min, const std::vector<Index>* only = nullptr) const;
   // Plane walls (slip, friction) on the rigid bodies' hulls (Body::hull_points): the hull points that would pass the
   // wall within dt are contacts; sequential impulses on the body's nodal motion (V, omega about the nodes' mass
   // centre, with their mass and inertia) make each contact's normal velocity at least -gap/dt (0 once touching) and,
@@ -45,7 +46,8 @@ template <int D> class RigidBodies {
   // walls), and in change the largest change of a nodal velocity
   // relative to the body's speed scale (as project_nodes). The contact is at the shape's surface, so a disc rolls on
   // its lowest point, not on a patch of held nodes a cell wide.
-  double wall_contact(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double s_min, double& change) const;
+  double wall_contact(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double s_min, double& change,
+                      const std::vector<Index>* only = nullptr) const;
   // Rigid motion over dt from the projected velocities: centre, rotation, particle positions, F and L. False when
   // a particle left the grid's interior or became non-finite.
   bool move(Scene<D>& s, double dt);

@@ -175,15 +175,15 @@ template <int D> void Solver<D>::rigid_constraints(double dt) {
       }
   double wall_change = 0;
   for (int it = 0; it < kRigidPasses; ++it) {
-    const double change = rigid_->project_nodes(scene_, g.vL, s_min);
-    boundary_work_ += rigid_->wall_contact(scene_, g.vL, dt, s_min, wall_change);  // plane walls on the hulls
+    const double change = rigid_->project_nodes(scene_, g.vL, s_min, &rigid_nodes_);
+    boundary_work_ += rigid_->wall_contact(scene_, g.vL, dt, s_min, wall_change, &rigid_nodes_);  // plane walls on the hulls
     if (std::max(change, wall_change) < 1e-8) return;
     ++rigid_passes_;
     boundary_work_ += apply_boundaries(scene_, g.vL, dt, time_ + dt, true, false, &rigid_nodes_);
     body_contact(scene_, g.vL, false, &rigid_nodes_);
   }
-  rigid_->project_nodes(scene_, g.vL, s_min);
-  boundary_work_ += rigid_->wall_contact(scene_, g.vL, dt, s_min, wall_change);
+  rigid_->project_nodes(scene_, g.vL, s_min, &rigid_nodes_);
+  boundary_work_ += rigid_->wall_contact(scene_, g.vL, dt, s_min, wall_change, &rigid_nodes_);
 }
 
 // Returns true when the stresses were updated too (every body's law pointwise: fused into G2P's chunks).
