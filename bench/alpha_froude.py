@@ -28,17 +28,14 @@ Runs `damimpact simulate FILE -o /tmp/alpha_fr/<name> -q`. Requires /usr/bin/pyt
 build/app/damimpact.
 """
 import argparse
-import json
 import math
 import os
-import subprocess
-import time
 
 import h5py
 import numpy as np
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-EXE = os.path.join(ROOT, "build", "app", "damimpact")
+from simrun import simulate
+
 TMP = "/tmp/alpha_fr"
 G, RHO, H0, L, X_IN = 9.81, 1000.0, 0.1, 4.0, 0.5
 
@@ -105,13 +102,7 @@ def run(fr, cell, threads, mu):
     end, sc = scenario(fr, cell, mu)
     name = "fr%g_h%g_mu%g_L%g" % (fr, cell, mu, L)
     out = os.path.join(TMP, name)
-    os.makedirs(out, exist_ok=True)
-    path = os.path.join(out, "scenario.json")
-    with open(path, "w") as fh:
-        json.dump(sc, fh, indent=1)
-    t0 = time.time()
-    r = subprocess.run([EXE, "simulate", path, "-o", out, "-q", "-t", str(threads)], capture_output=True, text=True)
-    wall = time.time() - t0
+    r, wall = simulate(sc, out, threads)
     if r.returncode != 0:
         raise SystemExit("%s failed: %s" % (name, r.stderr[-400:]))
     v = fr * math.sqrt(G * H0)

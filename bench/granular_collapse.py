@@ -27,18 +27,14 @@ Final height H_inf/L0 = a for a < 1.15 and about a^(2/5) above (Lube 2005) - pri
 Requires /usr/bin/python3 with h5py and numpy, and build/app/damimpact.
 """
 import argparse
-import json
 import math
 import os
-import subprocess
-import sys
-import time
 
 import h5py
 import numpy as np
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-EXE = os.path.join(ROOT, "build", "app", "damimpact")
+from simrun import simulate
+
 TMP = "/tmp/granular_collapse"
 
 # Sand defaults (the recommended set-up, examples/granular_collapse.json)
@@ -141,13 +137,8 @@ def run(a, n, base, phi, tag="", **kw):
     tr = sc["mpm"]["transfer"] + (f" {sc['mpm']['flip_blend']:g}" if sc["mpm"]["transfer"] == "flip" else "")
     name = f"a{a}_n{n}_{base}_phi{phi}_{tr.replace(' ', '')}{tag}"
     out = os.path.join(TMP, name)
-    os.makedirs(out, exist_ok=True)
-    path = os.path.join(out, "scenario.json")
-    with open(path, "w") as fh:
-        json.dump(sc, fh, indent=1)
-    t0 = time.time()
-    r = subprocess.run([EXE, "simulate", path, "-o", out, "-q", "-t", "1"], capture_output=True, text=True)
-    m = dict(a=a, n=n, base=base, phi=phi, tag=tag, transfer=tr, wall=time.time() - t0, failed=None)
+    r, wall = simulate(sc, out, 1)
+    m = dict(a=a, n=n, base=base, phi=phi, tag=tag, transfer=tr, wall=wall, failed=None)
     if r.returncode != 0:
         msg = r.stderr.strip()
         i = msg.find("run stopped at")
