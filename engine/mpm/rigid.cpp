@@ -171,7 +171,7 @@ double RigidBodies<D>::wall_contact(Scene<D>& s, std::vector<Vec<D>>& vel, doubl
     const auto apply = [&](const Contact& c, const Vec<3>& P) { V += P / m.M, W += Iinv * c.r.cross(P); };
     const auto eff = [&](const Contact& c, const Vec<3>& u) { return 1 / m.M + u.dot((Iinv * c.r.cross(u)).cross(c.r)); };
     for (int it = 0; it < 50; ++it) {
-      double change = 0;
+      double moved = 0;  // largest impulse increment of the sweep
       for (Contact& c : cs) {
         const double target = c.gap > 0 ? -c.gap / dt : 0.0;  // reach the wall within the step, no deeper
         const double vn = (V + W.cross(c.r)).dot(c.n);
@@ -179,7 +179,7 @@ double RigidBodies<D>::wall_contact(Scene<D>& s, std::vector<Vec<D>>& vel, doubl
         c.lambda = lam;
         apply(c, dl * c.n);
         c.P += dl * c.n;
-        change = std::max(change, std::abs(dl));
+        moved = std::max(moved, std::abs(dl));
         const double mu = c.wall->condition == WallCondition::friction ? c.wall->friction : 0.0;
         if (mu <= 0) continue;
         const Vec<3> v = V + W.cross(c.r), vt = v - v.dot(c.n) * c.n;
@@ -190,9 +190,9 @@ double RigidBodies<D>::wall_contact(Scene<D>& s, std::vector<Vec<D>>& vel, doubl
         if (Pt_new.norm() > mu * c.lambda) Pt_new *= mu * c.lambda / Pt_new.norm();
         apply(c, Pt_new - Pt);
         c.P += Pt_new - Pt;
-        change = std::max(change, (Pt_new - Pt).norm());
+        moved = std::max(moved, (Pt_new - Pt).norm());
       }
-      if (change <= 1e-14 * m.M * (m.V.norm() + W.norm() * m.rmax + 1e-300)) break;
+      if (moved <= 1e-14 * m.M * (m.V.norm() + W.norm() * m.rmax + 1e-300)) break;
     }
     for (const Contact& c : cs) {
       c.wall->force -= c.P.template head<D>() / dt;

@@ -4,8 +4,9 @@
 //   V = sum m_p v_p / M,   omega = I^-1 sum m_p r_p x v_p,   v_p <- V + omega x r_p,
 // which keeps the body's linear and angular momentum (I = sum m_p (|r_p|^2 1 - r_p r_p^T), the particles as points,
 // the inertia their velocities carry: with the particles' own inertia added, a rigid motion would not be a fixed point
-// of the projection and every step would take a fraction of the spin away), then the body moves rigidly: x_c += dt V, R <- exp(dt [omega]x) R, x_p = x_c + R (x0_p - x_c0); F_p = R,
-// L_p = [omega]x. No wave speed limits its step, only |v| dt < h.
+// of the projection and every step would take a fraction of the spin away), then the body moves rigidly:
+// x_c += dt V, R <- exp(dt [omega]x) R, x_p = x_c + R (x0_p - x_c0); F_p = R, L_p = [omega]x. No wave speed limits
+// its step, only |v| dt < h.
 #pragma once
 #include <type_traits>
 #include <vector>
@@ -43,9 +44,9 @@ template <int D> class RigidBodies {
   // clamped); the nodes then take the new rigid motion. Adds the impulses / dt to the walls' forces; returns the
   // work of the walls on the body (J): friction's tangential impulse times the point's final slip velocity (a fixed
   // wall's normal impulse does none; an impact's loss is the contact's, in the energy balance as for the node-level
-  // walls), and in change the largest change of a nodal velocity
-  // relative to the body's speed scale (as project_nodes). The contact is at the shape's surface, so a disc rolls on
-  // its lowest point, not on a patch of held nodes a cell wide.
+  // walls), and in change the largest change of a nodal velocity relative to the body's speed scale (as
+  // project_nodes). The contact is at the shape's surface, so a disc rolls on its lowest point, not on a patch of
+  // held nodes a cell wide.
   double wall_contact(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double s_min, double& change,
                       const std::vector<Index>* only = nullptr) const;
   // Rigid motion over dt from the projected velocities: centre, rotation, particle positions, F and L. False when
