@@ -1,14 +1,11 @@
 #include "engine/structure/element.hpp"
 
 #include <array>
+#include <functional>
 #include <cmath>
 #include <numbers>
 
 namespace dmi {
-namespace {
-
-constexpr int kGauss = 10;
-struct GaussPoint { double xi, w; };
 
 // Gauss-Legendre rule on [0, 1]: roots of P_n by Newton from Chebyshev guesses (Press et al., Numerical
 // Recipes 3rd ed., sec. 4.6.1). Exact for polynomials of degree 2n - 1 = 19.
@@ -33,6 +30,8 @@ std::array<GaussPoint, kGauss> gauss_legendre() {
   return g;
 }
 
+namespace {
+
 // Particular section forces [N; V; M] at xi of the simply supported basic system (axial load held at
 // node i) under the linear intensity p = [pa_x, pb_x, pa_y, pb_y]: N = int_x^L p_x, M'' = p_y, M(0) = M(L) = 0.
 Eigen::Matrix<double, 3, 4> particular(double xi, double L) {
@@ -53,27 +52,26 @@ BeamShape beam_shape(double xi, double L) {
           {(6 * x2 - 6 * xi) / L, 1 - 4 * xi + 3 * x2, (6 * xi - 6 * x2) / L, 3 * x2 - 2 * xi}};
 }
 
-BeamElement::BeamElement(const FrameElementDef& def, double L, BeamTheory theory) : L_(L) {
+PlaneBasic plane_basic(const FrameElementDef& def, double L, BeamTheory theory, const std::function<double(double)>& inertia) {
+  PlaneBasic r;
   const bool shear = theory == BeamTheory::timoshenko;
   const double G = def.E / (2 * (1 + def.nu)), kappa = def.section.shear_coefficient();
   const auto at = [&](double xi) { return def.s0 + xi * (def.s1 - def.s0); };
-  rho_a0_ = def.rho * def.section.area(def.s0);
-  rho_a1_ = def.rho * def.section.area(def.s1);
 
-  fb_.setZero();
-  mc_.setZero();
+  r.fb.setZero();
+  r.mc.setZero();
   Eigen::Matrix<double, 3, 4> v0 = Eigen::Matrix<double, 3, 4>::Zero();  // basic deformations per unit load
   for (const GaussPoint& g : gauss_legendre()) {
     const double s = at(g.xi), A = def.section.area(s), dx = g.w * L;
-    const double fa = 1 / (def.E * A), fm = 1 / (def.E * def.section.inertia(s));
+    const double fa = 1 / (def.E * A), fm = 1 / (def.E * inertia(s));
     Eigen::Matrix<double, 2, 3> b;
     b << 1, 0, 0, 0, -(1 - g.xi), g.xi;
-    fb_ += dx * b.transpose() * Eigen::Vector2d(fa, fm).asDiagonal() * b;
+    r.fb += dx * b.transpose() * Eigen::Vector2d(fa, fm).asDiagonal() * b;
     const Eigen::Matrix<double, 3, 4> sp = particular(g.xi, L);
     v0 += dx * b.transpose() * (Eigen::Matrix<double, 2, 4>() << fa * sp.row(0), fm * sp.row(2)).finished();
     if (shear) {
       const double fv = 1 / (kappa * G * A * L);  // b_V = [0, 1, 1] / L
-      fb_.bottomRightCorner<2, 2>().array() += dx * fv / L;
+      r.fb.bottomRightCorner<2, 2>().array() += dx * fv / L;
       v0.row(1) += dx * fv * sp.row(1);
       v0.row(2) += dx * fv * sp.row(1);
     }
@@ -83,35 +81,48 @@ BeamElement::BeamElement(const FrameElementDef& def, double L, BeamTheory theory
     nu << sh.axial[0], 0, 0, sh.axial[1], 0, 0;
     nw << 0, sh.hermite[0], sh.hermite[1], 0, sh.hermite[2], sh.hermite[3];
     const double rho_a = def.rho * A;
-    mc_ += dx * rho_a * (nu * nu.transpose() + nw * nw.transpose());
-    m_ += dx * rho_a;
+    r.mc += dx * rho_a * (nu * nu.transpose() + nw * nw.transpose());
+    r.m += dx * rho_a;
   }
 
   // Stiffness: inverse flexibility on the kept set (axial always; moments unless released).
-  kb_.setZero();
+  r.kb.setZero();
   const bool keep[3] = {true, !def.release_i, !def.release_j};
   int idx[3], n = 0;
   for (int k = 0; k < 3; ++k)
     if (keep[k]) idx[n++] = k;
   Eigen::MatrixXd fk(n, n);
-  for (int r = 0; r < n; ++r)
-    for (int c = 0; c < n; ++c) fk(r, c) = fb_(idx[r], idx[c]);
+  for (int i = 0; i < n; ++i)
+    for (int c = 0; c < n; ++c) fk(i, c) = r.fb(idx[i], idx[c]);
   const Eigen::MatrixXd kk = fk.inverse();
-  for (int r = 0; r < n; ++r)
-    for (int c = 0; c < n; ++c) kb_(idx[r], idx[c]) = kk(r, c);
+  for (int i = 0; i < n; ++i)
+    for (int c = 0; c < n; ++c) r.kb(idx[i], idx[c]) = kk(i, c);
 
   // Loads: q0 = -kb v0; equivalent nodal loads -(a^T q0 + p0), a the local (unrotated) compatibility matrix.
-  q0_ = -kb_ * v0;
+  r.q0 = -r.kb * v0;
   Mat36 a;
   a << -1, 0, 0, 1, 0, 0,
        0, 1 / L, 1, 0, -1 / L, 0,
        0, 1 / L, 0, 0, -1 / L, 1;
-  Mat64 p0 = Mat64::Zero();
+  Eigen::Matrix<double, 6, 4> p0 = Eigen::Matrix<double, 6, 4>::Zero();
   p0.row(0) << -L / 2, -L / 2, 0, 0;
   p0.row(1) << 0, 0, -L / 3, -L / 6;
   p0.row(4) << 0, 0, -L / 6, -L / 3;
-  feq_ = -(a.transpose() * q0_ + p0);
+  r.feq = -(a.transpose() * r.q0 + p0);
+  return r;
+}
 
+Vec3 plane_section_forces(const Mat3& kb, const Mat34& q0, const Vec3& v, double L0, double L, const Eigen::Vector4d& pk, double xi) {
+  const Vec3 q = kb * v + q0 * pk;
+  const Vec3 sp = particular(xi, L0) * pk;  // [N, V, M]
+  return {q(0) + sp(0), (q(1) + q(2)) / L + sp(1), -q(1) * (1 - xi) + q(2) * xi + sp(2)};
+}
+
+BeamElement::BeamElement(const FrameElementDef& def, double L, BeamTheory theory) : L_(L) {
+  rho_a0_ = def.rho * def.section.area(def.s0);
+  rho_a1_ = def.rho * def.section.area(def.s1);
+  const PlaneBasic p = plane_basic(def, L, theory, [&def](double s) { return def.section.inertia(s); });
+  fb_ = p.fb, kb_ = p.kb, mc_ = p.mc, m_ = p.m, q0_ = p.q0, feq_ = p.feq;
   // HRZ lumping: node translational share of the (axial + transverse) diagonal, rotary scaled as transverse.
   const double ti = mc_(0, 0) + mc_(1, 1), tj = mc_(3, 3) + mc_(4, 4), rot = m_ / (mc_(1, 1) + mc_(4, 4));
   ml_ << m_ * ti / (ti + tj), m_ * ti / (ti + tj), rot * mc_(2, 2), m_ * tj / (ti + tj), m_ * tj / (ti + tj),
@@ -124,10 +135,8 @@ double BeamElement::strain_energy(const Vec3& v) const {
 }
 
 SectionForces BeamElement::section_forces(const Vec3& v, double L, const ElementLoad& p, double xi) const {
-  const Eigen::Vector4d pk = pack(p);
-  const Vec3 q = kb_ * v + q0_ * pk;
-  const Vec3 sp = particular(xi, L_) * pk;  // [N, V, M]
-  return {q(0) + sp(0), (q(1) + q(2)) / L + sp(1), -q(1) * (1 - xi) + q(2) * xi + sp(2)};
+  const Vec3 f = plane_section_forces(kb_, q0_, v, L_, L, pack(p), xi);
+  return {f(0), f(1), f(2)};
 }
 
 }  // namespace dmi

@@ -17,6 +17,8 @@
 // Local DOF order [u_i, w_i, t_i, u_j, w_j, t_j] along (e1, e2).
 #pragma once
 #include <Eigen/Dense>
+#include <array>
+#include <functional>
 
 #include "engine/structure/frame.hpp"
 
@@ -42,6 +44,31 @@ struct ElementLoad {
   Vec2 a = Vec2::Zero(), b = Vec2::Zero();
 };
 
+// 10-point Gauss-Legendre rule on [0, 1] (exact to degree 19): section integrals along an element.
+constexpr int kGauss = 10;
+struct GaussPoint { double xi, w; };
+std::array<GaussPoint, kGauss> gauss_legendre();
+
+using Mat34 = Eigen::Matrix<double, 3, 4>;
+using Mat64 = Eigen::Matrix<double, 6, 4>;
+
+// One bending plane of the basic system (the whole of a plane element; a space element has two, about its two
+// section axes): flexibility fb and stiffness kb on [N, M_i, M_j] with releases condensed, fixed-end forces q0 and
+// equivalent local nodal loads feq on [u_i, w_i, t_i, u_j, w_j, t_j] per unit intensity [pa_x, pb_x, pa_y, pb_y],
+// consistent mass mc on the same DOFs and the element mass m; inertia(s) is the bending inertia about the plane's
+// normal at the section fraction s.
+struct PlaneBasic {
+  Mat3 fb, kb;
+  Mat34 q0;
+  Mat64 feq;
+  Mat6 mc;
+  double m = 0;
+};
+PlaneBasic plane_basic(const FrameElementDef& def, double L, BeamTheory theory, const std::function<double(double)>& inertia);
+// [N, V, M] at xi of a plane with basic stiffness kb and fixed-end forces q0 under basic deformations v and load
+// intensity pk; L0 the initial length (the load's particular solution), L the current chord (basic shear).
+Vec3 plane_section_forces(const Mat3& kb, const Mat34& q0, const Vec3& v, double L0, double L, const Eigen::Vector4d& pk, double xi);
+
 class BeamElement {
  public:
   // Inputs are validated by the Frame (it names the element); L is the initial length.
@@ -66,8 +93,6 @@ class BeamElement {
   SectionForces section_forces(const Vec3& v, double L, const ElementLoad& p, double xi) const;
 
  private:
-  using Mat34 = Eigen::Matrix<double, 3, 4>;
-  using Mat64 = Eigen::Matrix<double, 6, 4>;
   static Eigen::Vector4d pack(const ElementLoad& p) { return {p.a.x(), p.b.x(), p.a.y(), p.b.y()}; }
 
   double L_ = 0, m_ = 0, rho_a0_ = 0, rho_a1_ = 0;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace dmi {
 
@@ -20,6 +21,42 @@ FibreStresses fibre_stresses(const Section& section, double s, const SectionForc
     const double shape = pipe ? std::sqrt(std::max(0.0, 1 - eta * eta)) : 1 - eta * eta;
     const double tau = r.tau_max * shape;
     r.von_mises_max = std::max(r.von_mises_max, std::sqrt(sigma * sigma + 3 * tau * tau));
+  }
+  return r;
+}
+
+SpaceFibreStresses space_fibre_stresses(const Section& section, double s, const SpaceSectionForces& f) {
+  const double A = section.area(s), Iz = section.inertia(s), Iy = section.inertia_y(s);
+  const double tau_t = std::abs(f.T) / section.torsion_modulus(s);
+  SpaceFibreStresses r;
+  r.sigma_max = -INFINITY;
+  r.sigma_min = INFINITY;
+  const auto sample = [&](double y, double z, double tau_v) {
+    const double sigma = f.N / A - f.Mz * y / Iz + f.My * z / Iy, tau = tau_t + tau_v;
+    const double vm = std::sqrt(sigma * sigma + 3 * tau * tau);
+    r.sigma_max = std::max(r.sigma_max, sigma);
+    r.sigma_min = std::min(r.sigma_min, sigma);
+    r.tau_max = std::max(r.tau_max, tau);
+    if (vm >= r.von_mises_max) r.von_mises_max = vm, r.y = y, r.z = z;
+  };
+  if (section.kind() == SectionKind::pipe) {
+    const double R = 0.5 * section.depth(s), V = std::hypot(f.Vy, f.Vz), phi_v = std::atan2(f.Vz, f.Vy);
+    constexpr int kPoints = 72;
+    for (int k = 0; k < kPoints; ++k) {
+      const double phi = 2 * std::numbers::pi * k / kPoints;
+      sample(R * std::cos(phi), R * std::sin(phi), 2 * V / A * std::abs(std::sin(phi - phi_v)));
+    }
+  } else {
+    const double c = section.half_depth(s), w = 0.5 * section.width(s);
+    constexpr int kSide = 11;
+    for (int k = 0; k < kSide; ++k) {
+      const double eta = -1 + 2.0 * k / (kSide - 1);  // along each side
+      const double ty = 1.5 * std::abs(f.Vy) / A, tz = 1.5 * std::abs(f.Vz) / A;
+      sample(c, eta * w, tz * (1 - eta * eta));         // top and bottom faces: Vz's flow varies along them
+      sample(-c, eta * w, tz * (1 - eta * eta));
+      sample(eta * c, w, ty * (1 - eta * eta));         // side faces: Vy's
+      sample(eta * c, -w, ty * (1 - eta * eta));
+    }
   }
   return r;
 }

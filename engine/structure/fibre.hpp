@@ -23,4 +23,22 @@ struct FibreStresses {
 // von_mises_max sampled at 21 fibres.
 FibreStresses fibre_stresses(const Section& section, double s, const SectionForces& f);
 
+// Section forces of a space-frame member (space_frame.hpp): on the positive face, along the local axes (N, m).
+struct SpaceSectionForces { double N = 0, Vy = 0, Vz = 0, T = 0, My = 0, Mz = 0; };
+
+struct SpaceFibreStresses {
+  double sigma_max = 0, sigma_min = 0;  // Pa, extreme normal stresses around the perimeter
+  double tau_max = 0;                   // Pa, largest shear stress (torsion and shear force) around the perimeter
+  double von_mises_max = 0;             // Pa, max of sqrt(sigma^2 + 3 tau^2) around the perimeter
+  double y = 0, z = 0;                  // m, the section point of that maximum (local y', z')
+};
+
+// Stresses around the perimeter of a space member's section at the fraction s of its taper: sigma(y', z') =
+// N/A - Mz y'/Iz + My z'/Iy (Gere & Goodno, sec. 6.5). Shear: torsion tau_T = T / W_t (pipe T R / J; rectangle
+// k t T / J at the middle of the long sides, Timoshenko & Goodier 1970 sec. 109, taken everywhere on the perimeter:
+// conservative at the corners) plus the shear forces' parabolic (rectangle, 3/2 V/A at the axis) or thin-wall
+// (pipe, 2 V/A |sin|) distribution, added in magnitude: on one side of a pipe the two flows add, so for a pipe
+// the maximum is exact. Sampled at 72 points around a pipe and 11 per side of a rectangle.
+SpaceFibreStresses space_fibre_stresses(const Section& section, double s, const SpaceSectionForces& f);
+
 }  // namespace dmi

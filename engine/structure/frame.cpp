@@ -15,20 +15,19 @@
 #include <stdexcept>
 #include <string>
 
-#include "engine/structure/integrator.hpp"
+#include "engine/structure/frame_system.hpp"
+#include "engine/structure/frame_dynamics.hpp"
 
 namespace dmi {
 
 struct Frame::Impl {
-  explicit Impl(FrameModel m) : sys(std::move(m)), integrator(make_integrator(sys, sys.model().integrator)) {
-    const int n = sys.ndof();
-    for (Eigen::VectorXd* x : {&state.d, &state.v, &state.a, &nodal, &f, &d_prev, &v_prev, &cv}) x->setZero(n);
+  explicit Impl(FrameModel m) : sys(std::move(m)), dyn(sys, sys.model().integrator, sys.model().hht_alpha) {
     w.assign(sys.nelements(), Vec2::Zero());
   }
   void update_loads() {  // f = nodal + element loads at the current state
     if (f_current && sys.linear()) return;
-    f = nodal;
-    sys.add_element_loads(w, state.d, f);
+    dyn.f = dyn.nodal;
+    sys.add_element_loads(w, dyn.state.d, dyn.f);
     f_current = true;
   }
   void check_element(int e, double xi) const {
@@ -46,13 +45,9 @@ struct Frame::Impl {
   }
 
   FrameSystem sys;
-  std::unique_ptr<FrameTimeIntegrator> integrator;
-  FrameState state;
-  Eigen::VectorXd nodal, f, d_prev, v_prev, cv;  // loads (global), step scratch
-  std::vector<Vec2> w;                           // uniform element loads, local axes (N/m)
-  std::vector<Eigen::Triplet<double>> added;     // attached mass of the next step (kg)
+  FrameDynamics dyn;
+  std::vector<Vec2> w;  // uniform element loads, local axes (N/m)
   bool f_current = false;
-  double work_ext = 0, work_damp = 0, work_applied = 0;
 };
 
 Frame::Frame(FrameModel model) : impl_(std::make_unique<Impl>(std::move(model))) {}
@@ -63,18 +58,18 @@ Frame& Frame::operator=(Frame&&) noexcept = default;
 const FrameModel& Frame::model() const { return impl_->sys.model(); }
 int Frame::nnodes() const { return impl_->sys.ndof() / 3; }
 int Frame::nelements() const { return impl_->sys.nelements(); }
-const Eigen::VectorXd& Frame::displacement() const { return impl_->state.d; }
-const Eigen::VectorXd& Frame::velocity() const { return impl_->state.v; }
-double Frame::time() const { return impl_->state.t; }
+const Eigen::VectorXd& Frame::displacement() const { return impl_->dyn.state.d; }
+const Eigen::VectorXd& Frame::velocity() const { return impl_->dyn.state.v; }
+double Frame::time() const { return impl_->dyn.state.t; }
 
 Vec2 Frame::node_position(int n) const {
   impl_->check_node(n);
-  return model().nodes[n] + impl_->state.d.segment<2>(3 * n);
+  return model().nodes[n] + impl_->dyn.state.d.segment<2>(3 * n);
 }
 
 void Frame::clear_loads() {
-  impl_->nodal.setZero();
-  impl_->added.clear();
+  impl_->dyn.nodal.setZero();
+  impl_->dyn.added.clear();
   for (Vec2& w : impl_->w) w.setZero();
   impl_->f_current = false;
 }
@@ -88,14 +83,14 @@ void Frame::add_point_mass(int e, double xi, const Eigen::Matrix2d& m) {
     const double w = k == 0 ? 1 - xi : xi;
     for (int a = 0; a < 2; ++a)
       for (int b = 0; b < 2; ++b)
-        if (w * m(a, b) != 0) impl_->added.emplace_back(3 * n + a, 3 * n + b, w * m(a, b));
+        if (w * m(a, b) != 0) impl_->dyn.added.emplace_back(3 * n + a, 3 * n + b, w * m(a, b));
   }
 }
 
 void Frame::add_nodal_load(int node, const Vec3& f) {
   impl_->check_node(node);
   if (!f.allFinite()) throw std::invalid_argument("Frame: non-finite load at node " + std::to_string(node));
-  impl_->nodal.segment<3>(3 * node) += f;
+  impl_->dyn.nodal.segment<3>(3 * node) += f;
   impl_->f_current = false;
 }
 
@@ -110,8 +105,8 @@ void Frame::add_point_load(int e, double xi, const Vec2& F, double m) {
   const int node[2] = {el.i, el.j};
   for (int k = 0; k < 2; ++k) {
     const double fw = sh.hermite[2 * k] * ft + sh.slope[2 * k] * m;
-    impl_->nodal.segment<2>(3 * node[k]) += sh.axial[k] * fa * c.e1 + fw * c.e2;
-    impl_->nodal(3 * node[k] + 2) += sh.hermite[2 * k + 1] * ft + sh.slope[2 * k + 1] * m;
+    impl_->dyn.nodal.segment<2>(3 * node[k]) += sh.axial[k] * fa * c.e1 + fw * c.e2;
+    impl_->dyn.nodal(3 * node[k] + 2) += sh.hermite[2 * k + 1] * ft + sh.slope[2 * k + 1] * m;
   }
   impl_->f_current = false;
 }
@@ -123,45 +118,19 @@ void Frame::add_distributed_load(int e, const Vec2& w_local) {
   impl_->f_current = false;
 }
 
-double Frame::stable_time_step() const { return impl_->integrator->stable_time_step(); }
+double Frame::stable_time_step() const { return impl_->dyn.integrator->stable_time_step(); }
 
 void Frame::advance(double dt) {
-  if (!(dt > 0) || !std::isfinite(dt)) throw std::invalid_argument("Frame::advance: dt must be positive");
-  Impl& m = *impl_;
-  m.update_loads();
-  m.d_prev = m.state.d;
-  m.v_prev = m.state.v;
-  if (m.added.empty()) {
-    m.integrator->step(m.state, m.f, dt, nullptr);
-  } else {
-    SpMat Ma(ndof(), ndof());
-    Ma.setFromTriplets(m.added.begin(), m.added.end());
-    m.integrator->step(m.state, m.f, dt, &Ma);
-  }
-  m.d_prev = m.state.d - m.d_prev;
-  m.work_ext += m.f.dot(m.d_prev);                     // loads constant over the step
-  m.work_applied += m.nodal.dot(m.d_prev);
-  if (m.sys.damped()) {
-    m.v_prev = 0.5 * (m.v_prev + m.state.v);           // midpoint velocity
-    m.sys.damping_force(m.v_prev, m.cv);
-    m.work_damp += dt * m.v_prev.dot(m.cv);
-  }
-  if (!m.state.d.allFinite() || !m.state.v.allFinite())
-    throw std::runtime_error("Frame: non-finite state at t = " + std::to_string(m.state.t) +
-                             " s (time step above the stable limit " + std::to_string(stable_time_step()) + " s?)");
+  impl_->update_loads();
+  impl_->dyn.advance(impl_->sys, dt);
 }
 
 void Frame::solve_static() {
   Impl& m = *impl_;
-  m.state.d.setZero();
+  m.dyn.state.d.setZero();
   m.f_current = false;
   m.update_loads();
-  Eigen::SimplicialLDLT<SpMat> ldlt(m.sys.constrained(m.sys.stiffness()));
-  if (ldlt.info() != Eigen::Success) throw std::runtime_error("Frame: static stiffness factorisation failed");
-  m.state.d = ldlt.solve(Eigen::VectorXd(m.f.cwiseProduct(m.sys.free())));
-  m.state.v.setZero();
-  m.state.a.setZero();
-  m.state.a_current = false;
+  m.dyn.solve_static(m.sys);
   m.f_current = false;
 }
 
@@ -177,14 +146,14 @@ std::vector<double> Frame::natural_frequencies(int n) const {
 
 ElementCurve Frame::curve(int e) const {
   impl_->check_element(e, 0);
-  return impl_->sys.transform().curve(impl_->sys.chord(e), impl_->sys.element_dofs(e, impl_->state.d));
+  return impl_->sys.transform().curve(impl_->sys.chord(e), impl_->sys.element_dofs(e, impl_->dyn.state.d));
 }
 
 Vec2 Frame::velocity_at(int e, double xi) const {
   impl_->check_element(e, xi);
   const ElementCurve c = curve(e);
   const BeamShape sh = beam_shape(xi, c.L);
-  const Vec6 ve = impl_->sys.element_dofs(e, impl_->state.v);
+  const Vec6 ve = impl_->sys.element_dofs(e, impl_->dyn.state.v);
   const double ua = sh.axial[0] * ve.head<2>().dot(c.e1) + sh.axial[1] * ve.segment<2>(3).dot(c.e1);
   const double wt = sh.hermite[0] * ve.head<2>().dot(c.e2) + sh.hermite[1] * ve(2) +
                     sh.hermite[2] * ve.segment<2>(3).dot(c.e2) + sh.hermite[3] * ve(5);
@@ -195,7 +164,7 @@ double Frame::angular_velocity_at(int e, double xi) const {
   impl_->check_element(e, xi);
   const ElementCurve c = curve(e);
   const BeamShape sh = beam_shape(xi, c.L);
-  const Vec6 ve = impl_->sys.element_dofs(e, impl_->state.v);
+  const Vec6 ve = impl_->sys.element_dofs(e, impl_->dyn.state.v);
   return sh.slope[0] * ve.head<2>().dot(c.e2) + sh.slope[1] * ve(2) + sh.slope[2] * ve.segment<2>(3).dot(c.e2) +
          sh.slope[3] * ve(5);
 }
@@ -209,8 +178,8 @@ double Frame::half_depth(int e, double xi) const {
 SectionForces Frame::forces_at(int e, double xi) const {
   impl_->check_element(e, xi);
   const FrameSystem& sys = impl_->sys;
-  const ChordState s = sys.transform().state(sys.chord(e), sys.element_dofs(e, impl_->state.d));
-  return sys.element(e).section_forces(s.v, s.L, sys.element_load(e, impl_->w[e], impl_->state.d), xi);
+  const ChordState s = sys.transform().state(sys.chord(e), sys.element_dofs(e, impl_->dyn.state.d));
+  return sys.element(e).section_forces(s.v, s.L, sys.element_load(e, impl_->w[e], impl_->dyn.state.d), xi);
 }
 
 // sigma(y) = N/A - M y/I (frame.hpp); tau(y) = tau_max (1 - (y/c)^2) for a rectangle, tau_max sqrt(1 - (y/c)^2)
@@ -220,70 +189,32 @@ FibreStresses Frame::stresses_at(int e, double xi) const {
   return fibre_stresses(el.section, el.s0 + xi * (el.s1 - el.s0), forces_at(e, xi));
 }
 
-// Restrained DOF: r = f_int + M a + C v - f_ext (the rows of the full matrices couple the free DOFs);
-// spring on a free DOF: r = -k u. A fixed DOF ignores its spring. After an explicit step a is the acceleration
-// the step used (t_n); it enters only through consistent-mass coupling (lumped: M a = 0 on restrained DOFs).
 Vec3 Frame::reaction(int support) const {
   const FrameModel& fm = model();
   if (support < 0 || support >= static_cast<int>(fm.supports.size()))
     throw std::invalid_argument("Frame: support index " + std::to_string(support) + " out of range");
   const FrameSystem& sys = impl_->sys;
-  const FrameState& st = impl_->state;
-  Eigen::VectorXd fint(sys.ndof()), cv(sys.ndof());
-  sys.internal_force(st.d, fint);
-  sys.damping_force(st.v, cv);
-  Eigen::VectorXd f = impl_->nodal;
-  sys.add_element_loads(impl_->w, st.d, f);
-  const Eigen::VectorXd r = fint + sys.mass() * st.a + cv - f;
-  const FrameSupportDef& s = fm.supports[support];
-  Vec3 out;
-  for (int c = 0; c < 3; ++c) {
-    const int i = 3 * s.node + c;
-    out(c) = s.fixed[c] ? r(i) : -sys.springs()(i) * st.d(i);
-  }
-  return out;
+  Eigen::VectorXd f = impl_->dyn.nodal;
+  sys.add_element_loads(impl_->w, impl_->dyn.state.d, f);
+  return impl_->dyn.reaction<3>(sys, impl_->dyn.residual(sys, f), fm.supports[support]);
 }
 
-double Frame::kinetic_energy() const {
-  const Eigen::VectorXd& v = impl_->state.v;
-  return 0.5 * v.dot(impl_->sys.mass() * v);
-}
+double Frame::kinetic_energy() const { return impl_->dyn.kinetic_energy(impl_->sys); }
 
 double Frame::strain_energy() const {
   const FrameSystem& sys = impl_->sys;
-  const Eigen::VectorXd& d = impl_->state.d;
+  const Eigen::VectorXd& d = impl_->dyn.state.d;
   double u = 0.5 * d.dot(sys.springs().cwiseProduct(d));
   for (int e = 0; e < sys.nelements(); ++e)
     u += sys.element(e).strain_energy(sys.transform().state(sys.chord(e), sys.element_dofs(e, d)).v);
   return u;
 }
 
-double Frame::external_work() const { return impl_->work_ext; }
-double Frame::applied_work() const { return impl_->work_applied; }
-double Frame::damping_work() const { return impl_->work_damp; }
+double Frame::external_work() const { return impl_->dyn.work_ext; }
+double Frame::applied_work() const { return impl_->dyn.work_applied; }
+double Frame::damping_work() const { return impl_->dyn.work_damp; }
 
-void Frame::save_state(StateWriter& w) const {
-  const Impl& m = *impl_;
-  w.tag("frame");
-  w.put(m.state.d), w.put(m.state.v), w.put(m.state.a), w.put(m.state.t), w.put(m.state.a_current);
-  w.put(m.nodal), w.put(m.f), w.put(m.d_prev), w.put(m.v_prev), w.put(m.cv), w.put(m.w);
-  w.put(m.f_current), w.put(m.work_ext), w.put(m.work_damp), w.put(m.work_applied);
-  m.integrator->save_state(w);
-}
-
-void Frame::load_state(StateReader& r) {
-  Impl& m = *impl_;
-  r.tag("frame");
-  const auto n = static_cast<std::size_t>(m.sys.ndof());
-  const std::size_t ne = m.w.size();
-  r.get(m.state.d), r.get(m.state.v), r.get(m.state.a), r.get(m.state.t), r.get(m.state.a_current);
-  r.get(m.nodal), r.get(m.f), r.get(m.d_prev), r.get(m.v_prev), r.get(m.cv), r.get(m.w);
-  for (const Eigen::VectorXd* x : {&m.state.d, &m.state.v, &m.state.a, &m.nodal, &m.f})
-    r.expect_size("frame DOFs", static_cast<std::size_t>(x->size()), n);
-  r.expect_size("frame elements", m.w.size(), ne);
-  r.get(m.f_current), r.get(m.work_ext), r.get(m.work_damp), r.get(m.work_applied);
-  m.added.clear();
-  m.integrator->load_state(r);
-}
+void Frame::save_state(StateWriter& w) const { impl_->dyn.save_state(w, "frame", impl_->w, impl_->f_current); }
+void Frame::load_state(StateReader& r) { impl_->dyn.load_state(r, "frame", impl_->w, impl_->f_current); }
 
 }  // namespace dmi

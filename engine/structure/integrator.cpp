@@ -8,12 +8,12 @@
 
 namespace dmi {
 
-ExplicitEuler::ExplicitEuler(const FrameSystem& sys) : sys_(sys) {
+ExplicitEuler::ExplicitEuler(const AssembledSystem& sys) : sys_(sys) {
   const double w2 = sys.max_eigenvalue();  // the constructor already refused mechanisms
   if (!std::isfinite(w2) || !(w2 > 0))
     throw std::invalid_argument("Frame: (K, M) eigenvalues are not finite and positive; no stable time step");
   const double w = std::sqrt(w2);
-  const double c = sys.model().rayleigh_mass + sys.model().rayleigh_stiffness * w * w;
+  const double c = sys.rayleigh_mass() + sys.rayleigh_stiffness() * w * w;
   dt_stable_ = 4 / (std::sqrt(4 * w * w + c * c) + c);
   const int n = sys.ndof();
   fint_.setZero(n);
@@ -42,8 +42,8 @@ void ExplicitEuler::step(FrameState& s, const Eigen::VectorXd& f, double dt, con
   s.a_current = false;                                 // a is a_n, not a_{n+1}
 }
 
-Newmark::Newmark(const FrameSystem& sys) : sys_(sys) {
-  const double a = sys.model().hht_alpha;
+Newmark::Newmark(const AssembledSystem& sys, double hht_alpha) : sys_(sys) {
+  const double a = hht_alpha;
   if (!(a >= -1.0 / 3 && a <= 0)) throw std::invalid_argument("Frame: HHT alpha must lie in [-1/3, 0]");
   alpha_ = a;
   gamma_ = 0.5 - a;
@@ -103,7 +103,7 @@ bool Newmark::factorize(const SpMat& A, bool throw_on_failure) {
 
 void Newmark::step_linear(FrameState& s, const Eigen::VectorXd& f, double dt, const SpMat* Ma) {
   const double c0 = 1 / (beta_ * dt * dt), c1 = gamma_ / (beta_ * dt);
-  const double ar = sys_.model().rayleigh_mass, br = sys_.model().rayleigh_stiffness;
+  const double ar = sys_.rayleigh_mass(), br = sys_.rayleigh_stiffness();
   if (dt != dt_factored_) {  // c0 M + (1 + alpha)(K0 + c1 C), C = ar M + br K0: rebuilt when dt changes (CFL steps)
     const double ck = (1 + alpha_) * (1 + c1 * br), cm = c0 + (1 + alpha_) * c1 * ar;
     if (kc_.nonZeros() == 0) {  // K0 and M constrained on one common pattern, so keff_ is a sum of value arrays
@@ -157,7 +157,7 @@ void Newmark::step_newton(FrameState& s, const Eigen::VectorXd& f, double dt, co
   constexpr int kMaxIterations = 20;
   constexpr double kResidualTol = 1e-8, kIncrementTol = 1e-8;
   const double c0 = 1 / (beta_ * dt * dt), c1 = gamma_ / (beta_ * dt);
-  const double ar = sys_.model().rayleigh_mass, br = sys_.model().rayleigh_stiffness;
+  const double ar = sys_.rayleigh_mass(), br = sys_.rayleigh_stiffness();
   const FrameState n = s;
   sys_.internal_force(n.d, fint0_);
   sys_.damping_force(n.v, tmp_);
@@ -189,8 +189,8 @@ void Newmark::step_newton(FrameState& s, const Eigen::VectorXd& f, double dt, co
                            " s, residual " + std::to_string(res) + " N (relative " + std::to_string(res / ref) + ")");
 }
 
-std::unique_ptr<FrameTimeIntegrator> make_integrator(const FrameSystem& sys, FrameIntegrator kind) {
-  if (kind == FrameIntegrator::newmark) return std::make_unique<Newmark>(sys);
+std::unique_ptr<FrameTimeIntegrator> make_integrator(const AssembledSystem& sys, FrameIntegrator kind, double hht_alpha) {
+  if (kind == FrameIntegrator::newmark) return std::make_unique<Newmark>(sys, hht_alpha);
   return std::make_unique<ExplicitEuler>(sys);
 }
 

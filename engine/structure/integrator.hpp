@@ -1,11 +1,12 @@
 // Time integrators of the frame's equation of motion M a + C v + f_int(d) = f (Lin & Yang 2024 eq. (26)),
-// kept apart from the physics: they see the frame only through FrameSystem. The loads f
+// kept apart from the physics: they see the frame only through AssembledSystem. The loads f
 // are held constant over a step.
 #pragma once
 #include <Eigen/Dense>
 #include <memory>
 
-#include "engine/structure/frame_system.hpp"
+#include "engine/structure/assembled_system.hpp"
+#include "engine/structure/frame.hpp"
 
 namespace dmi {
 
@@ -39,14 +40,14 @@ class FrameTimeIntegrator {
 // read as central differences with v_{n+1/2}, second order.
 class ExplicitEuler final : public FrameTimeIntegrator {
  public:
-  explicit ExplicitEuler(const FrameSystem& sys);
+  explicit ExplicitEuler(const AssembledSystem& sys);
   double stable_time_step() const override { return dt_stable_; }
   void step(FrameState& s, const Eigen::VectorXd& f, double dt, const SpMat* Ma) override;
   void save_state(StateWriter& w) const override { w.put(fint_), w.put(cv_), w.put(r_); }
   void load_state(StateReader& r) override { r.get(fint_), r.get(cv_), r.get(r_); }
 
  private:
-  const FrameSystem& sys_;
+  const AssembledSystem& sys_;
   double dt_stable_ = 0;
   Eigen::VectorXd fint_, cv_, r_;
   Eigen::SimplicialLDLT<SpMat> added_solver_;  // M + Ma, refactorised in steps with attached mass
@@ -65,7 +66,7 @@ class ExplicitEuler final : public FrameTimeIntegrator {
 // (and in steps with attached mass); corotational: Newton-Raphson with K_t in place of K0.
 class Newmark final : public FrameTimeIntegrator {
  public:
-  explicit Newmark(const FrameSystem& sys);
+  Newmark(const AssembledSystem& sys, double hht_alpha);
   double stable_time_step() const override;
   void step(FrameState& s, const Eigen::VectorXd& f, double dt, const SpMat* Ma) override;
   void save_state(StateWriter& w) const override { w.put(fint_), w.put(fint0_), w.put(tmp_), w.put(rhs_), w.put(dd_); }
@@ -82,7 +83,7 @@ class Newmark final : public FrameTimeIntegrator {
   void step_newton(FrameState& s, const Eigen::VectorXd& f, double dt, const SpMat* Ma);
   bool factorize(const SpMat& A, bool throw_on_failure = true);
 
-  const FrameSystem& sys_;
+  const AssembledSystem& sys_;
   double alpha_ = 0, beta_ = 0.25, gamma_ = 0.5;
   double dt_factored_ = 0;   // 0: keff_ is stale (new dt, or restarted)
   bool factored_with_mass_ = false;  // solver_ holds keff_ + c0 Ma, not keff_
@@ -93,6 +94,6 @@ class Newmark final : public FrameTimeIntegrator {
   Eigen::VectorXd fint_, fint0_, tmp_, rhs_, dd_;
 };
 
-std::unique_ptr<FrameTimeIntegrator> make_integrator(const FrameSystem& sys, FrameIntegrator kind);
+std::unique_ptr<FrameTimeIntegrator> make_integrator(const AssembledSystem& sys, FrameIntegrator kind, double hht_alpha);
 
 }  // namespace dmi

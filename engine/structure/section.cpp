@@ -108,6 +108,15 @@ double Section::torsion_constant(double s) const {
   return t * t * t * b / 3 * (1 - 192 / std::pow(std::numbers::pi, 5) * (t / b) * sum);
 }
 
+double Section::torsion_modulus(double s) const {
+  const double J = torsion_constant(s);
+  if (kind_ == SectionKind::pipe) return J / (0.5 * h0_);
+  const double h = depth(s), b = std::max(b_, h), t = std::min(b_, h);
+  double sum = 0;
+  for (int n = 1; n < 40; n += 2) sum += 1 / (n * n * std::cosh(n * std::numbers::pi * b / (2 * t)));
+  return J / ((1 - 8 / (std::numbers::pi * std::numbers::pi) * sum) * t);
+}
+
 double Section::shear_coefficient() const { return kind_ == SectionKind::pipe ? 0.5 : 5.0 / 6.0; }
 
 double Section::shear_stress_factor() const { return kind_ == SectionKind::pipe ? 2.0 : 1.5; }

@@ -28,6 +28,9 @@ class Section {
   // beta(b/t) b t^3, t the smaller side, by the series of Timoshenko & Goodier (1970, sec. 109, eq. 159).
   double inertia_y(double s) const;
   double torsion_constant(double s) const;
+  // Torsional section modulus W_t = T / tau_max (m^3): pipe J / (D / 2); rectangle J / (k t) with
+  // k = 1 - (8 / pi^2) sum_{n odd} 1 / (n^2 cosh(n pi b / (2 t))) (Timoshenko & Goodier 1970, sec. 109).
+  double torsion_modulus(double s) const;
   // Shear coefficient kappa: A_s = kappa A (Timoshenko). Rectangle 5/6; thin pipe 1/2 (Cowper 1966 limits).
   double shear_coefficient() const;
   // Peak shear stress over the section = factor * V / A: rectangle 3/2, pipe 2 (thin wall, V Q / (I t)).

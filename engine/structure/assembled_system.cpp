@@ -1,0 +1,131 @@
+#include "engine/structure/assembled_system.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <stdexcept>
+
+namespace dmi {
+
+SpMat from_triplets(int n, const Triplets& t) {
+  SpMat A(n, n);
+  A.setFromTriplets(t.begin(), t.end());
+  return A;
+}
+
+void AssembledSystem::finish(bool lumped, double rayleigh_mass, double rayleigh_stiffness) {
+  alpha_ = rayleigh_mass;
+  beta_ = rayleigh_stiffness;
+  check_mechanism();
+  factorise_mass(lumped);
+}
+
+double AssembledSystem::max_eigenvalue() const {
+  int nf = 0;
+  for (int i = 0; i < ndof(); ++i) nf += free_(i) > 0;
+  // Exact (dense) for small frames; above ~200 elements the O(n^3) solve costs seconds, so the
+  // element bound (conservative: a smaller stable step) is used.
+  return nf <= kDenseEigenMax ? eigenvalues().maxCoeff() : element_bound_;
+}
+
+void AssembledSystem::factorise_mass(bool lumped) {
+  lumped_ = lumped;
+  if (!lumped) {
+    mass_solver_.compute(constrained(M_));
+    if (mass_solver_.info() != Eigen::Success) fail("consistent mass matrix is not positive definite");
+    return;
+  }
+  const int nn = ndof() / node_dofs_;
+  inv_diagonal_ = Eigen::VectorXd::Zero(ndof());
+  for (int n = 0; n < nn; ++n) {
+    std::vector<int> dofs;
+    for (int c = 0; c < node_dofs_; ++c)
+      if (free_(node_dofs_ * n + c) > 0) dofs.push_back(node_dofs_ * n + c);
+    const int k = static_cast<int>(dofs.size());
+    Eigen::MatrixXd B(k, k);
+    for (int r = 0; r < k; ++r)
+      for (int c = 0; c < k; ++c) B(r, c) = M_.coeff(dofs[r], dofs[c]);
+    for (int r = 0; r < k; ++r)
+      if (!(B(r, r) > 0)) fail("no mass at " + dof_name(dofs[r]));  // HRZ gives every element DOF mass
+    const bool diagonal = B.isDiagonal(0.0);
+    diagonal_ = diagonal_ && diagonal;
+    for (int r = 0; r < k; ++r) inv_diagonal_(dofs[r]) = 1 / B(r, r);
+    Eigen::LLT<Eigen::MatrixXd> llt(B);
+    if (llt.info() != Eigen::Success) fail("lumped mass block of node " + std::to_string(n) + " is not positive definite");
+    inv_blocks_.push_back(diagonal ? Eigen::MatrixXd(inv_diagonal_(dofs).asDiagonal()) : llt.solve(Eigen::MatrixXd::Identity(k, k)));
+    block_dofs_.push_back(std::move(dofs));
+  }
+}
+
+// Singular K0 on the free DOFs: a zero diagonal, a failed LDLT or a pivot below 1e-12 of its diagonal. The
+// DOF named is the largest entry of the lowest eigenvector of the diagonally scaled stiffness (the mode).
+void AssembledSystem::check_mechanism() const {
+  const SpMat K = constrained(K0_);
+  const auto mechanism = [this](int dof) {
+    fail("the frame is a mechanism: no stiffness against " + dof_name(dof) + " (add supports, or release only one side of a hinge)");
+  };
+  const Eigen::VectorXd diag = K.diagonal();
+  for (int i = 0; i < ndof(); ++i)
+    if (!(diag(i) > 0)) mechanism(i);
+  Eigen::SimplicialLDLT<SpMat> ldlt(K);
+  bool singular = ldlt.info() != Eigen::Success;
+  if (!singular) {
+    const Eigen::VectorXd D = ldlt.vectorD();
+    const auto& perm = ldlt.permutationP().indices();  // original DOF i sits at pivot perm(i)
+    for (int i = 0; i < ndof(); ++i) singular = singular || !(D(perm(i)) > 1e-12 * diag(i));
+  }
+  if (!singular) return;
+  if (ndof() > 3 * kDenseEigenMax)
+    fail("the frame is a mechanism: its stiffness matrix is singular (add supports, or release only one side of a hinge)");
+  const Eigen::VectorXd s = diag.cwiseSqrt().cwiseInverse();
+  const Eigen::MatrixXd scaled = s.asDiagonal() * Eigen::MatrixXd(K) * s.asDiagonal();
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(scaled);
+  int worst = 0;
+  es.eigenvectors().col(0).cwiseAbs().maxCoeff(&worst);
+  mechanism(worst);
+}
+
+SpMat AssembledSystem::constrained(const SpMat& A) const {
+  Triplets t;
+  t.reserve(A.nonZeros() + ndof());
+  for (int c = 0; c < A.outerSize(); ++c)
+    for (SpMat::InnerIterator it(A, c); it; ++it)
+      if (free_(it.row()) > 0 && free_(it.col()) > 0) t.emplace_back(it.row(), it.col(), it.value());
+  for (int i = 0; i < ndof(); ++i)
+    if (free_(i) == 0) t.emplace_back(i, i, 1.0);
+  return from_triplets(ndof(), t);
+}
+
+void AssembledSystem::damping_force(const Eigen::VectorXd& v, Eigen::VectorXd& out) const {
+  out.noalias() = alpha_ * (M_ * v);
+  if (beta_ > 0) out.noalias() += beta_ * (K0_ * v);
+}
+
+void AssembledSystem::solve_mass(Eigen::VectorXd& r, Eigen::VectorXd& a) const {
+  r.array() *= free_.array();
+  if (!lumped_) {
+    a = mass_solver_.solve(r);
+  } else if (diagonal_) {
+    a = inv_diagonal_.cwiseProduct(r);
+  } else {
+    a.setZero(ndof());
+    for (std::size_t b = 0; b < block_dofs_.size(); ++b) a(block_dofs_[b]) = inv_blocks_[b] * r(block_dofs_[b]);
+  }
+}
+
+Eigen::VectorXd AssembledSystem::eigenvalues() const {
+  std::vector<int> idx;
+  for (int i = 0; i < ndof(); ++i)
+    if (free_(i) > 0) idx.push_back(i);
+  const int nf = static_cast<int>(idx.size());
+  const Eigen::MatrixXd K(K0_), M(M_);
+  Eigen::MatrixXd Kf(nf, nf), Mf(nf, nf);
+  for (int r = 0; r < nf; ++r)
+    for (int c = 0; c < nf; ++c) {
+      Kf(r, c) = K(idx[r], idx[c]);
+      Mf(r, c) = M(idx[r], idx[c]);
+    }
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(Kf, Mf, Eigen::EigenvaluesOnly);
+  if (es.info() != Eigen::Success) throw std::runtime_error("Frame: generalised eigen solve failed");
+  return es.eigenvalues();
+}
+
+}  // namespace dmi

@@ -1,0 +1,90 @@
+// The assembled operators a time integrator sees (integrator.hpp), shared by the plane frame (frame_system.hpp,
+// 3 DOFs per node) and the space frame (space_frame_system.hpp, 6 DOFs per node): the mass matrix M (lumped or
+// consistent, plus nodal masses), the initial (linear) stiffness K0 with support springs, Rayleigh damping
+// C = alpha M + beta K0, the restrained DOFs, and the internal force and tangent of the coordinate transformation.
+// Vectors are full size; restrained DOFs are masked: free() is 1 on free and 0 on restrained DOFs, solves use
+// constrained() matrices (identity on restrained rows/columns), so a restrained DOF keeps a zero displacement,
+// velocity and acceleration. The unmasked rows of mass() and stiffness() give the support reactions.
+// A lumped mass is block diagonal by node (a node's rotational block of a space frame is a full 3 x 3 in global
+// axes: torsional and bending rotary inertias differ); each free block is inverted once.
+#pragma once
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <string>
+#include <vector>
+
+namespace dmi {
+
+using SpMat = Eigen::SparseMatrix<double>;
+using Triplets = std::vector<Eigen::Triplet<double>>;
+
+// Adds an element matrix over the 2 N DOFs of nodes i and j (N per node) to the triplets (exact zeros skipped).
+template <int N, class Matrix> void scatter_element(Triplets& t, int i, int j, const Matrix& ke) {
+  const int base[2] = {N * i, N * j};
+  for (int r = 0; r < 2 * N; ++r)
+    for (int c = 0; c < 2 * N; ++c)
+      if (ke(r, c) != 0) t.emplace_back(base[r / N] + r % N, base[c / N] + c % N, ke(r, c));
+}
+
+SpMat from_triplets(int n, const Triplets& t);
+
+class AssembledSystem {
+ public:
+  virtual ~AssembledSystem() = default;
+
+  int ndof() const { return static_cast<int>(free_.size()); }
+  int dofs_per_node() const { return node_dofs_; }
+  virtual bool linear() const = 0;
+  const Eigen::VectorXd& free() const { return free_; }
+  const Eigen::VectorXd& springs() const { return springs_; }  // support springs on free DOFs
+  const SpMat& mass() const { return M_; }
+  const SpMat& stiffness() const { return K0_; }
+  double rayleigh_mass() const { return alpha_; }
+  double rayleigh_stiffness() const { return beta_; }
+  // A copy of A with restrained rows and columns zeroed and the identity on their diagonal.
+  SpMat constrained(const SpMat& A) const;
+
+  // Internal force at d: K0 d (linear) or the transformation's sum_e B^T q + springs, restrained rows included.
+  virtual void internal_force(const Eigen::VectorXd& d, Eigen::VectorXd& out) const = 0;
+  // Tangent stiffness at d (K0 for the linear transformation), unconstrained.
+  virtual SpMat tangent(const Eigen::VectorXd& d) const = 0;
+  // out = C v = alpha M v + beta K0 v.
+  void damping_force(const Eigen::VectorXd& v, Eigen::VectorXd& out) const;
+  bool damped() const { return alpha_ > 0 || beta_ > 0; }
+  // a = M^-1 r on the free DOFs (0 on restrained ones); lumped: node blocks, consistent: factorised once.
+  // r is masked in place (restrained entries zeroed).
+  void solve_mass(Eigen::VectorXd& r, Eigen::VectorXd& a) const;
+
+  // Generalised eigenvalues omega^2 of (K0, M) on the free DOFs, ascending (dense: small frames only).
+  Eigen::VectorXd eigenvalues() const;
+  // omega_max^2: exact up to kDenseEigenMax free DOFs, else the element (Irons) bound plus springs.
+  double max_eigenvalue() const;
+  static constexpr int kDenseEigenMax = 600;
+
+ protected:
+  explicit AssembledSystem(int node_dofs) : node_dofs_(node_dofs) {}
+  // After a derived class has filled M_, K0_, free_, springs_ and element_bound_: refuses a mechanism (naming the
+  // DOF) and prepares the mass solve.
+  void finish(bool lumped, double rayleigh_mass, double rayleigh_stiffness);
+  virtual std::string dof_name(int dof) const = 0;
+  [[noreturn]] virtual void fail(const std::string& what) const = 0;
+
+  Eigen::VectorXd free_, springs_;
+  SpMat M_, K0_;
+  double element_bound_ = 0;  // max over elements of lambda_max(K_e, M_e), plus the springs' share
+
+ private:
+  void check_mechanism() const;
+  void factorise_mass(bool lumped);
+
+  int node_dofs_ = 3;
+  double alpha_ = 0, beta_ = 0;
+  bool lumped_ = true;
+  std::vector<Eigen::MatrixXd> inv_blocks_;   // lumped: each node's free block, inverted
+  std::vector<std::vector<int>> block_dofs_;  // and the DOFs it covers
+  Eigen::VectorXd inv_diagonal_;              // lumped with every block diagonal: 1 / M_ii (bit for bit 1 / m)
+  bool diagonal_ = true;
+  Eigen::SimplicialLDLT<SpMat> mass_solver_;  // consistent mass only
+};
+
+}  // namespace dmi

@@ -1,0 +1,54 @@
+#include "engine/structure/frame_dynamics.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace dmi {
+
+FrameDynamics::FrameDynamics(const AssembledSystem& sys, FrameIntegrator kind, double hht_alpha)
+    : integrator(make_integrator(sys, kind, hht_alpha)) {
+  const int n = sys.ndof();
+  for (Eigen::VectorXd* x : {&state.d, &state.v, &state.a, &nodal, &f, &d_prev, &v_prev, &cv}) x->setZero(n);
+}
+
+void FrameDynamics::advance(const AssembledSystem& sys, double dt) {
+  if (!(dt > 0) || !std::isfinite(dt)) throw std::invalid_argument("Frame::advance: dt must be positive");
+  d_prev = state.d;
+  v_prev = state.v;
+  if (added.empty()) {
+    integrator->step(state, f, dt, nullptr);
+  } else {
+    const SpMat Ma = from_triplets(sys.ndof(), added);
+    integrator->step(state, f, dt, &Ma);
+  }
+  d_prev = state.d - d_prev;
+  work_ext += f.dot(d_prev);  // loads constant over the step
+  work_applied += nodal.dot(d_prev);
+  if (sys.damped()) {
+    v_prev = 0.5 * (v_prev + state.v);  // midpoint velocity
+    sys.damping_force(v_prev, cv);
+    work_damp += dt * v_prev.dot(cv);
+  }
+  if (!state.d.allFinite() || !state.v.allFinite())
+    throw std::runtime_error("Frame: non-finite state at t = " + std::to_string(state.t) + " s (time step above the stable limit " +
+                             std::to_string(integrator->stable_time_step()) + " s?)");
+}
+
+void FrameDynamics::solve_static(const AssembledSystem& sys) {
+  Eigen::SimplicialLDLT<SpMat> ldlt(sys.constrained(sys.stiffness()));
+  if (ldlt.info() != Eigen::Success) throw std::runtime_error("Frame: static stiffness factorisation failed");
+  state.d = ldlt.solve(Eigen::VectorXd(f.cwiseProduct(sys.free())));
+  state.v.setZero();
+  state.a.setZero();
+  state.a_current = false;
+}
+
+Eigen::VectorXd FrameDynamics::residual(const AssembledSystem& sys, const Eigen::VectorXd& f_total) const {
+  Eigen::VectorXd fint(sys.ndof()), c(sys.ndof());
+  sys.internal_force(state.d, fint);
+  sys.damping_force(state.v, c);
+  return fint + sys.mass() * state.a + c - f_total;
+}
+
+}  // namespace dmi

@@ -1,0 +1,228 @@
+// SpaceFrame: the public face of SpaceFrameSystem and the shared FrameDynamics, plus results; loads and energies as
+// the plane frame's (frame.cpp): nodal and point loads are global nodal forces, uniform element loads are kept per
+// element in local axes and turned, with the self-weight, into equivalent nodal loads at each step.
+#include "engine/structure/space_frame.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "engine/structure/frame_dynamics.hpp"
+#include "engine/structure/space_frame_system.hpp"
+
+namespace dmi {
+
+SpaceSupportDef SpaceSupportDef::fixed_support(int node) {
+  SpaceSupportDef s;
+  s.node = node;
+  for (bool& f : s.fixed) f = true;
+  return s;
+}
+
+SpaceSupportDef SpaceSupportDef::pinned(int node) {
+  SpaceSupportDef s;
+  s.node = node;
+  for (int c = 0; c < 3; ++c) s.fixed[c] = true;
+  return s;
+}
+
+struct SpaceFrame::Impl {
+  explicit Impl(SpaceFrameModel m) : sys(std::move(m)), dyn(sys, sys.model().integrator, sys.model().hht_alpha) {
+    w.assign(sys.nelements(), Vec3::Zero());
+  }
+  void update_loads() {
+    if (f_current && sys.linear()) return;
+    dyn.f = dyn.nodal;
+    sys.add_element_loads(w, dyn.state.d, dyn.f);
+    f_current = true;
+  }
+  void check_element(int e, double xi) const {
+    if (e < 0 || e >= sys.nelements())
+      throw std::invalid_argument("SpaceFrame: element index " + std::to_string(e) + " outside [0, " + std::to_string(sys.nelements()) + ")");
+    if (!(xi >= 0 && xi <= 1)) throw std::invalid_argument("SpaceFrame: element " + std::to_string(e) + ": xi = " + std::to_string(xi) + " outside [0, 1]");
+  }
+  void check_node(int n) const {
+    if (n < 0 || 6 * n >= sys.ndof())
+      throw std::invalid_argument("SpaceFrame: node index " + std::to_string(n) + " outside [0, " + std::to_string(sys.ndof() / 6) + ")");
+  }
+  // The element's current local axes and its end DOFs in them.
+  Vec12 local_dofs(int e, const Eigen::VectorXd& x, Eigen::Matrix3d& R, double& L) const {
+    const SpaceChordState s = sys.element_state(e, dyn.state.d);
+    R = s.R;
+    L = s.L;
+    return rotation12(R) * sys.element_dofs(e, x);
+  }
+  // Centre-line field at xi interpolated from local end values ul (axial and torsion linear, transverse Hermite).
+  static Vec3 interpolate(const Vec12& ul, double xi, double L) {
+    const BeamShape sh = beam_shape(xi, L);
+    const double u1 = sh.axial[0] * ul(0) + sh.axial[1] * ul(6);
+    const double u2 = sh.hermite[0] * ul(1) + sh.hermite[1] * ul(5) + sh.hermite[2] * ul(7) + sh.hermite[3] * ul(11);
+    const double u3 = sh.hermite[0] * ul(2) - sh.hermite[1] * ul(4) + sh.hermite[2] * ul(8) - sh.hermite[3] * ul(10);
+    return {u1, u2, u3};
+  }
+
+  SpaceFrameSystem sys;
+  FrameDynamics dyn;
+  std::vector<Vec3> w;  // uniform element loads, local axes (N/m)
+  bool f_current = false;
+};
+
+SpaceFrame::SpaceFrame(SpaceFrameModel model) : impl_(std::make_unique<Impl>(std::move(model))) {}
+SpaceFrame::~SpaceFrame() = default;
+SpaceFrame::SpaceFrame(SpaceFrame&&) noexcept = default;
+SpaceFrame& SpaceFrame::operator=(SpaceFrame&&) noexcept = default;
+
+const SpaceFrameModel& SpaceFrame::model() const { return impl_->sys.model(); }
+int SpaceFrame::nnodes() const { return impl_->sys.ndof() / 6; }
+int SpaceFrame::nelements() const { return impl_->sys.nelements(); }
+const Eigen::VectorXd& SpaceFrame::displacement() const { return impl_->dyn.state.d; }
+const Eigen::VectorXd& SpaceFrame::velocity() const { return impl_->dyn.state.v; }
+double SpaceFrame::time() const { return impl_->dyn.state.t; }
+
+Vec3 SpaceFrame::node_position(int n) const {
+  impl_->check_node(n);
+  return model().nodes[n] + impl_->dyn.state.d.segment<3>(6 * n);
+}
+
+Eigen::Matrix3d SpaceFrame::axes(int e) const {
+  impl_->check_element(e, 0);
+  return impl_->sys.element_state(e, impl_->dyn.state.d).R;
+}
+
+void SpaceFrame::clear_loads() {
+  impl_->dyn.clear_loads();
+  for (Vec3& w : impl_->w) w.setZero();
+  impl_->f_current = false;
+}
+
+void SpaceFrame::add_nodal_load(int node, const Vec6& f) {
+  impl_->check_node(node);
+  if (!f.allFinite()) throw std::invalid_argument("SpaceFrame: non-finite load at node " + std::to_string(node));
+  impl_->dyn.nodal.segment<6>(6 * node) += f;
+  impl_->f_current = false;
+}
+
+void SpaceFrame::add_point_load(int e, double xi, const Vec3& F, const Vec3& m) {
+  impl_->check_element(e, xi);
+  if (!F.allFinite() || !m.allFinite()) throw std::invalid_argument("SpaceFrame: non-finite point load on element " + std::to_string(e));
+  const SpaceChordState s = impl_->sys.element_state(e, impl_->dyn.state.d);
+  const Vec3 f = s.R * F, t = s.R * m;
+  const BeamShape sh = beam_shape(xi, s.L);
+  Vec12 l = Vec12::Zero();
+  for (int k = 0; k < 2; ++k) {
+    const int o = 6 * k;
+    l(o) = sh.axial[k] * f(0);
+    l(o + 3) = sh.axial[k] * t(0);                                           // torque
+    l(o + 1) = sh.hermite[2 * k] * f(1) + sh.slope[2 * k] * t(2);            // plane 1: u2, th3
+    l(o + 5) = sh.hermite[2 * k + 1] * f(1) + sh.slope[2 * k + 1] * t(2);
+    l(o + 2) = sh.hermite[2 * k] * f(2) - sh.slope[2 * k] * t(1);            // plane 2: u3, t' = -th2, m' = -m2
+    l(o + 4) = -(sh.hermite[2 * k + 1] * f(2) - sh.slope[2 * k + 1] * t(1));
+  }
+  const Vec12 g = rotation12(s.R).transpose() * l;
+  const SpaceElementDef& el = model().elements[e];
+  impl_->dyn.nodal.segment<6>(6 * el.i) += g.head<6>();
+  impl_->dyn.nodal.segment<6>(6 * el.j) += g.tail<6>();
+  impl_->f_current = false;
+}
+
+void SpaceFrame::add_point_mass(int e, double xi, const Eigen::Matrix3d& m) {
+  impl_->check_element(e, xi);
+  if (!m.allFinite()) throw std::invalid_argument("SpaceFrame: non-finite attached mass on element " + std::to_string(e));
+  const SpaceElementDef& el = model().elements[e];
+  for (int k = 0; k < 2; ++k) {
+    const int n = k == 0 ? el.i : el.j;
+    const double w = k == 0 ? 1 - xi : xi;
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        if (w * m(a, b) != 0) impl_->dyn.added.emplace_back(6 * n + a, 6 * n + b, w * m(a, b));
+  }
+}
+
+void SpaceFrame::add_distributed_load(int e, const Vec3& w_local) {
+  impl_->check_element(e, 0);
+  if (!w_local.allFinite()) throw std::invalid_argument("SpaceFrame: non-finite load on element " + std::to_string(e));
+  impl_->w[e] += w_local;
+  impl_->f_current = false;
+}
+
+double SpaceFrame::stable_time_step() const { return impl_->dyn.integrator->stable_time_step(); }
+
+void SpaceFrame::advance(double dt) {
+  impl_->update_loads();
+  impl_->dyn.advance(impl_->sys, dt);
+}
+
+void SpaceFrame::solve_static() {
+  Impl& m = *impl_;
+  m.dyn.state.d.setZero();
+  m.f_current = false;
+  m.update_loads();
+  m.dyn.solve_static(m.sys);
+  m.f_current = false;
+}
+
+std::vector<double> SpaceFrame::natural_frequencies(int n) const {
+  const Eigen::VectorXd w2 = impl_->sys.eigenvalues();
+  if (n < 1 || n > w2.size())
+    throw std::invalid_argument("SpaceFrame: natural_frequencies(" + std::to_string(n) + "): the frame has " + std::to_string(w2.size()) + " free DOFs");
+  std::vector<double> w(n);
+  for (int k = 0; k < n; ++k) w[k] = std::sqrt(w2(k));
+  return w;
+}
+
+Vec3 SpaceFrame::displacement_at(int e, double xi) const {
+  impl_->check_element(e, xi);
+  Eigen::Matrix3d R;
+  double L = 0;
+  const Vec12 ul = impl_->local_dofs(e, impl_->dyn.state.d, R, L);
+  return R.transpose() * Impl::interpolate(ul, xi, L);
+}
+
+Vec3 SpaceFrame::velocity_at(int e, double xi) const {
+  impl_->check_element(e, xi);
+  Eigen::Matrix3d R;
+  double L = 0;
+  const Vec12 ul = impl_->local_dofs(e, impl_->dyn.state.v, R, L);
+  return R.transpose() * Impl::interpolate(ul, xi, L);
+}
+
+SpaceSectionForces SpaceFrame::forces_at(int e, double xi) const {
+  impl_->check_element(e, xi);
+  const SpaceFrameSystem& sys = impl_->sys;
+  const SpaceChordState s = sys.element_state(e, impl_->dyn.state.d);
+  return sys.element(e).section_forces(s.v, s.L, sys.element_load(e, impl_->w[e], impl_->dyn.state.d), xi);
+}
+
+SpaceFibreStresses SpaceFrame::stresses_at(int e, double xi) const {
+  const SpaceElementDef& el = model().elements[e];
+  return space_fibre_stresses(el.section, el.s0 + xi * (el.s1 - el.s0), forces_at(e, xi));
+}
+
+Vec6 SpaceFrame::reaction(int support) const {
+  const SpaceFrameModel& fm = model();
+  if (support < 0 || support >= static_cast<int>(fm.supports.size()))
+    throw std::invalid_argument("SpaceFrame: support index " + std::to_string(support) + " out of range");
+  const SpaceFrameSystem& sys = impl_->sys;
+  Eigen::VectorXd f = impl_->dyn.nodal;
+  sys.add_element_loads(impl_->w, impl_->dyn.state.d, f);
+  return impl_->dyn.reaction<6>(sys, impl_->dyn.residual(sys, f), fm.supports[support]);
+}
+
+double SpaceFrame::kinetic_energy() const { return impl_->dyn.kinetic_energy(impl_->sys); }
+
+double SpaceFrame::strain_energy() const {
+  const SpaceFrameSystem& sys = impl_->sys;
+  const Eigen::VectorXd& d = impl_->dyn.state.d;
+  double u = 0.5 * d.dot(sys.springs().cwiseProduct(d));
+  for (int e = 0; e < sys.nelements(); ++e) u += sys.element(e).strain_energy(sys.element_state(e, d).v);
+  return u;
+}
+
+double SpaceFrame::external_work() const { return impl_->dyn.work_ext; }
+double SpaceFrame::applied_work() const { return impl_->dyn.work_applied; }
+double SpaceFrame::damping_work() const { return impl_->dyn.work_damp; }
+
+void SpaceFrame::save_state(StateWriter& w) const { impl_->dyn.save_state(w, "space_frame", impl_->w, impl_->f_current); }
+void SpaceFrame::load_state(StateReader& r) { impl_->dyn.load_state(r, "space_frame", impl_->w, impl_->f_current); }
+
+}  // namespace dmi

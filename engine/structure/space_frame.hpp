@@ -1,0 +1,124 @@
+// A 3D beam-column (space) frame: nodes with 6 DOFs (ux, uy, uz, rx, ry, rz), elements made of a basic system
+// (space_element.hpp: axial force, end moments about both section axes and torque, against chord deformations, free
+// of rigid modes) and a coordinate transformation (linear; corotational in space_transform.hpp), supports with any
+// of the 6 DOFs fixed or on springs, end releases, nodal masses, lumped or consistent mass, and the plane frame's
+// time integrators (explicit, Lin & Yang 2024 eqs. 27-29, or Newmark/HHT), shared through AssembledSystem.
+//
+// Axes. Global x, y as the plane analyses (flow along x, y up), z across the channel. Element local axes: e1 from
+// node i to node j; e2 the section's depth direction (Section::depth, bending about e3 uses Section::inertia);
+// e3 = e1 x e2 the width direction (bending about e2 uses Section::inertia_y). e2 is the part of the element's
+// orientation vector normal to e1; by default global z x e1 (a member in the x-y plane bends in that plane as in
+// the plane frame), and global y for a member along z.
+// Section forces at a point, on the positive face (the part towards node i acted on by the part towards j), as
+// vectors along the local axes: N (tension +), Vy, Vz, T, My, Mz. Fibre stress at (y', z') of the section
+// sigma = N/A - Mz y'/Iz + My z'/Iy (Gere & Goodno, Mechanics of Materials, sec. 6.5). Mz equals the plane
+// frame's M; its V is -Vy.
+#pragma once
+#include <Eigen/Dense>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/common/state_io.hpp"
+#include "engine/structure/fibre.hpp"
+#include "engine/structure/frame.hpp"
+#include "engine/structure/section.hpp"
+
+namespace dmi {
+
+using Vec6 = Eigen::Matrix<double, 6, 1>;
+
+struct SpaceElementDef {
+  int i = 0, j = 0;               // node indices
+  Section section = Section::rectangle(1, 1);
+  double s0 = 0.0, s1 = 1.0;      // the element's span as fractions of its member's section taper
+  double E = 0, nu = 0, rho = 0;  // Pa, -, kg/m^3
+  bool release_i = false, release_j = false;  // both bending moments released (a ball joint) at the element ends
+  Vec3 orientation = Vec3::Zero();  // hint for e2 (zero: the default of the header)
+  int member = 0;                 // index into SpaceFrameModel::members
+};
+
+struct SpaceSupportDef {
+  int node = 0;
+  bool fixed[6] = {false, false, false, false, false, false};  // ux, uy, uz, rx, ry, rz restrained
+  double spring[6] = {0, 0, 0, 0, 0, 0};                       // N/m and N m/rad, to ground
+  static SpaceSupportDef fixed_support(int node);   // all six restrained
+  static SpaceSupportDef pinned(int node);          // translations restrained, rotations free
+};
+
+struct SpaceMassDef {
+  int node = 0;
+  double mass = 0.0;             // kg
+  double rotary_inertia = 0.0;   // kg m^2, about every axis
+};
+
+struct SpaceFrameModel {
+  std::vector<Vec3> nodes;                // initial positions (m)
+  std::vector<SpaceElementDef> elements;
+  std::vector<FrameMemberDef> members;
+  std::vector<SpaceSupportDef> supports;
+  std::vector<SpaceMassDef> masses;
+  BeamTheory theory = BeamTheory::euler_bernoulli;
+  FrameTransform transform = FrameTransform::linear;
+  MassMatrix mass = MassMatrix::lumped;
+  FrameIntegrator integrator = FrameIntegrator::explicit_euler;
+  Vec3 gravity = Vec3::Zero();            // m/s^2 on the members' own mass
+  double rayleigh_mass = 0.0;             // alpha (1/s): C = alpha M + beta K
+  double rayleigh_stiffness = 0.0;        // beta (s)
+  double hht_alpha = 0.0;                 // Newmark: HHT alpha in [-1/3, 0]
+};
+
+class SpaceFrame {
+ public:
+  // Assembles the model; throws std::invalid_argument naming the element/node for zero length, non-positive
+  // E/rho/section sizes, an orientation vector along the element, bad node indices, or a mechanism.
+  explicit SpaceFrame(SpaceFrameModel model);
+  ~SpaceFrame();
+  SpaceFrame(SpaceFrame&&) noexcept;
+  SpaceFrame& operator=(SpaceFrame&&) noexcept;
+
+  const SpaceFrameModel& model() const;
+  int nnodes() const;
+  int nelements() const;
+  int ndof() const { return 6 * nnodes(); }
+  const Eigen::VectorXd& displacement() const;
+  const Eigen::VectorXd& velocity() const;
+  double time() const;
+  Vec3 node_position(int n) const;
+  // The element's local axes (rows e1, e2, e3) at the current state.
+  Eigen::Matrix3d axes(int e) const;
+
+  void clear_loads();
+  void add_nodal_load(int node, const Vec6& f);  // Fx, Fy, Fz (N), Mx, My, Mz (N m), global
+  // Force F and moment m (global) at xi of element e as consistent end loads (axial linear, transverse Hermite,
+  // torque linear, bending moments through the Hermite slopes).
+  void add_point_load(int e, double xi, const Vec3& F, const Vec3& m = Vec3::Zero());
+  // Mass (a 3 x 3 translational block in global axes) attached at xi of element e for the next advance() only,
+  // lumped to the end nodes with weights 1 - xi, xi (frame.hpp, add_point_mass).
+  void add_point_mass(int e, double xi, const Eigen::Matrix3d& m);
+  void add_distributed_load(int e, const Vec3& w_local);  // uniform, per metre, along (e1, e2, e3)
+
+  double stable_time_step() const;
+  void advance(double dt);
+  void solve_static();
+  std::vector<double> natural_frequencies(int n) const;
+
+  Vec3 displacement_at(int e, double xi) const;  // centre-line displacement (m), interpolated as add_point_load
+  Vec3 velocity_at(int e, double xi) const;      // centre-line velocity (m/s)
+  SpaceSectionForces forces_at(int e, double xi) const;
+  SpaceFibreStresses stresses_at(int e, double xi) const;
+  Vec6 reaction(int support) const;  // force and moment the support exerts on the frame, global
+  double kinetic_energy() const;
+  double strain_energy() const;
+  double external_work() const;
+  double applied_work() const;
+  double damping_work() const;
+  void save_state(StateWriter& w) const;
+  void load_state(StateReader& r);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace dmi
