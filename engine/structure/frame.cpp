@@ -125,12 +125,12 @@ void Frame::advance(double dt) {
   impl_->dyn.advance(impl_->sys, dt);
 }
 
-void Frame::solve_static() {
+void Frame::solve_static(int increments) {
   Impl& m = *impl_;
   m.dyn.state.d.setZero();
   m.f_current = false;
   m.update_loads();
-  m.dyn.solve_static(m.sys);
+  m.dyn.solve_static(m.sys, increments);
   m.f_current = false;
 }
 

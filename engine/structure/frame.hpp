@@ -137,8 +137,9 @@ class Frame {
   double stable_time_step() const;
   // Advances by dt with the loads held constant over the step.
   void advance(double dt);
-  // Linear static solution K d = f for the current loads (state set to it, velocity zero).
-  void solve_static();
+  // Static solution for the current loads (state set to it, velocity zero): K d = f, or under the corotational
+  // transformation Newton-Raphson on the internal force in `increments` equal load steps.
+  void solve_static(int increments = 1);
   // The n lowest natural circular frequencies (rad/s) of the restrained frame, ascending.
   std::vector<double> natural_frequencies(int n) const;
 

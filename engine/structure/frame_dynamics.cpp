@@ -1,6 +1,8 @@
 #include "engine/structure/frame_dynamics.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -35,10 +37,31 @@ void FrameDynamics::advance(const AssembledSystem& sys, double dt) {
                              std::to_string(integrator->stable_time_step()) + " s?)");
 }
 
-void FrameDynamics::solve_static(const AssembledSystem& sys) {
+void FrameDynamics::solve_static(const AssembledSystem& sys, int increments) {
   Eigen::SimplicialLDLT<SpMat> ldlt(sys.constrained(sys.stiffness()));
   if (ldlt.info() != Eigen::Success) throw std::runtime_error("Frame: static stiffness factorisation failed");
-  state.d = ldlt.solve(Eigen::VectorXd(f.cwiseProduct(sys.free())));
+  const Eigen::VectorXd fm = f.cwiseProduct(sys.free());
+  state.d = ldlt.solve(fm);
+  if (!sys.linear()) {  // Newton-Raphson on f_int(d) = (k / n) f, k = 1..n, from the linear solution scaled to 1 / n
+    constexpr int kMaxIterations = 50;
+    state.d /= increments;
+    Eigen::VectorXd fint(sys.ndof()), r;
+    for (int k = 1; k <= increments; ++k) {
+      const Eigen::VectorXd fk = (double(k) / increments) * fm;
+      const double ref = std::max(fk.norm(), std::numeric_limits<double>::min());
+      for (int it = 0;; ++it) {
+        sys.internal_force(state.d, fint);
+        r = fk - fint.cwiseProduct(sys.free());
+        if (r.norm() <= 1e-10 * ref) break;
+        if (it == kMaxIterations)
+          throw std::runtime_error("Frame: static Newton iterations did not converge at load step " + std::to_string(k) + " of " +
+                                   std::to_string(increments) + " (residual " + std::to_string(r.norm() / ref) + " of the load)");
+        ldlt.compute(sys.constrained(sys.tangent(state.d)));
+        if (ldlt.info() != Eigen::Success) throw std::runtime_error("Frame: static tangent factorisation failed (a limit point?)");
+        state.d += ldlt.solve(r);
+      }
+    }
+  }
   state.v.setZero();
   state.a.setZero();
   state.a_current = false;

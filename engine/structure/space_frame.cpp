@@ -152,12 +152,12 @@ void SpaceFrame::advance(double dt) {
   impl_->dyn.advance(impl_->sys, dt);
 }
 
-void SpaceFrame::solve_static() {
+void SpaceFrame::solve_static(int increments) {
   Impl& m = *impl_;
   m.dyn.state.d.setZero();
   m.f_current = false;
   m.update_loads();
-  m.dyn.solve_static(m.sys);
+  m.dyn.solve_static(m.sys, increments);
   m.f_current = false;
 }
 
@@ -170,12 +170,23 @@ std::vector<double> SpaceFrame::natural_frequencies(int n) const {
   return w;
 }
 
+// Linear: the small-displacement interpolation of the end values in the initial axes. Corotational: the chord
+// (its current length, stretched uniformly) plus the Hermite deflections of the basic end rotations in the element
+// frame, so any rigid rotation is exact.
 Vec3 SpaceFrame::displacement_at(int e, double xi) const {
   impl_->check_element(e, xi);
   Eigen::Matrix3d R;
   double L = 0;
-  const Vec12 ul = impl_->local_dofs(e, impl_->dyn.state.d, R, L);
-  return R.transpose() * Impl::interpolate(ul, xi, L);
+  const Eigen::VectorXd& d = impl_->dyn.state.d;
+  const Vec12 ul = impl_->local_dofs(e, d, R, L);
+  if (impl_->sys.linear()) return R.transpose() * Impl::interpolate(ul, xi, L);
+  const SpaceChordState s = impl_->sys.element_state(e, d);
+  const BeamShape sh = beam_shape(xi, s.L);
+  const double w2 = sh.hermite[1] * s.v(1) + sh.hermite[3] * s.v(2), w3 = sh.hermite[1] * s.v(3) + sh.hermite[3] * s.v(4);
+  const SpaceElementDef& el = model().elements[e];
+  const Vec3 xi_node = model().nodes[el.i] + d.segment<3>(6 * el.i);
+  const Vec3 X = model().nodes[el.i] + xi * (model().nodes[el.j] - model().nodes[el.i]);
+  return xi_node + s.R.transpose() * Vec3(xi * s.L, w2, w3) - X;
 }
 
 Vec3 SpaceFrame::velocity_at(int e, double xi) const {

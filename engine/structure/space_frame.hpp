@@ -100,7 +100,8 @@ class SpaceFrame {
 
   double stable_time_step() const;
   void advance(double dt);
-  void solve_static();
+  // Static solution for the current loads (frame.hpp, solve_static).
+  void solve_static(int increments = 1);
   std::vector<double> natural_frequencies(int n) const;
 
   Vec3 displacement_at(int e, double xi) const;  // centre-line displacement (m), interpolated as add_point_load

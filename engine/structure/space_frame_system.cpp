@@ -45,7 +45,7 @@ void SpaceFrameSystem::assemble() {
     chords_.push_back(c);
     elements_.emplace_back(el, c.L0, model_.theory);
     const SpaceBeamElement& be = elements_.back();
-    const Mat12 Ke = transform_->tangent(transform_->state(c, Vec12::Zero()), be.stiffness(), Vec6::Zero());
+    const Mat12 Ke = transform_->tangent(c, Vec12::Zero(), transform_->state(c, Vec12::Zero()), be.stiffness(), Vec6::Zero());
     scatter_element<6>(tk, el.i, el.j, Ke);
     const Mat12 T = rotation12(c.R);
     const Mat12 Me = T.transpose() * (model_.mass == MassMatrix::lumped ? be.lumped_mass() : be.consistent_mass()) * T;
@@ -98,9 +98,10 @@ SpMat SpaceFrameSystem::tangent(const Eigen::VectorXd& d) const {
   if (linear()) return K0_;
   Triplets t;
   for (int e = 0; e < nelements(); ++e) {
-    const SpaceChordState s = element_state(e, d);
+    const Vec12 de = element_dofs(e, d);
+    const SpaceChordState s = transform_->state(chords_[e], de);
     const SpaceBeamElement& be = elements_[e];
-    scatter_element<6>(t, model_.elements[e].i, model_.elements[e].j, transform_->tangent(s, be.stiffness(), be.forces(s.v)));
+    scatter_element<6>(t, model_.elements[e].i, model_.elements[e].j, transform_->tangent(chords_[e], de, s, be.stiffness(), be.forces(s.v)));
   }
   for (int i = 0; i < ndof(); ++i)
     if (springs_(i) > 0) t.emplace_back(i, i, springs_(i));
