@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "engine/contact/projection.hpp"
+#include "engine/structure/space_frame.hpp"
 
 namespace dmi {
 namespace {
@@ -41,11 +42,76 @@ Vec2 outward_normal(const ElementCurve& c, double xi, const Vec2& x, const Vec2&
 
 // Axis-aligned box of an element's deformed centre-line: the cubic lies in the convex hull of its
 // Bezier control points x(0), x(0) + x'(0)/3, x(1) - x'(1)/3, x(1).
-void curve_box(const ElementCurve& c, Vec2& lo, Vec2& hi) {
-  const Vec2 p0 = c.point(0), p3 = c.point(1);
-  const Vec2 p1 = p0 + c.d1(0) / 3, p2 = p3 - c.d1(1) / 3;
+template <class Curve, class V> void curve_box(const Curve& c, V& lo, V& hi) {
+  const V p0 = c.point(0), p3 = c.point(1);
+  const V p1 = p0 + c.d1(0) / 3, p2 = p3 - c.d1(1) / 3;
   lo = p0.cwiseMin(p1).cwiseMin(p2).cwiseMin(p3);
   hi = p0.cwiseMax(p1).cwiseMax(p2).cwiseMax(p3);
+}
+
+MemberSectionShape shape_of(const Frame& f, int e) { return {false, f.half_depth(e, 0), f.half_depth(e, 1), 0, 0}; }
+MemberSectionShape shape_of(const SpaceFrame& f, int e) {
+  const SpaceElementDef& el = f.model().elements[e];
+  const Section& s = el.section;
+  if (s.kind() == SectionKind::pipe) return {true, s.half_depth(el.s0), s.half_depth(el.s1), 0, 0};
+  return {false, s.half_depth(el.s0), s.half_depth(el.s1), 0.5 * s.width(el.s0), 0.5 * s.width(el.s1)};
+}
+
+// Farthest section point from the centre-line (m): the radius, half depth, or a rectangle's half diagonal.
+template <int D> double section_reach(const MemberSectionShape& s) {
+  if (D == 2 || s.round) return std::max(s.a0, s.a1);
+  return std::max(std::hypot(s.a0, s.b0), std::hypot(s.a1, s.b1));
+}
+
+// The surface of a space member's section at xi, seen from x (projection xm): the section's axes orthogonalised
+// against the tangent, x's coordinates in them, and the half sizes.
+struct SpaceSurface {
+  Vec3 t, e2, e3;
+  double tc = 0, y = 0, z = 0, a = 0, b = 0;
+  bool round = false;
+};
+SpaceSurface space_surface(const SpaceElementCurve& c, const MemberSectionShape& sh, double xi, const Vec3& x, const Vec3& xm) {
+  SpaceSurface s;
+  s.t = c.d1(xi).normalized();
+  s.e2 = (c.e2 - c.e2.dot(s.t) * s.t).normalized();
+  s.e3 = s.t.cross(s.e2);
+  const Vec3 d = x - xm;
+  s.tc = xi > 0 && xi < 1 ? 0.0 : d.dot(s.t);  // inside an element the projection is perpendicular to the tangent
+  s.y = d.dot(s.e2), s.z = d.dot(s.e3);
+  s.a = sh.a0 + xi * (sh.a1 - sh.a0), s.b = sh.b0 + xi * (sh.b1 - sh.b0);
+  s.round = sh.round;
+  return s;
+}
+
+// Signed distance from x to the section's swept surface and its outward unit normal n0 (the distance's gradient):
+// round |x - xm| - R; rectangle the box distance with (|t|, |y| - a, |z| - b), nearest face inside.
+double space_distance(const SpaceSurface& s, double h, Vec3& n0) {
+  if (s.round) {
+    const Vec3 d = s.tc * s.t + s.y * s.e2 + s.z * s.e3;
+    const double r = d.norm();
+    n0 = r > 1e-12 * h ? Vec3(d / r) : s.e2;
+    return r - s.a;
+  }
+  const double qt = std::abs(s.tc), qy = std::abs(s.y) - s.a, qz = std::abs(s.z) - s.b;
+  const auto sgn = [](double v) { return v < 0 ? -1.0 : 1.0; };
+  if (qt > 0 || qy > 0 || qz > 0) {
+    const Vec3 g(sgn(s.tc) * std::max(qt, 0.0), sgn(s.y) * std::max(qy, 0.0), sgn(s.z) * std::max(qz, 0.0));
+    const double r = g.norm();
+    n0 = (g(0) * s.t + g(1) * s.e2 + g(2) * s.e3) / r;
+    return r;
+  }
+  n0 = qy >= qz ? Vec3(sgn(s.y) * s.e2) : Vec3(sgn(s.z) * s.e3);
+  return std::max(qy, qz);
+}
+
+// The section point supporting the direction n (from the centre-line): a round section's R n; a rectangle's face
+// point nearest x for a face normal, a corner for an oblique one.
+Vec3 space_arm(const SpaceSurface& s, const Vec3& n) {
+  if (s.round) return s.a * n;
+  const double ny = n.dot(s.e2), nz = n.dot(s.e3);
+  const double ys = std::abs(ny) > 1e-9 ? std::copysign(s.a, ny) : std::clamp(s.y, -s.a, s.a);
+  const double zs = std::abs(nz) > 1e-9 ? std::copysign(s.b, nz) : std::clamp(s.z, -s.b, s.b);
+  return ys * s.e2 + zs * s.e3;
 }
 
 }  // namespace
@@ -55,71 +121,80 @@ template <int D> MemberContact<D>::MemberContact(const Grid<D>& g) {
   mx_.assign(static_cast<std::size_t>(g.nnodes() * g.nfields()), Vec<D>::Zero());
 }
 
-// Every active node within reach (half depth + decay layer) of an element, with its nearest element.
+// Every active node within reach (section reach + decay layer) of an element, with its nearest element.
 template <int D> void MemberContact<D>::find_candidates(const Scene<D>& s) {
-  if constexpr (D == 2) {
-    const Grid<2>& g = *s.grid;
-    const Frame& fr = *s.frame;
-    // With the material distance, x-bar may lie up to a stencil half-width (1.5 h) nearer the member.
-    const double ln = s.coupling.decay_scale * g.h() + (s.coupling.distance == DistanceKind::material ? 1.5 * g.h() : 0.0);
-    for (const Candidate& c : cand_) slot_[c.node] = -1;
-    cand_.clear();
-    // Nodes that can hold mass: the box of the occupied tiles' reach.
-    IVec<2> occ_lo(g.nodes()[0], g.nodes()[1]), occ_hi(-1, -1);
-    for (Index t : g.occupied()) {
-      IVec<2> lo, hi;
-      g.tile_nodes(t, lo, hi);
-      occ_lo = occ_lo.cwiseMin(lo), occ_hi = occ_hi.cwiseMax(hi);
+  const Grid<D>& g = *s.grid;
+  const FrameOf<D>& fr = *s.frame;
+  // With the material distance, x-bar may lie up to a stencil half-width (1.5 h) nearer the member.
+  const double ln = s.coupling.decay_scale * g.h() + (s.coupling.distance == DistanceKind::material ? 1.5 * g.h() : 0.0);
+  for (const Candidate& c : cand_) slot_[c.node] = -1;
+  cand_.clear();
+  // Nodes that can hold mass: the box of the occupied tiles' reach.
+  IVec<D> occ_lo = g.nodes(), occ_hi = IVec<D>::Constant(-1);
+  for (Index t : g.occupied()) {
+    IVec<D> lo, hi;
+    g.tile_nodes(t, lo, hi);
+    occ_lo = occ_lo.cwiseMin(lo), occ_hi = occ_hi.cwiseMax(hi);
+  }
+  curves_.resize(static_cast<std::size_t>(fr.nelements()));
+  shapes_.resize(static_cast<std::size_t>(fr.nelements()));
+  for (int e = 0; e < fr.nelements(); ++e) {
+    curves_[e] = fr.curve(e);
+    shapes_[e] = shape_of(fr, e);
+    const CurveOf<D>& c = curves_[e];
+    Vec<D> lo, hi;
+    curve_box(c, lo, hi);
+    const double hd_max = section_reach<D>(shapes_[e]);  // sections taper linearly
+    const double reach = hd_max + ln + 1e-9 * g.h();
+    // Lower bound on a node's distance to the curve without projecting: the curve lies in the hull of its Bezier
+    // points P0..P3, and every hull point is within dev = max(dist(P1, chord), dist(P2, chord)) of the chord
+    // segment P0P3 (distance to a convex set is convex), so |x - curve| >= |x - chord| - dev.
+    const Vec<D> q0 = c.point(0), q3 = c.point(1), q1 = q0 + c.d1(0) / 3, q2 = q3 - c.d1(1) / 3;
+    const Vec<D> ch = q3 - q0;
+    const double ch2 = ch.squaredNorm();
+    auto seg_dist = [&](const Vec<D>& x) {
+      const double t = ch2 > 0 ? std::clamp((x - q0).dot(ch) / ch2, 0.0, 1.0) : 0.0;
+      return (x - q0 - t * ch).norm();
+    };
+    const double dev = std::max(seg_dist(q1), seg_dist(q2));
+    IVec<D> a, b;
+    bool empty = false;
+    for (int d = 0; d < D; ++d) {
+      a[d] = std::max({0, occ_lo[d], static_cast<int>(std::ceil((lo[d] - reach - g.origin()[d]) * g.inv_h()))});
+      b[d] = std::min({g.nodes()[d] - 1, occ_hi[d], static_cast<int>(std::floor((hi[d] + reach - g.origin()[d]) * g.inv_h()))});
+      empty = empty || a[d] > b[d];
     }
-    curves_.resize(static_cast<std::size_t>(fr.nelements()));
-    for (int e = 0; e < fr.nelements(); ++e) {
-      curves_[e] = fr.curve(e);
-      const ElementCurve& c = curves_[e];
-      Vec2 lo, hi;
-      curve_box(c, lo, hi);
-      const double hd_max = std::max(fr.half_depth(e, 0), fr.half_depth(e, 1));  // depth tapers linearly
-      const double reach = hd_max + ln + 1e-9 * g.h();
-      // Lower bound on a node's distance to the curve without projecting: the curve lies in the hull of its Bezier
-      // points P0..P3, and every hull point is within dev = max(dist(P1, chord), dist(P2, chord)) of the chord
-      // segment P0P3 (distance to a convex set is convex), so |x - curve| >= |x - chord| - dev.
-      const Vec2 q0 = c.point(0), q3 = c.point(1), q1 = q0 + c.d1(0) / 3, q2 = q3 - c.d1(1) / 3;
-      const Vec2 ch = q3 - q0;
-      const double ch2 = ch.squaredNorm();
-      auto seg_dist = [&](const Vec2& x) {
-        const double t = ch2 > 0 ? std::clamp((x - q0).dot(ch) / ch2, 0.0, 1.0) : 0.0;
-        return (x - q0 - t * ch).norm();
-      };
-      const double dev = std::max(seg_dist(q1), seg_dist(q2));
-      IVec<2> a, b;
-      for (int d = 0; d < 2; ++d) {
-        a[d] = std::max({0, occ_lo[d], static_cast<int>(std::ceil((lo[d] - reach - g.origin()[d]) * g.inv_h()))});
-        b[d] = std::min({g.nodes()[d] - 1, occ_hi[d], static_cast<int>(std::floor((hi[d] + reach - g.origin()[d]) * g.inv_h()))});
+    if (empty) continue;
+    any_node_in_box<D>(a, b, [&](const IVec<D>& ijk) {
+      const Index id = g.node_id(ijk);
+      bool has_mass = false;
+      for (int f : s.coupling.fields) has_mass = has_mass || g.m[f * g.nnodes() + id] > 0;
+      if (!has_mass) return false;
+      const Vec<D> x = g.node_pos(id);
+      int& k = slot_[id];
+      // Exact skips: r >= ln (free zone), or no nearer than the surface this node already has.
+      const double r_low = seg_dist(x) - dev - hd_max;
+      if (r_low >= ln || (k >= 0 && r_low >= cand_[k].surface)) return false;
+      const Projection pr = project_on_curve(c, x);
+      ++stats_.candidates;
+      stats_.projection_iterations += pr.iterations;
+      stats_.max_projection_iterations = std::max(stats_.max_projection_iterations, pr.iterations);
+      double r = 0;
+      if constexpr (D == 2) {
+        r = std::sqrt(pr.dist2) - fr.half_depth(e, pr.xi);
+      } else {
+        Vec3 n0;
+        r = space_distance(space_surface(c, shapes_[e], pr.xi, x, c.point(pr.xi)), g.h(), n0);
       }
-      for (int j = a[1]; j <= b[1]; ++j)
-        for (int i = a[0]; i <= b[0]; ++i) {
-          const Index id = g.node_id(IVec<2>(i, j));
-          bool has_mass = false;
-          for (int f : s.coupling.fields) has_mass = has_mass || g.m[f * g.nnodes() + id] > 0;
-          if (!has_mass) continue;
-          const Vec2 x = g.node_pos(id);
-          int& k = slot_[id];
-          // Exact skips: r >= ln (free zone), or no nearer than the surface this node already has.
-          const double r_low = seg_dist(x) - dev - hd_max;
-          if (r_low >= ln || (k >= 0 && r_low >= cand_[k].surface)) continue;
-          const Projection pr = project_on_curve(c, x);
-          ++stats_.candidates;
-          stats_.projection_iterations += pr.iterations;
-          stats_.max_projection_iterations = std::max(stats_.max_projection_iterations, pr.iterations);
-          const double r = std::sqrt(pr.dist2) - fr.half_depth(e, pr.xi);
-          if (r >= ln) continue;  // free zone whichever side the material is on (node distance)
-          if (k < 0) {
-            k = static_cast<int>(cand_.size());
-            cand_.push_back(Candidate{id, e, pr.xi, pr.dist2, r, c.point(pr.xi)});
-          } else if (r < cand_[k].surface) {  // nearest surface, not centre-line (joints of unequal depth)
-            cand_[k] = Candidate{id, e, pr.xi, pr.dist2, r, c.point(pr.xi)};
-          }
-        }
-    }
+      if (r >= ln) return false;  // free zone whichever side the material is on (node distance)
+      if (k < 0) {
+        k = static_cast<int>(cand_.size());
+        cand_.push_back(Candidate{id, e, pr.xi, pr.dist2, r, c.point(pr.xi)});
+      } else if (r < cand_[k].surface) {  // nearest surface, not centre-line (joints of unequal depth)
+        cand_[k] = Candidate{id, e, pr.xi, pr.dist2, r, c.point(pr.xi)};
+      }
+      return false;
+    });
   }
 }
 
@@ -171,36 +246,40 @@ template <int D> void MemberContact<D>::touching(const Scene<D>& s) {
   const Grid<D>& g = *s.grid;
   touch_.reset(static_cast<std::size_t>(g.nnodes()) * g.nfields());
   if (s.coupling.decay != DecayKind::sharp || s.coupling.detection != DetectionKind::surface) return;
-  if constexpr (D == 2) {
-    const Particles<2>& P = s.particles;
-    const Frame& fr = *s.frame;
-    const double tol = 1e-6 * g.h();
-    for (Index t : tiles_)
-      for (Index q = g.tile_start()[t]; q < g.tile_start()[t + 1]; ++q) {
-        const Index i = g.tile_particles()[q];
-        const Vec2 xr = g.grid_coord(P.x[i]);
-        const Index id = g.node_id(IVec<2>(static_cast<int>(std::lround(xr[0])), static_cast<int>(std::lround(xr[1]))));
-        if (slot_[id] < 0) continue;
-        const Candidate& c = cand_[slot_[id]];
-        const ElementCurve& curve = curves_[c.element];
-        const Projection pr = project_on_curve(curve, P.x[i]);
-        const double d = std::sqrt(pr.dist2), hm = fr.half_depth(c.element, pr.xi);
-        const Vec2 n = outward_normal(curve, pr.xi, P.x[i], curve.point(pr.xi), d, g.h());
-        if (d - hm - particle_reach<2>(P, i, -n) <= tol) touch_.add(g, s.bodies[P.body[i]].field * g.nnodes(), P.x[i], n);
+  const Particles<D>& P = s.particles;
+  const FrameOf<D>& fr = *s.frame;
+  const double tol = 1e-6 * g.h();
+  for (Index t : tiles_)
+    for (Index q = g.tile_start()[t]; q < g.tile_start()[t + 1]; ++q) {
+      const Index i = g.tile_particles()[q];
+      const Vec<D> xr = g.grid_coord(P.x[i]);
+      IVec<D> nearest;
+      for (int d = 0; d < D; ++d) nearest[d] = static_cast<int>(std::lround(xr[d]));
+      const Index id = g.node_id(nearest);
+      if (slot_[id] < 0) continue;
+      const Candidate& c = cand_[slot_[id]];
+      const CurveOf<D>& curve = curves_[c.element];
+      const Projection pr = project_on_curve(curve, P.x[i]);
+      double r = 0;
+      Vec<D> n;
+      if constexpr (D == 2) {
+        const double d = std::sqrt(pr.dist2);
+        r = d - fr.half_depth(c.element, pr.xi);
+        n = outward_normal(curve, pr.xi, P.x[i], curve.point(pr.xi), d, g.h());
+      } else {
+        r = space_distance(space_surface(curve, shapes_[c.element], pr.xi, P.x[i], curve.point(pr.xi)), g.h(), n);
       }
-  }
+      if (r - particle_reach<D>(P, i, -n) <= tol) touch_.add(g, s.bodies[P.body[i]].field * g.nnodes(), P.x[i], n);
+    }
 }
 
 template <int D> void MemberContact<D>::apply(Scene<D>& s, const TransferKernels<D>& kernels, double dt) {
-  if constexpr (D != 2) {
-    throw std::logic_error("beam-column members are 2D only");
-  } else {
-    Frame& fr = *s.frame;
-    fr.clear_loads();
+  {
+    s.frame->clear_loads();
     force_.setZero();
     loaded_.clear();
     loads_.clear();
-    Grid<2>& g = *s.grid;
+    Grid<D>& g = *s.grid;
     if (held_flag_.size() != static_cast<std::size_t>(g.nnodes() * g.nfields())) held_flag_.assign(static_cast<std::size_t>(g.nnodes() * g.nfields()), 0);
     for (Index k : held_) held_flag_[k] = 1;  // the nodes that pressed on a member in the previous step
     find_candidates(s);
@@ -218,69 +297,87 @@ template <int D> void MemberContact<D>::apply(Scene<D>& s, const TransferKernels
 
 // f_bc of eqs. (19)-(21) on the candidate nodes, the reactions on the frame and the held masses.
 template <int D> void MemberContact<D>::boundary_forces(Scene<D>& s, double dt) {
-  if constexpr (D == 2) {
-    Frame& fr = *s.frame;
-    Grid<2>& g = *s.grid;
-    const MemberCoupling& opt = s.coupling;
-    const double ln = opt.decay_scale * g.h();
-    const Index nn = g.nnodes();
-    for (const Candidate& c : cand_) {
-      const Vec2 x = g.node_pos(c.node);
-      const ElementCurve& curve = curves_[c.element];
-      const double hm = fr.half_depth(c.element, c.xi);
-      const Vec2 vc = fr.velocity_at(c.element, c.xi);
-      const double omega = fr.angular_velocity_at(c.element, c.xi);
-      const double dist = std::sqrt(c.dist2);
-      const Vec2 n0 = outward_normal(curve, c.xi, x, c.xm, dist, g.h());  // from the centre-line towards the node
-      for (int f : opt.fields) {
-        const Index k = f * nn + c.node;
-        const double m = g.m[k];
-        if (!(m > 0)) continue;
-        // Orientation by the mass-weighted particle position the node sees, eqs. (24)-(25).
-        const Vec2 xbar = mx_[k] / m;
-        const Vec2 n = (xbar - c.xm).dot(n0) >= 0 ? n0 : Vec2(-n0);
-        // Bodies bonded to the members (a tyre buffer fixed on the dam face) stick whatever the mode, and are
-        // held from the node distance: measured from x-bar the bond peeled (the held mass sagged, q fell).
-        const bool bonded = std::find(opt.bonded_fields.begin(), opt.bonded_fields.end(), f) != opt.bonded_fields.end();
-        const MemberContactMode mode = bonded ? MemberContactMode::stick : opt.mode;
-        const bool node_distance = bonded || opt.distance == DistanceKind::node;
-        const double r = ((node_distance ? x : xbar) - c.xm).dot(n) - hm;  // eq. (23)
-        // Velocity of the member's surface point x^M + c n: centre-line velocity plus omega x (c n), so the
-        // material is held where the reaction acts (its power then matches the frame's, moment included).
-        const Vec2 vstar = vc + omega * hm * Vec2(-n.y(), n.x());
-        double q = weight(opt.decay, r, ln, hm, held_flag_[k] != 0);
-        // Surface detection: only nodes engaged by particles touching the member, among those within l_n / 2 of
-        // its surface on either side (as a rigid wall: a face between grid lines acts at the nearest node row).
-        if (mode != MemberContactMode::stick && opt.decay == DecayKind::sharp && opt.detection == DetectionKind::surface)
-          q = touch_.engaged(k) && (q > 0 || r <= 0.5 * ln * (1 + 1e-9)) ? 1.0 : 0.0;
-        if (q == 0) continue;
-        loaded_.push_back(Loaded{k, n, vstar, q, mode, false});
-        Vec2 fv = -g.f[k] + (m * vstar - g.p[k]) / dt;  // eq. (20)
-        if (mode != MemberContactMode::stick) {
-          const double fn = fv.dot(n);
-          if (fn <= 0) continue;  // separating: no force, eq. (21)
-          Vec2 ft = fv - fn * n;
-          if (mode == MemberContactMode::friction) {
-            const double lim = opt.friction * fn, t = ft.norm();
-            if (t > lim) ft *= lim / t;
-          } else {
-            ft.setZero();
-          }
-          fv = fn * n + ft;
-        }
-        const Vec2 fbc = q * fv;  // eq. (19)
-        g.f[k] += fbc;
-        // Reaction on the member at the surface point x^M + c n: force plus the moment of the offset.
-        const Vec2 arm = hm * n, F = -fbc;
-        fr.add_point_load(c.element, c.xi, F, arm.x() * F.y() - arm.y() * F.x());
-        // The held material moves with the member: its mass joins the frame's inertia for the step
-        // (all directions when stuck, the normal one when sliding).
-        fr.add_point_mass(c.element, c.xi, q * m * (mode == MemberContactMode::stick ? Mat<2>(Mat<2>::Identity()) : Mat<2>(n * n.transpose())));
-        force_ += F;
-        loaded_.back().pressed = true;
-        loads_.push_back(ContactLoad{c.element, c.xi, c.xm + hm * n, F});
-        ++stats_.loaded;
+  FrameOf<D>& fr = *s.frame;
+  Grid<D>& g = *s.grid;
+  const MemberCoupling& opt = s.coupling;
+  const double ln = opt.decay_scale * g.h();
+  const Index nn = g.nnodes();
+  for (const Candidate& c : cand_) {
+    const Vec<D> x = g.node_pos(c.node);
+    const CurveOf<D>& curve = curves_[c.element];
+    const Vec<D> vc = fr.velocity_at(c.element, c.xi);
+    const auto omega = fr.angular_velocity_at(c.element, c.xi);  // rad/s: a scalar in 2D, a vector in 3D
+    // From the centre-line towards the node; in 3D the section's surface geometry at the node.
+    Vec<D> n0;
+    double hm = 0;
+    [[maybe_unused]] SpaceSurface surf;
+    if constexpr (D == 2) {
+      hm = fr.half_depth(c.element, c.xi);
+      n0 = outward_normal(curve, c.xi, x, c.xm, std::sqrt(c.dist2), g.h());
+    } else {
+      surf = space_surface(curve, shapes_[c.element], c.xi, x, c.xm);
+      space_distance(surf, g.h(), n0);
+    }
+    for (int f : opt.fields) {
+      const Index k = f * nn + c.node;
+      const double m = g.m[k];
+      if (!(m > 0)) continue;
+      // Orientation by the mass-weighted particle position the node sees, eqs. (24)-(25).
+      const Vec<D> xbar = mx_[k] / m;
+      const Vec<D> n = (xbar - c.xm).dot(n0) >= 0 ? n0 : Vec<D>(-n0);
+      // Bodies bonded to the members (a tyre buffer fixed on the dam face) stick whatever the mode, and are
+      // held from the node distance: measured from x-bar the bond peeled (the held mass sagged, q fell).
+      const bool bonded = std::find(opt.bonded_fields.begin(), opt.bonded_fields.end(), f) != opt.bonded_fields.end();
+      const MemberContactMode mode = bonded ? MemberContactMode::stick : opt.mode;
+      const bool node_distance = bonded || opt.distance == DistanceKind::node;
+      // The surface point x^M + arm supporting n, the distance to its tangent plane (eq. 23) and its velocity:
+      // centre-line velocity plus omega x arm, so the material is held where the reaction acts (its power then
+      // matches the frame's, moment included).
+      Vec<D> arm, vstar;
+      double r = 0;
+      if constexpr (D == 2) {
+        arm = hm * n;
+        r = ((node_distance ? x : xbar) - c.xm).dot(n) - hm;
+        vstar = vc + omega * hm * Vec2(-n.y(), n.x());
+      } else {
+        arm = space_arm(surf, n);
+        r = ((node_distance ? x : xbar) - c.xm - arm).dot(n);
+        hm = arm.dot(n);  // the section's extent along n, for the weight's band
+        vstar = vc + omega.cross(arm);
       }
+      double q = weight(opt.decay, r, ln, hm, held_flag_[k] != 0);
+      // Surface detection: only nodes engaged by particles touching the member, among those within l_n / 2 of
+      // its surface on either side (as a rigid wall: a face between grid lines acts at the nearest node row).
+      if (mode != MemberContactMode::stick && opt.decay == DecayKind::sharp && opt.detection == DetectionKind::surface)
+        q = touch_.engaged(k) && (q > 0 || r <= 0.5 * ln * (1 + 1e-9)) ? 1.0 : 0.0;
+      if (q == 0) continue;
+      loaded_.push_back(Loaded{k, n, vstar, q, mode, false});
+      Vec<D> fv = -g.f[k] + (m * vstar - g.p[k]) / dt;  // eq. (20)
+      if (mode != MemberContactMode::stick) {
+        const double fn = fv.dot(n);
+        if (fn <= 0) continue;  // separating: no force, eq. (21)
+        Vec<D> ft = fv - fn * n;
+        if (mode == MemberContactMode::friction) {
+          const double lim = opt.friction * fn, t = ft.norm();
+          if (t > lim) ft *= lim / t;
+        } else {
+          ft.setZero();
+        }
+        fv = fn * n + ft;
+      }
+      const Vec<D> fbc = q * fv;  // eq. (19)
+      g.f[k] += fbc;
+      // Reaction on the member at the surface point: force plus the moment of the offset.
+      const Vec<D> F = -fbc;
+      if constexpr (D == 2) fr.add_point_load(c.element, c.xi, F, arm.x() * F.y() - arm.y() * F.x());
+      else fr.add_point_load(c.element, c.xi, F, arm.cross(F));
+      // The held material moves with the member: its mass joins the frame's inertia for the step
+      // (all directions when stuck, the normal one when sliding).
+      fr.add_point_mass(c.element, c.xi, q * m * (mode == MemberContactMode::stick ? Mat<D>(Mat<D>::Identity()) : Mat<D>(n * n.transpose())));
+      force_ += F;
+      loaded_.back().pressed = true;
+      loads_.push_back(ContactLoadOf<D>{c.element, c.xi, c.xm + arm, F});
+      ++stats_.loaded;
     }
   }
 }

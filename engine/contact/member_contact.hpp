@@ -22,6 +22,10 @@
 //   added mass a heavy mass on a light member rang up (energy x 300 in a debris-on-pipe test).
 // v* is the velocity of the member's surface point: centre-line velocity plus omega x (c n) (frame
 // state at t_n).
+// In 3D the surface is the section's swept boundary: r is the signed distance to a round section (|x - x^M| - R)
+// or a rectangle (the box distance in the section's axes, its edges rounded along the centre-line at element ends),
+// n its gradient; the reaction acts at the section point supporting n (the face point nearest the node, a corner
+// for an oblique n), and v* = v(x^M) + omega x arm.
 // Each node is held by one member: the one whose surface is nearest. Material on both sides of a member
 // thinner than a cell shares nodes, and x-bar then averages both sides (one normal per node and field):
 // keep bodies on opposite sides in separate fields (multi-field contact), or members thicker than a cell.
@@ -44,21 +48,33 @@ struct MemberContactStats {
 };
 
 // One reaction of this step: force of the material on the member at a surface point.
-struct ContactLoad {
+template <int D> struct ContactLoadOf {
   int element = 0;
-  double xi = 0;     // local coordinate on the element, 0 at its start node, 1 at its end
-  Vec2 point, force;  // surface point (m) and force (N)
+  double xi = 0;        // local coordinate on the element, 0 at its start node, 1 at its end
+  Vec<D> point, force;  // surface point (m) and force (N)
 };
-inline void save_loads(StateWriter& w, const std::vector<ContactLoad>& v) {
+using ContactLoad = ContactLoadOf<2>;
+template <int D> void save_loads(StateWriter& w, const std::vector<ContactLoadOf<D>>& v) {
   w.put<std::uint64_t>(v.size());
   for (const auto& c : v) w.put(c.element), w.put(c.xi), w.put(c.point), w.put(c.force);
 }
-inline void load_loads(StateReader& r, std::vector<ContactLoad>& v) {
+template <int D> void load_loads(StateReader& r, std::vector<ContactLoadOf<D>>& v) {
   const auto n = r.get<std::uint64_t>();
   if (n > (std::uint64_t{1} << 32)) r.fail("contact load count " + std::to_string(n) + " out of range");
   v.resize(static_cast<std::size_t>(n));
   for (auto& c : v) r.get(c.element), r.get(c.xi), r.get(c.point), r.get(c.force);
 }
+
+// The deformed centre-line type of a D-dimensional scene's members.
+template <int D> using CurveOf = std::conditional_t<D == 2, ElementCurve, SpaceElementCurve>;
+
+// A space member's section at the two ends of an element (tapered: linear between): round (radius) or rectangular
+// (half depth along e2, half width along e3). Plane members use the half depth only.
+struct MemberSectionShape {
+  bool round = false;
+  double a0 = 0, a1 = 0;  // radius or half depth at xi = 0 and 1 (m)
+  double b0 = 0, b1 = 0;  // half width at xi = 0 and 1 (m), rectangles
+};
 
 template <int D> class MemberContact {
  public:
@@ -84,9 +100,9 @@ template <int D> class MemberContact {
       if (l.pressed && l.mode == MemberContactMode::stick && l.q == 1) f(l.k, l.vstar);
   }
   // Total force the material exerts on the members in the last step (N): sum of -f_bc.
-  const Vec2& force() const { return force_; }
+  const Vec<D>& force() const { return force_; }
   // The individual reactions of the last step (they sum to force()).
-  const std::vector<ContactLoad>& loads() const { return loads_; }
+  const std::vector<ContactLoadOf<D>>& loads() const { return loads_; }
   // Counters and the last step's reactions, for checkpoints (the rest is rebuilt every step).
   void save_state(StateWriter& w) const {
     w.tag("member_contact");
@@ -125,7 +141,8 @@ template <int D> class MemberContact {
     MemberContactMode mode;
     bool pressed;  // received a force (a separating node is listed for MUSL's remap but gets none)
   };
-  std::vector<ElementCurve> curves_;  // deformed centre-lines at t_n, by element (this step)
+  std::vector<CurveOf<D>> curves_;  // deformed centre-lines at t_n, by element (this step)
+  std::vector<MemberSectionShape> shapes_;  // their sections (3D: round or rectangular, this step's axes)
   std::vector<Candidate> cand_;
   std::vector<Loaded> loaded_;
   std::vector<int> slot_;          // per node: index into cand_, -1 if none
@@ -136,8 +153,8 @@ template <int D> class MemberContact {
   TouchSet touch_;                         // surface detection: node-fields engaged by particles touching a member
   std::vector<Index> held_;                // node-field pairs that received a force in the last step
   std::vector<unsigned char> held_flag_;   // per node-field, scratch: set from held_ during apply()
-  Vec2 force_ = Vec2::Zero();
-  std::vector<ContactLoad> loads_;
+  Vec<D> force_ = Vec<D>::Zero();
+  std::vector<ContactLoadOf<D>> loads_;
   MemberContactStats stats_;
 };
 

@@ -5,6 +5,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "engine/materials/material.hpp"
@@ -14,6 +15,7 @@
 #include "engine/mpm/touch.hpp"
 #include "engine/scenario/config.hpp"
 #include "engine/structure/frame.hpp"
+#include "engine/structure/space_frame.hpp"
 
 namespace dmi {
 
@@ -85,6 +87,9 @@ struct MemberCoupling {
   std::vector<int> bonded_fields;  // of those, the fields held by stick whatever the mode
 };
 
+// The beam-column frame a D-dimensional scene couples to: the plane frame in 2D, the space frame in 3D.
+template <int D> using FrameOf = std::conditional_t<D == 2, Frame, SpaceFrame>;
+
 template <int D> struct Scene {
   Particles<D> particles;
   std::vector<Body> bodies;
@@ -95,7 +100,7 @@ template <int D> struct Scene {
   std::vector<Inflow<D>> inflows;  // at most one, feeding the last body
   Vec<D> gravity = Vec<D>::Zero();
   SolverOptions options;
-  std::unique_ptr<Frame> frame;   // beam-column members (2D only), or none
+  std::unique_ptr<FrameOf<D>> frame;  // beam-column members, or none
   MemberCoupling coupling;
   // Scratch of body_contact's surface detection (boundary.cpp), per node, reused every step: the pair of fields
   // with most volume (-1: no pair), three candidate axes from the first towards the second, and each field's front

@@ -341,7 +341,7 @@ template <int D> Diagnostics<D> Solver<D>::diagnostics() const {
   if (viscosity_) d.dissipated += viscosity_->dissipated();
   d.boundary_work = boundary_work_;
   for (const Inflow<D>& in : scene_.inflows) d.inflow_mass += in.mass, d.inflow_momentum += in.momentum, d.inflow_energy += in.energy;
-  if (const Frame* f = scene_.frame.get()) {
+  if (const auto* f = scene_.frame.get()) {
     d.frame_kinetic = f->kinetic_energy();
     d.frame_strain = f->strain_energy();
     d.frame_gravity_work = f->external_work() - f->applied_work();

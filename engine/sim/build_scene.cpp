@@ -232,7 +232,9 @@ template <int D> Scene<D> build_scene(const Scenario& s) {
   sc.options.contact_friction = s.contact.friction;
   sc.options.contact_detection = s.contact.detection;
   sc.options.cell_volume = std::pow(h, D) * (D == 2 ? s.analysis.thickness : 1.0);
-  if (s.structure.present) {
+  if constexpr (D == 3) {
+    if (s.structure.present) throw InputError(s.message_source(), "/structure", "", "a 2D analysis (space-frame members are not yet read from scenarios)");
+  } else if (s.structure.present) {
     try {
       sc.frame = std::make_unique<Frame>(build_frame_model(s));
       // A built structure stands in equilibrium under its own weight at t = 0.
@@ -241,7 +243,7 @@ template <int D> Scene<D> build_scene(const Scenario& s) {
       throw InputError(s.message_source(), "/structure", "", std::string("a stable frame (") + e.what() + ")");
     }
     sc.coupling = build_coupling(s, sc);
-    if constexpr (D == 2) check_member_overlaps(s, sc);
+    check_member_overlaps(s, sc);
   }
   check_overlaps(s, sc);
   return sc;

@@ -32,7 +32,8 @@ template <int D> Recorder<D>::Recorder(const Solver<D>& solver, const Scenario& 
     add("inflows/" + in.name + "/momentum", "kg m/s", axes<D>());
     add("inflows/" + in.name + "/energy", "J", {"value"});
   }
-  if (sc.frame) add_frame_series(*sc.frame, s);
+  if constexpr (D == 2)  // space frames are not read from scenarios yet (build_scene refuses them)
+    if (sc.frame) add_frame_series(*sc.frame, s);
   const auto& P = sc.particles;
   for (const auto& pc : s.output.probes) {
     Probe p;
@@ -40,7 +41,7 @@ template <int D> Recorder<D>::Recorder(const Solver<D>& solver, const Scenario& 
     p.particle = pc.type == "particle";
     p.member = pc.type == "member";
     p.quantities = pc.quantities;
-    if (p.member) {
+    if constexpr (D == 2) if (p.member) {
       const auto& ms = sc.frame->model().members;
       const auto it = std::find_if(ms.begin(), ms.end(), [&](const FrameMemberDef& m) { return m.name == pc.target; });
       const double u = pc.position * it->elements;
@@ -101,8 +102,8 @@ template <int D> std::string Recorder<D>::peak_contact_document(const Frame& f) 
   if (peak_loads_.empty()) return "";
   const FrameModel& m = f.model();
   nlohmann::json loads = nlohmann::json::array();
-  Vec2 total = Vec2::Zero();
-  for (const ContactLoad& l : peak_loads_) {
+  Vec<D> total = Vec<D>::Zero();
+  for (const ContactLoadOf<D>& l : peak_loads_) {
     const FrameElementDef& e = m.elements[l.element];
     const FrameMemberDef& mem = m.members[e.member];
     // Position along the member as a fraction of its length: elements are equal in length along it.
@@ -134,12 +135,14 @@ template <int D> void Recorder<D>::sample(const Solver<D>& solver, double dt) {
     series_[k++].data.push_back(in.energy);
   }
   for (auto& i : impulse_) i.setZero();
-  if (sc.frame) sample_frame(*sc.frame, *solver.member_contact(), d, k);
+  if constexpr (D == 2)
+    if (sc.frame) sample_frame(*sc.frame, *solver.member_contact(), d, k);
   elapsed_ = 0;
   const auto& P = sc.particles;
   for (const auto& p : probes_) {
     if (p.member) {
-      for (const auto& q : p.quantities) sample_member_probe(*sc.frame, p, q, series_[k++]);
+      if constexpr (D == 2)
+        for (const auto& q : p.quantities) sample_member_probe(*sc.frame, p, q, series_[k++]);
       continue;
     }
     const Body& b = sc.bodies[p.body];
@@ -210,7 +213,7 @@ void Recorder<D>::sample_frame(const Frame& f, const MemberContact<D>& mc, const
       ends.data.insert(ends.data.end(), {sf.N, sf.V, sf.M});
     }
   Series& cf = series_[k++];
-  const Vec2 mean = elapsed_ > 0 ? Vec2(member_impulse_ / elapsed_) : mc.force();
+  const Vec<D> mean = elapsed_ > 0 ? Vec<D>(member_impulse_ / elapsed_) : mc.force();
   cf.data.insert(cf.data.end(), {mean.x(), mean.y()});
   member_impulse_.setZero();
   for (int r = 0; r < static_cast<int>(f.model().supports.size()); ++r) {

@@ -52,10 +52,10 @@ template <int D> class Recorder {
   std::vector<Series> series_;
   std::vector<Probe> probes_;
   std::vector<Vec<D>> impulse_;  // per wall, region and inflow zone, since the last sample (N s)
-  Vec2 member_impulse_ = Vec2::Zero();  // of the material on the members since the last sample (N s)
+  Vec<D> member_impulse_ = Vec<D>::Zero();  // of the material on the members since the last sample (N s)
   double elapsed_ = 0;           // s since the last sample
   double peak_contact_ = 0, peak_contact_time_ = 0;  // largest |total contact force| (N) and when
-  std::vector<ContactLoad> peak_loads_;
+  std::vector<ContactLoadOf<D>> peak_loads_;
   double e0_ = 0;
 };
 

@@ -221,7 +221,7 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
       std::snprintf(name, sizeof name, "particles_%04zu.vtu", loop.vtk_files.size());
       write_vtu((fs::path(o.out_dir) / "fields" / name).string(), snap);
       loop.vtk_files.emplace_back(snap.time, name);
-      if (const Frame* f = solver.scene().frame.get()) {
+      if constexpr (D == 2) if (const Frame* f = solver.scene().frame.get()) {
         std::snprintf(name, sizeof name, "members_%04zu.vtu", loop.member_files.size());
         write_lines_vtu((fs::path(o.out_dir) / "fields" / name).string(), Recorder<D>::member_snapshot(*f));
         loop.member_files.emplace_back(snap.time, name);
@@ -311,7 +311,7 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   info.numbers["courant_max"] = loop.courant_max;   // numerical health (docs/results.md)
   info.numbers["jacobian_min"] = std::isfinite(loop.j_min) ? loop.j_min : 1.0;
   info.numbers["threads"] = omp_get_max_threads();
-  if (solver.scene().frame) {
+  if constexpr (D == 2) if (solver.scene().frame) {
     info.documents["structure"] = structure_document(s, solver.scene().frame->model());
     const std::string doc = rec.peak_contact_document(*solver.scene().frame);
     if (!doc.empty()) info.documents["peak_contact"] = doc;

@@ -197,6 +197,39 @@ Vec3 SpaceFrame::velocity_at(int e, double xi) const {
   return R.transpose() * Impl::interpolate(ul, xi, L);
 }
 
+SpaceElementCurve SpaceFrame::curve(int e) const {
+  impl_->check_element(e, 0);
+  const Eigen::VectorXd& d = impl_->dyn.state.d;
+  const SpaceChordState s = impl_->sys.element_state(e, d);
+  SpaceElementCurve c;
+  c.e1 = s.R.row(0).transpose(), c.e2 = s.R.row(1).transpose(), c.e3 = s.R.row(2).transpose();
+  c.L = s.L;
+  const SpaceElementDef& el = model().elements[e];
+  if (impl_->sys.linear()) {
+    const Vec12 ul = rotation12(s.R) * impl_->sys.element_dofs(e, d);
+    c.o = model().nodes[el.i];
+    c.u1 = ul(0), c.u2 = ul(6);
+    c.w1 = ul(1), c.t1 = ul(5), c.w2 = ul(7), c.t2 = ul(11);
+    c.v1 = ul(2), c.s1 = -ul(4), c.v2 = ul(8), c.s2 = -ul(10);
+  } else {
+    c.o = model().nodes[el.i] + d.segment<3>(6 * el.i);
+    c.t1 = s.v(1), c.t2 = s.v(2), c.s1 = s.v(3), c.s2 = s.v(4);
+  }
+  return c;
+}
+
+Vec3 SpaceFrame::angular_velocity_at(int e, double xi) const {
+  impl_->check_element(e, xi);
+  Eigen::Matrix3d R;
+  double L = 0;
+  const Vec12 vl = impl_->local_dofs(e, impl_->dyn.state.v, R, L);
+  const BeamShape sh = beam_shape(xi, L);
+  const double w1 = sh.axial[0] * vl(3) + sh.axial[1] * vl(9);
+  const double w3 = sh.slope[0] * vl(1) + sh.slope[1] * vl(5) + sh.slope[2] * vl(7) + sh.slope[3] * vl(11);       // d(u2)/dx rate
+  const double w2 = -(sh.slope[0] * vl(2) - sh.slope[1] * vl(4) + sh.slope[2] * vl(8) - sh.slope[3] * vl(10));  // -d(u3)/dx rate
+  return R.transpose() * Vec3(w1, w2, w3);
+}
+
 SpaceSectionForces SpaceFrame::forces_at(int e, double xi) const {
   impl_->check_element(e, xi);
   const SpaceFrameSystem& sys = impl_->sys;

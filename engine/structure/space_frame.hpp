@@ -68,6 +68,28 @@ struct SpaceFrameModel {
   double hht_alpha = 0.0;                 // Newmark: HHT alpha in [-1/3, 0]
 };
 
+// Deformed centre-line of one space element, xi in [0, 1] (the plane ElementCurve with two transverse directions):
+//   x(xi) = o + (xi L + u(xi)) e1 + w(xi) e2 + v(xi) e3, u linear in [u1, u2], w and v cubic Hermite on
+//   [w1, t1, w2, t2] and [v1, s1, v2, s2] (s = -rotation about e2, the slope of v).
+// Linear transformation: o, axes and L initial, end values the local displacements and rotations. Corotational:
+// o = x_i, axes the element frame, L the chord, u = w1 = w2 = v1 = v2 = 0, slopes the basic end rotations.
+struct SpaceElementCurve {
+  Vec3 o = Vec3::Zero(), e1 = Vec3::UnitX(), e2 = Vec3::UnitY(), e3 = Vec3::UnitZ();
+  double L = 0, u1 = 0, u2 = 0, w1 = 0, t1 = 0, w2 = 0, t2 = 0, v1 = 0, s1 = 0, v2 = 0, s2 = 0;
+  Vec3 point(double xi) const {
+    const double x2 = xi * xi, x3 = x2 * xi, h1 = 1 - 3 * x2 + 2 * x3, h2 = L * (xi - 2 * x2 + x3), h3 = 3 * x2 - 2 * x3, h4 = L * (x3 - x2);
+    return o + (xi * L + u1 + xi * (u2 - u1)) * e1 + (h1 * w1 + h2 * t1 + h3 * w2 + h4 * t2) * e2 + (h1 * v1 + h2 * s1 + h3 * v2 + h4 * s2) * e3;
+  }
+  Vec3 d1(double xi) const {  // dx/dxi
+    const double x2 = xi * xi, h1 = -6 * xi + 6 * x2, h2 = L * (1 - 4 * xi + 3 * x2), h3 = 6 * xi - 6 * x2, h4 = L * (3 * x2 - 2 * xi);
+    return (L + u2 - u1) * e1 + (h1 * w1 + h2 * t1 + h3 * w2 + h4 * t2) * e2 + (h1 * v1 + h2 * s1 + h3 * v2 + h4 * s2) * e3;
+  }
+  Vec3 d2(double xi) const {  // d2x/dxi2
+    const double h1 = -6 + 12 * xi, h2 = L * (-4 + 6 * xi), h3 = 6 - 12 * xi, h4 = L * (6 * xi - 2);
+    return (h1 * w1 + h2 * t1 + h3 * w2 + h4 * t2) * e2 + (h1 * v1 + h2 * s1 + h3 * v2 + h4 * s2) * e3;
+  }
+};
+
 class SpaceFrame {
  public:
   // Assembles the model; throws std::invalid_argument naming the element/node for zero length, non-positive
@@ -104,8 +126,12 @@ class SpaceFrame {
   void solve_static(int increments = 1);
   std::vector<double> natural_frequencies(int n) const;
 
+  SpaceElementCurve curve(int e) const;
   Vec3 displacement_at(int e, double xi) const;  // centre-line displacement (m), interpolated as add_point_load
   Vec3 velocity_at(int e, double xi) const;      // centre-line velocity (m/s)
+  // Angular velocity of the section at xi (rad/s, global), dual to the moment of add_point_load: twist rate linear,
+  // the bending rotations' rates as the slopes of the Hermite deflection rates.
+  Vec3 angular_velocity_at(int e, double xi) const;
   SpaceSectionForces forces_at(int e, double xi) const;
   SpaceFibreStresses stresses_at(int e, double xi) const;
   Vec6 reaction(int support) const;  // force and moment the support exerts on the frame, global

@@ -5,6 +5,7 @@
 #include <random>
 
 #include "engine/contact/projection.hpp"
+#include "engine/structure/frame.hpp"
 
 namespace dmi {
 namespace {
