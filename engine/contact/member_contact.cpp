@@ -76,9 +76,12 @@ SpaceSurface space_surface(const SpaceElementCurve& c, const MemberSectionShape&
   s.e2 = (c.e2 - c.e2.dot(s.t) * s.t).normalized();
   s.e3 = s.t.cross(s.e2);
   const Vec3 d = x - xm;
-  s.tc = xi > 0 && xi < 1 ? 0.0 : d.dot(s.t);  // inside an element the projection is perpendicular to the tangent
   s.y = d.dot(s.e2), s.z = d.dot(s.e3);
   s.a = sh.a0 + xi * (sh.a1 - sh.a0), s.b = sh.b0 + xi * (sh.b1 - sh.b0);
+  // Inside an element the projection is perpendicular to the tangent; at a clamped end the offset along it counts
+  // (the end cap) unless it is round-off (a node on the joint of two elements).
+  s.tc = xi > 0 && xi < 1 ? 0.0 : d.dot(s.t);
+  if (std::abs(s.tc) <= 1e-9 * (s.a + s.b + d.norm())) s.tc = 0;
   s.round = sh.round;
   return s;
 }
@@ -102,6 +105,16 @@ double space_distance(const SpaceSurface& s, double h, Vec3& n0) {
   }
   n0 = qy >= qz ? Vec3(sgn(s.y) * s.e2) : Vec3(sgn(s.z) * s.e3);
   return std::max(qy, qz);
+}
+
+// The rectangle's face nearest the material at xbar (the one it lies furthest beyond, or nearest to inside): the
+// normal for a node inside the section, whose own nearest face is ambiguous (a node on the centre-line is equidistant
+// from two faces of a square) and says nothing about where the material is (the plane member takes the side of
+// x-bar, eqs. (24)-(25)).
+Vec3 face_towards(const SpaceSurface& s, const Vec3& xbar, const Vec3& xm) {
+  const double yb = (xbar - xm).dot(s.e2), zb = (xbar - xm).dot(s.e3);
+  if (std::abs(yb) - s.a >= std::abs(zb) - s.b) return yb < 0 ? Vec3(-s.e2) : s.e2;
+  return zb < 0 ? Vec3(-s.e3) : s.e3;
 }
 
 // The section point supporting the direction n (from the centre-line): a round section's R n; a rectangle's face
@@ -322,9 +335,12 @@ template <int D> void MemberContact<D>::boundary_forces(Scene<D>& s, double dt) 
       const Index k = f * nn + c.node;
       const double m = g.m[k];
       if (!(m > 0)) continue;
-      // Orientation by the mass-weighted particle position the node sees, eqs. (24)-(25).
+      // Orientation by the mass-weighted particle position the node sees, eqs. (24)-(25); a node inside a
+      // rectangular section takes the face the material lies beyond.
       const Vec<D> xbar = mx_[k] / m;
-      const Vec<D> n = (xbar - c.xm).dot(n0) >= 0 ? n0 : Vec<D>(-n0);
+      Vec<D> n = (xbar - c.xm).dot(n0) >= 0 ? n0 : Vec<D>(-n0);
+      if constexpr (D == 3)
+        if (!surf.round && c.surface < 0) n = face_towards(surf, xbar, c.xm);
       // Bodies bonded to the members (a tyre buffer fixed on the dam face) stick whatever the mode, and are
       // held from the node distance: measured from x-bar the bond peeled (the held mass sagged, q fell).
       const bool bonded = std::find(opt.bonded_fields.begin(), opt.bonded_fields.end(), f) != opt.bonded_fields.end();
