@@ -402,6 +402,7 @@ int main(int argc, char** argv) {
   bch->add_option("--shape", bo.shapes, "shape functions (default linear gimp bspline2)")->check(CLI::IsMember({"linear", "gimp", "bspline2"}));
   bch->add_option("--transfer", bo.transfers, "transfers (default flip apic)")->check(CLI::IsMember({"flip", "apic"}));
   bch->add_option("--threads", bo.threads, "thread counts (default 1 2)");
+  bch->add_option("--dim", bo.dimension, "the kernel block's dimension: 2 (a square, the default) or 3 (a cube)")->check(CLI::IsMember({2, 3}));
   std::string bench_out;
   bch->add_option("-o,--out", bench_out, "also write DIR/bench.json and the Pareto charts DIR/pareto_<case>.png (VTK charts)");
   std::string sweep_file;

@@ -153,12 +153,13 @@ struct MemberConfig {
   SectionConfig section;
   int elements = 1;                                  // beam-column elements along the member
   bool release_start = false, release_end = false;   // moment hinges at the member ends
+  DVec orientation;                                  // 3D: the section's depth direction (empty: the default)
 };
 
 struct SupportConfig {
   std::string node, type;                            // fixed | pinned | roller | spring
-  std::string restrained = "y";                      // roller: the restrained translation, x or y
-  DVec stiffness;                                    // spring: kx (N/m), ky (N/m), kr (N m/rad)
+  std::string restrained = "y";                      // roller: the restrained translation, x, y (or z in 3D)
+  DVec stiffness;                                    // spring: kx, ky, kr (2D) or kx, ky, kz, krx, kry, krz (3D)
 };
 
 struct NodalMassConfig {

@@ -358,36 +358,51 @@ void read_section(Obj o, SectionConfig& c) {
 
 void read_frame_node(Obj& o, FrameNodeConfig& n) {
   o.string("name", n.name, Spec{.doc = "node name that members, supports and masses refer to", .required = true});
-  o.vector("position", n.position, any("m", "position, inside the grid", true), 2);
+  o.vector("position", n.position, any("m", "position, inside the grid (2 or 3 coordinates, as analysis.dimension)", true), o.context().dim);
 }
 
 void read_member(Obj& o, MemberConfig& m) {
   o.string("name", m.name, Spec{.doc = "member name, used by probes and in results; unique, and not the name of a body", .required = true});
   o.string("start", m.start, Spec{.doc = "start node; the member axis e1 points from start to end, e2 is e1 turned 90 degrees "
-                                         "counter-clockwise (the top side)", .required = true});
+                                         "counter-clockwise (the top side; 3D: the section's depth direction, see orientation)",
+                                  .required = true});
   o.string("end", m.end, Spec{.doc = "end node", .required = true});
   o.string("material", m.material, Spec{.doc = "name of an entry in materials, of model linear_elastic", .required = true});
   read_section(o.object("section", "cross-section; its type is required"), m.section);
   o.integer("elements", m.elements, Spec{.doc = "beam-column elements along the member", .min = 1, .max = 10000});
-  o.boolean("release_start", m.release_start, Spec{.doc = "moment release (hinge) at the start: the member carries no moment there"});
+  if (o.documenting() || o.context().dim == 3)
+    o.vector("orientation", m.orientation,
+             any("-", "3D only: a vector giving the section's depth direction e2 (its part normal to the member); default global z x e1, "
+                      "or global y for a member along z. The section's width lies along e3 = e1 x e2"),
+             3);
+  o.boolean("release_start", m.release_start, Spec{.doc = "moment release (hinge) at the start: the member carries no moment there "
+                                                          "(3D: neither bending moment; a ball joint)"});
   o.boolean("release_end", m.release_end, Spec{.doc = "moment release (hinge) at the end"});
 }
 
 void read_support(Obj& o, SupportConfig& s) {
   o.string("node", s.node, Spec{.doc = "supported node", .required = true});
-  o.string("type", s.type, Spec{.doc = "fixed (x, y and rotation restrained) | pinned (x and y) | roller (one translation) | "
-                                       "spring (elastic in x, y and rotation)", .required = true});
+  const bool space = o.context().dim == 3;
+  o.string("type", s.type, Spec{.doc = "fixed (translations and rotations restrained) | pinned (translations) | roller (one translation) | "
+                                       "spring (elastic in every translation and rotation)", .required = true});
   if (!o.documenting() && s.type != "fixed" && s.type != "pinned" && s.type != "roller" && s.type != "spring")
     o.fail("type", nullptr, "fixed, pinned, roller or spring (got '" + s.type + "')");
-  if (o.when("type", s.type, "roller"))
-    o.choice<std::string>("restrained", s.restrained, {{"x", "x"}, {"y", "y"}},
-                          Spec{.doc = "the restrained translation (global axis); the other one and the rotation are free"});
+  if (o.when("type", s.type, "roller")) {
+    if (space)
+      o.choice<std::string>("restrained", s.restrained, {{"x", "x"}, {"y", "y"}, {"z", "z"}},
+                            Spec{.doc = "the restrained translation (global axis); the others and the rotations are free"});
+    else
+      o.choice<std::string>("restrained", s.restrained, {{"x", "x"}, {"y", "y"}},
+                            Spec{.doc = "the restrained translation (global axis); the other one and the rotation are free"});
+  }
   o.end_when();
   if (o.when("type", s.type, "spring"))
     o.vector("stiffness", s.stiffness,
-             Spec{.unit = "N/m, N/m, N m/rad", .doc = "[kx, ky, kr]: stiffness along x, along y and in rotation; 0 = free; at least one > 0",
+             Spec{.unit = space ? "N/m, N m/rad" : "N/m, N/m, N m/rad",
+                  .doc = space ? "[kx, ky, kz, krx, kry, krz]: stiffness along and about x, y, z; 0 = free; at least one > 0"
+                               : "[kx, ky, kr]: stiffness along x, along y and in rotation; 0 = free; at least one > 0",
                   .min = 0, .required = true},
-             3);
+             space ? 6 : 3);
   o.end_when();
 }
 
@@ -399,10 +414,6 @@ void read_nodal_mass(Obj& o, NodalMassConfig& m) {
 
 void read_structure(Obj o, StructureConfig& st) {
   if (!o.present()) return;
-  const int dim = o.context().dim;
-  if (!o.documenting() && dim != 2)
-    throw InputError(o.context().file, o.path(), "", "no structure in a " + std::to_string(dim) + "D analysis (analysis.dimension = " +
-                                                         std::to_string(dim) + "): beam-column frames are 2D only for now");
   st.present = true;
   o.choice<BeamTheoryKind>("theory", st.theory, {{"euler_bernoulli", BeamTheoryKind::euler_bernoulli}, {"timoshenko", BeamTheoryKind::timoshenko}},
                            Spec{.doc = "beam theory: euler_bernoulli (no shear deformation) or timoshenko (shear deformation; deep members)"});
@@ -583,7 +594,8 @@ void read_scenario(Obj& o, Scenario& s) {
   read_contact(o.object("contact", "contact between bodies"), s.contact);
   o.array<WallConfig>("walls", s.walls, Spec{.doc = "rigid fixed walls acting on grid nodes"}, read_wall);
   o.array<PrescribedVelocityConfig>("prescribed_velocity", s.prescribed_velocity, Spec{.doc = "regions of grid nodes moving with a given velocity"}, read_region);
-  read_structure(o.object("structure", "2D beam-column frame whose members act on the bodies (Lin & Yang 2024); absent: no frame"), s.structure);
+  read_structure(o.object("structure", "beam-column frame (plane in 2D, space frame in 3D) whose members act on the bodies (Lin & Yang "
+                                       "2024); absent: no frame"), s.structure);
   read_member_contact(o.object("member_contact", "how the structure's members act on the bodies (Lin & Yang 2024); only with a structure"),
                       s.member_contact, s.structure.present);
   read_output(o.object("output", "what is recorded"), s.output);
@@ -609,35 +621,58 @@ std::string quoted(const std::string& name) { return json(name).dump(); }
 void check_frame_geometry(const StructureConfig& st, const std::string& file) {
   std::map<std::string, std::size_t> index;
   for (std::size_t i = 0; i < st.nodes.size(); ++i) index[st.nodes[i].name] = i;
-  auto at = [&](std::size_t i) { return std::array<double, 2>{st.nodes[i].position[0], st.nodes[i].position[1]}; };
+  const std::size_t dim = st.nodes.empty() ? 2 : st.nodes[0].position.size();
+  const auto sub = [dim](const DVec& a, const DVec& b) {
+    DVec r(dim);
+    for (std::size_t d = 0; d < dim; ++d) r[d] = a[d] - b[d];
+    return r;
+  };
+  const auto dot = [dim](const DVec& a, const DVec& b) {
+    double r = 0;
+    for (std::size_t d = 0; d < dim; ++d) r += a[d] * b[d];
+    return r;
+  };
+  const auto at = [&](std::size_t i) -> const DVec& { return st.nodes[i].position; };
   double scale = 0;
-  for (const auto& n : st.nodes) scale = std::max({scale, std::abs(n.position[0]), std::abs(n.position[1])});
+  for (const auto& n : st.nodes)
+    for (double x : n.position) scale = std::max(scale, std::abs(x));
   const double tol = 1e-9 * std::max(scale, 1.0);
   for (std::size_t i = 0; i < st.nodes.size(); ++i)
     for (std::size_t j = i + 1; j < st.nodes.size(); ++j)
-      if (std::hypot(at(i)[0] - at(j)[0], at(i)[1] - at(j)[1]) <= tol)
+      if (std::sqrt(dot(sub(at(i), at(j)), sub(at(i), at(j)))) <= tol)
         throw InputError(file, "/structure/nodes/" + std::to_string(j) + "/position", value_text(st.nodes[j].position),
                          "a position apart from node '" + st.nodes[i].name + "' (coincident nodes are not joined; use one node)");
-  auto cross = [](const std::array<double, 2>& o, const std::array<double, 2>& a, const std::array<double, 2>& b) {
-    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+  // Closest points of segments ab and cd at parameters (s, t) (Ericson 2005, Real-Time Collision Detection, sec. 5.1.9);
+  // returns their distance.
+  const auto segments = [&](const DVec& a, const DVec& b, const DVec& c, const DVec& d, double& s, double& t) {
+    const DVec u = sub(b, a), v = sub(d, c), w = sub(a, c);
+    const double A = dot(u, u), B = dot(u, v), C = dot(v, v), Dw = dot(u, w), E = dot(v, w), den = A * C - B * B;
+    s = den > 1e-14 * A * C ? std::clamp((B * E - C * Dw) / den, 0.0, 1.0) : 0.0;
+    t = std::clamp((B * s + E) / C, 0.0, 1.0);
+    s = std::clamp((B * t - Dw) / A, 0.0, 1.0);
+    DVec q = sub(a, c);
+    for (std::size_t k = 0; k < dim; ++k) q[k] += s * u[k] - t * v[k];
+    return std::sqrt(dot(q, q));
   };
   for (std::size_t m = 0; m < st.members.size(); ++m) {
     const std::size_t a = index.at(st.members[m].start), b = index.at(st.members[m].end);
-    const double len = std::hypot(at(b)[0] - at(a)[0], at(b)[1] - at(a)[1]);
+    const DVec ab = sub(at(b), at(a));
+    const double len2 = dot(ab, ab);
     for (std::size_t i = 0; i < st.nodes.size(); ++i) {  // a node strictly inside the member's span
       if (i == a || i == b) continue;
-      const double t = ((at(i)[0] - at(a)[0]) * (at(b)[0] - at(a)[0]) + (at(i)[1] - at(a)[1]) * (at(b)[1] - at(a)[1])) / (len * len);
-      if (t > 0 && t < 1 && std::abs(cross(at(a), at(b), at(i))) / len <= tol)
+      const double t = dot(sub(at(i), at(a)), ab) / len2;
+      DVec off = sub(at(i), at(a));
+      for (std::size_t k = 0; k < dim; ++k) off[k] -= t * ab[k];
+      if (t > 0 && t < 1 && std::sqrt(dot(off, off)) <= tol)
         throw InputError(file, "/structure/members/" + std::to_string(m), quoted(st.members[m].name),
                          "a member whose span does not pass through other nodes (node '" + st.nodes[i].name +
                              "' lies on it; split the member there so they are joined)");
     }
-    for (std::size_t k = m + 1; k < st.members.size(); ++k) {  // proper crossing of two spans
+    for (std::size_t k = m + 1; k < st.members.size(); ++k) {  // two spans meeting inside both
       const std::size_t c = index.at(st.members[k].start), d = index.at(st.members[k].end);
       if (c == a || c == b || d == a || d == b) continue;
-      const double d1 = cross(at(a), at(b), at(c)), d2 = cross(at(a), at(b), at(d));
-      const double d3 = cross(at(c), at(d), at(a)), d4 = cross(at(c), at(d), at(b));
-      if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
+      double s = 0, t = 0;
+      if (segments(at(a), at(b), at(c), at(d), s, t) <= tol && s > 0 && s < 1 && t > 0 && t < 1)
         throw InputError(file, "/structure/members/" + std::to_string(k), quoted(st.members[k].name),
                          "a member that does not cross member '" + st.members[m].name +
                              "' (members join only at shared nodes; add a node at the crossing)");
@@ -662,8 +697,10 @@ std::set<std::string> check_structure(const Scenario& s, const std::string& file
     for (std::size_t d = 0; d < n.position.size(); ++d)
       if (n.position[d] < g.origin[d] - 1e-12 || n.position[d] > g.origin[d] + g.size[d] + 1e-12) {
         std::ostringstream os;
-        os << "a position inside the grid [" << g.origin[0] << ", " << g.origin[0] + g.size[0] << "] x [" << g.origin[1] << ", "
-           << g.origin[1] + g.size[1] << "] m (the frame acts on the grid; node '" << n.name << "' is outside along axis " << d << ")";
+        os << "a position inside the grid ";
+        for (std::size_t k = 0; k < n.position.size(); ++k)
+          os << (k ? " x [" : "[") << g.origin[k] << ", " << g.origin[k] + g.size[k] << "]";
+        os << " m (the frame acts on the grid; node '" << n.name << "' is outside along axis " << d << ")";
         throw InputError(file, p + "/position", value_text(n.position), os.str());
       }
   }
@@ -691,6 +728,13 @@ std::set<std::string> check_structure(const Scenario& s, const std::string& file
       throw InputError(file, p + "/end", quoted(m.end), "an end node away from the start node '" + m.start + "' (both are at " +
                                                              value_text(xa) + ": a zero-length member)");
     connected[a] = connected[b] = true;
+    if (m.orientation.size() == 3) {  // 3D: its part normal to the member gives the section's depth direction
+      double o2 = 0, od = 0;
+      for (std::size_t d = 0; d < 3; ++d) o2 += m.orientation[d] * m.orientation[d], od += m.orientation[d] * (xb[d] - xa[d]);
+      if (!(o2 - od * od / l2 > 1e-12 * o2) || !(o2 > 0))
+        throw InputError(file, p + "/orientation", value_text(m.orientation),
+                         "a vector not parallel to the member (its part normal to the member is the section's depth direction)");
+    }
     const auto mat = models.find(m.material);
     if (mat == models.end()) throw InputError(file, p + "/material", quoted(m.material), "the name of one of the materials");
     if (mat->second != "linear_elastic")
@@ -714,7 +758,7 @@ std::set<std::string> check_structure(const Scenario& s, const std::string& file
       throw InputError(file, p + "/node", quoted(sp.node), "a node without another support (supports/" + std::to_string(it->second) +
                                                                " is already on '" + sp.node + "')");
     if (sp.type == "spring" && std::none_of(sp.stiffness.begin(), sp.stiffness.end(), [](double k) { return k > 0; }))
-      throw InputError(file, p + "/stiffness", value_text(sp.stiffness), "at least one stiffness > 0 (a spring support with kx = ky = kr = 0 "
+      throw InputError(file, p + "/stiffness", value_text(sp.stiffness), "at least one stiffness > 0 (a spring support with every stiffness 0 "
                                                                          "supports nothing)");
   }
   for (std::size_t i = 0; i < st.masses.size(); ++i) node_ref(st.masses[i].node, base + "/masses/" + std::to_string(i) + "/node");
@@ -898,6 +942,9 @@ void check_semantics(const Scenario& s, const std::string& file) {
     const std::string p = "/output/probes/" + std::to_string(i);
     dup(probes, pr.name, p + "/name");
     if (pr.type == "member") {
+      if (dim == 3)
+        throw InputError(file, p + "/type", quoted(pr.type), "a body or particle probe in a 3D analysis (member probes read plane "
+                                                             "members; a space frame's histories are in frame/ and supports/)");
       if (!members.count(pr.target))
         throw InputError(file, p + "/member", quoted(pr.target),
                          s.structure.present ? "the name of one of the structure's members" : "a structure member (there is no structure)");

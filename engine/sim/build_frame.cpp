@@ -16,13 +16,34 @@ Section make_section(const SectionConfig& c) {
 
 }  // namespace
 
-FrameModel build_frame_model(const Scenario& s) {
+namespace {
+
+template <int D> struct FrameTypes;
+template <> struct FrameTypes<2> {
+  using Model = FrameModel;
+  using Element = FrameElementDef;
+  using Support = FrameSupportDef;
+  using Mass = FrameMassDef;
+};
+template <> struct FrameTypes<3> {
+  using Model = SpaceFrameModel;
+  using Element = SpaceElementDef;
+  using Support = SpaceSupportDef;
+  using Mass = SpaceMassDef;
+};
+
+// Members subdivided into elements with interior nodes evenly spaced along them; supports as restrained DOFs (2D:
+// ux, uy, rz; 3D: ux, uy, uz, rx, ry, rz) or springs; nodal masses; the integration options.
+template <int D> typename FrameTypes<D>::Model build_model(const Scenario& s) {
+  using T = FrameTypes<D>;
   const StructureConfig& st = s.structure;
-  FrameModel fm;
+  typename T::Model fm;
   std::map<std::string, int> node;
   for (const auto& n : st.nodes) {
     node[n.name] = static_cast<int>(fm.nodes.size());
-    fm.nodes.emplace_back(n.position[0], n.position[1]);
+    Vec<D> x;
+    for (int d = 0; d < D; ++d) x[d] = n.position[d];
+    fm.nodes.push_back(x);
   }
   for (const auto& mc : st.members) {
     const MaterialConfig& mat = *std::find_if(s.materials.begin(), s.materials.end(),
@@ -30,15 +51,15 @@ FrameModel build_frame_model(const Scenario& s) {
     const Section sec = make_section(mc.section);
     FrameMemberDef md{mc.name, static_cast<int>(fm.elements.size()), mc.elements};
     const int a = node.at(mc.start), b = node.at(mc.end);
-    const Vec2 xa = fm.nodes[a], xb = fm.nodes[b];
+    const Vec<D> xa = fm.nodes[a], xb = fm.nodes[b];
     int prev = a;
-    for (int k = 0; k < mc.elements; ++k) {  // interior nodes evenly spaced along the member
+    for (int k = 0; k < mc.elements; ++k) {
       int next = b;
       if (k + 1 < mc.elements) {
         next = static_cast<int>(fm.nodes.size());
         fm.nodes.push_back(xa + (xb - xa) * (double(k + 1) / mc.elements));
       }
-      FrameElementDef e;
+      typename T::Element e;
       e.i = prev;
       e.j = next;
       e.section = sec;
@@ -50,36 +71,45 @@ FrameModel build_frame_model(const Scenario& s) {
       e.release_i = k == 0 && mc.release_start;
       e.release_j = k + 1 == mc.elements && mc.release_end;
       e.member = static_cast<int>(fm.members.size());
+      if constexpr (D == 3)
+        if (mc.orientation.size() == 3) e.orientation = Vec3(mc.orientation[0], mc.orientation[1], mc.orientation[2]);
       fm.elements.push_back(e);
       prev = next;
     }
     fm.members.push_back(md);
   }
+  constexpr int n_dof = D == 2 ? 3 : 6, n_tr = D;
   for (const auto& sc : st.supports) {
-    FrameSupportDef d;
+    typename T::Support d;
     d.node = node.at(sc.node);
     if (sc.type == "fixed") {
-      d.fixed[0] = d.fixed[1] = d.fixed[2] = true;
+      for (int c = 0; c < n_dof; ++c) d.fixed[c] = true;
     } else if (sc.type == "pinned") {
-      d.fixed[0] = d.fixed[1] = true;
+      for (int c = 0; c < n_tr; ++c) d.fixed[c] = true;
     } else if (sc.type == "roller") {
-      d.fixed[sc.restrained == "x" ? 0 : 1] = true;
+      d.fixed[sc.restrained == "x" ? 0 : sc.restrained == "y" ? 1 : 2] = true;
     } else {
-      for (int k = 0; k < 3; ++k) d.spring[k] = sc.stiffness[k];
+      for (int k = 0; k < n_dof; ++k) d.spring[k] = sc.stiffness[k];
     }
     fm.supports.push_back(d);
   }
-  for (const auto& m : st.masses) fm.masses.push_back(FrameMassDef{node.at(m.node), m.mass, m.rotary_inertia});
+  for (const auto& m : st.masses) fm.masses.push_back(typename T::Mass{node.at(m.node), m.mass, m.rotary_inertia});
   fm.theory = st.theory == BeamTheoryKind::timoshenko ? BeamTheory::timoshenko : BeamTheory::euler_bernoulli;
   fm.transform = st.transformation == FrameTransformKind::corotational ? FrameTransform::corotational : FrameTransform::linear;
   fm.mass = st.mass == FrameMassKind::consistent ? MassMatrix::consistent : MassMatrix::lumped;
   fm.integrator = st.integrator == FrameIntegratorKind::newmark ? FrameIntegrator::newmark : FrameIntegrator::explicit_euler;
-  if (st.self_weight) fm.gravity = Vec2(s.analysis.gravity[0], s.analysis.gravity[1]);
+  if (st.self_weight)
+    for (int d = 0; d < D; ++d) fm.gravity[d] = s.analysis.gravity[d];
   fm.rayleigh_mass = st.rayleigh_mass;
   fm.rayleigh_stiffness = st.rayleigh_stiffness;
   fm.hht_alpha = st.hht_alpha;
   return fm;
 }
+
+}  // namespace
+
+FrameModel build_frame_model(const Scenario& s) { return build_model<2>(s); }
+SpaceFrameModel build_space_frame_model(const Scenario& s) { return build_model<3>(s); }
 
 template <int D> MemberCoupling build_coupling(const Scenario& s, const Scene<D>& scene) {
   const MemberContactConfig& mc = s.member_contact;

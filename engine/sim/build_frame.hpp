@@ -10,6 +10,7 @@
 namespace dmi {
 
 FrameModel build_frame_model(const Scenario& s);
+SpaceFrameModel build_space_frame_model(const Scenario& s);  // a 3D analysis's structure
 // JSON document /documents/structure of results.h5 (docs/results.md): nodes, elements with sections and
 // materials, members, supports and the series of their reactions.
 std::string structure_document(const Scenario& s, const FrameModel& m);

@@ -30,18 +30,29 @@ template <int D> void check_overlaps(const Scenario& s, const Scene<D>& sc) {
 // Nor may a body start inside a member's section: a particle centre closer to an element's centre-line than the
 // section's half depth there (between the element ends) is refused. Contact would otherwise start with a
 // penetration and a spurious impulse (a column made deeper in a sweep reached into the boulder: 394 MN).
-void check_member_overlaps(const Scenario& s, const Scene<2>& sc) {
-  const Frame& f = *sc.frame;
+template <int D> void check_member_overlaps(const Scenario& s, const Scene<D>& sc) {
+  const FrameOf<D>& f = *sc.frame;
   const auto& els = f.model().elements;
   for (std::size_t b = 0; b < sc.bodies.size(); ++b)
     for (Index i = sc.bodies[b].begin; i < sc.bodies[b].end; ++i) {
-      const Vec2 p = sc.particles.x[i];
+      const Vec<D> p = sc.particles.x[i];
       for (int e = 0; e < f.nelements(); ++e) {
-        const Vec2 A = f.node_position(els[e].i), B = f.node_position(els[e].j), AB = B - A;
+        const Vec<D> A = f.node_position(els[e].i), B = f.node_position(els[e].j), AB = B - A;
         const double t = (p - A).dot(AB) / AB.squaredNorm();
         if (!(t > 0 && t < 1)) continue;
-        const double d = (p - A - t * AB).norm();
-        if (d >= f.half_depth(e, t) * (1 - 1e-9)) continue;
+        const Vec<D> off = p - A - t * AB;
+        const double d = off.norm();
+        if constexpr (D == 2) {
+          if (d >= f.half_depth(e, t) * (1 - 1e-9)) continue;
+        } else {  // inside a round section, or inside a rectangle in its axes
+          const Section& sec = els[e].section;
+          const double sf = els[e].s0 + t * (els[e].s1 - els[e].s0), c = sec.half_depth(sf);
+          const Eigen::Matrix3d R = f.axes(e);
+          if (sec.kind() == SectionKind::pipe ? d >= c * (1 - 1e-9)
+                                              : (std::abs(off.dot(R.row(1).transpose())) >= c * (1 - 1e-9) ||
+                                                 std::abs(off.dot(R.row(2).transpose())) >= 0.5 * sec.width(sf) * (1 - 1e-9)))
+            continue;
+        }
         std::ostringstream os;
         os << "a body clear of member '" << f.model().members[els[e].member].name << "' (its particle " << i - sc.bodies[b].begin
            << " at (" << p.transpose() << ") lies inside the member's section, " << d << " m from its centre-line); move the body or the member";
@@ -232,11 +243,10 @@ template <int D> Scene<D> build_scene(const Scenario& s) {
   sc.options.contact_friction = s.contact.friction;
   sc.options.contact_detection = s.contact.detection;
   sc.options.cell_volume = std::pow(h, D) * (D == 2 ? s.analysis.thickness : 1.0);
-  if constexpr (D == 3) {
-    if (s.structure.present) throw InputError(s.message_source(), "/structure", "", "a 2D analysis (space-frame members are not yet read from scenarios)");
-  } else if (s.structure.present) {
+  if (s.structure.present) {
     try {
-      sc.frame = std::make_unique<Frame>(build_frame_model(s));
+      if constexpr (D == 2) sc.frame = std::make_unique<Frame>(build_frame_model(s));
+      else sc.frame = std::make_unique<SpaceFrame>(build_space_frame_model(s));
       // A built structure stands in equilibrium under its own weight at t = 0.
       if (s.structure.self_weight && s.structure.initial_state == FrameInitialState::static_equilibrium) sc.frame->solve_static();
     } catch (const std::invalid_argument& e) {  // e.g. a mechanism: the parser cannot see it

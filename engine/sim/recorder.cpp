@@ -32,8 +32,7 @@ template <int D> Recorder<D>::Recorder(const Solver<D>& solver, const Scenario& 
     add("inflows/" + in.name + "/momentum", "kg m/s", axes<D>());
     add("inflows/" + in.name + "/energy", "J", {"value"});
   }
-  if constexpr (D == 2)  // space frames are not read from scenarios yet (build_scene refuses them)
-    if (sc.frame) add_frame_series(*sc.frame, s);
+  if (sc.frame) add_frame_series(*sc.frame, s);
   const auto& P = sc.particles;
   for (const auto& pc : s.output.probes) {
     Probe p;
@@ -135,8 +134,7 @@ template <int D> void Recorder<D>::sample(const Solver<D>& solver, double dt) {
     series_[k++].data.push_back(in.energy);
   }
   for (auto& i : impulse_) i.setZero();
-  if constexpr (D == 2)
-    if (sc.frame) sample_frame(*sc.frame, *solver.member_contact(), d, k);
+  if (sc.frame) sample_frame(*sc.frame, *solver.member_contact(), d, k);
   elapsed_ = 0;
   const auto& P = sc.particles;
   for (const auto& p : probes_) {
@@ -185,23 +183,34 @@ template <int D> void Recorder<D>::sample(const Solver<D>& solver, double dt) {
   }
 }
 
-// Frame histories: energies, all nodal DOFs, section forces at element ends, support reactions.
-template <int D> void Recorder<D>::add_frame_series(const Frame& f, const Scenario& s) {
+// Frame histories: energies, all nodal DOFs, section forces at element ends, support reactions. Plane frames: DOFs
+// ux, uy, rz, end forces N, V, M (frame.hpp), reactions Fx, Fy, M; space frames: ux, uy, uz, rx, ry, rz, end forces N,
+// Vy, Vz, T, My, Mz (space_frame.hpp), reactions Fx, Fy, Fz, Mx, My, Mz.
+template <int D> void Recorder<D>::add_frame_series(const FrameOf<D>& f, const Scenario& s) {
   for (const char* e : {"frame_kinetic", "frame_strain", "frame_gravity_work", "frame_damping", "contact_work"})
     add(std::string("energy/") + e, "J", {"value"});
+  const std::vector<std::string> dof = D == 2 ? std::vector<std::string>{"ux", "uy", "rz"} : std::vector<std::string>{"ux", "uy", "uz", "rx", "ry", "rz"};
+  const std::vector<std::string> force = D == 2 ? std::vector<std::string>{"N", "V", "M"} : std::vector<std::string>{"N", "Vy", "Vz", "T", "My", "Mz"};
   std::vector<std::string> dofs, ends;
   for (int n = 0; n < f.nnodes(); ++n)
-    for (const char* c : {"ux", "uy", "rz"}) dofs.push_back("n" + std::to_string(n) + "_" + c);
+    for (const std::string& c : dof) dofs.push_back("n" + std::to_string(n) + "_" + c);
   for (int e = 0; e < f.nelements(); ++e)
-    for (const char* c : {"N_i", "V_i", "M_i", "N_j", "V_j", "M_j"}) ends.push_back("e" + std::to_string(e) + "_" + c);
-  add("frame/displacement", "m, m, rad", dofs);
-  add("frame/end_forces", "N, N, N m", ends);
-  add("frame/contact_force", "N", {"x", "y"});  // force of the material on the members, interval mean
-  for (const auto& sup : s.structure.supports) add("supports/" + sup.node + "/reaction", "N, N, N m", {"Fx", "Fy", "M"});
+    for (const char* end : {"_i", "_j"})
+      for (const std::string& c : force) ends.push_back("e" + std::to_string(e) + "_" + c + end);
+  if constexpr (D == 2) {  // the plane layout the design layer reads: N_i, V_i, M_i, N_j, V_j, M_j
+    ends.clear();
+    for (int e = 0; e < f.nelements(); ++e)
+      for (const char* c : {"N_i", "V_i", "M_i", "N_j", "V_j", "M_j"}) ends.push_back("e" + std::to_string(e) + "_" + c);
+  }
+  add("frame/displacement", D == 2 ? "m, m, rad" : "m, rad", dofs);
+  add("frame/end_forces", D == 2 ? "N, N, N m" : "N, N m", ends);
+  add("frame/contact_force", "N", axes<D>());  // force of the material on the members, interval mean
+  for (const auto& sup : s.structure.supports)
+    add("supports/" + sup.node + "/reaction", D == 2 ? "N, N, N m" : "N, N m", D == 2 ? std::vector<std::string>{"Fx", "Fy", "M"} : std::vector<std::string>{"Fx", "Fy", "Fz", "Mx", "My", "Mz"});
 }
 
 template <int D>
-void Recorder<D>::sample_frame(const Frame& f, const MemberContact<D>& mc, const Diagnostics<D>& d, std::size_t& k) {
+void Recorder<D>::sample_frame(const FrameOf<D>& f, const MemberContact<D>& mc, const Diagnostics<D>& d, std::size_t& k) {
   for (double e : {d.frame_kinetic, d.frame_strain, d.frame_gravity_work, d.frame_damping, d.contact_work}) series_[k++].data.push_back(e);
   const Eigen::VectorXd& u = f.displacement();
   Series& disp = series_[k++];
@@ -209,17 +218,18 @@ void Recorder<D>::sample_frame(const Frame& f, const MemberContact<D>& mc, const
   Series& ends = series_[k++];
   for (int e = 0; e < f.nelements(); ++e)
     for (double xi : {0.0, 1.0}) {
-      const SectionForces sf = f.forces_at(e, xi);
-      ends.data.insert(ends.data.end(), {sf.N, sf.V, sf.M});
+      const auto sf = f.forces_at(e, xi);
+      if constexpr (D == 2) ends.data.insert(ends.data.end(), {sf.N, sf.V, sf.M});
+      else ends.data.insert(ends.data.end(), {sf.N, sf.Vy, sf.Vz, sf.T, sf.My, sf.Mz});
     }
   Series& cf = series_[k++];
   const Vec<D> mean = elapsed_ > 0 ? Vec<D>(member_impulse_ / elapsed_) : mc.force();
-  cf.data.insert(cf.data.end(), {mean.x(), mean.y()});
+  cf.data.insert(cf.data.end(), mean.data(), mean.data() + D);
   member_impulse_.setZero();
   for (int r = 0; r < static_cast<int>(f.model().supports.size()); ++r) {
-    const Vec3 rf = f.reaction(r);
+    const auto rf = f.reaction(r);
     Series& rs = series_[k++];
-    rs.data.insert(rs.data.end(), {rf[0], rf[1], rf[2]});
+    rs.data.insert(rs.data.end(), rf.data(), rf.data() + rf.size());
   }
 }
 

@@ -45,8 +45,8 @@ template <int D> class Recorder {
     std::vector<std::string> quantities;
   };
   Series& add(const std::string& path, const std::string& unit, std::vector<std::string> comps);
-  void add_frame_series(const Frame& f, const Scenario& s);
-  void sample_frame(const Frame& f, const MemberContact<D>& mc, const Diagnostics<D>& d, std::size_t& k);
+  void add_frame_series(const FrameOf<D>& f, const Scenario& s);
+  void sample_frame(const FrameOf<D>& f, const MemberContact<D>& mc, const Diagnostics<D>& d, std::size_t& k);
   void sample_member_probe(const Frame& f, const Probe& p, const std::string& q, Series& s) const;
   std::vector<double> time_;
   std::vector<Series> series_;

@@ -26,8 +26,20 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-json block_json(long n, const std::string& shape, const std::string& transfer) {
+json block_json(long n, const std::string& shape, const std::string& transfer, int dim = 2) {
   const double h = 0.05;
+  if (dim == 3) {  // a cube, 2 x 2 x 2 particles per cell
+    const double side = std::cbrt(static_cast<double>(n) / 8.0) * h;
+    return json{{"schema_version", 1},
+                {"name", "kernel benchmark (3D)"},
+                {"analysis", {{"dimension", 3}, {"end_time", 1.0}, {"dt_max", 1e-3}, {"gravity", {0, -9.81, 0}}}},
+                {"mpm", {{"shape_function", shape}, {"transfer", transfer}}},
+                {"grid", {{"origin", {-0.5, -0.5, -0.5}}, {"size", {side + 1.0, side + 1.0, side + 1.0}}, {"cell_size", h}}},
+                {"materials", {{{"name", "soft"}, {"model", "linear_elastic"}, {"density", 1000}, {"youngs_modulus", 1e5}, {"poisson_ratio", 0.3}}}},
+                {"bodies", {{{"name", "block"}, {"material", "soft"}, {"particles_per_cell", 2},
+                             {"shape", {{"type", "box"}, {"min", {0, 0, 0}}, {"max", {side, side, side}}}}, {"velocity", {0.1, 0.2, 0.05}}}}},
+                {"output", {{"vtk", false}}}};
+  }
   const double side = std::sqrt(static_cast<double>(n) / 4.0) * h;  // 4 particles per cell
   json j{{"schema_version", 1},
          {"name", "kernel benchmark"},
@@ -60,8 +72,8 @@ double step_time(const Scenario& s, int steps) {
 
 }  // namespace
 
-Scenario block_scenario(long n, const std::string& shape, const std::string& transfer) {
-  return parse_scenario(block_json(n, shape, transfer), "<kernel benchmark>");
+Scenario block_scenario(long n, const std::string& shape, const std::string& transfer, int dim) {
+  return parse_scenario(block_json(n, shape, transfer, dim), "<kernel benchmark>");
 }
 
 json to_json(const KernelBench& b) {
@@ -93,7 +105,9 @@ json skip_block_bench(bool progress) {
               {"grid_10x_s_per_step", tw}, {"grid_10x_ratio", tw / t0}};
 }
 
-std::vector<KernelBench> kernel_bench(const BenchOptions& o, bool progress) {
+namespace {
+
+template <int D> std::vector<KernelBench> kernel_bench_d(const BenchOptions& o, bool progress) {
   using clock = std::chrono::steady_clock;
   std::vector<KernelBench> out;
   const int max_threads = omp_get_max_threads();
@@ -103,7 +117,7 @@ std::vector<KernelBench> kernel_bench(const BenchOptions& o, bool progress) {
       for (int t : o.threads) {
         if (t > max_threads && t > 1) continue;
         omp_set_num_threads(t);
-        Solver<2> solver(build_scene<2>(block_scenario(o.particles, shape, transfer)));
+        Solver<D> solver(build_scene<D>(block_scenario(o.particles, shape, transfer, D)));
         const double dt = solver.stable_time_step(1e-3);
         for (int k = 0; k < o.warmup; ++k) solver.step(dt);
         std::vector<double> per_step;
@@ -121,15 +135,21 @@ std::vector<KernelBench> kernel_bench(const BenchOptions& o, bool progress) {
         b.spread = (*std::max_element(per_step.begin(), per_step.end()) - *std::min_element(per_step.begin(), per_step.end())) / b.seconds_per_step;
         // Particle arrays: x, x0, v, half_size (4 vectors), F, L, C, stress (4 matrices), stress_zz, mass, vol0, vol, body,
         // id, slot; plus the material's own arrays (none for undamped linear elasticity).
-        b.bytes_per_particle = Particles<2>::kBytesPerParticle;
+        b.bytes_per_particle = Particles<D>::kBytesPerParticle;
         out.push_back(b);
         if (progress)
-          std::fprintf(stderr, "kernel %-8s %-4s %d thread(s): %.3f s/step, %.2f M updates/s (spread %.0f %%)\n", shape.c_str(), transfer.c_str(), t,
+          std::fprintf(stderr, "kernel %dD %-8s %-4s %d thread(s): %.3f s/step, %.2f M updates/s (spread %.0f %%)\n", D, shape.c_str(), transfer.c_str(), t,
                        b.seconds_per_step, b.updates_per_second / 1e6, 100 * b.spread);
       }
     }
   omp_set_num_threads(max_threads);
   return out;
+}
+
+}  // namespace
+
+std::vector<KernelBench> kernel_bench(const BenchOptions& o, bool progress) {
+  return o.dimension == 3 ? kernel_bench_d<3>(o, progress) : kernel_bench_d<2>(o, progress);
 }
 
 int bench_main(const std::vector<std::string>& cases, bool as_json, bool quick, BenchOptions o) {
@@ -192,7 +212,7 @@ int bench_main(const std::vector<std::string>& cases, bool as_json, bool quick, 
     }
   }
   if (!results.empty()) {
-    std::printf("\nMPM kernel throughput (2D, linear elastic, %ld particles, median of %d x %d steps)\n", o.particles, o.repeats, o.steps);
+    std::printf("\nMPM kernel throughput (%dD, linear elastic, %ld particles, median of %d x %d steps)\n", o.dimension, o.particles, o.repeats, o.steps);
     std::printf("particle arrays: %.0f bytes per particle\n", results.front().bytes_per_particle);
     std::printf("%-9s %-9s %7s %12s %14s %10s %8s\n", "shape", "transfer", "threads", "s/step", "M updates/s", "speed-up", "spread");
     for (const auto& b : results) {

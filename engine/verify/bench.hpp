@@ -24,12 +24,13 @@ struct BenchOptions {
   int steps = 10, warmup = 3, repeats = 3;
   std::vector<int> threads = {1, 2};
   std::vector<std::string> shapes = {"linear", "gimp", "bspline2"}, transfers = {"flip", "apic"};
+  int dimension = 2;  // the kernel block: a square (2 x 2 particles per cell) or a cube (2 x 2 x 2)
 };
 
 // The kernel benchmark's scene: a square linear-elastic block of about n particles (2 x 2 per cell, h = 0.05 m),
 // falling freely with a small drift, on a grid 1 m wider on every side. Also used by bench/kernels.cpp.
 struct Scenario;
-Scenario block_scenario(long n, const std::string& shape, const std::string& transfer);
+Scenario block_scenario(long n, const std::string& shape, const std::string& transfer, int dim = 2);
 
 std::vector<KernelBench> kernel_bench(const BenchOptions& o, bool progress);
 nlohmann::json to_json(const KernelBench& b);

@@ -11,6 +11,7 @@
 #include "engine/mpm/solver.hpp"
 #include "engine/scenario/scenario.hpp"
 #include "engine/sim/build_scene.hpp"
+#include "engine/verify/validate.hpp"
 
 namespace dmi {
 namespace {
@@ -124,6 +125,26 @@ TEST(MemberContact3D, BlockRestingOnABeamLoadsItWithItsWeight) {
   for (std::size_t k = 1; k < h.t.size(); ++k)
     if (h.t[k] > 0.2) sum += h.force[k] * (h.t[k] - h.t[k - 1]), dt += h.t[k] - h.t[k - 1];
   EXPECT_NEAR(-sum / dt / (125 * 9.81), 1.0, 0.02);
+}
+
+// The same beam read from the scenario in 3D (nodes with three coordinates, a rectangle whose width lies along z):
+// the supports' reactions (six components each) carry the resting block's weight, nothing acts across the plane.
+TEST(MemberContact3D, ScenarioWithASpaceFrameRecordsItsHistories) {
+  J j = space_scene(0.0, 0.5, 0.3);
+  J st = plane_scene(0.0, 0.5)["structure"];
+  st["nodes"] = {{{"name", "A"}, {"position", {0, 0.1, 0.5}}}, {{"name", "B"}, {"position", {4, 0.1, 0.5}}}};
+  j["structure"] = st;
+  j["member_contact"] = {{"mode", "separable"}};
+  const RunOutput out = run_quiet(parse_scenario(j.dump(), "space.json"));
+  const auto& t = out.results.time;
+  const auto& ra = series(out.results, "supports/A/reaction");
+  const auto& rb = series(out.results, "supports/B/reaction");
+  ASSERT_EQ(ra.components.size(), 6u);
+  EXPECT_EQ(series(out.results, "frame/end_forces").components.size(), 8u * 12u);
+  const double weight = 125 * 9.81;
+  EXPECT_NEAR((time_mean(t, ra, 1, 0.2, 0.5) + time_mean(t, rb, 1, 0.2, 0.5)) / weight, 1.0, 0.02);
+  EXPECT_NEAR(-time_mean(t, series(out.results, "frame/contact_force"), 1, 0.2, 0.5) / weight, 1.0, 0.02);
+  for (int c : {2, 3, 4}) EXPECT_LT(std::abs(time_mean(t, ra, c, 0.2, 0.5)), 1e-6 * weight) << "component " << c;  // Fz, Mx, My
 }
 
 }  // namespace

@@ -674,11 +674,16 @@ TEST(ScenarioErrors, NoBodies) {
 // frame_2d() with one change.
 json frame_with(const std::function<void(json&)>& change) { return with(change, frame_2d()); }
 
-TEST(ScenarioStructureErrors, OnlyIn2D) {
+// A 3D analysis takes a space frame: node positions with three coordinates, rollers along z, six spring stiffnesses.
+TEST(ScenarioStructureErrors, ThreeDimensionsNeedSpaceFrameInputs) {
   json j = minimal_3d();
   j["structure"] = frame_2d()["structure"];
   j["materials"] = frame_2d()["materials"];
-  expect_error(j, "/structure", {"no structure in a 3D analysis", "analysis.dimension = 3", "2D only"});
+  expect_error(j, "/structure/nodes/0/position", {"an array of 3 numbers"});
+  expect_error(frame_with([](json& k) { k["structure"]["supports"][0] = {{"node", k["structure"]["supports"][0]["node"]}, {"type", "roller"}, {"restrained", "z"}}; }),
+               "/structure/supports/0/restrained", {"\"z\""});
+  expect_error(frame_with([](json& k) { k["structure"]["members"][0]["orientation"] = {0, 0, 1}; }), "/structure/members/0/orientation",
+               {"unknown key 'orientation'"});
 }
 
 TEST(ScenarioStructureErrors, UnknownAndMisplacedKeys) {
