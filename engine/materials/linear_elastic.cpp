@@ -59,6 +59,10 @@ template <int D> class LinearElastic final : public Material<D> {
       update2d(p, begin, end, dt, lam, mu, strain2d ? lam3 : 0.0);
       return;
     }
+    if (D == 3 && beta == 0) {
+      update3d(p, begin, end, dt, lam, mu);
+      return;
+    }
     parallel_for(begin, end, [&](Index i) {
       const Mat<D>& L = p.L[i];
       const Mat<D> Dm = 0.5 * (L + L.transpose());
@@ -103,6 +107,36 @@ template <int D> class LinearElastic final : public Material<D> {
         if (lam_zz != 0) p.stress_zz[i] += dt * lam_zz * tr;
         const Mat<2>& F = p.F[i];
         p.vol[i] = p.vol0[i] * (F(0, 0) * F(1, 1) - F(0, 1) * F(1, 0));
+      });
+    }
+  }
+
+  // Undamped 3D form: sigma += dt (lam tr(D) I + 2 mu D) + dt (W sigma - sigma W); for symmetric sigma and skew W the
+  // Jaumann term is M + M^T with M = W sigma, W = [[0, a, b], [-a, 0, c], [-b, -c, 0]], a, b, c = (L01 - L10) / 2,
+  // (L02 - L20) / 2, (L12 - L21) / 2. The stress stays exactly symmetric.
+  static void update3d(Particles<D>& p, Index begin, Index end, double dt, double lam, double mu) {
+    if constexpr (D == 3) {
+      parallel_for(begin, end, [&](Index i) {
+        __builtin_prefetch(p.stress.data() + i + 8, 1);
+        __builtin_prefetch(p.vol.data() + i + 16, 1);
+        __builtin_prefetch(p.vol0.data() + i + 16);
+        const Mat<3>& L = p.L[i];
+        Mat<3>& s = p.stress[i];
+        const double a = 0.5 * (L(0, 1) - L(1, 0)), b = 0.5 * (L(0, 2) - L(2, 0)), c = 0.5 * (L(1, 2) - L(2, 1));
+        const double s00 = s(0, 0), s11 = s(1, 1), s22 = s(2, 2), s01 = s(0, 1), s02 = s(0, 2), s12 = s(1, 2);
+        // M = W s (s symmetric); the Jaumann term's entries R_ij = M_ij + M_ji.
+        const double m00 = a * s01 + b * s02, m11 = -a * s01 + c * s12, m22 = -b * s02 - c * s12;
+        const double m01 = a * s11 + b * s12, m10 = -a * s00 + c * s02;
+        const double m02 = a * s12 + b * s22, m20 = -b * s00 - c * s01;
+        const double m12 = -a * s02 + c * s22, m21 = -b * s01 - c * s11;
+        const double tr = L(0, 0) + L(1, 1) + L(2, 2), lt = lam * tr;
+        s(0, 0) = s00 + dt * (lt + 2 * mu * L(0, 0) + 2 * m00);
+        s(1, 1) = s11 + dt * (lt + 2 * mu * L(1, 1) + 2 * m11);
+        s(2, 2) = s22 + dt * (lt + 2 * mu * L(2, 2) + 2 * m22);
+        s(0, 1) = s(1, 0) = s01 + dt * (mu * (L(0, 1) + L(1, 0)) + m01 + m10);
+        s(0, 2) = s(2, 0) = s02 + dt * (mu * (L(0, 2) + L(2, 0)) + m02 + m20);
+        s(1, 2) = s(2, 1) = s12 + dt * (mu * (L(1, 2) + L(2, 1)) + m12 + m21);
+        p.vol[i] = p.vol0[i] * p.F[i].determinant();
       });
     }
   }

@@ -175,6 +175,26 @@ inline void scatter_range(const ScatterCtx<D> c, Index q0, Index q1) {
           crow[k] = 0;
           for (int d = 1; d < D; ++d) crow[k] += mC[k][d] * dist.row[d - 1][r];
         }
+      // Without the affine term the weights factor as w_x(a) W(r): the row's factors once, then two products a node.
+      if constexpr (!Scheme::affine && Fill::force && !Fill::contact) {
+        const double W = st.W[r], mW = mp * W;
+        double pW[D], fx[D], fo[D];
+        for (int k = 0; k < D; ++k) {
+          pW[k] = W * mv[k];
+          fx[k] = W * s[k][0];
+          fo[k] = 0;
+          for (int d = 1; d < D; ++d) fo[k] += s[k][d] * st.dW[d - 1][r];
+        }
+        for (int a = 0; a < K; ++a) {
+          const Index id = row + a;
+          const double wa = st.w[0][a], da = st.dwx[a];
+          c.gm[id] += wa * mW;
+          double* rec = c.pf + RC * id;
+          for (int k = 0; k < D; ++k) rec[k] += wa * pW[k];
+          for (int k = 0; k < D; ++k) rec[D + k] += da * fx[k] + wa * fo[k];
+        }
+        continue;
+      }
       for (int a = 0; a < K; ++a) {
         const Index id = row + a;
         const double N = st.w[0][a] * st.W[r];
@@ -284,7 +304,44 @@ template <int D, class Shape, class Scheme, class Mode, bool SIMD> inline int ga
     constexpr bool kVector = false;
 #endif
     [[maybe_unused]] const NodeDistances<D, St> dist(st, c.g.h, std::bool_constant<Scheme::affine>{});
-    for (int r = 0; r < (kVector ? 0 : R); ++r) {
+    // FLIP without the empty-node fix, row by row: the weights factor as w_x(a) W(r), so each row sums over its K
+    // nodes with the x weights alone and scales once (a third of the multiplications of the node-by-node loop below).
+    constexpr bool kRows = !kVector && !Scheme::affine && !kEmptyFix;
+    if constexpr (kRows) {
+      const bool same = gu == c.gvl;  // USL: the gradient is taken of v^L, whose row sums are already there
+      for (int r = 0; r < R; ++r) {
+        const Index row = node0 + rowoff[r];
+        __builtin_prefetch(c.gvl + D * (row + kNodeAhead));
+        __builtin_prefetch(c.gv + D * (row + kNodeAhead));
+        double sv[D] = {}, sdv[D] = {}, sgx[D] = {}, su[D] = {};
+        for (int a = 0; a < K; ++a) {
+          const Index id = row + a;
+          const double wa = st.w[0][a];
+          const double* vl = c.gvl + D * id;
+          for (int k = 0; k < D; ++k) sv[k] += wa * vl[k];
+          if constexpr (Mode::velocity)
+            for (int k = 0; k < D; ++k) sdv[k] += wa * (vl[k] - c.gv[D * id + k]);
+          if constexpr (Mode::kinematics) {
+            const double* u = gu + D * id;
+            for (int k = 0; k < D; ++k) sgx[k] += st.dwx[a] * u[k];
+            if (!same)
+              for (int k = 0; k < D; ++k) su[k] += wa * u[k];
+          }
+        }
+        const double W = st.W[r];
+        for (int k = 0; k < D; ++k) vp[k] += W * sv[k];
+        if constexpr (Mode::velocity)
+          for (int k = 0; k < D; ++k) dv[k] += W * sdv[k];
+        if constexpr (Mode::kinematics) {
+          const double* sw = same ? sv : su;
+          for (int k = 0; k < D; ++k) {
+            l[k][0] += W * sgx[k];
+            for (int d = 1; d < D; ++d) l[k][d] += st.dW[d - 1][r] * sw[k];
+          }
+        }
+      }
+    }
+    for (int r = 0; r < (kVector || kRows ? 0 : R); ++r) {
       const Index row = node0 + rowoff[r];
       __builtin_prefetch(c.gvl + D * (row + kNodeAhead));
       __builtin_prefetch(c.gv + D * (row + kNodeAhead));
