@@ -173,6 +173,10 @@ void require_documents(const Results& r, const std::string& where) {
   const json sc = json::parse(text, nullptr, false);
   if (sc.is_discarded() || !sc.is_object()) throw std::runtime_error(where + ": /scenario is not a JSON object; nothing to check");
   const json* members = sc.contains("structure") && sc["structure"].is_object() && sc["structure"].contains("members") ? &sc["structure"]["members"] : nullptr;
+  const bool space = sc.contains("analysis") && sc["analysis"].is_object() && sc["analysis"].value("dimension", 2) == 3;
+  if (members && members->is_array() && !members->empty() && space)
+    throw std::runtime_error(where + ": a space frame (3D structure): its histories are in results.h5 (frame/, supports/, docs/results.md), but "
+                             "the design checks, envelopes and report read plane members only for now; nothing is checked");
   if (members && members->is_array() && !members->empty() && !r.info.documents.count("structure"))
     throw std::runtime_error(where + ": /documents/structure is missing although the scenario has " + std::to_string(members->size()) +
                              " member(s): the file is incomplete or altered; nothing to check");
