@@ -372,8 +372,8 @@ void read_member(Obj& o, MemberConfig& m) {
   o.integer("elements", m.elements, Spec{.doc = "beam-column elements along the member", .min = 1, .max = 10000});
   if (o.documenting() || o.context().dim == 3)
     o.vector("orientation", m.orientation,
-             any("-", "3D only: a vector giving the section's depth direction e2 (its part normal to the member); default global z x e1, "
-                      "or global y for a member along z. The section's width lies along e3 = e1 x e2"),
+             any("-", "3D only: a vector giving the section's depth direction e2 (its part normal to the member); default the vertical "
+                      "(global z), or global x (the flow) for a vertical member. The section's width lies along e3 = e1 x e2"),
              3);
   o.boolean("release_start", m.release_start, Spec{.doc = "moment release (hinge) at the start: the member carries no moment there "
                                                           "(3D: neither bending moment; a ball joint)"});

@@ -4,11 +4,12 @@
 // of the 6 DOFs fixed or on springs, end releases, nodal masses, lumped or consistent mass, and the plane frame's
 // time integrators (explicit, Lin & Yang 2024 eqs. 27-29, or Newmark/HHT), shared through AssembledSystem.
 //
-// Axes. Global x, y as the plane analyses (flow along x, y up), z across the channel. Element local axes: e1 from
-// node i to node j; e2 the section's depth direction (Section::depth, bending about e3 uses Section::inertia);
-// e3 = e1 x e2 the width direction (bending about e2 uses Section::inertia_y). e2 is the part of the element's
-// orientation vector normal to e1; by default global z x e1 (a member in the x-y plane bends in that plane as in
-// the plane frame), and global y for a member along z.
+// Axes. The scenario's (docs/scenario.md: in 3D z is up; by the presets' convention x along the flow, y across the
+// channel). Element local axes: e1 from node i to node j; e2 the section's depth direction (Section::depth, bending
+// about e3 uses Section::inertia); e3 = e1 x e2 the width direction (bending about e2 uses Section::inertia_y). e2 is
+// the part of the element's orientation vector normal to e1; by default the vertical (global z: a beam's depth is
+// vertical) and global x for a vertical member (a column's depth along the flow), so a member in the x-z plane bends
+// in that plane as the plane frame's members do in theirs (the plane analysis's y is 3D's z).
 // Section forces at a point, on the positive face (the part towards node i acted on by the part towards j), as
 // vectors along the local axes: N (tension +), Vy, Vz, T, My, Mz. Fibre stress at (y', z') of the section
 // sigma = N/A - Mz y'/Iz + My z'/Iy (Gere & Goodno, Mechanics of Materials, sec. 6.5). Mz equals the plane
@@ -34,7 +35,7 @@ struct SpaceElementDef {
   double s0 = 0.0, s1 = 1.0;      // the element's span as fractions of its member's section taper
   double E = 0, nu = 0, rho = 0;  // Pa, -, kg/m^3
   bool release_i = false, release_j = false;  // both bending moments released (a ball joint) at the element ends
-  Vec3 orientation = Vec3::Zero();  // hint for e2 (zero: the default of the header)
+  Vec3 orientation = Vec3::Zero();  // hint for e2 (zero: the default of the header: global z, or x for a vertical member)
   int member = 0;                 // index into SpaceFrameModel::members
 };
 

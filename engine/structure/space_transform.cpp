@@ -8,9 +8,9 @@ namespace dmi {
 
 bool local_axes(const Vec3& e1, const Vec3& o, Eigen::Matrix3d& R) {
   Vec3 hint = o;
-  if (hint.squaredNorm() == 0) {  // global z x e1, or global y for a member along z
-    hint = Vec3::UnitZ().cross(e1);
-    if (hint.norm() < 1e-6) hint = Vec3::UnitY();
+  if (hint.squaredNorm() == 0) {  // the vertical (global z), or global x (the flow) for a vertical member
+    hint = Vec3::UnitZ();
+    if (hint.cross(e1).norm() < 1e-6) hint = Vec3::UnitX();
   }
   Vec3 e2 = hint - hint.dot(e1) * e1;
   if (!(e2.norm() > 1e-6 * hint.norm())) return false;

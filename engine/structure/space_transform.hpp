@@ -30,8 +30,8 @@ struct SpaceChordState {
   Mat6x12 B = Mat6x12::Zero();                      // dv/dd
 };
 
-// Local axes of an element along unit e1 with orientation hint o (zero: global z x e1, or global y along z); rows
-// e1, e2, e3. Returns false when o (or the default) is parallel to e1.
+// Local axes of an element along unit e1 with orientation hint o (zero: global z, or global x for a member along z);
+// rows e1, e2, e3. Returns false when o is parallel to e1.
 bool local_axes(const Vec3& e1, const Vec3& o, Eigen::Matrix3d& R);
 // diag(R, R, R, R): local = T global for the 12 end DOFs.
 Mat12 rotation12(const Eigen::Matrix3d& R);

@@ -332,7 +332,7 @@ template <int D> std::vector<CaseResult> column_metrics(const std::string& name,
   std::vector<double> fx(t.size());
   for (std::size_t k = 0; k < t.size(); ++k) {
     peak = std::max(peak, std::abs(base.data[nr * k]));
-    if constexpr (D == 3) lateral = std::max({lateral, std::abs(base.data[nr * k + 2]), std::abs(base.data[nr * k + 3]) / 4.0});  // Fz, Mx / H
+    if constexpr (D == 3) lateral = std::max({lateral, std::abs(base.data[nr * k + 1]), std::abs(base.data[nr * k + 3]) / 4.0});  // Fy, Mx / H (z up)
     fx[k] = cf.data[D * k];
     if (k > 0) impulse += 0.5 * (cf.data[D * k] + cf.data[D * (k - 1)]) * (t[k] - t[k - 1]);
   }

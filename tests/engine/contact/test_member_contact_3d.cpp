@@ -26,6 +26,7 @@ SpaceFrameModel extrude(const FrameModel& p, double zc) {
     SpaceElementDef g;
     g.i = e.i, g.j = e.j, g.section = e.section, g.s0 = e.s0, g.s1 = e.s1, g.E = e.E, g.nu = e.nu, g.rho = e.rho;
     g.release_i = e.release_i, g.release_j = e.release_j, g.member = e.member;
+    g.orientation = Vec3::UnitZ().cross(m.nodes[e.j] - m.nodes[e.i]);  // the plane frame's e2
     m.elements.push_back(g);
   }
   m.members = p.members;
@@ -133,6 +134,7 @@ TEST(MemberContact3D, ScenarioWithASpaceFrameRecordsItsHistories) {
   J j = space_scene(0.0, 0.5, 0.3);
   J st = plane_scene(0.0, 0.5)["structure"];
   st["nodes"] = {{{"name", "A"}, {"position", {0, 0.1, 0.5}}}, {{"name", "B"}, {"position", {4, 0.1, 0.5}}}};
+  st["members"][0]["orientation"] = {0, 1, 0};  // this test's y is up
   j["structure"] = st;
   j["member_contact"] = {{"mode", "separable"}};
   const RunOutput out = run_quiet(parse_scenario(j.dump(), "space.json"));

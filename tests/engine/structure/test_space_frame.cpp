@@ -23,7 +23,8 @@ constexpr double G = E / (2 * (1 + nu));
 double rel(double a, double b) { return std::abs(a - b) / std::abs(b); }
 
 // n elements from a to b, members of one section.
-SpaceFrameModel line(const Vec3& a, const Vec3& b, int n, const Section& s, const Vec3& orientation = Vec3::Zero()) {
+// Members along x take e2 = y unless told (the sections' depth along y, as the plane frame's).
+SpaceFrameModel line(const Vec3& a, const Vec3& b, int n, const Section& s, const Vec3& orientation = Vec3::UnitY()) {
   SpaceFrameModel m;
   for (int k = 0; k <= n; ++k) m.nodes.push_back(a + (b - a) * (double(k) / n));
   for (int k = 0; k < n; ++k) {
@@ -172,6 +173,7 @@ TEST(SpaceFrameStatic, PortalSwaysOutOfThePlaneAsSlopeDeflection) {
   for (int k = 0; k < 3 * n; ++k) {
     SpaceElementDef e;
     e.i = k, e.j = k + 1, e.section = (k >= n && k < 2 * n) ? beam : col, e.E = E, e.nu = nu, e.rho = rho;
+    e.orientation = (k >= n && k < 2 * n) ? Vec3(0, 1, 0) : Vec3(-1, 0, 0);
     m.elements.push_back(e);
   }
   m.supports = {SpaceSupportDef::fixed_support(0), SpaceSupportDef::fixed_support(3 * n)};
@@ -180,8 +182,8 @@ TEST(SpaceFrameStatic, PortalSwaysOutOfThePlaneAsSlopeDeflection) {
   load << 0, 0, H, 0, 0, 0;
   f.add_nodal_load(n, load);
   f.solve_static();
-  // Columns along y: e2 = z x y = -x, so bending towards z is about e2 (inertia_y); the beam along z: e2 = y, its
-  // joints turn it about e3 = -x (inertia).
+  // Columns along y with e2 = -x: bending towards z is about e2 (inertia_y); the beam along z with e2 = y: its joints
+  // turn it about e3 = -x (inertia).
   const double ic = E * col.inertia_y(0) / h, ib = E * beam.inertia(0) / Lb;
   const double delta = H * h * h * (2 * ic + 3 * ib) / (12 * ic * (ic + 6 * ib));
   // The beam carries H / 2 in compression: the two tops differ by its shortening H Lb / (2 E A_b); their mean sways.
@@ -228,7 +230,7 @@ TEST(SpaceFrameDynamics, BendingAndTorsionalFrequenciesConvergeAtTheirOrders) {
 
 TEST(SpaceFrameDynamics, NewmarkConservesEnergyInFreeVibration) {
   const Section s = Section::pipe(0.4, 0.015);
-  SpaceFrameModel m = line(Vec3::Zero(), Vec3(0, 4, 0), 8, s);
+  SpaceFrameModel m = line(Vec3::Zero(), Vec3(0, 4, 0), 8, s, Vec3::UnitX());
   m.integrator = FrameIntegrator::newmark;
   m.supports.push_back(SpaceSupportDef::fixed_support(0));
   SpaceFrame f(m);
@@ -272,6 +274,7 @@ TEST(SpaceFrameStatic, ReproducesThePlaneFrameInItsPlane) {
     p.elements.push_back(e);
     SpaceElementDef g;
     g.i = k, g.j = k + 1, g.section = s, g.s0 = e.s0, g.s1 = e.s1, g.E = E, g.nu = nu, g.rho = rho;
+    g.orientation = Vec3::UnitZ().cross(q.nodes[k + 1] - q.nodes[k]);  // the plane frame's e2
     q.elements.push_back(g);
   }
   p.theory = q.theory = BeamTheory::timoshenko;
