@@ -231,3 +231,21 @@ TEST(RunCli, PresetBuildErrorsPointToTheExpansion) {
   EXPECT_EQ(x["with_buffer"]["analysis"]["end_time"], 1e12);  // the expansion, readable at the error's path
   fs::remove_all(out);
 }
+
+// A 3D run with a space frame writes its histories, and the design checks (plane members only for now) refuse its
+// results with that reason and exit 2, rather than calling the file incomplete or checking nothing silently.
+TEST(RunCli, SpaceFrameResultsAreRefusedByTheChecksWithTheReason) {
+  const fs::path out = fresh_dir("space_frame");
+  fs::create_directories(out);
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(fs::path(DMI_SOURCE_DIR) / "examples" / "sdof_sphere_on_column_3d.json"));
+  j["grid"]["cell_size"] = 0.15;
+  j["analysis"]["end_time"] = 0.002;
+  std::ofstream(out / "s.json") << j.dump();
+  const Cli sim = run_cli("simulate " + (out / "s.json").string() + " -o " + (out / "r").string() + " -q");
+  ASSERT_EQ(sim.status, 0) << sim.err;
+  const Cli chk = run_cli("check " + (out / "r").string() + " -q");
+  EXPECT_EQ(chk.status, 2);
+  EXPECT_NE(chk.err.find("a space frame (3D structure)"), std::string::npos) << chk.err;
+  EXPECT_NE(chk.err.find("plane members only"), std::string::npos) << chk.err;
+  fs::remove_all(out);
+}
