@@ -1,6 +1,7 @@
 #include "engine/structure/assembled_system.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <cmath>
 #include <stdexcept>
 
 namespace dmi {
@@ -126,6 +127,15 @@ Eigen::VectorXd AssembledSystem::eigenvalues() const {
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(Kf, Mf, Eigen::EigenvaluesOnly);
   if (es.info() != Eigen::Success) throw std::runtime_error("Frame: generalised eigen solve failed");
   return es.eigenvalues();
+}
+
+std::vector<double> AssembledSystem::natural_frequencies(int n) const {
+  const Eigen::VectorXd w2 = eigenvalues();
+  if (n < 1 || n > w2.size())
+    fail("natural_frequencies(" + std::to_string(n) + "): the frame has " + std::to_string(w2.size()) + " free DOFs");
+  std::vector<double> w(n);
+  for (int k = 0; k < n; ++k) w[k] = std::sqrt(w2(k));
+  return w;
 }
 
 }  // namespace dmi

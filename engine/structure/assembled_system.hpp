@@ -10,6 +10,7 @@
 #pragma once
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -57,12 +58,39 @@ class AssembledSystem {
 
   // Generalised eigenvalues omega^2 of (K0, M) on the free DOFs, ascending (dense: small frames only).
   Eigen::VectorXd eigenvalues() const;
+  // The n lowest natural circular frequencies (rad/s), ascending; n outside [1, free DOFs] is refused.
+  std::vector<double> natural_frequencies(int n) const;
   // omega_max^2: exact up to kDenseEigenMax free DOFs, else the element (Irons) bound plus springs.
   double max_eigenvalue() const;
   static constexpr int kDenseEigenMax = 600;
 
  protected:
   explicit AssembledSystem(int node_dofs) : node_dofs_(node_dofs) {}
+  // After the elements' triplets: the supports (restrained DOFs, springs to ground on the free ones, also into K0),
+  // the nodal masses (mass on the first `translations` DOFs of a node, rotary inertia on the rest), K0_ and M_, and
+  // the springs' share of the element bound: lambda_max(K + S, M) <= lambda_max(K, M) + max s_i / M_ii (S diagonal).
+  template <class Support, class NodalMass>
+  void assemble_supports_and_masses(int ndof, int translations, const std::vector<Support>& supports, const std::vector<NodalMass>& masses,
+                                    Triplets& tk, Triplets& tm) {
+    const int nd = node_dofs_;
+    free_ = Eigen::VectorXd::Ones(ndof);
+    springs_ = Eigen::VectorXd::Zero(ndof);
+    for (const Support& s : supports)
+      for (int c = 0; c < nd; ++c) {
+        if (s.fixed[c]) free_(nd * s.node + c) = 0;
+        else springs_(nd * s.node + c) += s.spring[c];
+      }
+    for (int i = 0; i < ndof; ++i)
+      if (springs_(i) > 0) tk.emplace_back(i, i, springs_(i));
+    for (const NodalMass& m : masses)
+      for (int c = 0; c < nd; ++c) tm.emplace_back(nd * m.node + c, nd * m.node + c, c < translations ? m.mass : m.rotary_inertia);
+    K0_ = from_triplets(ndof, tk);
+    M_ = from_triplets(ndof, tm);
+    double spring_bound = 0;
+    for (int i = 0; i < ndof; ++i)
+      if (springs_(i) > 0) spring_bound = std::max(spring_bound, springs_(i) / M_.coeff(i, i));
+    element_bound_ += spring_bound;
+  }
   // After a derived class has filled M_, K0_, free_, springs_ and element_bound_: refuses a mechanism (naming the
   // DOF) and prepares the mass solve.
   void finish(bool lumped, double rayleigh_mass, double rayleigh_stiffness);

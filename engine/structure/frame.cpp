@@ -77,14 +77,8 @@ void Frame::clear_loads() {
 void Frame::add_point_mass(int e, double xi, const Eigen::Matrix2d& m) {
   impl_->check_element(e, xi);
   if (!m.allFinite()) throw std::invalid_argument("Frame: non-finite attached mass on element " + std::to_string(e));
-  const FrameElementDef& el = model().elements[e];
-  for (int k = 0; k < 2; ++k) {
-    const int n = k == 0 ? el.i : el.j;
-    const double w = k == 0 ? 1 - xi : xi;
-    for (int a = 0; a < 2; ++a)
-      for (int b = 0; b < 2; ++b)
-        if (w * m(a, b) != 0) impl_->dyn.added.emplace_back(3 * n + a, 3 * n + b, w * m(a, b));
-  }
+  const auto& el = model().elements[e];
+  impl_->dyn.add_point_mass(3, el.i, el.j, xi, m);
 }
 
 void Frame::add_nodal_load(int node, const Vec3& f) {
@@ -134,15 +128,7 @@ void Frame::solve_static(int increments) {
   m.f_current = false;
 }
 
-std::vector<double> Frame::natural_frequencies(int n) const {
-  const Eigen::VectorXd w2 = impl_->sys.eigenvalues();
-  if (n < 1 || n > w2.size())
-    throw std::invalid_argument("Frame: natural_frequencies(" + std::to_string(n) + "): the frame has " +
-                                std::to_string(w2.size()) + " free DOFs");
-  std::vector<double> w(n);
-  for (int k = 0; k < n; ++k) w[k] = std::sqrt(w2(k));
-  return w;
-}
+std::vector<double> Frame::natural_frequencies(int n) const { return impl_->sys.natural_frequencies(n); }
 
 ElementCurve Frame::curve(int e) const {
   impl_->check_element(e, 0);

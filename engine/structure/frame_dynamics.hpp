@@ -23,6 +23,17 @@ struct FrameDynamics {
   Eigen::VectorXd residual(const AssembledSystem& sys, const Eigen::VectorXd& f) const;
   void clear_loads() { nodal.setZero(), added.clear(); }
   double kinetic_energy(const AssembledSystem& sys) const { return 0.5 * state.v.dot(sys.mass() * state.v); }
+  // Mass m (a translational block in global axes) attached for the next step at xi between nodes i and j, lumped to
+  // them with weights 1 - xi, xi (node_dofs DOFs per node, translations first).
+  template <class Matrix> void add_point_mass(int node_dofs, int i, int j, double xi, const Matrix& m) {
+    for (int k = 0; k < 2; ++k) {
+      const int n = k == 0 ? i : j;
+      const double w = k == 0 ? 1 - xi : xi;
+      for (int a = 0; a < m.rows(); ++a)
+        for (int b = 0; b < m.cols(); ++b)
+          if (w * m(a, b) != 0) added.emplace_back(node_dofs * n + a, node_dofs * n + b, w * m(a, b));
+    }
+  }
 
   // Force and moment a support exerts on the frame, given the residual r of the total loads: a restrained DOF takes
   // r = f_int + M a + C v - f_ext (the rows of the full matrices couple the free DOFs), a spring on a free DOF

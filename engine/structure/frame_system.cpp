@@ -49,26 +49,7 @@ void FrameSystem::assemble() {
     Eigen::GeneralizedSelfAdjointEigenSolver<Mat6> es(Ke, Me, Eigen::EigenvaluesOnly);
     element_bound_ = std::max(element_bound_, es.eigenvalues().maxCoeff());
   }
-  free_ = Eigen::VectorXd::Ones(n);
-  springs_ = Eigen::VectorXd::Zero(n);
-  for (const FrameSupportDef& s : model_.supports)
-    for (int c = 0; c < 3; ++c) {
-      if (s.fixed[c]) free_(3 * s.node + c) = 0;
-      else springs_(3 * s.node + c) += s.spring[c];
-    }
-  for (int i = 0; i < n; ++i)
-    if (springs_(i) > 0) tk.emplace_back(i, i, springs_(i));
-  for (const FrameMassDef& m : model_.masses) {
-    tm.emplace_back(3 * m.node, 3 * m.node, m.mass);
-    tm.emplace_back(3 * m.node + 1, 3 * m.node + 1, m.mass);
-    tm.emplace_back(3 * m.node + 2, 3 * m.node + 2, m.rotary_inertia);
-  }
-  K0_ = from_triplets(n, tk);
-  M_ = from_triplets(n, tm);
-  double spring_bound = 0;  // lambda_max(K + S, M) <= lambda_max(K, M) + max s_i / M_ii (S diagonal)
-  for (int i = 0; i < n; ++i)
-    if (springs_(i) > 0) spring_bound = std::max(spring_bound, springs_(i) / M_.coeff(i, i));
-  element_bound_ += spring_bound;
+  assemble_supports_and_masses(n, 2, model_.supports, model_.masses, tk, tm);
 }
 
 Vec6 FrameSystem::element_dofs(int e, const Eigen::VectorXd& d) const {

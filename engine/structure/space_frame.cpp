@@ -128,14 +128,8 @@ void SpaceFrame::add_point_load(int e, double xi, const Vec3& F, const Vec3& m) 
 void SpaceFrame::add_point_mass(int e, double xi, const Eigen::Matrix3d& m) {
   impl_->check_element(e, xi);
   if (!m.allFinite()) throw std::invalid_argument("SpaceFrame: non-finite attached mass on element " + std::to_string(e));
-  const SpaceElementDef& el = model().elements[e];
-  for (int k = 0; k < 2; ++k) {
-    const int n = k == 0 ? el.i : el.j;
-    const double w = k == 0 ? 1 - xi : xi;
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b)
-        if (w * m(a, b) != 0) impl_->dyn.added.emplace_back(6 * n + a, 6 * n + b, w * m(a, b));
-  }
+  const auto& el = model().elements[e];
+  impl_->dyn.add_point_mass(6, el.i, el.j, xi, m);
 }
 
 void SpaceFrame::add_distributed_load(int e, const Vec3& w_local) {
@@ -161,32 +155,15 @@ void SpaceFrame::solve_static(int increments) {
   m.f_current = false;
 }
 
-std::vector<double> SpaceFrame::natural_frequencies(int n) const {
-  const Eigen::VectorXd w2 = impl_->sys.eigenvalues();
-  if (n < 1 || n > w2.size())
-    throw std::invalid_argument("SpaceFrame: natural_frequencies(" + std::to_string(n) + "): the frame has " + std::to_string(w2.size()) + " free DOFs");
-  std::vector<double> w(n);
-  for (int k = 0; k < n; ++k) w[k] = std::sqrt(w2(k));
-  return w;
-}
+std::vector<double> SpaceFrame::natural_frequencies(int n) const { return impl_->sys.natural_frequencies(n); }
 
-// Linear: the small-displacement interpolation of the end values in the initial axes. Corotational: the chord
-// (its current length, stretched uniformly) plus the Hermite deflections of the basic end rotations in the element
-// frame, so any rigid rotation is exact.
+// The deformed centre-line (curve: linear, the small-displacement interpolation of the end values in the initial
+// axes; corotational, the chord plus the Hermite deflections of the basic end rotations, so a rigid rotation is exact)
+// less the initial position.
 Vec3 SpaceFrame::displacement_at(int e, double xi) const {
   impl_->check_element(e, xi);
-  Eigen::Matrix3d R;
-  double L = 0;
-  const Eigen::VectorXd& d = impl_->dyn.state.d;
-  const Vec12 ul = impl_->local_dofs(e, d, R, L);
-  if (impl_->sys.linear()) return R.transpose() * Impl::interpolate(ul, xi, L);
-  const SpaceChordState s = impl_->sys.element_state(e, d);
-  const BeamShape sh = beam_shape(xi, s.L);
-  const double w2 = sh.hermite[1] * s.v(1) + sh.hermite[3] * s.v(2), w3 = sh.hermite[1] * s.v(3) + sh.hermite[3] * s.v(4);
   const SpaceElementDef& el = model().elements[e];
-  const Vec3 xi_node = model().nodes[el.i] + d.segment<3>(6 * el.i);
-  const Vec3 X = model().nodes[el.i] + xi * (model().nodes[el.j] - model().nodes[el.i]);
-  return xi_node + s.R.transpose() * Vec3(xi * s.L, w2, w3) - X;
+  return curve(e).point(xi) - (model().nodes[el.i] + xi * (model().nodes[el.j] - model().nodes[el.i]));
 }
 
 Vec3 SpaceFrame::velocity_at(int e, double xi) const {

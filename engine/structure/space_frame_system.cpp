@@ -54,23 +54,7 @@ void SpaceFrameSystem::assemble() {
     Eigen::GeneralizedSelfAdjointEigenSolver<Mat12> es(Ke, Me, Eigen::EigenvaluesOnly);
     element_bound_ = std::max(element_bound_, es.eigenvalues().maxCoeff());
   }
-  free_ = Eigen::VectorXd::Ones(n);
-  springs_ = Eigen::VectorXd::Zero(n);
-  for (const SpaceSupportDef& s : model_.supports)
-    for (int c = 0; c < 6; ++c) {
-      if (s.fixed[c]) free_(6 * s.node + c) = 0;
-      else springs_(6 * s.node + c) += s.spring[c];
-    }
-  for (int i = 0; i < n; ++i)
-    if (springs_(i) > 0) tk.emplace_back(i, i, springs_(i));
-  for (const SpaceMassDef& m : model_.masses)
-    for (int c = 0; c < 6; ++c) tm.emplace_back(6 * m.node + c, 6 * m.node + c, c < 3 ? m.mass : m.rotary_inertia);
-  K0_ = from_triplets(n, tk);
-  M_ = from_triplets(n, tm);
-  double spring_bound = 0;
-  for (int i = 0; i < n; ++i)
-    if (springs_(i) > 0) spring_bound = std::max(spring_bound, springs_(i) / M_.coeff(i, i));
-  element_bound_ += spring_bound;
+  assemble_supports_and_masses(n, 3, model_.supports, model_.masses, tk, tm);
 }
 
 Vec12 SpaceFrameSystem::element_dofs(int e, const Eigen::VectorXd& d) const {
