@@ -35,7 +35,8 @@ std::string where_when(const json& c) {
   std::ostringstream o;
   if (c["s_m"].is_number()) o << "s = " << eng(c["s_m"].get<double>(), "") << " m";
   else if (c["member"].get<std::string>().empty() || c["member"].get<std::string>().rfind("solid", 0) == 0)
-    o << "(" << eng(c["location_m"][0].get<double>(), "") << ", " << eng(c["location_m"][1].get<double>(), "") << ") m";
+    o << "(" << eng(c["location_m"][0].get<double>(), "") << ", " << eng(c["location_m"][1].get<double>(), "")
+      << (c["location_m"].size() > 2 ? ", " + eng(c["location_m"][2].get<double>(), "") : std::string()) << ") m";
   if (c["time_s"].is_number()) o << ", t = " << eng(c["time_s"].get<double>(), "s");
   return o.str();
 }
@@ -46,8 +47,12 @@ void run_summary(std::ostringstream& o, const json& r) {
     << "  (" << r["scenario_name"].get<std::string>() << ")\n";
   if (!r["base_total"].is_null()) {
     const json& b = r["base_total"];
-    o << "  base: |Fx| " << eng(b["Fx_N"]["abs_max"]["value"], "N") << ", |M| " << eng(b["M_Nm"]["abs_max"]["value"], "N m") << ", Fy "
-      << eng(b["Fy_N"]["min"]["value"], "N") << " .. " << eng(b["Fy_N"]["max"]["value"], "N") << "\n";
+    if (r.value("dimension", 2) == 3)  // z up: the horizontal shear and overturning moment, and the vertical force
+      o << "  base: |H| " << eng(b["H_N"]["abs_max"]["value"], "N") << ", |M_overturning| " << eng(b["M_overturning_Nm"]["abs_max"]["value"], "N m")
+        << ", Fz " << eng(b["Fz_N"]["min"]["value"], "N") << " .. " << eng(b["Fz_N"]["max"]["value"], "N") << "\n";
+    else
+      o << "  base: |Fx| " << eng(b["Fx_N"]["abs_max"]["value"], "N") << ", |M| " << eng(b["M_Nm"]["abs_max"]["value"], "N m") << ", Fy "
+        << eng(b["Fy_N"]["min"]["value"], "N") << " .. " << eng(b["Fy_N"]["max"]["value"], "N") << "\n";
   }
   if (!r["contact"].is_null() && r["contact"]["peak_force_N"].get<double>() > 0) {
     const json& c = r["contact"];

@@ -11,7 +11,7 @@ nlohmann::json Check::to_json() const {
                    {"unit", unit}, {"utilisation", utilisation}, {"passed", passed}, {"formula", formula}, {"source", source}};
   j["position"] = position >= 0 ? nlohmann::json(position) : nlohmann::json(nullptr);
   j["s_m"] = s_m >= 0 ? nlohmann::json(s_m) : nlohmann::json(nullptr);
-  j["location_m"] = {x_m, y_m};
+  j["location_m"] = space ? nlohmann::json{x_m, y_m, z_m} : nlohmann::json{x_m, y_m};
   j["time_s"] = time_s >= 0 ? nlohmann::json(time_s) : nlohmann::json(nullptr);
   return j;
 }
@@ -56,6 +56,15 @@ double chs_interaction(double N, double M, double D, double t, double fy_Pa, dou
   const double f = fy_Pa / gamma_M0;
   const double W = chs_class(D, t, fy_Pa) <= 2 ? chs_plastic_modulus(D, t) : chs_elastic_modulus(D, t);
   return std::abs(N) / (chs_area(D, t) * f) + std::abs(M) / (W * f);
+}
+
+double chs_torsion_resistance(double D, double t, double fy_Pa, double gamma_M0) {
+  return 2 * chs_elastic_modulus(D, t) * fy_Pa / std::sqrt(3.0) / gamma_M0;
+}
+
+double chs_shear_resistance_with_torsion(double T, double D, double t, double fy_Pa, double gamma_M0) {
+  const double tau_t = std::abs(T) / (2 * chs_elastic_modulus(D, t)), tau_rd = fy_Pa / std::sqrt(3.0) / gamma_M0;
+  return std::max(0.0, 1 - tau_t / tau_rd) * chs_shear_resistance(D, t, fy_Pa, gamma_M0);
 }
 
 }  // namespace dmi::design

@@ -19,7 +19,8 @@ struct Check {
   bool passed = true;
   double position = -1;  // fraction of the member length from its start (-1: not on a member)
   double s_m = -1;       // distance from the member start (m)
-  double x_m = 0, y_m = 0;  // global location (m)
+  double x_m = 0, y_m = 0, z_m = 0;  // global location (m)
+  bool space = false;       // a 3D location: location_m has z
   double time_s = -1;    // instant of the governing demand (-1: not time-dependent)
   std::string formula, source;
   void finish() { utilisation = capacity > 0 ? demand / capacity : (demand > 0 ? 1e300 : 0.0); passed = utilisation <= 1.0; }
@@ -51,5 +52,11 @@ double chs_shear_resistance(double D, double t, double fy_Pa, double gamma_M0);
 // Linear interaction N_Ed / N_Rd + M_Ed / M_Rd (EN 1993-1-1 6.2.1(7) eq. 6.2), N_Rd = A f_y / gamma_M0,
 // M_Rd = W f_y / gamma_M0 with W = W_pl for class 1-2, W_el for class 3 (6.2.5(2) eqs. 6.13-6.14).
 double chs_interaction(double N, double M, double D, double t, double fy_Pa, double gamma_M0);
+// Torsion of a CHS, EN 1993-1-1 6.2.7(1) eq. 6.23 with the elastic St Venant resistance T_Rd = W_t f_y / (sqrt 3 gamma_M0),
+// W_t = J / (D/2) = 2 I / (D/2): returns T_Rd (N m).
+double chs_torsion_resistance(double D, double t, double fy_Pa, double gamma_M0);
+// Shear resistance of a structural hollow section under torsion, EN 1993-1-1 6.2.7(9) eq. 6.28:
+// V_pl,T,Rd = [1 - tau_t,Ed / (f_y / (sqrt 3 gamma_M0))] V_pl,Rd, tau_t,Ed = |T| / W_t (not below 0), N.
+double chs_shear_resistance_with_torsion(double T, double D, double t, double fy_Pa, double gamma_M0);
 
 }  // namespace dmi::design

@@ -21,6 +21,8 @@ namespace {
 
 json extreme(const Extreme& e) { return e.set ? json{{"value", e.value}, {"time_s", e.time}} : json(nullptr); }
 
+json location(const Station& s, int dim) { return dim == 3 ? json{s.x, s.y, s.z} : json{s.x, s.y}; }
+
 // The member-wide peak of one station quantity: the station and instant where it is largest (or smallest).
 json member_peak(const MemberEnvelope& m, Extreme Station::*q, bool smallest, const char* unit) {
   const Station* best = nullptr;
@@ -31,17 +33,25 @@ json member_peak(const MemberEnvelope& m, Extreme Station::*q, bool smallest, co
   }
   if (!best) return nullptr;
   return json{{"value", (best->*q).value}, {"unit", unit}, {"time_s", (best->*q).time}, {"position", best->position}, {"s_m", best->s_m},
-              {"location_m", {best->x, best->y}}};
+              {"location_m", location(*best, m.dim)}};
 }
 
 json member_json(const MemberEnvelope& m) {
+  const bool space = m.dim == 3;
   json stations = json::array();
-  for (const auto& s : m.stations)
-    stations.push_back({{"position", s.position}, {"s_m", s.s_m}, {"location_m", {s.x, s.y}}, {"depth_m", s.depth},
-                        {"N_max_N", extreme(s.N_max)}, {"N_min_N", extreme(s.N_min)}, {"V_abs_max_N", extreme(s.V_abs)},
-                        {"M_max_Nm", extreme(s.M_max)}, {"M_min_Nm", extreme(s.M_min)},
-                        {"sigma_tension_max_Pa", extreme(s.sigma_tension)}, {"sigma_compression_min_Pa", extreme(s.sigma_compression)},
-                        {"tau_max_Pa", extreme(s.tau)}, {"von_mises_max_Pa", extreme(s.von_mises)}});
+  for (const auto& s : m.stations) {
+    json j{{"position", s.position}, {"s_m", s.s_m}, {"location_m", location(s, m.dim)}, {"depth_m", s.depth},
+           {"N_max_N", extreme(s.N_max)}, {"N_min_N", extreme(s.N_min)}, {"V_abs_max_N", extreme(s.V_abs)},
+           {"M_max_Nm", extreme(s.M_max)}, {"M_min_Nm", extreme(s.M_min)},
+           {"sigma_tension_max_Pa", extreme(s.sigma_tension)}, {"sigma_compression_min_Pa", extreme(s.sigma_compression)},
+           {"tau_max_Pa", extreme(s.tau)}, {"von_mises_max_Pa", extreme(s.von_mises)}};
+    if (space) {  // V and M above are the resultants |(Vy, Vz)|, |(My, Mz)|
+      j["Vy_abs_max_N"] = extreme(s.Vy_abs), j["Vz_abs_max_N"] = extreme(s.Vz_abs), j["T_abs_max_Nm"] = extreme(s.T_abs);
+      j["My_max_Nm"] = extreme(s.My_max), j["My_min_Nm"] = extreme(s.My_min), j["Mz_max_Nm"] = extreme(s.Mz_max), j["Mz_min_Nm"] = extreme(s.Mz_min);
+      j["principal_max_Pa"] = extreme(s.principal);
+    }
+    stations.push_back(j);
+  }
   json peaks{{"N_max", member_peak(m, &Station::N_max, false, "N")},
              {"N_min", member_peak(m, &Station::N_min, true, "N")},
              {"V_abs_max", member_peak(m, &Station::V_abs, false, "N")},
@@ -51,20 +61,28 @@ json member_json(const MemberEnvelope& m) {
              {"sigma_compression_min", member_peak(m, &Station::sigma_compression, true, "Pa")},
              {"tau_max", member_peak(m, &Station::tau, false, "Pa")},
              {"von_mises_max", member_peak(m, &Station::von_mises, false, "Pa")}};
-  return json{{"name", m.name}, {"material", m.cls}, {"length_m", m.length}, {"peaks", peaks}, {"stations", stations}};
+  if (space) {
+    peaks["T_abs_max"] = member_peak(m, &Station::T_abs, false, "N m");
+    peaks["principal_max"] = member_peak(m, &Station::principal, false, "Pa");
+  }
+  json out{{"name", m.name}, {"material", m.cls}, {"length_m", m.length}, {"peaks", peaks}, {"stations", stations}};
+  if (space) out["resultants"] = "V = |(Vy, Vz)|, M = |(My, Mz)| (M_min not defined); local axes of the section (docs/design-checks.md)";
+  return out;
 }
 
 json reaction_json(const ReactionPeaks& p) {
-  return json{{"name", p.name},
-              {"Fx_N", {{"max", extreme(p.Fx_max)}, {"min", extreme(p.Fx_min)}, {"abs_max", extreme(p.Fx_abs)}, {"final", p.final[0]}}},
-              {"Fy_N", {{"max", extreme(p.Fy_max)}, {"min", extreme(p.Fy_min)}, {"abs_max", extreme(p.Fy_abs)}, {"final", p.final[1]}}},
-              {"M_Nm", {{"max", extreme(p.M_max)}, {"min", extreme(p.M_min)}, {"abs_max", extreme(p.M_abs)}, {"final", p.final[2]}}}};
+  json j{{"name", p.name}};
+  for (const auto& c : p.components)
+    j[c.key] = {{"max", extreme(c.max)}, {"min", extreme(c.min)}, {"abs_max", extreme(c.abs)}, {"final", c.final}};
+  return j;
 }
 
 json contact_json(const Contact& c) {
   if (!c.present) return nullptr;
+  double m2 = 0;
+  for (double v : c.impulse_N_s) m2 += v * v;
   return json{{"peak_force_N", c.peak_N}, {"peak_time_s", c.peak_time_s >= 0 ? json(c.peak_time_s) : json(nullptr)},
-              {"impulse_N_s", {c.impulse_N_s[0], c.impulse_N_s[1]}}, {"impulse_magnitude_N_s", std::hypot(c.impulse_N_s[0], c.impulse_N_s[1])},
+              {"impulse_N_s", c.impulse_N_s}, {"impulse_magnitude_N_s", std::sqrt(m2)},
               {"pulse", {{"start_s", c.pulse_start_s}, {"end_s", c.pulse_end_s}, {"duration_s", c.pulse_end_s - c.pulse_start_s},
                          {"impulse_N_s", c.pulse_impulse_N_s}}},
               {"loaded_time_s", c.loaded_time_s}, {"threshold", "5 % of the peak"}};
@@ -115,6 +133,12 @@ json solid_part(const json& doc, const Limits& L, std::vector<Check>& checks, co
   return json{{"model", doc.value("model", json::object())}, {"cases", cases}};
 }
 
+double norm(const json& v) {
+  double s = 0;
+  for (const auto& c : v) s += c.get<double>() * c.get<double>();
+  return std::sqrt(s);
+}
+
 // Punching around the contact patch (ACI 318-19 Table 14.5.5.1(b)), concrete members only. Demand: the total contact
 // force of /documents/peak_contact (the step of the largest contact force), at the force-weighted position of its loads
 // on the most loaded member, where the member depth is taken.
@@ -123,7 +147,7 @@ void punching(const json& pc, const std::vector<MemberEnvelope>& members, const 
   try {
     std::map<std::string, std::pair<double, double>> on;  // member -> (sum |F|, sum |F| position)
     for (const auto& l : pc.at("loads")) {
-      const double f = std::hypot(l.at("force").at(0).get<double>(), l.at("force").at(1).get<double>());
+      const double f = norm(l.at("force"));
       auto& s = on[l.at("member").get<std::string>()];
       s.first += f, s.second += f * std::clamp(l.at("position").get<double>(), 0.0, 1.0);
     }
@@ -139,11 +163,12 @@ void punching(const json& pc, const std::vector<MemberEnvelope>& members, const 
     const double h = st[k].depth + w * (st[k + 1].depth - st[k].depth);
     Check p;
     p.id = "concrete_punching", p.title = "punching shear at the contact patch", p.member = m->name, p.material = "concrete", p.unit = "N";
-    p.demand = std::hypot(pc.at("total_force").at(0).get<double>(), pc.at("total_force").at(1).get<double>());
+    p.demand = norm(pc.at("total_force"));
     p.capacity = concrete_punching_capacity(L.concrete.compressive_strength, L.concrete.lambda, *L.concrete.punching_patch_width,
                                             *L.concrete.punching_patch_height, h, L.concrete.phi_shear);
     p.position = pos, p.s_m = pos * m->length, p.time_s = pc.at("time").get<double>();
-    p.x_m = st[k].x + w * (st[k + 1].x - st[k].x), p.y_m = st[k].y + w * (st[k + 1].y - st[k].y);
+    p.x_m = st[k].x + w * (st[k + 1].x - st[k].x), p.y_m = st[k].y + w * (st[k + 1].y - st[k].y), p.z_m = st[k].z + w * (st[k + 1].z - st[k].z);
+    p.space = m->dim == 3;
     p.formula = "F_contact <= phi_v min(0.11 (1 + 2/beta), 0.22) lambda sqrt(f'c) b_o h, b_o = 2 (c1 + h) + 2 (c2 + h)";
     p.source = "ACI 318-19 Table 14.5.5.1(b), 22.6.4.1";
     p.finish();
@@ -173,10 +198,6 @@ void require_documents(const Results& r, const std::string& where) {
   const json sc = json::parse(text, nullptr, false);
   if (sc.is_discarded() || !sc.is_object()) throw std::runtime_error(where + ": /scenario is not a JSON object; nothing to check");
   const json* members = sc.contains("structure") && sc["structure"].is_object() && sc["structure"].contains("members") ? &sc["structure"]["members"] : nullptr;
-  const bool space = sc.contains("analysis") && sc["analysis"].is_object() && sc["analysis"].value("dimension", 2) == 3;
-  if (members && members->is_array() && !members->empty() && space)
-    throw std::runtime_error(where + ": a space frame (3D structure): its histories are in results.h5 (frame/, supports/, docs/results.md), but "
-                             "the design checks, envelopes and report read plane members only for now; nothing is checked");
   if (members && members->is_array() && !members->empty() && !r.info.documents.count("structure"))
     throw std::runtime_error(where + ": /documents/structure is missing although the scenario has " + std::to_string(members->size()) +
                              " member(s): the file is incomplete or altered; nothing to check");
@@ -209,9 +230,10 @@ json design_run(const Results& r, const Limits& L, const std::string& where) {
     for (const auto& s : re.supports) run["supports"].push_back(reaction_json(s));
     if (!re.supports.empty()) {
       run["base_total"] = reaction_json(re.total);
-      run["base_total"]["about_m"] = {re.about[0], re.about[1]};
-      base_shear = re.total.Fx_abs.value;
+      run["base_total"]["about_m"] = f.dim == 3 ? json{re.about[0], re.about[1], re.about[2]} : json{re.about[0], re.about[1]};
+      base_shear = re.total.at(shear_key(f.dim)).abs.value;
     }
+    run["dimension"] = f.dim;
   }
   run["contact"] = contact_json(c);
   punching(parse_document(r, "peak_contact", where), members, L, checks, where);

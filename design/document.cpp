@@ -5,6 +5,7 @@
 #include <functional>
 
 #include "design/design.hpp"
+#include "design/loads.hpp"
 
 namespace dmi::design {
 
@@ -41,8 +42,10 @@ json compare_runs(const json& with, const json& without) {
     return std::isnan(a) ? b : std::isnan(b) ? a : std::max(a, b);
   };
   const std::vector<Q> qs = {
-      {"base_shear", "peak base shear |sum Fx|", "N", [](const json& r) { return num(r, {"base_total", "Fx_N", "abs_max", "value"}); }},
-      {"base_moment", "peak base moment |sum M|", "N m", [](const json& r) { return num(r, {"base_total", "M_Nm", "abs_max", "value"}); }},
+      {"base_shear", "peak base shear (plane |sum Fx|, space |(sum Fx, sum Fy)|)", "N", [](const json& r) {
+         return num(r, {"base_total", shear_key(r.value("dimension", 2)), "abs_max", "value"}); }},
+      {"base_moment", "peak base moment (plane |sum M|, space the overturning |(Mx, My)|)", "N m", [](const json& r) {
+         return num(r, {"base_total", moment_key(r.value("dimension", 2)), "abs_max", "value"}); }},
       {"contact_force", "peak contact force", "N", [](const json& r) { return num(r, {"contact", "peak_force_N"}); }},
       {"contact_impulse", "contact impulse", "N s", [](const json& r) { return num(r, {"contact", "impulse_magnitude_N_s"}); }},
       {"contact_duration", "contact pulse duration", "s", [](const json& r) { return num(r, {"contact", "pulse", "duration_s"}); }},

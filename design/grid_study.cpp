@@ -1,4 +1,5 @@
 #include "design/grid_study.hpp"
+#include "design/loads.hpp"
 
 #include "engine/convergence/grid_convergence.hpp"
 
@@ -68,8 +69,11 @@ json grid_study_section(const std::array<json, 3>& designs, const std::array<dou
       qs.push_back(quantity(variant, id, title, unit, h, f));
     };
     add("contact_force", "peak contact force", "N", "/contact/peak_force_N");
-    add("base_shear", "peak base shear |sum Fx|", "N", "/base_total/Fx_N/abs_max/value");
-    add("base_moment", "peak base moment |sum M|", "N m", "/base_total/M_Nm/abs_max/value");
+    const int dim = run.value("dimension", 2);
+    add("base_shear", dim == 3 ? "peak base shear |(sum Fx, sum Fy)|" : "peak base shear |sum Fx|", "N",
+        (std::string("/base_total/") + shear_key(dim) + "/abs_max/value").c_str());
+    add("base_moment", dim == 3 ? "peak overturning moment |(sum Mx, sum My)|" : "peak base moment |sum M|", "N m",
+        (std::string("/base_total/") + moment_key(dim) + "/abs_max/value").c_str());
     if (run.contains("verdict") && run["verdict"]["governing"].is_object()) {
       const json& gov = run["verdict"]["governing"];
       const std::string id = gov["id"], member = gov["member"];

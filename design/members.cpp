@@ -43,11 +43,17 @@ FrameInfo parse_structure(const std::string& doc, const std::string& where, cons
   FrameInfo f;
   try {
     const json j = json::parse(doc);
-    for (const auto& n : j.at("nodes_m")) f.nodes.push_back({n.at(0).get<double>(), n.at(1).get<double>()});
+    f.dim = j.value("dimension", 2);
+    if (f.dim != 2 && f.dim != 3) throw std::out_of_range("dimension " + std::to_string(f.dim) + " (2 or 3)");
+    for (const auto& n : j.at("nodes_m")) {
+      if (n.size() != std::size_t(f.dim)) throw std::out_of_range("a node with " + std::to_string(n.size()) + " coordinates");
+      f.nodes.push_back({n.at(0).get<double>(), n.at(1).get<double>(), f.dim == 3 ? n.at(2).get<double>() : 0.0});
+    }
     for (const auto& e : j.at("elements")) {
       FrameInfo::Element el;
       el.member = e.at("member"), el.i = e.at("i"), el.j = e.at("j"), el.s0 = e.at("s0"), el.s1 = e.at("s1"), el.E = e.at("youngs_modulus_Pa");
       el.section = section_of(e.at("section"));
+      if (f.dim == 3) el.e2 = {e.at("e2").at(0).get<double>(), e.at("e2").at(1).get<double>(), e.at("e2").at(2).get<double>()};
       if (el.i < 0 || el.j < 0 || el.i >= int(f.nodes.size()) || el.j >= int(f.nodes.size())) throw std::out_of_range("element node index");
       f.elements.push_back(el);
     }
@@ -57,7 +63,7 @@ FrameInfo parse_structure(const std::string& doc, const std::string& where, cons
       if (mb.first < 0 || mb.count < 1 || mb.first + mb.count > int(f.elements.size())) throw std::out_of_range("member element range");
       const auto& a = f.nodes[f.elements[mb.first].i];
       const auto& b = f.nodes[f.elements[mb.first + mb.count - 1].j];
-      mb.length = std::hypot(b[0] - a[0], b[1] - a[1]);
+      mb.length = std::sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) + (b[2] - a[2]) * (b[2] - a[2]));
       const auto& e0 = f.elements[mb.first];
       mb.cls = classify(mb.name, mb.material, e0.section, e0.E, L);
       f.members.push_back(mb);
@@ -79,6 +85,31 @@ FrameInfo parse_structure(const std::string& doc, const std::string& where, cons
   return f;
 }
 
+std::vector<Demand> space_demands(const Section& sec, double s, const SpaceSectionForces& sf, bool steel, const Limits& L) {
+  const ConcreteLimits& C = L.concrete;
+  const SteelLimits& S = L.steel;
+  const SpaceFibreStresses fs = space_fibre_stresses(sec, s, sf);
+  const double V = std::hypot(sf.Vy, sf.Vz), M = std::hypot(sf.My, sf.Mz);
+  std::vector<Demand> out;
+  if (!steel) {
+    out.push_back({"concrete_flexural_tension", std::max(0.0, fs.sigma_max), C.tensile_capacity()});
+    out.push_back({"concrete_compression", std::max(0.0, -fs.sigma_min), C.compressive_capacity()});
+    out.push_back({"concrete_principal_tension", std::max(0.0, fs.principal_max), C.tensile_capacity()});
+    if (C.shear_strength) out.push_back({"concrete_shear", fs.tau_max, C.phi_shear * *C.shear_strength});
+    else out.push_back({"concrete_shear", V, concrete_one_way_shear_capacity(C.compressive_strength, C.lambda, sec.width(s), sec.depth(s), C.phi_shear)});
+    return out;
+  }
+  out.push_back({"steel_elastic_stress", std::max(std::abs(fs.sigma_max), std::abs(fs.sigma_min)), S.design_strength()});
+  out.push_back({"steel_von_mises", fs.von_mises_max, S.design_strength()});
+  if (sec.kind() == SectionKind::pipe) {
+    const double D = sec.depth(s), t = sec.wall_thickness();
+    out.push_back({"steel_interaction", chs_interaction(sf.N, M, D, t, S.yield_strength, S.gamma_M0), 1.0});
+    out.push_back({"steel_shear", V, chs_shear_resistance_with_torsion(sf.T, D, t, S.yield_strength, S.gamma_M0)});
+    out.push_back({"steel_torsion", std::abs(sf.T), chs_torsion_resistance(D, t, S.yield_strength, S.gamma_M0)});
+  }
+  return out;
+}
+
 namespace {
 
 // Tracks the governing instance (largest utilisation) of each check of a member.
@@ -87,7 +118,7 @@ struct CheckTracker {
   std::vector<std::string> order;
   void consider(const Check& proto, double demand, double capacity, const Station& st, double t) {
     auto it = by_id.find(proto.id);
-    const double u = capacity > 0 ? demand / capacity : 0.0;
+    const double u = capacity > 0 ? demand / capacity : (demand > 0 ? 1e300 : 0.0);  // as Check::finish
     if (it == by_id.end()) {
       order.push_back(proto.id);
       it = by_id.emplace(proto.id, proto).first;
@@ -96,7 +127,7 @@ struct CheckTracker {
     Check& c = it->second;
     if (u <= c.utilisation) return;
     c.demand = demand, c.capacity = capacity, c.utilisation = u;
-    c.position = st.position, c.s_m = st.s_m, c.x_m = st.x, c.y_m = st.y, c.time_s = t;
+    c.position = st.position, c.s_m = st.s_m, c.x_m = st.x, c.y_m = st.y, c.z_m = st.z, c.time_s = t;
   }
   std::vector<Check> result() {
     std::vector<Check> v;
@@ -113,7 +144,78 @@ Check proto(const std::string& id, const std::string& title, const MemberEnvelop
             const std::string& source) {
   Check c;
   c.id = id, c.title = title, c.member = m.name, c.material = m.cls, c.unit = unit, c.formula = formula, c.source = source;
+  c.space = m.dim == 3;
   return c;
+}
+
+// Local buckling: the section class of a CHS from D/t (time-independent).
+Check section_class(const MemberEnvelope& env, double D, double t_w, const SteelLimits& S) {
+  Check c = proto("steel_section_class", "local buckling (class <= 3)", env, "-", "D/t <= 90 eps^2, eps^2 = 235/f_y[MPa]",
+                  "EN 1993-1-1 Table 5.2 (sheet 3)");
+  c.demand = D / t_w, c.capacity = chs_class3_limit(S.yield_strength);
+  c.title += ": class " + std::to_string(chs_class(D, t_w, S.yield_strength));
+  c.finish();
+  return c;
+}
+
+// A space member (docs/design-checks.md, "Space frames"): resultant shear and moment, torque, stresses around the
+// perimeter (space_fibre_stresses, the frame's own function) under biaxial bending, torsion and shear.
+void space_member(const Results& r, const Series& ef, const FrameInfo& f, const FrameInfo::Member& m, const Limits& L, MemberEnvelope& env) {
+  const bool steel = m.cls == "steel";
+  const bool pipe = f.elements[m.first].section.kind() == SectionKind::pipe;
+  const double D = f.elements[m.first].section.depth(0), t_w = f.elements[m.first].section.wall_thickness();
+  const SteelLimits& S = L.steel;
+  const Check tension = proto("concrete_flexural_tension", "flexural tension (biaxial)", env, "Pa",
+                              "sigma_t = N/A + |My| c_z/I_y + |Mz| c_y/I_z <= phi_f f_t (the most stressed corner)",
+                              "f_t: Lin, Cheng & Tuan, Table 1 or ACI 318-19 14.5.2.1 / 19.2.3.1 by tensile_rule; phi: ACI 318-19 21.2.1");
+  const Check compr = proto("concrete_compression", "compression (biaxial)", env, "Pa", "|sigma_c| = |N/A - |My| c_z/I_y - |Mz| c_y/I_z| <= phi_c alpha f'c",
+                            "elastic fibre stress limit alpha f'c (alpha 0.85, ACI 318-19 22.2.2.4.1); phi: ACI 318-19 21.2.1");
+  const Check principal = proto("concrete_principal_tension", "principal tension (bending, torsion, shear)", env, "Pa",
+                                "sigma_1 = sigma/2 + sqrt(sigma^2/4 + tau^2) around the perimeter <= phi_f f_t, tau = T/W_t + shear flow",
+                                "elastic principal stress (plain concrete has no torsion provision in ACI 318-19 ch. 14; the cracking torque of "
+                                "22.7.5 is this criterion); W_t: Timoshenko & Goodier 1970 sec. 109");
+  const Check shear_c = L.concrete.shear_strength ? proto("concrete_shear", "shear stress (with torsion)", env, "Pa", "tau = T/W_t + k V/A <= phi_v tau_lim", "user shear limit")
+                                         : proto("concrete_shear", "one-way shear (resultant)", env, "N", "|(Vy, Vz)| <= phi_v 0.11 lambda sqrt(f'c) b h",
+                                                 "ACI 318-19 Table 14.5.5.1(a), with the resultant of both shear forces");
+  const Check elastic = proto("steel_elastic_stress", "extreme-fibre stress (biaxial)", env, "Pa", "max |sigma| around the section <= f_y / gamma_M0",
+                              "EN 1993-1-1 6.2.1(5)");
+  const Check mises = proto("steel_von_mises", "von Mises stress (with torsion)", env, "Pa", "sqrt(sigma^2 + 3 tau^2) <= f_y / gamma_M0, tau = T/W_t + shear flow",
+                            "EN 1993-1-1 6.2.1(5) eq. 6.1");
+  const Check inter = proto("steel_interaction", "axial + bending resistance", env, "-",
+                            "|N|/N_Rd + |(My, Mz)|/M_Rd <= 1, M_Rd = W_pl (class 1-2) or W_el (3) f_y/gamma_M0 (a CHS bends about the resultant's axis)",
+                            "EN 1993-1-1 6.2.1(7) eq. 6.2, 6.2.5 eqs. 6.13-6.14");
+  const Check shear_s = proto("steel_shear", "shear resistance with torsion", env, "N",
+                              "|(Vy, Vz)| <= V_pl,T,Rd = [1 - tau_t,Ed / (f_y / (sqrt 3 gamma_M0))] A_v f_y / (sqrt 3 gamma_M0), A_v = 2A/pi",
+                              "EN 1993-1-1 6.2.6 eq. 6.18, 6.2.6(3)(g), 6.2.7(9) eq. 6.28");
+  const Check torsion = proto("steel_torsion", "torsional resistance", env, "N m", "|T| <= T_Rd = W_t f_y / (sqrt 3 gamma_M0), W_t = J / (D/2)",
+                              "EN 1993-1-1 6.2.7(1) eq. 6.23 (elastic St Venant resistance)");
+  const std::map<std::string, const Check*> protos{{tension.id, &tension}, {compr.id, &compr}, {principal.id, &principal}, {shear_c.id, &shear_c},
+                                                   {elastic.id, &elastic}, {mises.id, &mises}, {inter.id, &inter}, {shear_s.id, &shear_s},
+                                                   {torsion.id, &torsion}};
+  CheckTracker tracker;
+  const std::size_t nc = ef.components.size();
+  for (std::size_t k = 0; k < r.time.size(); ++k) {
+    const double t = r.time[k];
+    for (int e = 0; e < m.count; ++e) {
+      const auto& el = f.elements[m.first + e];
+      const double* row = &ef.data[k * nc + 12 * (m.first + e)];
+      for (int end = 0; end < 2; ++end) {
+        Station& st = env.stations[e + end];
+        const double* v = row + 6 * end;
+        const SpaceSectionForces sf{v[0], v[1], v[2], v[3], v[4], v[5]};
+        const double s = end == 0 ? el.s0 : el.s1, V = std::hypot(sf.Vy, sf.Vz), M = std::hypot(sf.My, sf.Mz);  // resultants
+        const SpaceFibreStresses fs = space_fibre_stresses(el.section, s, sf);
+        st.N_max.max(sf.N, t), st.N_min.min(sf.N, t), st.V_abs.max(V, t), st.M_max.max(M, t);
+        st.Vy_abs.max(std::abs(sf.Vy), t), st.Vz_abs.max(std::abs(sf.Vz), t), st.T_abs.max(std::abs(sf.T), t);
+        st.My_max.max(sf.My, t), st.My_min.min(sf.My, t), st.Mz_max.max(sf.Mz, t), st.Mz_min.min(sf.Mz, t);
+        st.sigma_tension.max(fs.sigma_max, t), st.sigma_compression.min(fs.sigma_min, t);
+        st.tau.max(fs.tau_max, t), st.von_mises.max(fs.von_mises_max, t), st.principal.max(fs.principal_max, t);
+        for (const Demand& d : space_demands(el.section, s, sf, steel, L)) tracker.consider(*protos.at(d.id), d.demand, d.capacity, st, t);
+      }
+    }
+  }
+  env.checks = tracker.result();
+  if (steel && pipe) env.checks.push_back(section_class(env, D, t_w, S));
 }
 
 }  // namespace
@@ -123,21 +225,27 @@ std::vector<MemberEnvelope> member_envelopes(const Results& r, const FrameInfo& 
   if (f.members.empty()) return out;
   const Series* ef = r.find("frame/end_forces");
   if (!ef) throw std::runtime_error(where + ": missing history frame/end_forces (needed for the member envelopes)");
-  if (ef->components.size() != 6 * f.elements.size())
-    throw std::runtime_error(where + ": frame/end_forces has " + std::to_string(ef->components.size()) + " columns, expected 6 x " +
-                             std::to_string(f.elements.size()) + " elements");
+  const std::size_t per = f.dim == 3 ? 12 : 6;  // N, V, M (plane) or N, Vy, Vz, T, My, Mz (space) at both ends
+  if (ef->components.size() != per * f.elements.size())
+    throw std::runtime_error(where + ": frame/end_forces has " + std::to_string(ef->components.size()) + " columns, expected " + std::to_string(per) +
+                             " x " + std::to_string(f.elements.size()) + " elements");
   const ConcreteLimits& C = L.concrete;
   const SteelLimits& S = L.steel;
   for (const auto& m : f.members) {
     MemberEnvelope env;
-    env.name = m.name, env.cls = m.cls, env.length = m.length;
+    env.dim = f.dim, env.name = m.name, env.cls = m.cls, env.length = m.length;
     for (int k = 0; k <= m.count; ++k) {
       const auto& el = f.elements[m.first + std::min(k, m.count - 1)];
       const auto& x = f.nodes[k < m.count ? el.i : el.j];
       Station st;
-      st.position = k < m.count ? el.s0 : el.s1, st.s_m = st.position * m.length, st.x = x[0], st.y = x[1];
+      st.position = k < m.count ? el.s0 : el.s1, st.s_m = st.position * m.length, st.x = x[0], st.y = x[1], st.z = x[2];
       st.depth = el.section.depth(k < m.count ? el.s0 : el.s1);
       env.stations.push_back(st);
+    }
+    if (f.dim == 3) {
+      space_member(r, *ef, f, m, L, env);
+      out.push_back(std::move(env));
+      continue;
     }
     const bool steel = m.cls == "steel";
     const bool pipe = f.elements[m.first].section.kind() == SectionKind::pipe;
@@ -193,14 +301,7 @@ std::vector<MemberEnvelope> member_envelopes(const Results& r, const FrameInfo& 
       }
     }
     env.checks = tracker.result();
-    if (steel && pipe) {  // local buckling: the section class from D/t (time-independent)
-      Check c = proto("steel_section_class", "local buckling (class <= 3)", env, "-", "D/t <= 90 eps^2, eps^2 = 235/f_y[MPa]",
-                      "EN 1993-1-1 Table 5.2 (sheet 3)");
-      c.demand = D / t_w, c.capacity = chs_class3_limit(S.yield_strength);
-      c.title += ": class " + std::to_string(chs_class(D, t_w, S.yield_strength));
-      c.finish();
-      env.checks.push_back(c);
-    }
+    if (steel && pipe) env.checks.push_back(section_class(env, D, t_w, S));
     out.push_back(std::move(env));
   }
   return out;

@@ -2,12 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <numbers>
 #include <stdexcept>
 
 #include <vtkActor.h>
 #include <vtkActor2D.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
+#include <vtkClipPolyData.h>
+#include <vtkPlane.h>
 #include <vtkColorTransferFunction.h>
 #include <vtkDoubleArray.h>
 #include <vtkLookupTable.h>
@@ -26,6 +30,13 @@
 #include "render/offscreen.hpp"
 
 namespace dmi::render {
+
+std::string ParticlePeak::where() const {
+  char b[96];
+  if (space) std::snprintf(b, sizeof b, "(%.2f, %.2f, %.2f) m", at[0], at[1], at[2]);
+  else std::snprintf(b, sizeof b, "(%.2f, %.2f) m", at[0], at[1]);
+  return b;
+}
 
 bool valid_quantity(const std::string& q) { return q == "von_mises" || q == "sigma_xx" || q == "sigma_yy" || q == "pressure"; }
 
@@ -65,20 +76,24 @@ vtkSmartPointer<vtkActor> actor_of(vtkPolyData* pd, vtkLookupTable* t = nullptr)
   return a;
 }
 
-vtkSmartPointer<vtkActor> particles_actor(const Snapshot& s, const std::vector<double>& field, vtkLookupTable* t, double point_px) {
+// Particles as points; with a slab (3D section) only those with |y - slab_y| <= slab_half.
+vtkSmartPointer<vtkActor> particles_actor(const Snapshot& s, const std::vector<double>& field, vtkLookupTable* t, double point_px,
+                                          std::optional<double> slab_y = {}, double slab_half = 0) {
   auto pts = make<vtkPoints>();
   auto verts = make<vtkCellArray>();
   auto val = make<vtkDoubleArray>();
   for (std::size_t p = 0; p < s.count; ++p) {
-    pts->InsertNextPoint(s.position[s.dim * p], s.position[s.dim * p + 1], 0.0);
+    if (slab_y && std::abs(s.position[s.dim * p + 1] - *slab_y) > slab_half) continue;
+    const vtkIdType id = pts->InsertNextPoint(s.position[s.dim * p], s.position[s.dim * p + 1], s.dim == 3 ? s.position[s.dim * p + 2] : 0.0);
     verts->InsertNextCell(1);
-    verts->InsertCellPoint(static_cast<vtkIdType>(p));
+    verts->InsertCellPoint(id);
     val->InsertNextValue(field[p] / 1e6);
   }
   auto pd = make<vtkPolyData>();
   pd->SetPoints(pts), pd->SetVerts(verts), pd->GetPointData()->SetScalars(val);
   auto a = actor_of(pd, t);
   a->GetProperty()->SetPointSize(static_cast<float>(point_px));
+  if (s.dim == 3) a->GetProperty()->RenderPointsAsSpheresOn();  // shaded splats: depth reads in an oblique view
   return a;
 }
 
@@ -108,12 +123,92 @@ vtkSmartPointer<vtkActor> members_actor(const FrameState& fs, vtkLookupTable* t)
   return a;
 }
 
-vtkSmartPointer<vtkActor> lines_actor(const std::vector<std::vector<std::array<double, 2>>>& lines, double r, double g, double b, float width) {
+// A space element's section axes: e1 along the chord a -> b, e2 the structure's depth axis made normal to it, e3 = e1 x e2.
+void section_axes(const std::array<double, 3>& a, const std::array<double, 3>& b, const std::array<double, 3>& e2_hint, double e1[3], double e2[3],
+                  double e3[3]) {
+  double n = 0;
+  for (int c = 0; c < 3; ++c) e1[c] = b[c] - a[c], n += e1[c] * e1[c];
+  for (int c = 0; c < 3; ++c) e1[c] /= std::sqrt(n);
+  const double d = e2_hint[0] * e1[0] + e2_hint[1] * e1[1] + e2_hint[2] * e1[2];
+  n = 0;
+  for (int c = 0; c < 3; ++c) e2[c] = e2_hint[c] - d * e1[c], n += e2[c] * e2[c];
+  for (int c = 0; c < 3; ++c) e2[c] /= std::sqrt(n);
+  e3[0] = e1[1] * e2[2] - e1[2] * e2[1], e3[1] = e1[2] * e2[0] - e1[0] * e2[2], e3[2] = e1[0] * e2[1] - e1[1] * e2[0];
+}
+
+// The corners of every space element's end sections in the initial geometry (a pipe's bounding square).
+std::vector<std::array<double, 3>> section_corners(const design::FrameInfo& f) {
+  std::vector<std::array<double, 3>> out;
+  for (const auto& el : f.elements) {
+    double e1[3], e2[3], e3[3];
+    section_axes(f.nodes[el.i], f.nodes[el.j], el.e2, e1, e2, e3);
+    for (int end = 0; end < 2; ++end) {
+      const double s = end ? el.s1 : el.s0, c = el.section.half_depth(s), w = 0.5 * el.section.width(s);
+      const auto& x = f.nodes[end ? el.j : el.i];
+      for (double y : {-c, c})
+        for (double z : {-w, w}) out.push_back({x[0] + y * e2[0] + z * e3[0], x[1] + y * e2[1] + z * e3[1], x[2] + y * e2[2] + z * e3[2]});
+    }
+  }
+  return out;
+}
+
+// Space members as prisms along their displaced chords: a rectangle's four corners or a pipe's 16-gon at +-c along the
+// section's depth axis e2 and +-w across (e3 = e1 x e2), each vertex coloured by its own fibre stress
+// sigma = N/A - Mz y'/Iz + My z'/Iy (space_frame.hpp), so biaxial bending shows around the section.
+vtkSmartPointer<vtkActor> space_members_actor(const FrameState& fs, const design::FrameInfo& f, vtkLookupTable* t, std::optional<double> cut_y = {}) {
+  auto pts = make<vtkPoints>();
+  auto polys = make<vtkCellArray>();
+  auto val = make<vtkDoubleArray>();
+  for (std::size_t k = 0; k < fs.elements.size(); ++k) {
+    const auto& e = fs.elements[k];
+    const auto& el = f.elements[k];
+    const bool pipe = el.section.kind() == SectionKind::pipe;
+    double e1[3], e2[3], e3[3];
+    section_axes(e.xi, e.xj, el.e2, e1, e2, e3);
+    const int sides = pipe ? 16 : 4;
+    const vtkIdType base = pts->GetNumberOfPoints();
+    for (int end = 0; end < 2; ++end) {
+      const double s = end ? el.s1 : el.s0, c = el.section.half_depth(s), w = 0.5 * el.section.width(s);
+      const SpaceSectionForces& q = end ? e.fj : e.fi;
+      const auto& x = end ? e.xj : e.xi;
+      const double A = el.section.area(s), Iz = el.section.inertia(s), Iy = el.section.inertia_y(s);
+      for (int v = 0; v < sides; ++v) {
+        const double a = 2 * std::numbers::pi * (v + (pipe ? 0.0 : 0.5)) / sides;
+        const double y = pipe ? c * std::cos(a) : (std::cos(a) > 0 ? c : -c), z = pipe ? c * std::sin(a) : (std::sin(a) > 0 ? w : -w);
+        pts->InsertNextPoint(x[0] + y * e2[0] + z * e3[0], x[1] + y * e2[1] + z * e3[1], x[2] + y * e2[2] + z * e3[2]);
+        val->InsertNextValue((q.N / A - q.Mz * y / Iz + q.My * z / Iy) / 1e6);
+      }
+    }
+    for (int v = 0; v < sides; ++v) {
+      const vtkIdType quad[4] = {base + v, base + (v + 1) % sides, base + sides + (v + 1) % sides, base + sides + v};
+      polys->InsertNextCell(4, quad);
+    }
+  }
+  auto pd = make<vtkPolyData>();
+  pd->SetPoints(pts), pd->SetPolys(polys), pd->GetPointData()->SetScalars(val);
+  if (!cut_y) {
+    auto a = actor_of(pd, t);
+    a->GetMapper()->InterpolateScalarsBeforeMappingOn();
+    return a;
+  }
+  auto plane = make<vtkPlane>();  // keep y >= cut_y: the section's far side
+  plane->SetOrigin(0, *cut_y, 0), plane->SetNormal(0, 1, 0);
+  auto clip = make<vtkClipPolyData>();
+  clip->SetInputData(pd), clip->SetClipFunction(plane), clip->Update();
+  auto cut = make<vtkPolyData>();
+  cut->DeepCopy(clip->GetOutput());
+  auto a = actor_of(cut, t);
+  a->GetMapper()->InterpolateScalarsBeforeMappingOn();
+  return a;
+}
+
+// Polylines; a plane picture's (z = 0) drawn just in front of the members' faces.
+vtkSmartPointer<vtkActor> lines_actor(const std::vector<std::vector<std::array<double, 3>>>& lines, double r, double g, double b, float width, bool space) {
   auto pts = make<vtkPoints>();
   auto cells = make<vtkCellArray>();
   for (const auto& l : lines) {
     cells->InsertNextCell(static_cast<vtkIdType>(l.size()));
-    for (const auto& x : l) cells->InsertCellPoint(pts->InsertNextPoint(x[0], x[1], 0.02));
+    for (const auto& x : l) cells->InsertCellPoint(pts->InsertNextPoint(x[0], x[1], space ? x[2] : 0.02));
   }
   auto pd = make<vtkPolyData>();
   pd->SetPoints(pts), pd->SetLines(cells);
@@ -129,6 +224,12 @@ vtkSmartPointer<vtkActor> supports_actor(const design::FrameInfo& f, double size
   auto polys = make<vtkCellArray>();
   for (const auto& s : f.supports) {
     const auto& x = f.nodes[s.node_index];
+    if (f.dim == 3) {  // a square plate in the horizontal plane at the node (z up)
+      const vtkIdType q[4] = {pts->InsertNextPoint(x[0] - size, x[1] - size, x[2]), pts->InsertNextPoint(x[0] + size, x[1] - size, x[2]),
+                              pts->InsertNextPoint(x[0] + size, x[1] + size, x[2]), pts->InsertNextPoint(x[0] - size, x[1] + size, x[2])};
+      polys->InsertNextCell(4, q);
+      continue;
+    }
     const vtkIdType a = pts->InsertNextPoint(x[0], x[1], 0.03);
     const vtkIdType b = pts->InsertNextPoint(x[0] - 0.6 * size, x[1] - size, 0.03);
     const vtkIdType c = pts->InsertNextPoint(x[0] + 0.6 * size, x[1] - size, 0.03);
@@ -219,7 +320,8 @@ FieldImage render_field(const std::vector<Panel>& panels, const FieldSpec& spec,
     const Snapshot& s = snap_of(panels[i]);
     const std::vector<double> f = particle_field(s, spec.quantity);
     for (std::size_t k = 0; k < f.size(); ++k)
-      if (f[k] > img.peak.value) img.peak = {f[k], {s.position[s.dim * k], s.position[s.dim * k + 1]}, i};
+      if (f[k] > img.peak.value)
+        img.peak = {f[k], {s.position[s.dim * k], s.position[s.dim * k + 1], s.dim == 3 ? s.position[s.dim * k + 2] : 0.0}, i, s.dim == 3};
   }
   img.clipped = img.peak.value > img.particles.hi * (1 + 1e-9) + 1e-9;
   auto win = Offscreen::instance().window(spec.width, spec.height);
@@ -231,28 +333,50 @@ FieldImage render_field(const std::vector<Panel>& panels, const FieldSpec& spec,
   const bool wrap = spec.title.size() * 0.55 * font > 0.97 * spec.width && spec.title.find(": ") != std::string::npos;
   const int lines = 1 + (wrap ? 1 : 0) + (any_members ? 1 : 0) + (img.clipped ? 1 : 0);
   const double top = std::min(0.85, 1.0 - (lines * 1.3 * font + 12) / spec.height);
-  // Shared view box: all panels' particles and nodes, so the panels align.
-  double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+  // Shared view box: all panels' particles and nodes, so the panels align. A 3D run is seen obliquely (from upstream,
+  // the side and above; x along the flow, z up) in a parallel projection.
+  const bool space = std::any_of(panels.begin(), panels.end(), [](const Panel& p) { return snap_of(p).dim == 3; });
+  const int nd = space ? 3 : 2;
+  double lo[3] = {1e300, 1e300, 0}, hi[3] = {-1e300, -1e300, 0};
+  if (space) lo[2] = 1e300, hi[2] = -1e300;
   for (const auto& p : panels) {
     const Snapshot& s = snap_of(p);
     for (std::size_t k = 0; k < s.count; ++k)
-      for (int d = 0; d < 2; ++d) lo[d] = std::min(lo[d], s.position[s.dim * k + d]), hi[d] = std::max(hi[d], s.position[s.dim * k + d]);
+      for (int d = 0; d < nd; ++d) lo[d] = std::min(lo[d], s.position[s.dim * k + d]), hi[d] = std::max(hi[d], s.position[s.dim * k + d]);
     if (p.frame)
       for (const auto& x : p.frame->nodes)
-        for (int d = 0; d < 2; ++d) lo[d] = std::min(lo[d], x[d]), hi[d] = std::max(hi[d], x[d]);
+        for (int d = 0; d < nd; ++d) lo[d] = std::min(lo[d], x[d]), hi[d] = std::max(hi[d], x[d]);
+    if (p.frame && space)  // a space member's section corners (a wide wall reaches far from its centre line)
+      for (const auto& x : section_corners(*p.frame))
+        for (int d = 0; d < 3; ++d) lo[d] = std::min(lo[d], x[d]), hi[d] = std::max(hi[d], x[d]);
   }
-  const double size = std::max(hi[0] - lo[0], hi[1] - lo[1]);
-  lo[1] -= 0.06 * size;  // room for the support symbols
-  hi[1] += 0.08 * size;  // and for the panel heading
+  const double size = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+  if (!space) {
+    lo[1] -= 0.06 * size;  // room for the support symbols
+    hi[1] += 0.08 * size;  // and for the panel heading
+  }
   // Deformation scale: the largest member displacement drawn as ~4 % of the picture's extent.
   double umax = 0;
   std::vector<FrameState> states(panels.size());
   for (std::size_t i = 0; i < panels.size(); ++i)
     if (panels[i].frame && !panels[i].frame->members.empty()) {
       states[i] = panel_frame(panels[i]);
-      for (const auto& u : states[i].u) umax = std::max(umax, std::hypot(u[0], u[1]));
+      for (const auto& u : states[i].u) umax = std::max(umax, std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]));
     }
   img.deform_scale = umax > 0 ? nice_scale(0.04 * size / umax) : 0;
+  // The oblique view's axes: towards the camera, up and right on the screen.
+  const bool section = space && spec.section_y.has_value();
+  const double view[3] = {section ? 0.0 : -0.62, section ? -1.0 : -0.62, section ? 0.0 : 0.48}, up0[3] = {0, 0, 1};
+  double upv[3], rightv[3];
+  {
+    const double d = up0[0] * view[0] + up0[1] * view[1] + up0[2] * view[2];
+    double n = 0;
+    for (int c = 0; c < 3; ++c) upv[c] = up0[c] - d * view[c] / (view[0] * view[0] + view[1] * view[1] + view[2] * view[2]), n += upv[c] * upv[c];
+    for (double& c : upv) c /= std::sqrt(n);
+    rightv[0] = upv[1] * view[2] - upv[2] * view[1], rightv[1] = upv[2] * view[0] - upv[0] * view[2], rightv[2] = upv[0] * view[1] - upv[1] * view[0];
+    n = std::sqrt(rightv[0] * rightv[0] + rightv[1] * rightv[1] + rightv[2] * rightv[2]);
+    for (double& c : rightv) c /= n;
+  }
   for (std::size_t i = 0; i < panels.size(); ++i) {
     const Panel& p = panels[i];
     const Snapshot& s = snap_of(p);
@@ -260,33 +384,53 @@ FieldImage render_field(const std::vector<Panel>& panels, const FieldSpec& spec,
     ren->SetViewport(right * i / panels.size(), 0, right * (i + 1) / panels.size(), top);
     ren->SetBackground(1, 1, 1);
     const double vw = spec.width * right / panels.size(), vh = spec.height * top;
-    const double cx = 0.5 * (lo[0] + hi[0]), cy = 0.5 * (lo[1] + hi[1]);
-    const double half = 0.54 * std::max(hi[1] - lo[1], (hi[0] - lo[0]) * vh / vw);
+    double cx = 0.5 * (lo[0] + hi[0]), cy = 0.5 * (lo[1] + hi[1]), half = 0.54 * std::max(hi[1] - lo[1], (hi[0] - lo[0]) * vh / vw);
+    double centre[3] = {cx, cy, 0.5 * (lo[2] + hi[2])};
+    if (space) {  // the box's corners on the screen: their extents along right and up
+      double r0 = 1e300, r1 = -1e300, u0 = 1e300, u1 = -1e300;
+      for (int k = 0; k < 8; ++k) {
+        const double x[3] = {k & 1 ? hi[0] : lo[0], k & 2 ? hi[1] : lo[1], k & 4 ? hi[2] : lo[2]};
+        const double r = x[0] * rightv[0] + x[1] * rightv[1] + x[2] * rightv[2], u = x[0] * upv[0] + x[1] * upv[1] + x[2] * upv[2];
+        r0 = std::min(r0, r), r1 = std::max(r1, r), u0 = std::min(u0, u), u1 = std::max(u1, u);
+      }
+      const double rc = 0.5 * (r0 + r1), uc = 0.5 * (u0 + u1) + 0.04 * (u1 - u0);  // a little room above for the heading
+      const double c0[3] = {centre[0], centre[1], centre[2]};
+      const double rr = c0[0] * rightv[0] + c0[1] * rightv[1] + c0[2] * rightv[2], uu = c0[0] * upv[0] + c0[1] * upv[1] + c0[2] * upv[2];
+      for (int c = 0; c < 3; ++c) centre[c] += (rc - rr) * rightv[c] + (uc - uu) * upv[c];
+      half = 0.58 * std::max(u1 - u0, (r1 - r0) * vh / vw);
+    }
     const double px_per_m = vh / (2 * half);
     const auto cs = p.results->info.numbers.find("cell_size");
     const double spacing = cs != p.results->info.numbers.end() ? 0.5 * cs->second : 0.01 * size;
-    ren->AddActor(particles_actor(s, particle_field(s, spec.quantity), plut, std::max(1.0, 1.2 * spacing * px_per_m)));
+    ren->AddActor(particles_actor(s, particle_field(s, spec.quantity), plut, std::max(1.0, 1.2 * spacing * px_per_m),
+                                  section ? spec.section_y : std::nullopt, 2 * spacing));
     if (!states[i].elements.empty()) {
       const FrameState& fs = states[i];
-      ren->AddActor(members_actor(fs, mlut));
-      std::vector<std::vector<std::array<double, 2>>> deformed, initial;
+      ren->AddActor(space ? space_members_actor(fs, *p.frame, mlut, section ? spec.section_y : std::nullopt) : members_actor(fs, mlut));
+      std::vector<std::vector<std::array<double, 3>>> deformed, initial;
       for (const auto& m : p.frame->members) {
-        std::vector<std::array<double, 2>> d, o;
+        std::vector<std::array<double, 3>> d, o;
         for (int e = 0; e <= m.count; ++e) {
           const auto& el = p.frame->elements[m.first + std::min(e, m.count - 1)];
           const int n = e < m.count ? el.i : el.j;
           o.push_back(fs.x0[n]);
-          d.push_back({fs.x0[n][0] + img.deform_scale * fs.u[n][0], fs.x0[n][1] + img.deform_scale * fs.u[n][1]});
+          d.push_back({fs.x0[n][0] + img.deform_scale * fs.u[n][0], fs.x0[n][1] + img.deform_scale * fs.u[n][1], fs.x0[n][2] + img.deform_scale * fs.u[n][2]});
         }
         deformed.push_back(d), initial.push_back(o);
       }
-      ren->AddActor(lines_actor(initial, 0.45, 0.45, 0.45, 2.0f));
-      if (img.deform_scale > 0) ren->AddActor(lines_actor(deformed, 0.75, 0.0, 0.75, 3.0f));
+      ren->AddActor(lines_actor(initial, 0.45, 0.45, 0.45, 2.0f, space));
+      if (img.deform_scale > 0) ren->AddActor(lines_actor(deformed, 0.75, 0.0, 0.75, 3.0f, space));
       ren->AddActor(supports_actor(*p.frame, 0.04 * size));
     }
     auto cam = ren->GetActiveCamera();
     cam->ParallelProjectionOn();
-    cam->SetFocalPoint(cx, cy, 0), cam->SetPosition(cx, cy, 10 * size), cam->SetViewUp(0, 1, 0);
+    if (space) {
+      cam->SetFocalPoint(centre[0], centre[1], centre[2]);
+      cam->SetPosition(centre[0] + 10 * size * view[0], centre[1] + 10 * size * view[1], centre[2] + 10 * size * view[2]);
+      cam->SetViewUp(0, 0, 1);
+    } else {
+      cam->SetFocalPoint(cx, cy, 0), cam->SetPosition(cx, cy, 10 * size), cam->SetViewUp(0, 1, 0);
+    }
     cam->SetParallelScale(half);
     ren->ResetCameraClippingRange();
     auto head = make<vtkTextActor>();
@@ -313,8 +457,8 @@ FieldImage render_field(const std::vector<Panel>& panels, const FieldSpec& spec,
   }
   if (img.clipped) {
     char b[200];
-    std::snprintf(b, sizeof b, "\nparticles: scale to the 99th percentile, %.3g MPa; maximum %.3g MPa at (%.2f, %.2f) m", img.particles.hi / 1e6,
-                  img.peak.value / 1e6, img.peak.at[0], img.peak.at[1]);
+    std::snprintf(b, sizeof b, "\nparticles: scale to the 99th percentile, %.3g MPa; maximum %.3g MPa at %s", img.particles.hi / 1e6,
+                  img.peak.value / 1e6, img.peak.where().c_str());
     text += b;
   }
   title->SetInput(text.c_str());

@@ -38,13 +38,18 @@ struct FieldSpec {
   int width = 2000, height = 1150;  // pixels; panels share the width
   std::string title;
   std::optional<Range> particle_range, member_range;  // fixed scales (a sequence or a comparison); else the data's
+  // 3D runs: a vertical section normal to y through y = section_y (m), seen from -y: the particles within a cell of it
+  // and the members cut there (the part beyond it). Unset: the oblique view.
+  std::optional<double> section_y;
 };
 
 // The particle with the largest field value over the panels: what a robust colour scale clips.
 struct ParticlePeak {
   double value = 0;                   // Pa
-  std::array<double, 2> at{0, 0};     // m
+  std::array<double, 3> at{0, 0, 0};  // m (z = 0 in a plane run)
   std::size_t panel = 0;
+  bool space = false;                 // a 3D run: `at` has z
+  std::string where() const;          // "(x, y) m" or "(x, y, z) m"
 };
 
 struct FieldImage {

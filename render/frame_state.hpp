@@ -7,17 +7,21 @@
 
 #include "design/members.hpp"
 #include "engine/io/results.hpp"
+#include "engine/structure/fibre.hpp"
 
 namespace dmi::render {
 
 struct ElementState {
-  std::array<double, 2> xi{}, xj{};        // displaced end positions (m)
+  std::array<double, 3> xi{}, xj{};        // displaced end positions (m; z = 0 in a plane frame)
   double ci = 0, cj = 0;                   // half depths at the ends (m)
-  double top_i = 0, bottom_i = 0, top_j = 0, bottom_j = 0;  // extreme-fibre stresses (Pa, tension +)
+  // Extreme-fibre stresses (Pa, tension +): plane frames the +e2 / -e2 faces; space frames the largest and smallest
+  // around the section.
+  double top_i = 0, bottom_i = 0, top_j = 0, bottom_j = 0;
+  SpaceSectionForces fi, fj;               // space frames: section forces at the ends (the pictures' fibre stresses)
 };
 
 struct FrameState {
-  std::vector<std::array<double, 2>> x0, u;  // initial node positions and displacements (m)
+  std::vector<std::array<double, 3>> x0, u;  // initial node positions and displacements (m)
   std::vector<ElementState> elements;
 };
 

@@ -132,8 +132,8 @@ MemberPeak member_peak(const RunData& r) {
 std::string scale_note(const FieldImage& f, const std::vector<Panel>& panels) {
   if (!f.clipped) return "";
   char b[200];
-  std::snprintf(b, sizeof b, "; particle colours up to the 99th percentile, %.3g MPa; the largest particle value, %.3g MPa, is at (%.2f, %.2f) m",
-                f.particles.hi / 1e6, f.peak.value / 1e6, f.peak.at[0], f.peak.at[1]);
+  std::snprintf(b, sizeof b, "; particle colours up to the 99th percentile, %.3g MPa; the largest particle value, %.3g MPa, is at %s",
+                f.particles.hi / 1e6, f.peak.value / 1e6, f.peak.where().c_str());
   std::string s = b;
   if (panels.size() > 1) s += " (" + panels[f.peak.panel].heading + ")";
   return s;
@@ -142,6 +142,27 @@ std::string scale_note(const FieldImage& f, const std::vector<Panel>& panels) {
 std::array<unsigned char, 3> colour(std::size_t i) {
   static const std::array<unsigned char, 3> c[] = {{31, 119, 180}, {255, 127, 14}, {44, 160, 44}, {148, 103, 189}};
   return c[i % 4];
+}
+
+// The y of the impact point: the force-weighted y of the contact loads at the peak (/documents/peak_contact), else the
+// middle of the frame's nodes, else of the grid's particles at the start.
+double impact_y(const RunData& r) {
+  if (const auto it = r.results.info.documents.find("peak_contact"); it != r.results.info.documents.end()) {
+    const json pc = json::parse(it->second, nullptr, false);
+    double w = 0, wy = 0;
+    if (pc.is_object() && pc.contains("loads"))
+      for (const auto& l : pc["loads"]) {
+        if (!l.contains("point") || l["point"].size() != 3 || !l.contains("force")) continue;
+        double f2 = 0;
+        for (const auto& c : l["force"]) f2 += c.get<double>() * c.get<double>();
+        w += std::sqrt(f2), wy += std::sqrt(f2) * l["point"][1].get<double>();
+      }
+    if (w > 0) return wy / w;
+  }
+  double lo = 1e300, hi = -1e300;
+  if (r.frame)
+    for (const auto& x : r.frame->nodes) lo = std::min(lo, x[1]), hi = std::max(hi, x[1]);
+  return lo <= hi ? 0.5 * (lo + hi) : 0.0;
 }
 
 // A member check with a time history to plot: the governing one when it is a member check, else the member check
@@ -193,6 +214,21 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
     const FieldImage gi = render_field({p}, spec, (fs::path(image_dir) / f1).string());
     add(f1, "field_governing", r.variant, spec.title + "; picture at the nearest snapshot, t = " + ms(r.results.snapshots[sg].time) + scale_note(gi, {p}),
         gi.width, gi.height, &gi);
+    // 3D: the vertical section through the impact point at the contact peak (particles within a cell of it, members cut there).
+    if (r.results.snapshots[sg].dim == 3) {
+      const double tp = num(r.design, {"contact", "peak_time_s"}, tg);
+      const std::size_t sp = nearest_snapshot(r.results, tp);
+      FieldSpec cs = spec;
+      cs.section_y = impact_y(r);
+      char b[160];
+      std::snprintf(b, sizeof b, ", section y = %.2f m through the impact point, seen from -y, at the contact peak (%s)", *cs.section_y, ms(tp).c_str());
+      cs.title = name + ": " + qlabel + b;
+      const std::string f2 = "field_" + tag + "_section.png";
+      const std::vector<Panel> one{{&r.results, fr, sp, "t = " + ms(r.results.snapshots[sp].time)}};
+      const FieldImage ci = render_field(one, cs, (fs::path(image_dir) / f2).string());
+      add(f2, "field_section", r.variant, cs.title + "; picture at the nearest snapshot, t = " + ms(r.results.snapshots[sp].time) + scale_note(ci, one),
+          ci.width, ci.height, &ci);
+    }
     // The sequence: initial state, contact start, contact peak, rebound (end of the pulse); for a surge, its phases.
     const double t_peak = num(r.design, {"contact", "peak_time_s"}, tg);
     const double t_start = num(r.design, {"contact", "pulse", "start_s"}, 0.0), t_end = num(r.design, {"contact", "pulse", "end_s"}, t_peak);
@@ -316,13 +352,18 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
     overlay("chart_contact_force.png", "contact force on the dam", "force [kN]", [](const RunData& r) {
       std::vector<double> y;
       if (const Series* s = r.results.find("frame/contact_force"))
-        for (std::size_t k = 0; k < s->samples(); ++k) y.push_back(std::hypot(s->data[2 * k], s->data[2 * k + 1]));
+        for (std::size_t k = 0, n = s->components.size(); k < s->samples(); ++k) {
+          double m2 = 0;
+          for (std::size_t d = 0; d < n; ++d) m2 += s->data[n * k + d] * s->data[n * k + d];
+          y.push_back(std::sqrt(m2));
+        }
       return y;
     }, 1e-3, {}, contact_end);
-    overlay("chart_base_shear.png", "base shear (sum of the support forces Fx)", "shear [kN]",
-            [](const RunData& r) { return design::base_history(r.results, *r.frame, r.file).fx; }, 1e-3);
-    overlay("chart_base_moment.png", "base moment (about the centroid of the supports)", "moment [kN m]",
-            [](const RunData& r) { return design::base_history(r.results, *r.frame, r.file).m; }, 1e-3);
+    const bool space = runs[0].frame->dim == 3;
+    overlay("chart_base_shear.png", space ? "base shear (horizontal resultant of the support forces, |(sum Fx, sum Fy)|)" : "base shear (sum of the support forces Fx)",
+            "shear [kN]", [](const RunData& r) { return design::base_history(r.results, *r.frame, r.file).shear(); }, 1e-3);
+    overlay("chart_base_moment.png", space ? "overturning moment (|(Mx, My)| about the centroid of the supports)" : "base moment (about the centroid of the supports)",
+            "moment [kN m]", [](const RunData& r) { return design::base_history(r.results, *r.frame, r.file).moment(); }, 1e-3);
     // The governing member check's demand at its station, with its capacity as a line.
     if (const json* c = plotted_check(runs[0].design)) {
       const std::string unit = (*c)["unit"];

@@ -258,10 +258,13 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
   d["scenario_rows"] = scenario_rows(first);
   d["materials"] = materials(first);
   // Model.
+  const bool space = first.frame ? first.frame->dim == 3 : (!first.results.snapshots.empty() && first.results.snapshots[0].dim == 3);
   d["methods"] =
-      "Material Point Method for the boulder, debris and buffer (explicit, Lin & Yang 2024); beam-column finite elements for the dam "
-      "members, coupled to the particles by Lin & Yang's two-stage contact with Yang's equivalent force field (Lin & Yang 2024, eqs. 15–29); plane strain, "
-      "the out-of-plane width as given. Checks and estimates: docs/design-checks.md.";
+      std::string("Material Point Method for the boulder, debris and buffer (explicit, Lin & Yang 2024); beam-column finite elements for the dam "
+                  "members, coupled to the particles by Lin & Yang's two-stage contact with Yang's equivalent force field (Lin & Yang 2024, eqs. 15–29); ") +
+      (space ? "three dimensions (z up): space beam-columns with biaxial bending and torsion, checked around their sections. "
+             : "plane strain, the out-of-plane width as given. ") +
+      "Checks and estimates: docs/design-checks.md.";
   json rl = json::array();
   for (const auto& r : runs) {
     bool reference = false;
@@ -390,8 +393,10 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
       "the debris modulus (the bound row of the table above).";
   d["estimates_intro"] =
       std::string("The loads design practice would assign to this impact, beside the simulated peak they stand for (a sanity band, not checks): "
-                  "ratio = estimate / simulated. A model that does not fit the scenario is listed with the reason. The 2D model strikes with a "
-                  "cylinder of the boulder's mass, while the boulder formulas assume a sphere. Formulas, sources and assumptions: docs/design-checks.md.") +
+                  "ratio = estimate / simulated. A model that does not fit the scenario is listed with the reason. ") +
+      (space ? "The 3D model strikes with a sphere, as the boulder formulas assume. "
+             : "The 2D model strikes with a cylinder of the boulder's mass, while the boulder formulas assume a sphere. ") +
+      "Formulas, sources and assumptions: docs/design-checks.md." +
       (banded ? " With the grid study, the simulated peak carries its grid convergence index (GCI) and the ratio the band it spans for the simulated peak within ± GCI." : "");
   // Health.
   d["health_intro"] =

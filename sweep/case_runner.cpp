@@ -7,6 +7,7 @@
 
 #include "design/design.hpp"
 #include "design/grid_study.hpp"
+#include "design/loads.hpp"
 #include "engine/common/error.hpp"
 #include "engine/io/results_writer.hpp"
 #include "engine/scenario/scenario.hpp"
@@ -50,8 +51,8 @@ void fill_from_design(json& row, const json& design) {
         {"max_utilisation", at(r, {"verdict", "max_utilisation"})},
         {"passed", at(r, {"verdict", "passed"})},
         {"contact_peak_N", at(r, {"contact", "peak_force_N"})},
-        {"base_shear_N", at(r, {"base_total", "Fx_N", "abs_max", "value"})},
-        {"base_moment_Nm", at(r, {"base_total", "M_Nm", "abs_max", "value"})}};
+        {"base_shear_N", at(r, {"base_total", design::shear_key(r.value("dimension", 2)), "abs_max", "value"})},
+        {"base_moment_Nm", at(r, {"base_total", design::moment_key(r.value("dimension", 2)), "abs_max", "value"})}};
   }
   row["variants"] = vars;
 }

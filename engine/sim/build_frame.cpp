@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <type_traits>
 
 #include <nlohmann/json.hpp>
 
@@ -133,15 +134,19 @@ namespace dmi {
 
 // The frame as design/ needs it (docs/results.md, /documents/structure): geometry, sections and
 // materials of every element, members and supports, so results.h5 alone answers "which section
-// carried these forces" without the scenario parser.
-std::string structure_document(const Scenario& s, const FrameModel& fm) {
+// carried these forces" without the scenario parser. A space frame adds each element's depth axis e2.
+template <class F> std::string structure_document(const Scenario& s, const F& frame) {
   using nlohmann::json;
+  const auto& fm = frame.model();
+  constexpr bool space = std::is_same_v<F, SpaceFrame>;
+  constexpr int D = space ? 3 : 2;
   json nodes = json::array(), names = json::array(), elements = json::array(), members = json::array(), supports = json::array();
   for (std::size_t k = 0; k < fm.nodes.size(); ++k) {
-    nodes.push_back({fm.nodes[k].x(), fm.nodes[k].y()});
+    nodes.push_back(std::vector<double>(fm.nodes[k].data(), fm.nodes[k].data() + D));
     names.push_back(k < s.structure.nodes.size() ? s.structure.nodes[k].name : "");
   }
-  for (const auto& e : fm.elements) {
+  for (std::size_t k = 0; k < fm.elements.size(); ++k) {
+    const auto& e = fm.elements[k];
     const Section& c = e.section;
     json sec{{"kind", c.kind() == SectionKind::pipe ? "pipe" : c.kind() == SectionKind::tapered_rectangle ? "tapered_rectangle" : "rectangle"}};
     if (c.kind() == SectionKind::pipe) {
@@ -154,6 +159,10 @@ std::string structure_document(const Scenario& s, const FrameModel& fm) {
     }
     elements.push_back({{"member", e.member}, {"i", e.i}, {"j", e.j}, {"s0", e.s0}, {"s1", e.s1}, {"section", sec},
                         {"youngs_modulus_Pa", e.E}, {"poisson_ratio", e.nu}, {"density_kg_m3", e.rho}});
+    if constexpr (space) {
+      const Eigen::Matrix3d a = frame.axes(static_cast<int>(k));
+      elements.back()["e2"] = {a(1, 0), a(1, 1), a(1, 2)};
+    }
   }
   for (std::size_t k = 0; k < fm.members.size(); ++k) {
     const auto& m = fm.members[k];
@@ -162,11 +171,14 @@ std::string structure_document(const Scenario& s, const FrameModel& fm) {
   for (std::size_t k = 0; k < fm.supports.size(); ++k) {
     const auto& d = fm.supports[k];
     supports.push_back({{"node", s.structure.supports[k].node}, {"node_index", d.node}, {"type", s.structure.supports[k].type},
-                        {"fixed", {d.fixed[0], d.fixed[1], d.fixed[2]}}, {"series", "supports/" + s.structure.supports[k].node + "/reaction"}});
+                        {"fixed", std::vector<bool>(d.fixed, d.fixed + 3 * (D - 1))}, {"series", "supports/" + s.structure.supports[k].node + "/reaction"}});
   }
-  return json{{"nodes_m", nodes}, {"node_names", names}, {"elements", elements}, {"members", members}, {"supports", supports},
-              {"gravity_m_s2", {fm.gravity.x(), fm.gravity.y()}}, {"plane_thickness_m", s.analysis.thickness}}
+  return json{{"dimension", D}, {"nodes_m", nodes}, {"node_names", names}, {"elements", elements}, {"members", members}, {"supports", supports},
+              {"gravity_m_s2", std::vector<double>(fm.gravity.data(), fm.gravity.data() + D)}, {"plane_thickness_m", s.analysis.thickness}}
       .dump();
 }
+
+template std::string structure_document(const Scenario&, const Frame&);
+template std::string structure_document(const Scenario&, const SpaceFrame&);
 
 }  // namespace dmi

@@ -97,20 +97,21 @@ template <int D> void Recorder<D>::accumulate(const Solver<D>& solver, double dt
   elapsed_ += dt;
 }
 
-template <int D> std::string Recorder<D>::peak_contact_document(const Frame& f) const {
+template <int D> std::string Recorder<D>::peak_contact_document(const FrameOf<D>& f) const {
   if (peak_loads_.empty()) return "";
-  const FrameModel& m = f.model();
+  const auto& m = f.model();
   nlohmann::json loads = nlohmann::json::array();
   Vec<D> total = Vec<D>::Zero();
+  auto list = [](const Vec<D>& v) { return std::vector<double>(v.data(), v.data() + D); };
   for (const ContactLoadOf<D>& l : peak_loads_) {
-    const FrameElementDef& e = m.elements[l.element];
+    const auto& e = m.elements[l.element];
     const FrameMemberDef& mem = m.members[e.member];
     // Position along the member as a fraction of its length: elements are equal in length along it.
     const double s = (l.element - mem.first_element + l.xi) / mem.elements;
-    loads.push_back({{"member", mem.name}, {"position", s}, {"point", {l.point.x(), l.point.y()}}, {"force", {l.force.x(), l.force.y()}}});
+    loads.push_back({{"member", mem.name}, {"position", s}, {"point", list(l.point)}, {"force", list(l.force)}});
     total += l.force;
   }
-  return nlohmann::json{{"time", peak_contact_time_}, {"total_force", {total.x(), total.y()}}, {"units", {{"time", "s"}, {"point", "m"}, {"force", "N"}}},
+  return nlohmann::json{{"time", peak_contact_time_}, {"total_force", list(total)}, {"units", {{"time", "s"}, {"point", "m"}, {"force", "N"}}},
                         {"loads", loads}}
       .dump();
 }

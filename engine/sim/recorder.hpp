@@ -28,7 +28,7 @@ template <int D> class Recorder {
   double initial_energy() const { return e0_; }
   // JSON document "peak_contact": the members' contact loads at the step with the largest total contact
   // force (time, total, and each load's member, position along it, surface point and force); "" if none.
-  std::string peak_contact_document(const Frame& f) const;
+  std::string peak_contact_document(const FrameOf<D>& f) const;
   // Histories so far and the interval accumulators, for checkpoints (the series layout comes from the scenario).
   void save_state(StateWriter& w) const;
   void load_state(StateReader& r);

@@ -311,8 +311,8 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   info.numbers["courant_max"] = loop.courant_max;   // numerical health (docs/results.md)
   info.numbers["jacobian_min"] = std::isfinite(loop.j_min) ? loop.j_min : 1.0;
   info.numbers["threads"] = omp_get_max_threads();
-  if constexpr (D == 2) if (solver.scene().frame) {
-    info.documents["structure"] = structure_document(s, solver.scene().frame->model());
+  if (solver.scene().frame) {
+    info.documents["structure"] = structure_document(s, *solver.scene().frame);
     const std::string doc = rec.peak_contact_document(*solver.scene().frame);
     if (!doc.empty()) info.documents["peak_contact"] = doc;
   }

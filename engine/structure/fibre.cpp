@@ -29,6 +29,7 @@ SpaceFibreStresses space_fibre_stresses(const Section& section, double s, const 
   const double A = section.area(s), Iz = section.inertia(s), Iy = section.inertia_y(s);
   const double tau_t = std::abs(f.T) / section.torsion_modulus(s);
   SpaceFibreStresses r;
+  r.principal_max = -INFINITY;
   r.sigma_max = -INFINITY;
   r.sigma_min = INFINITY;
   const auto sample = [&](double y, double z, double tau_v) {
@@ -37,15 +38,16 @@ SpaceFibreStresses space_fibre_stresses(const Section& section, double s, const 
     r.sigma_max = std::max(r.sigma_max, sigma);
     r.sigma_min = std::min(r.sigma_min, sigma);
     r.tau_max = std::max(r.tau_max, tau);
+    r.principal_max = std::max(r.principal_max, 0.5 * sigma + std::sqrt(0.25 * sigma * sigma + tau * tau));
     if (vm >= r.von_mises_max) r.von_mises_max = vm, r.y = y, r.z = z;
   };
   if (section.kind() == SectionKind::pipe) {
     const double R = 0.5 * section.depth(s), V = std::hypot(f.Vy, f.Vz), phi_v = std::atan2(f.Vz, f.Vy);
     constexpr int kPoints = 72;
-    for (int k = 0; k < kPoints; ++k) {
-      const double phi = 2 * std::numbers::pi * k / kPoints;
-      sample(R * std::cos(phi), R * std::sin(phi), 2 * V / A * std::abs(std::sin(phi - phi_v)));
-    }
+    auto at = [&](double phi) { sample(R * std::cos(phi), R * std::sin(phi), 2 * V / A * std::abs(std::sin(phi - phi_v))); };
+    for (int k = 0; k < kPoints; ++k) at(2 * std::numbers::pi * k / kPoints);
+    const double phi_m = std::atan2(f.My, -f.Mz);  // Iy = Iz: sigma is extreme along the resultant moment's normal
+    at(phi_m), at(phi_m + std::numbers::pi);
   } else {
     const double c = section.half_depth(s), w = 0.5 * section.width(s);
     constexpr int kSide = 11;

@@ -30,7 +30,8 @@ struct SpaceFibreStresses {
   double sigma_max = 0, sigma_min = 0;  // Pa, extreme normal stresses around the perimeter
   double tau_max = 0;                   // Pa, largest shear stress (torsion and shear force) around the perimeter
   double von_mises_max = 0;             // Pa, max of sqrt(sigma^2 + 3 tau^2) around the perimeter
-  double y = 0, z = 0;                  // m, the section point of that maximum (local y', z')
+  double principal_max = 0;             // Pa, max of the principal stress sigma/2 + sqrt(sigma^2/4 + tau^2) around the perimeter
+  double y = 0, z = 0;                  // m, the section point of the von Mises maximum (local y', z')
 };
 
 // Stresses around the perimeter of a space member's section at the fraction s of its taper: sigma(y', z') =
@@ -38,7 +39,8 @@ struct SpaceFibreStresses {
 // k t T / J at the middle of the long sides, Timoshenko & Goodier 1970 sec. 109, taken everywhere on the perimeter:
 // conservative at the corners) plus the shear forces' parabolic (rectangle, 3/2 V/A at the axis) or thin-wall
 // (pipe, 2 V/A |sin|) distribution, added in magnitude: on one side of a pipe the two flows add, so for a pipe
-// the maximum is exact. Sampled at 72 points around a pipe and 11 per side of a rectangle.
+// the maximum is exact. Sampled at 72 points around a pipe (and the two where sigma is extreme, so sigma_max/min are
+// exact: N/A +- |M|/W_el) and 11 per side of a rectangle (corners included: sigma_max/min exact there too).
 SpaceFibreStresses space_fibre_stresses(const Section& section, double s, const SpaceSectionForces& f);
 
 }  // namespace dmi

@@ -148,13 +148,13 @@ TEST(DesignEnvelope, ReactionTotalsAboutTheSupportCentroidAndContactPulse) {
   ASSERT_EQ(re.supports.size(), 2u);
   EXPECT_DOUBLE_EQ(re.about[1], 1.0);  // centroid of (0,0) and (0,2)
   // t = 0.2: sum Fx = 400 - 20 = 380 kN; M about (0, 1): base 250 - (0 - 1) 400 = 650 kN m, top 0 - (2 - 1)(-20) = 20 -> 670 kN m.
-  EXPECT_NEAR(re.total.Fx_abs.value, 380e3, 1e-6);
-  EXPECT_DOUBLE_EQ(re.total.Fx_abs.time, 0.2);
-  EXPECT_NEAR(re.total.M_max.value, 670e3, 1e-6);
+  EXPECT_NEAR(re.total.at("Fx_N").abs.value, 380e3, 1e-6);
+  EXPECT_DOUBLE_EQ(re.total.at("Fx_N").abs.time, 0.2);
+  EXPECT_NEAR(re.total.at("M_Nm").max.value, 670e3, 1e-6);
   // t = 0.1: M = -300 + (1)(-100) ... base: -300 - (0 - 1)(-100) = -400; top: 0 - (1)(10) = -10 -> -410 kN m.
-  EXPECT_NEAR(re.total.M_min.value, -410e3, 1e-6);
-  EXPECT_NEAR(re.supports[0].Fy_max.value, 200e3, 1e-9);
-  EXPECT_NEAR(re.total.final[1], 200e3, 1e-9);
+  EXPECT_NEAR(re.total.at("M_Nm").min.value, -410e3, 1e-6);
+  EXPECT_NEAR(re.supports[0].at("Fy_N").max.value, 200e3, 1e-9);
+  EXPECT_NEAR(re.total.at("Fy_N").final, 200e3, 1e-9);
   // Contact: impulse = 100 kN x 0.1 s + (24, 32) kN x 0.1 s = (12.4, 3.2) kN s; peak 100 kN at 0.1 s; the pulse (>= 5 kN)
   // runs from 0 to 0.2 s.
   const Contact c = contact(r);
