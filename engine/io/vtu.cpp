@@ -222,8 +222,8 @@ void write_vtu(const std::string& path, const Snapshot& s) {
 }
 
 void write_lines_vtu(const std::string& path, const LineSnapshot& s) {
-  const std::size_t np = s.points.size() / 2, nc = s.ends.size();
-  if (s.displacement.size() != 2 * np || (nc > 0 && s.ends.back() != np) || s.member.size() != nc)
+  const std::size_t d = s.dim == 3 ? 3 : 2, np = s.points.size() / d, nc = s.ends.size();
+  if (s.points.size() != d * np || s.displacement.size() != d * np || (nc > 0 && s.ends.back() != np) || s.member.size() != nc)
     throw std::runtime_error(path + ": inconsistent member snapshot");
   for (const auto& [name, v] : s.point_scalars)
     if (v.size() != np) throw std::runtime_error(path + ": member field " + name + " has " + std::to_string(v.size()) + " values");
@@ -233,7 +233,7 @@ void write_lines_vtu(const std::string& path, const LineSnapshot& s) {
     out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
         << "<UnstructuredGrid><Piece NumberOfPoints=\"" << np << "\" NumberOfCells=\"" << nc << "\">\n";
     out << "<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (std::size_t i = 0; i < np; ++i) out << s.points[2 * i] << ' ' << s.points[2 * i + 1] << " 0\n";
+    for (std::size_t i = 0; i < np; ++i) out << s.points[d * i] << ' ' << s.points[d * i + 1] << ' ' << (d == 3 ? s.points[d * i + 2] : 0.0) << '\n';
     out << "</DataArray></Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
     for (std::size_t i = 0; i < np; ++i) out << i << '\n';
     out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
@@ -241,7 +241,8 @@ void write_lines_vtu(const std::string& path, const LineSnapshot& s) {
     out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
     for (std::size_t c = 0; c < nc; ++c) out << "4\n";  // VTK_POLY_LINE
     out << "</DataArray>\n</Cells>\n<PointData>\n<DataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (std::size_t i = 0; i < np; ++i) out << s.displacement[2 * i] << ' ' << s.displacement[2 * i + 1] << " 0\n";
+    for (std::size_t i = 0; i < np; ++i)
+      out << s.displacement[d * i] << ' ' << s.displacement[d * i + 1] << ' ' << (d == 3 ? s.displacement[d * i + 2] : 0.0) << '\n';
     out << "</DataArray>\n";
     for (const auto& [name, v] : s.point_scalars) {
       out << "<DataArray type=\"Float64\" Name=\"" << xml_escape(name) << "\" format=\"ascii\">\n";

@@ -259,26 +259,34 @@ template <int D> void Recorder<D>::sample_member_probe(const Frame& f, const Pro
   }
 }
 
-template <int D> LineSnapshot Recorder<D>::member_snapshot(const Frame& f) {
+// Members sampled at 9 points along every element's deformed centre-line: plane frames N, V, M and the fibre stresses
+// of both faces; space frames N, Vy, Vz, T, My, Mz and the extremes around the section.
+template <int D> LineSnapshot Recorder<D>::member_snapshot(const FrameOf<D>& f) {
   LineSnapshot s;
-  const char* names[] = {"N (N)", "V (N)", "M (N m)", "sigma_top (Pa)", "sigma_bottom (Pa)", "von_mises_max (Pa)"};
+  s.dim = D;
+  const std::vector<const char*> names =
+      D == 2 ? std::vector<const char*>{"N (N)", "V (N)", "M (N m)", "sigma_top (Pa)", "sigma_bottom (Pa)", "von_mises_max (Pa)"}
+             : std::vector<const char*>{"N (N)", "Vy (N)", "Vz (N)", "T (N m)", "My (N m)", "Mz (N m)", "sigma_max (Pa)", "sigma_min (Pa)",
+                                        "tau_max (Pa)", "von_mises_max (Pa)"};
   for (const char* n : names) s.point_scalars.push_back({n, {}});
   constexpr int kSamples = 9;
   for (int e = 0; e < f.nelements(); ++e) {
-    const FrameElementDef& el = f.model().elements[e];
-    const Vec2 Xi = f.model().nodes[el.i], Xj = f.model().nodes[el.j];
-    const ElementCurve c = f.curve(e);
+    const auto& el = f.model().elements[e];
+    const Vec<D> Xi = f.model().nodes[el.i], Xj = f.model().nodes[el.j];
+    const auto c = f.curve(e);
     for (int k = 0; k < kSamples; ++k) {
       const double xi = double(k) / (kSamples - 1);
-      const Vec2 x = c.point(xi), u = x - (Xi + xi * (Xj - Xi));
-      s.points.insert(s.points.end(), {x.x(), x.y()});
-      s.displacement.insert(s.displacement.end(), {u.x(), u.y()});
-      const SectionForces sf = f.forces_at(e, xi);
-      const FibreStresses fs = f.stresses_at(e, xi);
-      const double v[] = {sf.N, sf.V, sf.M, fs.sigma_top, fs.sigma_bottom, fs.von_mises_max};
-      for (int q = 0; q < 6; ++q) s.point_scalars[q].second.push_back(v[q]);
+      const Vec<D> x = c.point(xi), u = x - (Xi + xi * (Xj - Xi));
+      s.points.insert(s.points.end(), x.data(), x.data() + D);
+      s.displacement.insert(s.displacement.end(), u.data(), u.data() + D);
+      const auto sf = f.forces_at(e, xi);
+      const auto fs = f.stresses_at(e, xi);
+      std::vector<double> v;
+      if constexpr (D == 2) v = {sf.N, sf.V, sf.M, fs.sigma_top, fs.sigma_bottom, fs.von_mises_max};
+      else v = {sf.N, sf.Vy, sf.Vz, sf.T, sf.My, sf.Mz, fs.sigma_max, fs.sigma_min, fs.tau_max, fs.von_mises_max};
+      for (std::size_t q = 0; q < v.size(); ++q) s.point_scalars[q].second.push_back(v[q]);
     }
-    s.ends.push_back(s.points.size() / 2);
+    s.ends.push_back(s.points.size() / D);
     s.member.push_back(el.member);
   }
   return s;

@@ -22,7 +22,7 @@ template <int D> class Recorder {
   Snapshot snapshot(const Solver<D>& solver) const;
   // Members sampled along their deformed centre-lines (9 points per element) with section forces and
   // fibre stresses, for ParaView.
-  static LineSnapshot member_snapshot(const Frame& f);
+  static LineSnapshot member_snapshot(const FrameOf<D>& f);
   const std::vector<double>& time() const { return time_; }
   std::vector<Series>& series() { return series_; }
   double initial_energy() const { return e0_; }

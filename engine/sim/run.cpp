@@ -221,7 +221,7 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
       std::snprintf(name, sizeof name, "particles_%04zu.vtu", loop.vtk_files.size());
       write_vtu((fs::path(o.out_dir) / "fields" / name).string(), snap);
       loop.vtk_files.emplace_back(snap.time, name);
-      if constexpr (D == 2) if (const Frame* f = solver.scene().frame.get()) {
+      if (const auto* f = solver.scene().frame.get()) {
         std::snprintf(name, sizeof name, "members_%04zu.vtu", loop.member_files.size());
         write_lines_vtu((fs::path(o.out_dir) / "fields" / name).string(), Recorder<D>::member_snapshot(*f));
         loop.member_files.emplace_back(snap.time, name);

@@ -242,6 +242,7 @@ TEST(RunCli, SpaceFrameRunsThroughChecksPicturesAndReport) {
   j["grid"]["cell_size"] = 0.15;
   j["analysis"]["end_time"] = 0.016;
   j["output"]["snapshot_interval"] = 0.004;
+  j["output"]["vtk"] = true;
   std::ofstream(out / "s.json") << j.dump();
   const Cli run = run_cli("run " + (out / "s.json").string() + " -o " + (out / "r").string() + " -q");
   ASSERT_LE(run.status, 1) << run.err;  // 0 pass, 1 a check fails: both are finished runs
@@ -260,5 +261,10 @@ TEST(RunCli, SpaceFrameRunsThroughChecksPicturesAndReport) {
   std::stringstream html;
   html << std::ifstream(out / "r" / "report.html").rdbuf();
   EXPECT_NE(html.str().find("three dimensions"), std::string::npos);
+  // ParaView: the members beside the particles, with the space frame's section forces.
+  std::stringstream vtu;
+  vtu << std::ifstream(out / "r" / "fields" / "members_0000.vtu").rdbuf();
+  EXPECT_NE(vtu.str().find("Name=\"T (N m)\""), std::string::npos);
+  EXPECT_TRUE(fs::exists(out / "r" / "fields" / "members.pvd"));
   fs::remove_all(out);
 }
