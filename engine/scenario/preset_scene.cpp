@@ -36,12 +36,15 @@ double nice_floor(double x) {
   return e;
 }
 
+// The extent of what the presets build: x along the flow, y up (the elevation), and in 3D the span across (y).
 struct Box {
   double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+  double across_lo = 0, across_hi = 0;  // 3D: y across the channel (the centre plane y = 0 always inside)
   void add(double x, double y) {
     lo[0] = std::min(lo[0], x), lo[1] = std::min(lo[1], y);
     hi[0] = std::max(hi[0], x), hi[1] = std::max(hi[1], y);
   }
+  void across(double a, double b) { across_lo = std::min(across_lo, a), across_hi = std::max(across_hi, b); }
 };
 
 // Uniform cantilever first two circular frequencies (rad/s): omega_i = (beta_i L)^2 sqrt(E/rho) r / L^2,
@@ -83,6 +86,10 @@ class Builder {
   void add_dam();
   void add_concrete_members();
   void add_steel_frame();
+  void add_space_steel_frame();
+  // A position in the elevation (x along the flow, y up) and across the channel as the scene's coordinates:
+  // 2D [x, y]; 3D [x, across, y] (z up).
+  json at(double x, double y, double across = 0) const { return dim_ == 3 ? json{clean(x), clean(across), clean(y)} : json{clean(x), clean(y)}; }
   void add_buffer();
   void add_boulder();
   void add_debris();
@@ -108,6 +115,8 @@ class Builder {
   json out_ = json::object(), materials_ = json::array(), bodies_ = json::array(), probes_ = json::array(), bonded_ = json::array();
   Box box_;
   bool members_ = true;
+  int dim_ = 2;
+  double period_ = 0;  // the dam's first cantilever period (s), for the 3D end time
 };
 
 double Builder::xu(double y) const {
@@ -133,7 +142,7 @@ std::vector<Builder::Feature> Builder::features() const {
   std::vector<Feature> f;
   if (p_.buffer && p_.buffer->type == "homogenised") f.push_back({p_.buffer->thickness, 5, 2, "the buffer layer"});
   if (p_.buffer && p_.buffer->type != "homogenised") f.push_back({p_.buffer->ring_thickness, 2, 1, "the tyre rings"});
-  if (p_.boulder) f.push_back({2 * boulder_r_, 10, 4, "the boulder (the cylinder of its mass)"});
+  if (p_.boulder) f.push_back({2 * boulder_r_, 10, 4, dim_ == 3 ? "the boulder" : "the boulder (the cylinder of its mass)"});
   if (p_.debris) f.push_back({p_.debris->depth, 10, 3, "the surge depth"});
   if (d_.type == "concrete_gravity" && d_.model == "continuum") f.push_back({d_.crest, 8, 0, "the dam crest"});
   if (d_.type == "steel_open") f.push_back({d_.column_d, 4, 0, "the columns"});
@@ -159,6 +168,7 @@ double Builder::choose_cell_size() const {
 }
 
 json Builder::build() {
+  dim_ = p_.dim;
   members_ = !(d_.type == "concrete_gravity" && d_.model == "continuum");
   if (p_.debris && !p_.debris->hydrograph.empty()) {  // the surge's size for the cell, the grid and the estimates
     DebrisPreset& f = *p_.debris;
@@ -172,7 +182,7 @@ json Builder::build() {
     // The 2D model is a cylinder as long as the out-of-plane width with the boulder's mass:
     // m = rho pi D^3 / 6 (a sphere) = rho pi r^2 W  ->  r = sqrt(m / (rho pi W)).
     boulder_m_ = b.mass > 0 ? b.mass : b.density * kPi * std::pow(b.diameter, 3) / 6;
-    boulder_r_ = std::sqrt(boulder_m_ / (b.density * kPi * d_.width));
+    boulder_r_ = dim_ == 3 ? std::cbrt(3 * boulder_m_ / (4 * kPi * b.density)) : std::sqrt(boulder_m_ / (b.density * kPi * d_.width));
   }
   h_ = choose_cell_size();
   add_dam();
@@ -277,22 +287,24 @@ void Builder::add_concrete_members() {
   json st;
   st["integrator"] = "newmark";
   st["self_weight"] = true;
-  st["nodes"] = json::array({{{"name", "base"}, {"position", {x0, 0.0}}}, {{"name", "crest"}, {"position", {x1, H}}}});
+  st["nodes"] = json::array({{{"name", "base"}, {"position", at(x0, 0.0)}}, {{"name", "crest"}, {"position", at(x1, H)}}});
   st["members"] = json::array({{{"name", "dam"}, {"start", "base"}, {"end", "crest"}, {"material", "concrete"}, {"elements", d_.elements},
                                 {"section", {{"type", "tapered_rectangle"}, {"width", d_.width}, {"depth_start", d_.base_thickness * c},
                                              {"depth_end", d_.crest * c}}}}});
   st["supports"] = json::array({{{"node", "base"}, {"type", d_.base}}});
-  if (d_.damping_ratio > 0) {
-    const double r = 0.5 * (d_.base_thickness + d_.crest) * c / std::sqrt(12.0);
-    st["rayleigh_damping"] = rayleigh(d_.damping_ratio, cantilever_modes(d_.concrete["youngs_modulus"], d_.concrete["density"], r, H));
-  }
+  const double r = 0.5 * (d_.base_thickness + d_.crest) * c / std::sqrt(12.0);
+  const auto modes = cantilever_modes(d_.concrete["youngs_modulus"], d_.concrete["density"], r, H);
+  period_ = 2 * kPi / modes.first;
+  if (d_.damping_ratio > 0) st["rayleigh_damping"] = rayleigh(d_.damping_ratio, modes);
   out_["structure"] = st;
   box_.add(xu(0), 0), box_.add(xd(0), H), box_.add(xu(H), H);
+  if (dim_ == 3) return;  // member probes are plane-frame only (the space frame's histories carry every section force)
   probes_.push_back(json{{"name", "base"}, {"type", "member"}, {"member", "dam"}, {"position", 0.0}, {"quantities", {"section_forces", "fibre_stress"}}});
   probes_.push_back(json{{"name", "crest"}, {"type", "member"}, {"member", "dam"}, {"position", 1.0}, {"quantities", {"displacement"}}});
 }
 
 void Builder::add_steel_frame() {
+  if (dim_ == 3) return add_space_steel_frame();
   const double H = d_.height, D = d_.column_d, s = d_.row_spacing;
   const double bd = d_.beam_d > 0 ? d_.beam_d : D, bt = d_.beam_t > 0 ? d_.beam_t : d_.column_t;
   json nodes = json::array(), members = json::array(), supports = json::array();
@@ -328,6 +340,46 @@ void Builder::add_steel_frame() {
                          {"quantities", {"section_forces", "fibre_stress"}}});
   probes_.push_back(json{{"name", "crest"}, {"type", "member"}, {"member", "column_0_" + std::to_string(d_.levels)}, {"position", 1.0},
                          {"quantities", {"displacement"}}});
+}
+
+// The steel open dam in 3D: `columns` pipe columns per row across the channel, `width` apart and centred on y = 0, the
+// rows along the flow as in 2D; at every level beams along the flow (and one brace per panel) in each column line,
+// and ties across the channel between neighbouring columns of a row.
+void Builder::add_space_steel_frame() {
+  const double H = d_.height, D = d_.column_d, s = d_.row_spacing;
+  const double bd = d_.beam_d > 0 ? d_.beam_d : D, bt = d_.beam_t > 0 ? d_.beam_t : d_.column_t;
+  const int nc = d_.columns > 0 ? d_.columns : 3, secondary = std::max(2, d_.elements / 2);
+  if (nc > 1 && !(d_.width > D)) fail("/dam/width", d_.width, "a column spacing across the channel larger than the column diameter (the columns would overlap)");
+  json nodes = json::array(), members = json::array(), supports = json::array();
+  auto node = [](int i, int j, int k) { return "c" + std::to_string(i) + "_" + std::to_string(j) + "_" + std::to_string(k); };
+  auto across = [&](int j) { return (j - 0.5 * (nc - 1)) * d_.width; };
+  auto member = [&](const std::string& name, const std::string& a, const std::string& b, int elements, double d, double t) {
+    members.push_back({{"name", name}, {"start", a}, {"end", b}, {"material", "steel"}, {"elements", elements}, {"section", pipe(d, t)}});
+  };
+  for (int i = 0; i < d_.rows; ++i)
+    for (int j = 0; j < nc; ++j)
+      for (int k = 0; k <= d_.levels; ++k) {
+        nodes.push_back({{"name", node(i, j, k)}, {"position", at(0.5 * D + i * s, H * k / d_.levels, across(j))}});
+        if (k == 0) {
+          supports.push_back({{"node", node(i, j, 0)}, {"type", d_.base}});
+          continue;
+        }
+        const std::string tag = std::to_string(i) + "_" + std::to_string(j) + "_" + std::to_string(k);
+        member("column_" + tag, node(i, j, k - 1), node(i, j, k), d_.elements, D, d_.column_t);
+        if (i + 1 < d_.rows) {
+          member("beam_" + tag, node(i, j, k), node(i + 1, j, k), secondary, bd, bt);
+          if (d_.bracing) member("brace_" + tag, node(i + 1, j, k - 1), node(i, j, k), secondary, bd, bt);
+        }
+        if (j + 1 < nc) member("tie_" + tag, node(i, j, k), node(i, j + 1, k), secondary, bd, bt);
+      }
+  json st{{"integrator", "newmark"}, {"self_weight", true}, {"nodes", nodes}, {"members", members}, {"supports", supports}};
+  const double r = std::sqrt(D * D + std::pow(D - 2 * d_.column_t, 2)) / 4;  // pipe: r^2 = (D^2 + d^2) / 16
+  const auto modes = cantilever_modes(d_.steel["youngs_modulus"], d_.steel["density"], r, H);
+  period_ = 2 * kPi / modes.first;
+  if (d_.damping_ratio > 0) st["rayleigh_damping"] = rayleigh(d_.damping_ratio, modes);
+  out_["structure"] = st;
+  box_.add(0, 0), box_.add(xd(0), H + 0.5 * D);
+  box_.across(across(0) - 0.5 * D, across(nc - 1) + 0.5 * D);
 }
 
 double Builder::buffer_damping_frequency(double E, double thickness) const {
@@ -396,20 +448,33 @@ void Builder::add_boulder() {
   const BoulderPreset& b = *p_.boulder;
   materials_.push_back(json{{"name", "rock"}, {"model", "linear_elastic"}, {"density", b.density}, {"youngs_modulus", b.youngs_modulus},
                             {"poisson_ratio", b.poisson_ratio}});
+  // The velocity in the elevation (vx along the flow, vy up) and, in 3D, across the channel (va): [vx, va, vy] there.
+  const bool space = dim_ == 3;
   double vx = b.velocity.empty() ? std::sqrt(2 * kG * b.release_height) : b.velocity[0];
-  double vy = b.velocity.empty() ? 0.0 : b.velocity[1];
-  boulder_speed_ = std::hypot(vx, vy);
+  double vy = b.velocity.empty() ? 0.0 : b.velocity[space ? 2 : 1];
+  const double va = b.velocity.empty() || !space ? 0.0 : b.velocity[1];
+  boulder_speed_ = std::sqrt(vx * vx + vy * vy + va * va);
+  if (!space && b.across != 0) fail("/boulder/across", b.across, "0 in 2D (the plane model has no position across the channel; analysis.dimension 3 uses it)");
+  if (!space && d_.columns != 0) fail("/dam/columns", d_.columns, "no columns across the channel in 2D (the plane model stands for one bay; analysis.dimension 3 uses it)");
   if (!(vx > 0)) fail("/boulder/velocity", b.velocity, "a velocity with a positive x component (towards the dam, downstream)");
   const double r = boulder_r_, gap = b.gap >= 0 ? b.gap : 2 * h_;
   impact_y_ = b.impact_height > 0 ? b.impact_height : 0.9 * d_.height;
-  double cx, cy;
+  double cx, cy, ca = b.across;
   if (!b.position.empty()) {
-    cx = b.position[0], cy = b.position[1];
+    cx = b.position[0], cy = b.position[space ? 2 : 1], ca = space ? b.position[1] : 0.0;
     impact_y_ = cy;
   } else {
     // Touching point (centre r upstream of the face at the impact height), moved back by gap along the path.
     cx = front(impact_y_) - r - gap * vx / boulder_speed_;
     cy = impact_y_ - gap * vy / boulder_speed_;
+    ca = b.across - gap * va / boulder_speed_;
+  }
+  if (space) {  // the impact point must lie on the dam across the channel: the crest's length, or the outer columns
+    const int nc = d_.columns > 0 ? d_.columns : 3;
+    const double half = d_.type == "steel_open" ? 0.5 * (nc - 1) * d_.width + 0.5 * d_.column_d : 0.5 * d_.width;
+    if (std::abs(b.across) > half)
+      fail("/boulder/across", b.across, "an impact point on the dam across the channel: |across| <= " + std::to_string(half) + " m");
+    box_.across(ca - r, ca + r);
   }
   // The boulder must strike the dam (or its buffer): a centre above the crest passes over it and loads nothing, and
   // a design check of that run would read as a safe impact.
@@ -422,14 +487,16 @@ void Builder::add_boulder() {
   if (cx + r > front(cy) + 1e-9)
     fail("/boulder/position", b.position, "a boulder upstream of the dam face or buffer (it overlaps them)");
   rigid_boulder_ = b.model == "rigid" || (b.model == "auto" && p_.buffer);
-  bodies_.push_back(json{{"name", "boulder"}, {"material", "rock"}, {"shape", {{"type", "ball"}, {"center", {clean(cx), clean(cy)}}, {"radius", clean(r)}}},
-                         {"velocity", {vx, vy}}, {"rigid", rigid_boulder_}});
+  bodies_.push_back(json{{"name", "boulder"}, {"material", "rock"}, {"shape", {{"type", "ball"}, {"center", at(cx, cy, ca)}, {"radius", clean(r)}}},
+                         {"velocity", space ? json{vx, va, vy} : json{vx, vy}}, {"rigid", rigid_boulder_}});
   probes_.push_back(json{{"name", "boulder"}, {"type", "body"}, {"body", "boulder"}, {"quantities", {"velocity", "kinetic_energy", "position"}}});
   box_.add(cx - r, cy - r), box_.add(cx + r, cy + r);
   // End: arrival plus 0.15 s (a buffered impact lasts a few hundredths of a second; docs/verification.md).
   const double travel = std::max(0.0, front(cy) - r - cx) / vx;
-  end_time_ = std::max(end_time_, travel + 0.15);
-  if (members_) {
+  // 3D: a bare hard impact's pulse lasts milliseconds; the members' peaks follow within the first cantilever period,
+  // so arrival plus 1.5 periods (at least 0.03 s) instead of 0.15 s (which would cost a 3D run five times as much).
+  end_time_ = std::max(end_time_, travel + (space ? std::max(0.03, 1.5 * period_) : 0.15));
+  if (members_ && !space) {
     const double y = std::clamp(impact_y_ / d_.height, 0.0, 1.0);
     if (d_.type == "concrete_gravity") {
       probes_.push_back(json{{"name", "impact"}, {"type", "member"}, {"member", "dam"}, {"position", y},
@@ -541,12 +608,18 @@ void Builder::add_grid_walls_and_time() {
   const double right = box_.hi[0] + std::max(4 * h, (p_.debris ? 0.5 : 0.25) * H);
   // Upstream, room for a rebounding boulder to fly freely until the end (at most its impact speed for the
   // 0.15 s after arrival): with 4 cells it struck the upstream end wall and came back for a second impact.
-  const double left = box_.lo[0] - 4 * h - (p_.boulder ? boulder_speed_ * 0.15 : 0.0);
+  const double left = box_.lo[0] - 4 * h - (p_.boulder ? boulder_speed_ * (dim_ == 3 ? std::max(0.03, 1.5 * period_) : 0.15) : 0.0);
   const double bottom = std::min(0.0, bed(right)) - 4 * h;
   const double ox = std::floor(left / h) * h, oy = std::floor(bottom / h) * h;
   const double sx = std::ceil((right - ox) / h) * h, sy = std::ceil((top - oy) / h) * h;
-  out_["grid"] = json{{"origin", {clean(ox), clean(oy)}}, {"size", {clean(sx), clean(sy)}}, {"cell_size", h}};
-  out_["analysis"] = json{{"dimension", 2}, {"plane", "strain"}, {"thickness", d_.width}, {"end_time", clean(end_time_)}};
+  if (dim_ == 3) {  // across: 4 cells round the members and the boulder, the centre plane y = 0 inside
+    const double a0 = std::floor((box_.across_lo - 4 * h) / h) * h, a1 = std::ceil((box_.across_hi + 4 * h) / h) * h;
+    out_["grid"] = json{{"origin", at(ox, oy, a0)}, {"size", at(sx, sy, a1 - a0)}, {"cell_size", h}};
+    out_["analysis"] = json{{"dimension", 3}, {"end_time", clean(end_time_)}, {"gravity", {0.0, 0.0, -kG}}};
+  } else {
+    out_["grid"] = json{{"origin", {clean(ox), clean(oy)}}, {"size", {clean(sx), clean(sy)}}, {"cell_size", h}};
+    out_["analysis"] = json{{"dimension", 2}, {"plane", "strain"}, {"thickness", d_.width}, {"end_time", clean(end_time_)}};
+  }
   // A rigid boulder leaves the step to the buffer's rubber. At its CFL 0.5 the buffered dam's base shear read 5 %
   // (h 0.02 m) to 8 % (0.01 m) low, an error of the Courant number that refinement at a fixed cfl does not remove;
   // at 0.125 it is within 0.5 % of the small-step value (docs/verification.md, "Rigid boulder").
@@ -554,10 +627,10 @@ void Builder::add_grid_walls_and_time() {
   out_["output"] = json{{"history_interval", clean(std::min(1e-4, end_time_ / 2000))}, {"snapshot_interval", clean(end_time_ / 50)}};
   json walls = json::array();
   const double bed_mu = p_.debris ? p_.debris->bed_friction : 0.4;
-  walls.push_back({{"name", "ground"}, {"type", "plane"}, {"point", {0.0, 0.0}}, {"normal", {std::sin(slope_), std::cos(slope_)}},
+  walls.push_back({{"name", "ground"}, {"type", "plane"}, {"point", at(0.0, 0.0)}, {"normal", at(std::sin(slope_), std::cos(slope_))},
                    {"condition", "friction"}, {"friction", bed_mu}});
-  walls.push_back({{"name", "upstream_end"}, {"type", "plane"}, {"point", {ox + 2 * h, 0.0}}, {"normal", {1.0, 0.0}}, {"condition", "slip"}});
-  walls.push_back({{"name", "downstream_end"}, {"type", "plane"}, {"point", {ox + sx - 2 * h, 0.0}}, {"normal", {-1.0, 0.0}}, {"condition", "slip"}});
+  walls.push_back({{"name", "upstream_end"}, {"type", "plane"}, {"point", at(ox + 2 * h, 0.0)}, {"normal", at(1.0, 0.0)}, {"condition", "slip"}});
+  walls.push_back({{"name", "downstream_end"}, {"type", "plane"}, {"point", at(ox + sx - 2 * h, 0.0)}, {"normal", at(-1.0, 0.0)}, {"condition", "slip"}});
   // Surges throw single particles far above any run-up (a Bingham slurry flung one 5.8 m up at 0.4 s); a
   // slip ceiling keeps such ejecta in the grid instead of stopping the run. It carries no load worth noting.
   if (p_.debris)

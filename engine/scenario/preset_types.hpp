@@ -18,12 +18,14 @@ struct DamPreset {
   int rows = 2, levels = 2;                                      // steel_open
   double row_spacing = 0, column_d = 0, column_t = 0, beam_d = 0, beam_t = 0;
   bool bracing = true;
+  int columns = 0;                                               // steel_open in 3D: columns per row across (0: 3)
 };
 
 struct BoulderPreset {
   double diameter = 0, mass = 0, density = 2650, youngs_modulus = 50e9, poisson_ratio = 0.25;
   DVec velocity, position;
   double release_height = 0, impact_height = 0, gap = -1;        // gap < 0: default
+  double across = 0;                                               // 3D: impact point across the channel (y, m)
   std::string model = "auto";                                      // auto | rigid | elastic
 };
 
@@ -49,6 +51,7 @@ struct PresetScene {
   std::optional<BufferPreset> buffer;
   double cell_size = 0;          // the user's grid.cell_size, 0 = choose
   bool gravity_given = false;
+  int dim = 2;                   // analysis.dimension: 2 (an elevation, plane strain) or 3
 };
 
 // The low-level scenario JSON of the presets (without the user's low-level keys).

@@ -109,6 +109,8 @@ void read_dam(Obj o, DamPreset& d) {
     o.number("row_spacing", d.row_spacing, positive("m", "distance between rows along the flow; default height / 2"));
     o.integer("levels", d.levels, Spec{.doc = "beam levels between the rows, evenly spaced up to the crest", .min = 1, .max = 20});
     o.boolean("bracing", d.bracing, Spec{.doc = "one diagonal per panel, from the foot of the downstream column to the head of the upstream one"});
+    o.integer("columns", d.columns, Spec{.doc = "3D (analysis.dimension 3): columns in each row across the channel, `width` apart, tied by beams "
+                                                "across at every level; default 3", .min = 1, .max = 20});
     Obj c = o.object("column", "column pipe section");
     c.number("diameter", d.column_d, positive("m", "outer diameter D", true));
     c.number("wall_thickness", d.column_t, positive("m", "wall thickness t <= D/2", true));
@@ -151,6 +153,8 @@ void read_boulder(Obj o, BoulderPreset& b) {
   o.number("impact_height", b.impact_height, positive("m", "height of the boulder's centre where it meets the dam (or buffer); default 0.9 x dam height"));
   o.vector("position", b.position, Spec{.unit = "m", .doc = "centre at release (overrides impact_height and gap)"});
   o.number("gap", b.gap, nonneg("m", "clearance to the face at release along the path; default 2 cells"));
+  o.number("across", b.across, Spec{.unit = "m", .doc = "3D (analysis.dimension 3): where the boulder strikes across the channel, y from the "
+                                                        "middle of the dam (0: the middle of the crest, or the middle column)"});
   o.choice<std::string>("model", b.model, {{"auto", "auto"}, {"rigid", "rigid"}, {"elastic", "elastic"}},
                         Spec{.doc = "auto: rigid when it strikes a tyre buffer (its deformation does not matter against rubber thousands of "
                                     "times softer, and the step is then the buffer's, not the rock's), elastic on a bare face (the rock's "
@@ -265,11 +269,21 @@ void document_presets(Obj& o) {
 }
 
 json expand_presets(const json& j, const std::string& file, const std::string& variant) {
-  schema::Context ctx{.file = file, .dim = 2};
-  Obj root(&j, "", ctx);
   PresetScene p;
-  if (j.contains("analysis") && j["analysis"].is_object() && j["analysis"].value("dimension", 2) != 2)
-    throw InputError(file, "/analysis/dimension", schema::short_dump(j["analysis"]["dimension"]), "2 with presets (they build 2D elevations)");
+  if (j.contains("analysis") && j["analysis"].is_object() && j["analysis"].contains("dimension")) {
+    const json& d = j["analysis"]["dimension"];
+    if (d != 2 && d != 3) throw InputError(file, "/analysis/dimension", schema::short_dump(d), "2 (an elevation, plane strain) or 3 with presets");
+    p.dim = d.get<int>();
+  }
+  if (p.dim == 3)  // what the 3D presets build (docs/presets.md, "In three dimensions")
+    for (const char* k : {"tyre_buffer", "debris_surge", "solid_check", "compare"})
+      if (j.contains(k))
+        throw InputError(file, "/" + std::string(k), "", std::string("no ") + k + " with analysis.dimension 3: the 3D presets build a concrete_gravity "
+                         "(members) or steel_open dam struck by a boulder; buffers, surges and the solid check are 2D presets for now");
+  if (p.dim == 3 && j.contains("dam") && j["dam"].is_object() && j["dam"].value("model", std::string("members")) != "members")
+    throw InputError(file, "/dam/model", schema::short_dump(j["dam"]["model"]), "members with analysis.dimension 3 (the continuum dam is 2D for now)");
+  schema::Context ctx{.file = file, .dim = p.dim};
+  Obj root(&j, "", ctx);
   if (!j.contains("dam")) throw InputError(file, "/dam", "", "a dam preset with the other presets (boulder, debris_surge and tyre_buffer act on it)");
   read_dam(root.object("dam", ""), p.dam);
   if (j.contains("boulder")) read_boulder(root.object("boulder", ""), p.boulder.emplace());

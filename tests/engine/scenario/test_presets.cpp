@@ -181,6 +181,65 @@ TEST(Presets, HydrographBecomesAnInflowSectionUpstreamOfTheDam) {
   }
 }
 
+// In 3D the steel open dam stands as columns across the channel and the boulder is a sphere of its own mass, struck
+// `across` from the middle; counts and positions by hand.
+TEST(Presets, SteelOpenDamInThreeDimensions) {
+  const json j = json::parse(R"({"schema_version": 1, "name": "s3", "analysis": {"dimension": 3},
+    "dam": {"type": "steel_open", "height": 4, "width": 1.5, "rows": 2, "row_spacing": 2, "levels": 2,
+            "column": {"diameter": 0.5, "wall_thickness": 0.016}},
+    "boulder": {"mass": 2000, "velocity": [8, 0, 0], "impact_height": 3.6, "across": 1.5}})");
+  const json low = expand_presets(j, "t.json");
+  // 2 rows x 3 columns x 2 levels: 12 column segments, 6 beams and 6 braces along the flow, 2 x 2 x 2 = 8 ties across.
+  const json& st = low["structure"];
+  EXPECT_EQ(st["members"].size(), 32u);
+  EXPECT_EQ(st["supports"].size(), 6u);
+  EXPECT_EQ(named(st["nodes"], "c0_2_2")["position"], json({0.25, 1.5, 4.0}));
+  EXPECT_EQ(low["analysis"]["dimension"], 3);
+  // Sphere: R = (3 m / (4 pi rho))^(1/3) = 0.564805 m, centre R + 2 cells upstream of the face x = 0, at y = 1.5, z = 3.6.
+  const double R = std::cbrt(3 * 2000 / (4 * kPi * 2650)), h = low["grid"]["cell_size"];
+  const json& ball = low["bodies"][0]["shape"];
+  EXPECT_NEAR(ball["radius"].get<double>(), R, 1e-11);
+  EXPECT_NEAR(ball["center"][0].get<double>(), -R - 2 * h, 1e-11);
+  EXPECT_DOUBLE_EQ(ball["center"][1].get<double>(), 1.5);
+  EXPECT_DOUBLE_EQ(ball["center"][2].get<double>(), 3.6);
+  EXPECT_EQ(low["design_basis"]["boulder"]["mass_kg"], 2000);
+  for (const auto& p : low["output"]["probes"]) EXPECT_NE(p["type"], "member");  // plane-frame probes only
+  const Scenario s = parse_scenario(j.dump(), "t.json");  // a valid 3D scenario: every node inside the grid
+  EXPECT_EQ(s.analysis.dimension, 3);
+  // The concrete dam: one member on the centre line, its crest length the section's width; the sphere off the middle.
+  const json c = json::parse(R"({"schema_version": 1, "name": "c3", "analysis": {"dimension": 3},
+    "dam": {"type": "concrete_gravity", "height": 4, "crest_thickness": 1.0, "base_thickness": 1.6, "width": 6.0},
+    "boulder": {"mass": 1000, "velocity": [5, 0, 0], "across": 2.0}})");
+  const json lc = expand_presets(c, "t.json");
+  EXPECT_EQ(lc["structure"]["members"][0]["section"]["width"], 6.0);
+  EXPECT_EQ(lc["structure"]["nodes"][1]["position"], json({0.5, 0.0, 4.0}));  // the crest's mid-thickness: upstream face x = 0, crest 1 m
+  EXPECT_DOUBLE_EQ(lc["bodies"][0]["shape"]["center"][1].get<double>(), 2.0);
+  EXPECT_NO_THROW(parse_scenario(c.dump(), "t.json"));
+}
+
+// What the 3D presets do not build, and a 3D key in 2D, are errors at the key the user wrote.
+TEST(Presets, ThreeDimensionalPresetsRefuseWhatTheyDoNotBuild) {
+  auto message = [](const json& j) {
+    try {
+      expand_presets(j, "t.json");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  json j = json::parse(R"({"schema_version": 1, "name": "c3", "analysis": {"dimension": 3},
+    "dam": {"type": "concrete_gravity", "height": 4, "crest_thickness": 1.0, "base_thickness": 1.6, "width": 6.0},
+    "boulder": {"mass": 1000, "velocity": [5, 0, 0], "across": 3.5}})");
+  EXPECT_NE(message(j).find("/boulder/across = 3.5"), std::string::npos) << message(j);  // beyond the 6 m crest
+  j["boulder"]["across"] = 0.0;
+  j["tyre_buffer"] = json{{"thickness", 0.3}};
+  EXPECT_NE(message(j).find("/tyre_buffer"), std::string::npos) << message(j);
+  json k = concrete_boulder();
+  k.erase("tyre_buffer"), k.erase("compare");
+  k["boulder"]["across"] = 1.0;
+  EXPECT_NE(message(k).find("/boulder/across = 1"), std::string::npos) << message(k);  // no position across in 2D
+}
+
 // phi 40 deg on a 15 deg bed: 1 / tan 25 deg = 2.1445 m; front_length 0 is the blunt front of a rigid block.
 TEST(Presets, DebrisSnoutStandsAtTheAngleOfRepose) {
   json j = json::parse(R"({"schema_version": 1, "name": "d",
