@@ -170,6 +170,20 @@ template <int D> void MemberContact<D>::find_candidates(const Scene<D>& s) {
       return (x - q0 - t * ch).norm();
     };
     const double dev = std::max(seg_dist(q1), seg_dist(q2));
+    // A rectangle's depth axis gives a sharper bound: the surface's e2(xi) lies in the plane of the curve's e2 and the
+    // tangent, so e3(xi) = t x e2(xi) is normal to the curve's e2, and along u = e2 every section point lies within a of
+    // the centre-line, which lies within the Bezier points' extent [u_lo, u_hi]: |x - surface| >= dist(u.x, [u_lo, u_hi]) - a.
+    // What it culls (the nodes in front of a wide member's face) is exactly what the projection would have rejected.
+    double u_lo = 0, u_hi = 0, a_max = 0;
+    Vec<D> u = Vec<D>::Zero();
+    bool by_depth = false;
+    if constexpr (D == 3) {
+      by_depth = !shapes_[e].round;
+      a_max = std::max(shapes_[e].a0, shapes_[e].a1);
+      u = c.e2.normalized();
+      u_lo = std::min({u.dot(q0), u.dot(q1), u.dot(q2), u.dot(q3)});
+      u_hi = std::max({u.dot(q0), u.dot(q1), u.dot(q2), u.dot(q3)});
+    }
     IVec<D> a, b;
     bool empty = false;
     for (int d = 0; d < D; ++d) {
@@ -186,7 +200,12 @@ template <int D> void MemberContact<D>::find_candidates(const Scene<D>& s) {
       const Vec<D> x = g.node_pos(id);
       int& k = slot_[id];
       // Exact skips: r >= ln (free zone), or no nearer than the surface this node already has.
-      const double r_low = seg_dist(x) - dev - hd_max;
+      double r_low = seg_dist(x) - dev - hd_max;
+      if constexpr (D == 3)
+        if (by_depth) {
+          const double ux = u.dot(x);
+          r_low = std::max(r_low, std::max({0.0, ux - u_hi, u_lo - ux}) - a_max);
+        }
       if (r_low >= ln || (k >= 0 && r_low >= cand_[k].surface)) return false;
       const Projection pr = project_on_curve(c, x);
       ++stats_.candidates;
