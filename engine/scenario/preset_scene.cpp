@@ -89,6 +89,10 @@ class Builder {
   void add_space_steel_frame();
   // A position in the elevation (x along the flow, y up) and across the channel as the scene's coordinates:
   // 2D [x, y]; 3D [x, across, y] (z up).
+  // How long a boulder run goes on after the boulder arrives: 0.15 s (a buffered impact lasts a few hundredths of a
+  // second; docs/verification.md); in 3D on a bare face, whose pulse lasts milliseconds and whose member peaks follow
+  // within the first cantilever period, 1.5 periods (at least 0.03 s), which a 3D run cannot afford to exceed fivefold.
+  double after_arrival() const { return dim_ == 3 && !p_.buffer ? std::max(0.03, 1.5 * period_) : 0.15; }
   json at(double x, double y, double across = 0) const { return dim_ == 3 ? json{clean(x), clean(across), clean(y)} : json{clean(x), clean(y)}; }
   void add_buffer();
   void add_boulder();
@@ -386,7 +390,9 @@ double Builder::buffer_damping_frequency(double E, double thickness) const {
   // The buffer works as a spring k = E A / t under the boulder (A = r x W, a contact strip as wide as the
   // equivalent radius) against the boulder's mass: f = sqrt(k/m) / (2 pi). Without a boulder, the
   // layer's own quarter-wave frequency c / (4 t) (an estimate: the ratio is exact only at this frequency).
-  if (p_.boulder) return std::sqrt(E * boulder_r_ * d_.width / thickness / boulder_m_) / (2 * kPi);
+  // In 3D the sphere presses A = pi r^2 (the design basis's assumption, docs/design-checks.md).
+  const double A = dim_ == 3 ? kPi * boulder_r_ * boulder_r_ : boulder_r_ * d_.width;
+  if (p_.boulder) return std::sqrt(E * A / thickness / boulder_m_) / (2 * kPi);
   const double rho = p_.buffer->material.value("density", 600.0);
   return std::sqrt(E / rho) / (4 * thickness);
 }
@@ -413,6 +419,13 @@ void Builder::add_buffer() {
   }
   if (m.value("damping_ratio", 0.0) > 0 && !m.contains("damping_frequency")) m["damping_frequency"] = f;
   materials_.push_back(m);
+  if (homog && dim_ == 3) {  // a box on the vertical upstream face, across the whole crest (presets.cpp allows no other)
+    const double t = b.thickness, y0 = std::max(b.bottom, bed(-t)), w = 0.5 * d_.width;
+    bodies_.push_back(json{{"name", "buffer"}, {"material", m["name"]}, {"shape", {{"type", "box"}, {"min", at(-t, y0, -w)}, {"max", at(0.0, top, w)}}}});
+    bonded_.push_back("buffer");
+    box_.add(-t, y0), box_.add(-t, top), box_.across(-w, w);
+    return;
+  }
   if (homog) {
     const double t = b.thickness;
     const double y0 = std::max(b.bottom, bed(xu(b.bottom) - t));
@@ -491,11 +504,9 @@ void Builder::add_boulder() {
                          {"velocity", space ? json{vx, va, vy} : json{vx, vy}}, {"rigid", rigid_boulder_}});
   probes_.push_back(json{{"name", "boulder"}, {"type", "body"}, {"body", "boulder"}, {"quantities", {"velocity", "kinetic_energy", "position"}}});
   box_.add(cx - r, cy - r), box_.add(cx + r, cy + r);
-  // End: arrival plus 0.15 s (a buffered impact lasts a few hundredths of a second; docs/verification.md).
+  // End: arrival plus after_arrival() (0.15 s, or 1.5 cantilever periods on a bare face in 3D).
   const double travel = std::max(0.0, front(cy) - r - cx) / vx;
-  // 3D: a bare hard impact's pulse lasts milliseconds; the members' peaks follow within the first cantilever period,
-  // so arrival plus 1.5 periods (at least 0.03 s) instead of 0.15 s (which would cost a 3D run five times as much).
-  end_time_ = std::max(end_time_, travel + (space ? std::max(0.03, 1.5 * period_) : 0.15));
+  end_time_ = std::max(end_time_, travel + after_arrival());
   if (members_ && !space) {
     const double y = std::clamp(impact_y_ / d_.height, 0.0, 1.0);
     if (d_.type == "concrete_gravity") {
@@ -608,7 +619,7 @@ void Builder::add_grid_walls_and_time() {
   const double right = box_.hi[0] + std::max(4 * h, (p_.debris ? 0.5 : 0.25) * H);
   // Upstream, room for a rebounding boulder to fly freely until the end (at most its impact speed for the
   // 0.15 s after arrival): with 4 cells it struck the upstream end wall and came back for a second impact.
-  const double left = box_.lo[0] - 4 * h - (p_.boulder ? boulder_speed_ * (dim_ == 3 ? std::max(0.03, 1.5 * period_) : 0.15) : 0.0);
+  const double left = box_.lo[0] - 4 * h - (p_.boulder ? boulder_speed_ * after_arrival() : 0.0);
   const double bottom = std::min(0.0, bed(right)) - 4 * h;
   const double ox = std::floor(left / h) * h, oy = std::floor(bottom / h) * h;
   const double sx = std::ceil((right - ox) / h) * h, sy = std::ceil((top - oy) / h) * h;

@@ -275,11 +275,24 @@ json expand_presets(const json& j, const std::string& file, const std::string& v
     if (d != 2 && d != 3) throw InputError(file, "/analysis/dimension", schema::short_dump(d), "2 (an elevation, plane strain) or 3 with presets");
     p.dim = d.get<int>();
   }
-  if (p.dim == 3)  // what the 3D presets build (docs/presets.md, "In three dimensions")
-    for (const char* k : {"tyre_buffer", "debris_surge", "solid_check", "compare"})
+  if (p.dim == 3) {  // what the 3D presets build (docs/presets.md, "In three dimensions")
+    for (const char* k : {"debris_surge", "solid_check"})
       if (j.contains(k))
         throw InputError(file, "/" + std::string(k), "", std::string("no ") + k + " with analysis.dimension 3: the 3D presets build a concrete_gravity "
-                         "(members) or steel_open dam struck by a boulder; buffers, surges and the solid check are 2D presets for now");
+                         "(members) or steel_open dam struck by a boulder, with a homogenised tyre buffer on a concrete dam; surges and the "
+                         "solid check are 2D presets for now");
+    if (j.contains("tyre_buffer") && j["tyre_buffer"].is_object()) {
+      const json& t = j["tyre_buffer"];
+      if (t.value("type", std::string("homogenised")) != "homogenised")
+        throw InputError(file, "/tyre_buffer/type", schema::short_dump(t["type"]), "homogenised with analysis.dimension 3 (discrete tyres are 2D for now)");
+      const json& dam = j.contains("dam") && j["dam"].is_object() ? j["dam"] : json::object();
+      if (dam.value("type", std::string()) != "concrete_gravity")
+        throw InputError(file, "/tyre_buffer", "", "a tyre buffer on a concrete_gravity dam with analysis.dimension 3 (a slit dam's buffer is 2D for now)");
+      if (dam.value("sloped_face", std::string("downstream")) != "downstream")
+        throw InputError(file, "/dam/sloped_face", schema::short_dump(dam["sloped_face"]),
+                         "downstream (a vertical upstream face) under a 3D tyre buffer: the layer is a box on the face");
+    }
+  }
   if (p.dim == 3 && j.contains("dam") && j["dam"].is_object() && j["dam"].value("model", std::string("members")) != "members")
     throw InputError(file, "/dam/model", schema::short_dump(j["dam"]["model"]), "members with analysis.dimension 3 (the continuum dam is 2D for now)");
   schema::Context ctx{.file = file, .dim = p.dim};

@@ -217,6 +217,30 @@ TEST(Presets, SteelOpenDamInThreeDimensions) {
   EXPECT_NO_THROW(parse_scenario(c.dump(), "t.json"));
 }
 
+// A homogenised buffer in 3D: a box on the vertical face across the whole crest, bonded to the member; the boulder
+// against it rigid (the preset's auto model) at CFL 0.125, starting 2 cells before the buffer's front.
+TEST(Presets, TyreBufferInThreeDimensions) {
+  const json j = json::parse(R"({"schema_version": 1, "name": "b3", "analysis": {"dimension": 3},
+    "dam": {"type": "concrete_gravity", "height": 4, "crest_thickness": 1.0, "base_thickness": 1.6, "width": 2.0},
+    "boulder": {"mass": 1000, "velocity": [5, 0, 0], "impact_height": 3.6},
+    "tyre_buffer": {"thickness": 0.3, "bottom": 3.0}, "compare": "with_and_without_buffer"})");
+  const json low = expand_presets(j, "t.json", "with_buffer");
+  const json& buffer = named(low["bodies"], "buffer");
+  EXPECT_EQ(buffer["shape"]["type"], "box");
+  EXPECT_EQ(buffer["shape"]["min"], json({-0.3, -1.0, 3.0}));
+  EXPECT_EQ(buffer["shape"]["max"], json({0.0, 1.0, 4.0}));
+  EXPECT_EQ(low["member_contact"]["bonded"], json({"buffer"}));
+  const json& boulder = named(low["bodies"], "boulder");
+  EXPECT_TRUE(boulder["rigid"].get<bool>());
+  const double R = std::cbrt(3 * 1000 / (4 * kPi * 2650)), h = low["grid"]["cell_size"];
+  EXPECT_NEAR(boulder["shape"]["center"][0].get<double>(), -0.3 - R - 2 * h, 1e-11);
+  EXPECT_DOUBLE_EQ(low["analysis"]["cfl"].get<double>(), 0.125);
+  // The damping frequency of the buffer: k = E pi r^2 / t against the boulder's mass (2 MPa, 0.3 m).
+  const json& m = named(low["materials"], "tyre_buffer");
+  EXPECT_NEAR(m["damping_frequency"].get<double>(), std::sqrt(2e6 * kPi * R * R / 0.3 / 1000) / (2 * kPi), 1e-9);
+  EXPECT_EQ(parse_scenario_variants(j.dump(), "t.json").size(), 2u);
+}
+
 // What the 3D presets do not build, and a 3D key in 2D, are errors at the key the user wrote.
 TEST(Presets, ThreeDimensionalPresetsRefuseWhatTheyDoNotBuild) {
   auto message = [](const json& j) {
@@ -232,8 +256,14 @@ TEST(Presets, ThreeDimensionalPresetsRefuseWhatTheyDoNotBuild) {
     "boulder": {"mass": 1000, "velocity": [5, 0, 0], "across": 3.5}})");
   EXPECT_NE(message(j).find("/boulder/across = 3.5"), std::string::npos) << message(j);  // beyond the 6 m crest
   j["boulder"]["across"] = 0.0;
+  j["tyre_buffer"] = json{{"type", "discrete"}};
+  EXPECT_NE(message(j).find("/tyre_buffer/type"), std::string::npos) << message(j);
   j["tyre_buffer"] = json{{"thickness", 0.3}};
-  EXPECT_NE(message(j).find("/tyre_buffer"), std::string::npos) << message(j);
+  j["dam"]["sloped_face"] = "both";
+  EXPECT_NE(message(j).find("/dam/sloped_face"), std::string::npos) << message(j);
+  j.erase("tyre_buffer");
+  j["debris_surge"] = json::object();
+  EXPECT_NE(message(j).find("/debris_surge"), std::string::npos) << message(j);
   json k = concrete_boulder();
   k.erase("tyre_buffer"), k.erase("compare");
   k["boulder"]["across"] = 1.0;
