@@ -221,7 +221,8 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
       FieldSpec cs = spec;
       cs.section_y = impact_y(r);
       char b[160];
-      std::snprintf(b, sizeof b, ", section y = %.2f m through the impact point, seen from -y, at the contact peak (%s)", *cs.section_y, ms(tp).c_str());
+      const double yc = std::round(*cs.section_y * 100) / 100 + 0.0;  // + 0.0: no "-0.00"
+      std::snprintf(b, sizeof b, ", section y = %.2f m through the impact point, seen from -y, at the contact peak (%s)", yc, ms(tp).c_str());
       cs.title = name + ": " + qlabel + b;
       const std::string f2 = "field_" + tag + "_section.png";
       const std::vector<Panel> one{{&r.results, fr, sp, "t = " + ms(r.results.snapshots[sp].time)}};
@@ -309,7 +310,8 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
     spec.title = name + ": " + qlabel + (members ? " at each run's peak member stress" : " near each run's governing instant") + ", one colour scale";
     const FieldImage ci = render_field(panels, spec, (fs::path(image_dir) / "field_comparison.png").string());
     add("field_comparison.png", "field_comparison", "", spec.title + ": " + instants + scale_note(ci, panels), ci.width, ci.height, &ci);
-    if (members) {
+    if (members && runs[0].frame->dim == 2) {  // the envelope colours a plane member's two faces; a space member's
+                                               // vertices take the instant's section forces (not an envelope)
       spec.title = name + ": members coloured by their fibre-stress envelope over the run, one colour scale";
       const FieldImage ei = render_field(envelope, spec, (fs::path(image_dir) / "field_envelope.png").string());
       add("field_envelope.png", "field_comparison", "",
