@@ -54,8 +54,10 @@ std::pair<double, double> cantilever_modes(double E, double rho, double r, doubl
   return {1.8751 * 1.8751 * base, 4.6941 * 4.6941 * base};
 }
 
-// Rayleigh C = a M + b K with damping ratio zeta at w1 and w2 (Chopra 2012, eq. 11.4.9).
-json rayleigh(double zeta, std::pair<double, double> w) {
+// Rayleigh C = a M + b K with damping ratio zeta at w1 and w2 (Chopra 2012, eq. 11.4.9); model "mass": C = a M with
+// zeta at w1, a = 2 zeta w1 (eq. 11.4.3 with b = 0: zeta(w) = zeta w1 / w).
+json rayleigh(double zeta, std::pair<double, double> w, const std::string& model = "rayleigh") {
+  if (model == "mass") return json{{"mass", 2 * zeta * w.first}, {"stiffness", 0.0}};
   return json{{"mass", 2 * zeta * w.first * w.second / (w.first + w.second)}, {"stiffness", 2 * zeta / (w.first + w.second)}};
 }
 
@@ -299,7 +301,7 @@ void Builder::add_concrete_members() {
   const double r = 0.5 * (d_.base_thickness + d_.crest) * c / std::sqrt(12.0);
   const auto modes = cantilever_modes(d_.concrete["youngs_modulus"], d_.concrete["density"], r, H);
   period_ = 2 * kPi / modes.first;
-  if (d_.damping_ratio > 0) st["rayleigh_damping"] = rayleigh(d_.damping_ratio, modes);
+  if (d_.damping_ratio > 0) st["rayleigh_damping"] = rayleigh(d_.damping_ratio, modes, d_.damping_model);
   out_["structure"] = st;
   box_.add(xu(0), 0), box_.add(xd(0), H), box_.add(xu(H), H);
   if (dim_ == 3) return;  // member probes are plane-frame only (the space frame's histories carry every section force)
@@ -336,7 +338,7 @@ void Builder::add_steel_frame() {
   json st{{"integrator", "newmark"}, {"self_weight", true}, {"nodes", nodes}, {"members", members}, {"supports", supports}};
   if (d_.damping_ratio > 0) {
     const double r = std::sqrt(D * D + std::pow(D - 2 * d_.column_t, 2)) / 4;  // pipe: r^2 = (D^2 + d^2) / 16
-    st["rayleigh_damping"] = rayleigh(d_.damping_ratio, cantilever_modes(d_.steel["youngs_modulus"], d_.steel["density"], r, H));
+    st["rayleigh_damping"] = rayleigh(d_.damping_ratio, cantilever_modes(d_.steel["youngs_modulus"], d_.steel["density"], r, H), d_.damping_model);
   }
   out_["structure"] = st;
   box_.add(0, 0), box_.add(xd(0), H + 0.5 * D);
@@ -380,7 +382,7 @@ void Builder::add_space_steel_frame() {
   const double r = std::sqrt(D * D + std::pow(D - 2 * d_.column_t, 2)) / 4;  // pipe: r^2 = (D^2 + d^2) / 16
   const auto modes = cantilever_modes(d_.steel["youngs_modulus"], d_.steel["density"], r, H);
   period_ = 2 * kPi / modes.first;
-  if (d_.damping_ratio > 0) st["rayleigh_damping"] = rayleigh(d_.damping_ratio, modes);
+  if (d_.damping_ratio > 0) st["rayleigh_damping"] = rayleigh(d_.damping_ratio, modes, d_.damping_model);
   out_["structure"] = st;
   box_.add(0, 0), box_.add(xd(0), H + 0.5 * D);
   box_.across(across(0) - 0.5 * D, across(nc - 1) + 0.5 * D);

@@ -241,6 +241,18 @@ TEST(Presets, TyreBufferInThreeDimensions) {
   EXPECT_EQ(parse_scenario_variants(j.dump(), "t.json").size(), 2u);
 }
 
+// damping_model mass: C = alpha M with alpha = 2 zeta w1, w1 = 1.8751^2 sqrt(E/rho) r / H^2 of the mean section
+// (r = depth / sqrt 12, the depth normal to the centre line inclined by the downstream batter).
+TEST(Presets, MassProportionalDampingAtTheFirstMode) {
+  json j = concrete_boulder();
+  j["dam"]["damping_model"] = "mass";
+  const json low = expand_presets(j, "t.json", "without_buffer");
+  const double c = 4 / std::hypot(4.0, 0.5 - 0.8), r = 0.5 * (1.6 + 1.0) * c / std::sqrt(12.0);
+  const double w1 = 1.8751 * 1.8751 * std::sqrt(25e9 / 2400) * r / 16;
+  EXPECT_NEAR(low["structure"]["rayleigh_damping"]["mass"].get<double>(), 2 * 0.05 * w1, 1e-9 * w1);
+  EXPECT_EQ(low["structure"]["rayleigh_damping"]["stiffness"].get<double>(), 0.0);
+}
+
 // What the 3D presets do not build, and a 3D key in 2D, are errors at the key the user wrote.
 TEST(Presets, ThreeDimensionalPresetsRefuseWhatTheyDoNotBuild) {
   auto message = [](const json& j) {
