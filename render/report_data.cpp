@@ -89,7 +89,9 @@ json scenario_rows(const RunData& r) {
   const std::string type = dam.value("type", "");
   row("dam", type == "concrete_gravity" ? "concrete gravity check dam" : type == "steel_open" ? "steel open check dam (pipe frame)" : type);
   row("height", fmt("%.3g m", num(dam, {"height_m"})));
-  row("width represented (out of plane)", fmt("%.3g m", num(dam, {"width_m"})));
+  const bool space = r.frame && r.frame->dim == 3;
+  row(space ? (type == "steel_open" ? "column spacing across the channel" : "crest length (across the channel)") : "width represented (out of plane)",
+      fmt("%.3g m", num(dam, {"width_m"})));
   if (type == "concrete_gravity")
     row("crest / base thickness", fmt("%.3g m", num(dam, {"crest_thickness_m"})) + " / " + fmt("%.3g m", num(dam, {"base_thickness_m"})));
   else
