@@ -63,8 +63,8 @@ double chs_torsion_resistance(double D, double t, double fy_Pa, double gamma_M0)
 }
 
 double chs_shear_resistance_with_torsion(double T, double D, double t, double fy_Pa, double gamma_M0) {
-  const double tau_t = std::abs(T) / (2 * chs_elastic_modulus(D, t)), tau_rd = fy_Pa / std::sqrt(3.0) / gamma_M0;
-  return std::max(0.0, 1 - tau_t / tau_rd) * chs_shear_resistance(D, t, fy_Pa, gamma_M0);
+  // tau_t,Ed / (f_y / (sqrt 3 gamma_M0)) = (|T| / W_t) / (T_Rd / W_t) = |T| / T_Rd
+  return std::max(0.0, 1 - std::abs(T) / chs_torsion_resistance(D, t, fy_Pa, gamma_M0)) * chs_shear_resistance(D, t, fy_Pa, gamma_M0);
 }
 
 }  // namespace dmi::design

@@ -63,6 +63,22 @@ const std::vector<double>& BaseHistory::at(const std::string& key) const {
 const char* shear_key(int dim) { return dim == 3 ? "H_N" : "Fx_N"; }
 const char* moment_key(int dim) { return dim == 3 ? "M_overturning_Nm" : "M_Nm"; }
 
+const std::vector<double>& BaseHistory::shear() const { return at(shear_key(keys.size() == 3 ? 2 : 3)); }
+const std::vector<double>& BaseHistory::moment() const { return at(moment_key(keys.size() == 3 ? 2 : 3)); }
+
+std::vector<double> contact_magnitude(const Results& r) {
+  std::vector<double> mag;
+  const Series* s = r.find("frame/contact_force");
+  const std::size_t n = s ? s->components.size() : 0;
+  if (n != 2 && n != 3) return mag;
+  for (std::size_t k = 0; k < s->samples(); ++k) {
+    double m2 = 0;
+    for (std::size_t d = 0; d < n; ++d) m2 += s->data[n * k + d] * s->data[n * k + d];
+    mag.push_back(std::sqrt(m2));
+  }
+  return mag;
+}
+
 BaseHistory base_history(const Results& r, const FrameInfo& f, const std::string& where) {
   const auto series = support_series(r, f, where);
   const int n = f.dim == 3 ? 6 : 3;
@@ -117,12 +133,9 @@ Contact contact(const Results& r) {
   c.present = true;
   c.impulse_N_s.assign(n, 0.0);
   const auto& t = r.time;
-  std::vector<double> mag(t.size());
+  const std::vector<double> mag = contact_magnitude(r);
   std::size_t kp = 0;
   for (std::size_t k = 0; k < t.size(); ++k) {
-    double m2 = 0;
-    for (std::size_t d = 0; d < n; ++d) m2 += s->data[n * k + d] * s->data[n * k + d];
-    mag[k] = std::sqrt(m2);
     if (mag[k] > c.peak_N) c.peak_N = mag[k], c.peak_time_s = t[k], kp = k;
     const double dt = k == 0 ? 0.0 : t[k] - t[k - 1];  // sample k holds the mean over (t_{k-1}, t_k]
     for (std::size_t d = 0; d < n; ++d) c.impulse_N_s[d] += s->data[n * k + d] * dt;

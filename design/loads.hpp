@@ -40,8 +40,8 @@ struct BaseHistory {
   std::array<double, 3> about{0, 0, 0};     // m
   const std::vector<double>& at(const std::string& key) const;  // throws std::out_of_range
   // The base shear (plane: Fx; space: H) and the overturning moment (plane: M; space: M_overturning).
-  const std::vector<double>& shear() const { return values[keys.size() == 3 ? 0 : 6]; }
-  const std::vector<double>& moment() const { return values[keys.size() == 3 ? 2 : 7]; }
+  const std::vector<double>& shear() const;
+  const std::vector<double>& moment() const;
 };
 BaseHistory base_history(const Results& r, const FrameInfo& f, const std::string& where);
 // The design.json key of the base shear and the overturning moment: Fx_N / M_Nm (plane), H_N / M_overturning_Nm (space).
@@ -60,5 +60,7 @@ struct Contact {
 };
 
 Contact contact(const Results& r);
+// |F| of frame/contact_force at every history sample (2 or 3 components); empty without it.
+std::vector<double> contact_magnitude(const Results& r);
 
 }  // namespace dmi::design

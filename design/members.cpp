@@ -86,9 +86,13 @@ FrameInfo parse_structure(const std::string& doc, const std::string& where, cons
 }
 
 std::vector<Demand> space_demands(const Section& sec, double s, const SpaceSectionForces& sf, bool steel, const Limits& L) {
+  return space_demands(sec, s, sf, space_fibre_stresses(sec, s, sf), steel, L);
+}
+
+std::vector<Demand> space_demands(const Section& sec, double s, const SpaceSectionForces& sf, const SpaceFibreStresses& fs, bool steel,
+                                  const Limits& L) {
   const ConcreteLimits& C = L.concrete;
   const SteelLimits& S = L.steel;
-  const SpaceFibreStresses fs = space_fibre_stresses(sec, s, sf);
   const double V = std::hypot(sf.Vy, sf.Vz), M = std::hypot(sf.My, sf.Mz);
   std::vector<Demand> out;
   if (!steel) {
@@ -210,7 +214,7 @@ void space_member(const Results& r, const Series& ef, const FrameInfo& f, const 
         st.My_max.max(sf.My, t), st.My_min.min(sf.My, t), st.Mz_max.max(sf.Mz, t), st.Mz_min.min(sf.Mz, t);
         st.sigma_tension.max(fs.sigma_max, t), st.sigma_compression.min(fs.sigma_min, t);
         st.tau.max(fs.tau_max, t), st.von_mises.max(fs.von_mises_max, t), st.principal.max(fs.principal_max, t);
-        for (const Demand& d : space_demands(el.section, s, sf, steel, L)) tracker.consider(*protos.at(d.id), d.demand, d.capacity, st, t);
+        for (const Demand& d : space_demands(el.section, s, sf, fs, steel, L)) tracker.consider(*protos.at(d.id), d.demand, d.capacity, st, t);
       }
     }
   }

@@ -79,6 +79,9 @@ struct Demand {
 // torsion (concrete), resultant shear, torsion and the CHS interaction (steel). The one implementation the envelopes
 // and the pictures' demand histories use.
 std::vector<Demand> space_demands(const Section& section, double s, const SpaceSectionForces& f, bool steel, const Limits& limits);
+// The same with the section's stresses fs = space_fibre_stresses(section, s, f) already at hand.
+std::vector<Demand> space_demands(const Section& section, double s, const SpaceSectionForces& f, const SpaceFibreStresses& fs, bool steel,
+                                  const Limits& limits);
 
 std::vector<MemberEnvelope> member_envelopes(const Results& r, const FrameInfo& f, const Limits& limits, const std::string& where);
 

@@ -176,7 +176,7 @@ vtkSmartPointer<vtkActor> space_members_actor(const FrameState& fs, const design
         const double a = 2 * std::numbers::pi * (v + (pipe ? 0.0 : 0.5)) / sides;
         const double y = pipe ? c * std::cos(a) : (std::cos(a) > 0 ? c : -c), z = pipe ? c * std::sin(a) : (std::sin(a) > 0 ? w : -w);
         pts->InsertNextPoint(x[0] + y * e2[0] + z * e3[0], x[1] + y * e2[1] + z * e3[1], x[2] + y * e2[2] + z * e3[2]);
-        val->InsertNextValue((q.N / A - q.Mz * y / Iz + q.My * z / Iy) / 1e6);
+        val->InsertNextValue(space_fibre_sigma(q, A, Iy, Iz, y, z) / 1e6);
       }
     }
     for (int v = 0; v < sides; ++v) {
@@ -186,18 +186,14 @@ vtkSmartPointer<vtkActor> space_members_actor(const FrameState& fs, const design
   }
   auto pd = make<vtkPolyData>();
   pd->SetPoints(pts), pd->SetPolys(polys), pd->GetPointData()->SetScalars(val);
-  if (!cut_y) {
-    auto a = actor_of(pd, t);
-    a->GetMapper()->InterpolateScalarsBeforeMappingOn();
-    return a;
+  if (cut_y) {  // keep y >= cut_y: the section's far side
+    auto plane = make<vtkPlane>();
+    plane->SetOrigin(0, *cut_y, 0), plane->SetNormal(0, 1, 0);
+    auto clip = make<vtkClipPolyData>();
+    clip->SetInputData(pd), clip->SetClipFunction(plane), clip->Update();
+    pd->DeepCopy(clip->GetOutput());
   }
-  auto plane = make<vtkPlane>();  // keep y >= cut_y: the section's far side
-  plane->SetOrigin(0, *cut_y, 0), plane->SetNormal(0, 1, 0);
-  auto clip = make<vtkClipPolyData>();
-  clip->SetInputData(pd), clip->SetClipFunction(plane), clip->Update();
-  auto cut = make<vtkPolyData>();
-  cut->DeepCopy(clip->GetOutput());
-  auto a = actor_of(cut, t);
+  auto a = actor_of(pd, t);
   a->GetMapper()->InterpolateScalarsBeforeMappingOn();
   return a;
 }

@@ -351,16 +351,8 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
       contact_end = std::max(contact_end, (b + std::max(b - a, 0.2 * b)) * 1e3);
     }
     if (contact_end >= runs[0].results.time.back() * 1e3) contact_end = 0;
-    overlay("chart_contact_force.png", "contact force on the dam", "force [kN]", [](const RunData& r) {
-      std::vector<double> y;
-      if (const Series* s = r.results.find("frame/contact_force"))
-        for (std::size_t k = 0, n = s->components.size(); k < s->samples(); ++k) {
-          double m2 = 0;
-          for (std::size_t d = 0; d < n; ++d) m2 += s->data[n * k + d] * s->data[n * k + d];
-          y.push_back(std::sqrt(m2));
-        }
-      return y;
-    }, 1e-3, {}, contact_end);
+    overlay("chart_contact_force.png", "contact force on the dam", "force [kN]", [](const RunData& r) { return design::contact_magnitude(r.results); },
+            1e-3, {}, contact_end);
     const bool space = runs[0].frame->dim == 3;
     overlay("chart_base_shear.png", space ? "base shear (horizontal resultant of the support forces, |(sum Fx, sum Fy)|)" : "base shear (sum of the support forces Fx)",
             "shear [kN]", [](const RunData& r) { return design::base_history(r.results, *r.frame, r.file).shear(); }, 1e-3);

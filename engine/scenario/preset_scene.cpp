@@ -89,13 +89,17 @@ class Builder {
   void add_concrete_members();
   void add_steel_frame();
   void add_space_steel_frame();
+  // The members' damping (dam.damping_ratio, dam.damping_model) at the first two cantilever modes of a uniform
+  // cantilever with radius of gyration r (m) of `material`, into st; sets period_, which the 3D end time uses.
+  void damp(json& st, const json& material, double r);
   // A position in the elevation (x along the flow, y up) and across the channel as the scene's coordinates:
   // 2D [x, y]; 3D [x, across, y] (z up).
+  json at(double x, double y, double across = 0) const { return dim_ == 3 ? json{clean(x), clean(across), clean(y)} : json{clean(x), clean(y)}; }
   // How long a boulder run goes on after the boulder arrives: 0.15 s (a buffered impact lasts a few hundredths of a
   // second; docs/verification.md); in 3D on a bare face, whose pulse lasts milliseconds and whose member peaks follow
   // within the first cantilever period, 1.5 periods (at least 0.03 s), which a 3D run cannot afford to exceed fivefold.
   double after_arrival() const { return dim_ == 3 && !p_.buffer ? std::max(0.03, 1.5 * period_) : 0.15; }
-  json at(double x, double y, double across = 0) const { return dim_ == 3 ? json{clean(x), clean(across), clean(y)} : json{clean(x), clean(y)}; }
+  int columns() const { return d_.columns > 0 ? d_.columns : 3; }  // 3D steel open dam: columns per row across
   void add_buffer();
   void add_boulder();
   void add_debris();
@@ -175,6 +179,10 @@ double Builder::choose_cell_size() const {
 
 json Builder::build() {
   dim_ = p_.dim;
+  if (dim_ == 2 && p_.boulder && p_.boulder->across != 0)
+    fail("/boulder/across", p_.boulder->across, "0 in 2D (the plane model has no position across the channel; analysis.dimension 3 uses it)");
+  if (dim_ == 2 && d_.columns != 0)
+    fail("/dam/columns", d_.columns, "no columns across the channel in 2D (the plane model stands for one bay; analysis.dimension 3 uses it)");
   members_ = !(d_.type == "concrete_gravity" && d_.model == "continuum");
   if (p_.debris && !p_.debris->hydrograph.empty()) {  // the surge's size for the cell, the grid and the estimates
     DebrisPreset& f = *p_.debris;
@@ -298,10 +306,7 @@ void Builder::add_concrete_members() {
                                 {"section", {{"type", "tapered_rectangle"}, {"width", d_.width}, {"depth_start", d_.base_thickness * c},
                                              {"depth_end", d_.crest * c}}}}});
   st["supports"] = json::array({{{"node", "base"}, {"type", d_.base}}});
-  const double r = 0.5 * (d_.base_thickness + d_.crest) * c / std::sqrt(12.0);
-  const auto modes = cantilever_modes(d_.concrete["youngs_modulus"], d_.concrete["density"], r, H);
-  period_ = 2 * kPi / modes.first;
-  if (d_.damping_ratio > 0) st["rayleigh_damping"] = rayleigh(d_.damping_ratio, modes, d_.damping_model);
+  damp(st, d_.concrete, 0.5 * (d_.base_thickness + d_.crest) * c / std::sqrt(12.0));
   out_["structure"] = st;
   box_.add(xu(0), 0), box_.add(xd(0), H), box_.add(xu(H), H);
   if (dim_ == 3) return;  // member probes are plane-frame only (the space frame's histories carry every section force)
@@ -336,10 +341,7 @@ void Builder::add_steel_frame() {
     }
   }
   json st{{"integrator", "newmark"}, {"self_weight", true}, {"nodes", nodes}, {"members", members}, {"supports", supports}};
-  if (d_.damping_ratio > 0) {
-    const double r = std::sqrt(D * D + std::pow(D - 2 * d_.column_t, 2)) / 4;  // pipe: r^2 = (D^2 + d^2) / 16
-    st["rayleigh_damping"] = rayleigh(d_.damping_ratio, cantilever_modes(d_.steel["youngs_modulus"], d_.steel["density"], r, H), d_.damping_model);
-  }
+  damp(st, d_.steel, std::sqrt(D * D + std::pow(D - 2 * d_.column_t, 2)) / 4);  // pipe: r^2 = (D^2 + d^2) / 16
   out_["structure"] = st;
   box_.add(0, 0), box_.add(xd(0), H + 0.5 * D);
   probes_.push_back(json{{"name", "base"}, {"type", "member"}, {"member", "column_0_1"}, {"position", 0.0},
@@ -354,7 +356,7 @@ void Builder::add_steel_frame() {
 void Builder::add_space_steel_frame() {
   const double H = d_.height, D = d_.column_d, s = d_.row_spacing;
   const double bd = d_.beam_d > 0 ? d_.beam_d : D, bt = d_.beam_t > 0 ? d_.beam_t : d_.column_t;
-  const int nc = d_.columns > 0 ? d_.columns : 3, secondary = std::max(2, d_.elements / 2);
+  const int nc = columns(), secondary = std::max(2, d_.elements / 2);
   if (nc > 1 && !(d_.width > D)) fail("/dam/width", d_.width, "a column spacing across the channel larger than the column diameter (the columns would overlap)");
   json nodes = json::array(), members = json::array(), supports = json::array();
   auto node = [](int i, int j, int k) { return "c" + std::to_string(i) + "_" + std::to_string(j) + "_" + std::to_string(k); };
@@ -379,13 +381,16 @@ void Builder::add_space_steel_frame() {
         if (j + 1 < nc) member("tie_" + tag, node(i, j, k), node(i, j + 1, k), secondary, bd, bt);
       }
   json st{{"integrator", "newmark"}, {"self_weight", true}, {"nodes", nodes}, {"members", members}, {"supports", supports}};
-  const double r = std::sqrt(D * D + std::pow(D - 2 * d_.column_t, 2)) / 4;  // pipe: r^2 = (D^2 + d^2) / 16
-  const auto modes = cantilever_modes(d_.steel["youngs_modulus"], d_.steel["density"], r, H);
-  period_ = 2 * kPi / modes.first;
-  if (d_.damping_ratio > 0) st["rayleigh_damping"] = rayleigh(d_.damping_ratio, modes, d_.damping_model);
+  damp(st, d_.steel, std::sqrt(D * D + std::pow(D - 2 * d_.column_t, 2)) / 4);  // pipe: r^2 = (D^2 + d^2) / 16
   out_["structure"] = st;
   box_.add(0, 0), box_.add(xd(0), H + 0.5 * D);
   box_.across(across(0) - 0.5 * D, across(nc - 1) + 0.5 * D);
+}
+
+void Builder::damp(json& st, const json& material, double r) {
+  const auto modes = cantilever_modes(material["youngs_modulus"], material["density"], r, d_.height);
+  period_ = 2 * kPi / modes.first;
+  if (d_.damping_ratio > 0) st["rayleigh_damping"] = rayleigh(d_.damping_ratio, modes, d_.damping_model);
 }
 
 double Builder::buffer_damping_frequency(double E, double thickness) const {
@@ -469,8 +474,6 @@ void Builder::add_boulder() {
   double vy = b.velocity.empty() ? 0.0 : b.velocity[space ? 2 : 1];
   const double va = b.velocity.empty() || !space ? 0.0 : b.velocity[1];
   boulder_speed_ = std::sqrt(vx * vx + vy * vy + va * va);
-  if (!space && b.across != 0) fail("/boulder/across", b.across, "0 in 2D (the plane model has no position across the channel; analysis.dimension 3 uses it)");
-  if (!space && d_.columns != 0) fail("/dam/columns", d_.columns, "no columns across the channel in 2D (the plane model stands for one bay; analysis.dimension 3 uses it)");
   if (!(vx > 0)) fail("/boulder/velocity", b.velocity, "a velocity with a positive x component (towards the dam, downstream)");
   const double r = boulder_r_, gap = b.gap >= 0 ? b.gap : 2 * h_;
   impact_y_ = b.impact_height > 0 ? b.impact_height : 0.9 * d_.height;
@@ -485,8 +488,7 @@ void Builder::add_boulder() {
     ca = b.across - gap * va / boulder_speed_;
   }
   if (space) {  // the impact point must lie on the dam across the channel: the crest's length, or the outer columns
-    const int nc = d_.columns > 0 ? d_.columns : 3;
-    const double half = d_.type == "steel_open" ? 0.5 * (nc - 1) * d_.width + 0.5 * d_.column_d : 0.5 * d_.width;
+    const double half = d_.type == "steel_open" ? 0.5 * (columns() - 1) * d_.width + 0.5 * d_.column_d : 0.5 * d_.width;
     if (std::abs(b.across) > half)
       fail("/boulder/across", b.across, "an impact point on the dam across the channel: |across| <= " + std::to_string(half) + " m");
     box_.across(ca - r, ca + r);

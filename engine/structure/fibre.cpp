@@ -33,7 +33,7 @@ SpaceFibreStresses space_fibre_stresses(const Section& section, double s, const 
   r.sigma_max = -INFINITY;
   r.sigma_min = INFINITY;
   const auto sample = [&](double y, double z, double tau_v) {
-    const double sigma = f.N / A - f.Mz * y / Iz + f.My * z / Iy, tau = tau_t + tau_v;
+    const double sigma = space_fibre_sigma(f, A, Iy, Iz, y, z), tau = tau_t + tau_v;
     const double vm = std::sqrt(sigma * sigma + 3 * tau * tau);
     r.sigma_max = std::max(r.sigma_max, sigma);
     r.sigma_min = std::min(r.sigma_min, sigma);

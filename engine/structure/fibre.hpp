@@ -42,5 +42,9 @@ struct SpaceFibreStresses {
 // the maximum is exact. Sampled at 72 points around a pipe (and the two where sigma is extreme, so sigma_max/min are
 // exact: N/A +- |M|/W_el) and 11 per side of a rectangle (corners included: sigma_max/min exact there too).
 SpaceFibreStresses space_fibre_stresses(const Section& section, double s, const SpaceSectionForces& f);
+// The normal stress at (y', z') of a section with area A and inertias Iy, Iz: N/A - Mz y'/Iz + My z'/Iy.
+inline double space_fibre_sigma(const SpaceSectionForces& f, double A, double Iy, double Iz, double y, double z) {
+  return f.N / A - f.Mz * y / Iz + f.My * z / Iy;
+}
 
 }  // namespace dmi
