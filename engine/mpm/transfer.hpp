@@ -38,10 +38,11 @@ template <int D> class TransferKernels {
   // Grid::occupied()), serially: the mass-weighted particle position a node sees (Lin & Yang 2024
   // eq. 25) where members need it. mx has the grid's field layout.
   // The stencils of particles [begin, end) for operators built outside the transfer (the implicit viscosity,
-  // engine/mpm/viscous.hpp): NN = K^D entries per particle, node[k NN + n] the node's index in its field and
-  // grad[k NN + n] its grad N (1/m), k = particle - begin. Entry n is the node base + (n's digits base K, axis 0 least
-  // significant). Returns NN.
-  virtual int stencils(const Scene<D>& s, Index begin, Index end, std::vector<Index>& node, std::vector<Vec<D>>& grad) const = 0;
+  // engine/mpm/viscous.hpp): NN = K^D entries per particle, node[k NN + n] the node's index in its field,
+  // weight[k NN + n] its N and grad[k NN + n] its grad N (1/m), k = particle - begin. Entry n is the node base + (n's
+  // digits base K, axis 0 least significant). Returns NN.
+  virtual int stencils(const Scene<D>& s, Index begin, Index end, std::vector<Index>& node, std::vector<double>& weight,
+                       std::vector<Vec<D>>& grad) const = 0;
   virtual void scatter_mass_position(const Scene<D>& s, const std::vector<Index>& tiles, std::vector<Vec<D>>& mx) const = 0;
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "engine/common/error.hpp"
@@ -44,14 +45,26 @@ void ImplicitViscosity<D>::apply(Scene<D>& s, const TransferKernels<D>& kernels,
     if (!damped(b, a, bv)) continue;
     any = true;
     Stencils& st = stencils_[k];
-    st.nn = kernels.stencils(s, b.begin, b.end, st.node, st.grad);
+    st.nn = kernels.stencils(s, b.begin, b.end, st.node, st.weight, st.grad);
     const std::vector<Mat<D>>& old = *s.materials[b.material]->viscous_stress();
     const Index off = b.field * nn;
+    // The bound on the fastest viscous rate, lambda_max(M^-1 K_v) <= max_p (D a + 2 b) S_p / rho_p, S_p = sum_i
+    // |grad N_ip|^2 / N_ip: D_p:sigma_v <= (D a + 2 b) |L_p|^2 and, by Cauchy-Schwarz, |L_p|^2 <= S_p sum_i N_ip |u_i|^2,
+    // while u^T M u >= sum_p m_p sum_i N_ip |u_i|^2. S_p is bounded where N vanishes as the square of the distance
+    // (quadratic B-splines: 4-6 / h^2 per axis; uGIMP), unbounded for linear hats (N linear, grad N constant).
+    double lambda = 0;
     for (Index i = b.begin; i < b.end; ++i) {
       const std::size_t k0 = static_cast<std::size_t>(i - b.begin) * st.nn;
       const Mat<D> so = P.vol[i] * old[i];
-      for (int e = 0; e < st.nn; ++e) g.f[off + st.node[k0 + e]] += so * st.grad[k0 + e];
+      double sp = 0;
+      for (int e = 0; e < st.nn; ++e) {
+        g.f[off + st.node[k0 + e]] += so * st.grad[k0 + e];
+        const double g2 = st.grad[k0 + e].squaredNorm();
+        if (g2 > 0) sp += st.weight[k0 + e] > 0 ? g2 / st.weight[k0 + e] : std::numeric_limits<double>::infinity();
+      }
+      lambda = std::max(lambda, (D * a + 2 * bv) * sp * P.vol[i] / P.mass[i]);
     }
+    st.lambda = lambda;
   }
   if (!any) return;
   // 2. The predictor of every field, and what the walls, regions and body contact would make of it.
@@ -83,29 +96,50 @@ void ImplicitViscosity<D>::apply(Scene<D>& s, const TransferKernels<D>& kernels,
   }
 }
 
-// out = K_v u over the unknowns: sum_p V_p sigma_v(D_p(u)) grad N_ip.
+// out = K_v u over the unknowns: sum_p V_p sigma_v(D_p(u)) grad N_ip, in two passes that run in parallel and give
+// the same sums whatever the threads: each particle's V_p sigma_v, then each unknown's sum over its incident
+// particle entries in their order (incidence(): the order a serial scatter would add them).
 template <int D>
 void ImplicitViscosity<D>::operate(const Scene<D>& s, const Body& b, const Stencils& st, double a, double bv, const std::vector<Vec<D>>& u,
-                                   std::vector<Vec<D>>& out) const {
+                                   std::vector<Vec<D>>& out) {
   const Particles<D>& P = s.particles;
-  std::fill(out.begin(), out.end(), Vec<D>::Zero());
-  for (Index i = b.begin; i < b.end; ++i) {
+  sv_.resize(static_cast<std::size_t>(b.end - b.begin));
+  parallel_for(b.begin, b.end, [&](Index i) {
     const std::size_t k0 = static_cast<std::size_t>(i - b.begin) * st.nn;
     Mat<D> L = Mat<D>::Zero();
     for (int n = 0; n < st.nn; ++n)
-      if (const int l = entry_[k0 + n]; l >= 0) L += u[l] * st.grad[k0 + n].transpose();
+      if (const int l = entry_[k0 + n]; l >= 0) L.noalias() += u[l] * st.grad[k0 + n].transpose();
     const Mat<D> Dm = 0.5 * (L + L.transpose());
-    const Mat<D> sv = P.vol[i] * (a * Dm.trace() * Mat<D>::Identity() + 2 * bv * Dm);
-    for (int n = 0; n < st.nn; ++n)
-      if (const int l = entry_[k0 + n]; l >= 0) out[l] += sv * st.grad[k0 + n];
-  }
+    sv_[static_cast<std::size_t>(i - b.begin)] = P.vol[i] * (a * Dm.trace() * Mat<D>::Identity() + 2 * bv * Dm);
+  });
+  out.resize(nodes_.size());
+  parallel_for(0, static_cast<Index>(nodes_.size()), [&](Index l) {
+    Vec<D> f = Vec<D>::Zero();
+    for (int j = inc_start_[l]; j < inc_start_[l + 1]; ++j) f.noalias() += sv_[inc_particle_[j]] * inc_grad_[j];
+    out[l] = f;
+  });
+}
+
+// Per unknown, the particle entries whose node it is, in entry order (counting sort of entry_), with their grad N.
+template <int D> void ImplicitViscosity<D>::incidence(const Stencils& st) {
+  const std::size_t n = nodes_.size();
+  inc_start_.assign(n + 1, 0);
+  for (int l : entry_)
+    if (l >= 0) ++inc_start_[static_cast<std::size_t>(l) + 1];
+  for (std::size_t l = 0; l < n; ++l) inc_start_[l + 1] += inc_start_[l];
+  fill_.assign(inc_start_.begin(), inc_start_.end() - 1);
+  inc_particle_.resize(static_cast<std::size_t>(inc_start_[n])), inc_grad_.resize(inc_particle_.size());
+  for (std::size_t k = 0; k < entry_.size(); ++k)
+    if (const int l = entry_[k]; l >= 0) {
+      const int j = fill_[static_cast<std::size_t>(l)]++;
+      inc_particle_[static_cast<std::size_t>(j)] = static_cast<int>(k / static_cast<std::size_t>(st.nn)), inc_grad_[static_cast<std::size_t>(j)] = st.grad[k];
+    }
 }
 
 template <int D>
 void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils& st, double a, double bv, double dt, double mass_eps,
                                       const Held& held) {
   Grid<D>& g = *s.grid;
-  const Particles<D>& P = s.particles;
   const Index nn = g.nnodes(), off = b.field * nn;
   if (static_cast<Index>(local_.size()) != nn) local_.assign(nn, -1);
   nodes_.clear();
@@ -114,6 +148,7 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
   const std::size_t n = nodes_.size();
   entry_.resize(st.node.size());
   for (std::size_t e = 0; e < st.node.size(); ++e) entry_[e] = local_[st.node[e]];
+  incidence(st);
   for (auto* v : {&rhs_, &u_, &q_}) v->assign(n, Vec<D>::Zero());
   free_.assign(n, Vec<D>::Ones());
   ties_.clear();
@@ -141,133 +176,15 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
   for (const auto& [k, v] : held)
     if (k >= off && k < off + nn)
       if (const int l = local_[k - off]; l >= 0) free_[l].setZero(), u_[l] = v;
-  // A = M + dt K_v (+ the joined partners' m_B n n^T), assembled as D x D blocks over the 5^D neighbour offsets of
-  // each unknown node (two nodes couple when a particle's stencil holds both: |offset| <= 2 per axis), with
-  //   K_lm += V_p [a g_l g_m^T + b (g_l . g_m) I + b g_m g_l^T],   g = grad N of the particle at nodes l, m,
-  // then solved on the free components by a sparse LDL^T factorisation (exact; CG's iteration count grew with the
-  // damping and the grid, 5-130 Jacobi-PCG iterations per step on the tyre buffer).
-  constexpr int NB = D == 2 ? 25 : 125;
-  const IVec<D> nodes = g.nodes();
-  // The slot of the offset between stencil entries e1 and e2: entry e holds the node base + (e's digits base K,
-  // axis 0 least significant: TransferKernels::stencils), slot = sum_d (q_d + 2) 5^d for the offset q.
-  if (static_cast<int>(pair_slot_.size()) != st.nn * st.nn) {
-    const int K = D == 2 ? (st.nn == 9 ? 3 : 2) : (st.nn == 27 ? 3 : 2);
-    pair_slot_.resize(static_cast<std::size_t>(st.nn * st.nn));
-    for (int e1 = 0; e1 < st.nn; ++e1)
-      for (int e2 = 0; e2 < st.nn; ++e2) {
-        int o = 0;
-        for (int d = 0, kd = 1, w = 1; d < D; ++d, kd *= K, w *= 5) o += (e2 / kd % K - e1 / kd % K + 2) * w;
-        pair_slot_[static_cast<std::size_t>(e1 * st.nn + e2)] = o;
-      }
-  }
-  auto offset_diff = [&](int o) {  // slot -> node-id difference
-    Index diff = 0, stride = 1;
-    for (int d = 0; d < D; ++d) diff += static_cast<Index>(o % 5 - 2) * stride, stride *= nodes[d], o /= 5;
-    return diff;
-  };
-  const int centre = D == 2 ? 12 : 62;  // offset 0
-  blocks_.assign(n * NB, Mat<D>::Zero());
-  used_.assign(n * NB, 0);
-  // K is symmetric (K_ml = K_lm^T): only the blocks towards nodes of larger id are accumulated, e2 >= e1 (entries and
-  // node ids both run x fastest), and each stands for its transpose below.
-  for (Index i = b.begin; i < b.end; ++i) {
-    const std::size_t k0 = static_cast<std::size_t>(i - b.begin) * st.nn;
-    const double w = dt * P.vol[i];
-    for (int e1 = 0; e1 < st.nn; ++e1) {
-      const int l1 = entry_[k0 + e1];
-      if (l1 < 0) continue;
-      const Vec<D>& g1 = st.grad[k0 + e1];
-      for (int e2 = e1; e2 < st.nn; ++e2) {
-        if (entry_[k0 + e2] < 0) continue;
-        const Vec<D>& g2 = st.grad[k0 + e2];
-        const std::size_t at = static_cast<std::size_t>(l1) * NB + pair_slot_[static_cast<std::size_t>(e1 * st.nn + e2)];
-        blocks_[at] += w * (a * g1 * g2.transpose() + bv * g1.dot(g2) * Mat<D>::Identity() + bv * g2 * g1.transpose());
-        used_[at] = 1;
-      }
-    }
-  }
-  for (std::size_t l = 0; l < n; ++l) blocks_[l * NB + centre] += g.m[off + nodes_[l]] * Mat<D>::Identity(), used_[l * NB + centre] = 1;
-  for (const Tie& c : ties_) blocks_[static_cast<std::size_t>(c.l) * NB + centre] += g.m[c.k] * c.n * c.n.transpose();
-  // Free components numbered; held ones move to the right-hand side.
-  dof_.assign(n * D, -1);
-  int nf = 0;
-  for (std::size_t l = 0; l < n; ++l)
-    for (int c = 0; c < D; ++c)
-      if (free_[l][c] != 0) dof_[l * D + c] = nf++;
-  triplets_.clear();
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(nf);
-  for (std::size_t l = 0; l < n; ++l)
-    for (int c = 0; c < D; ++c)
-      if (const int r = dof_[l * D + c]; r >= 0) rhs[r] = rhs_[l][c];
-  for (std::size_t l = 0; l < n; ++l)
-    for (int o = 0; o < NB; ++o) {
-      if (!used_[l * NB + o]) continue;
-      const int m = local_[nodes_[l] + offset_diff(o)];
-      const Mat<D>& B = blocks_[l * NB + o];  // A_lm; off the diagonal also A_ml = B^T
-      for (int c = 0; c < D; ++c)
-        for (int c2 = 0; c2 < D; ++c2) {
-          const int r = dof_[l * D + c], col = dof_[static_cast<std::size_t>(m) * D + c2];
-          if (r >= 0 && col >= 0) {  // the lower triangle is what LDL^T reads
-            if (col <= r) {
-              triplets_.emplace_back(r, col, B(c, c2));
-            } else if (o != centre) {
-              triplets_.emplace_back(col, r, B(c, c2));
-            }
-          } else if (r >= 0) {
-            rhs[r] -= B(c, c2) * u_[m][c2];  // a held component
-          } else if (col >= 0 && o != centre) {
-            rhs[col] -= B(c, c2) * u_[l][c];
-          }
-        }
-    }
-  if (nf > 0) {
-    A_.resize(nf, nf);
-    A_.setFromTriplets(triplets_.begin(), triplets_.end());
-    // The last step's factor preconditions conjugate gradients on this step's matrix (A changes little per step),
-    // mapped onto this step's unknowns by node and component (the body moves a fraction of a cell per step and
-    // contact holds and releases components: the set changes, most of it stays; new unknowns take Jacobi). The
-    // matrix is factorised afresh when too few unknowns map or CG does not converge within the budget; the ordering
-    // and symbolic factorisation are kept while the pattern is.
-    Eigen::VectorXd x;
-    if (!(factored_ && !stale_ && map_onto_factor(off, nf) && preconditioned_solve(rhs, x))) {
-      const bool same = outer_.size() == static_cast<std::size_t>(nf + 1) && inner_.size() == static_cast<std::size_t>(A_.nonZeros()) &&
-                        std::equal(outer_.begin(), outer_.end(), A_.outerIndexPtr()) && std::equal(inner_.begin(), inner_.end(), A_.innerIndexPtr());
-      if (!same) {
-        ldlt_.analyzePattern(A_);
-        outer_.assign(A_.outerIndexPtr(), A_.outerIndexPtr() + nf + 1);
-        inner_.assign(A_.innerIndexPtr(), A_.innerIndexPtr() + A_.nonZeros());
-      }
-      ldlt_.factorize(A_);
-      factored_ = ldlt_.info() == Eigen::Success, stale_ = false;
-      factored_values_.assign(A_.valuePtr(), A_.valuePtr() + A_.nonZeros());
-      ++stats_.factorisations;
-      if (!factored_) throw RunError("body '" + b.name + "': the implicit viscous system could not be factorised");
-      factor_key_.assign(static_cast<std::size_t>(nf), 0);
-      for (std::size_t l = 0; l < n; ++l)
-        for (int c = 0; c < D; ++c)
-          if (const int r = dof_[l * D + c]; r >= 0) factor_key_[static_cast<std::size_t>(r)] = (off + nodes_[l]) * D + c;
-      index_factor_keys(g.m.size() * D);
-      // What a factorisation costs in solves (~sum of squared column counts of L against a solve and a product):
-      // CG on an older factor may take that many iterations before refactorising is cheaper (a count, not a clock,
-      // so that runs repeat exactly).
-      const auto& L = ldlt_.matrixL().nestedExpression();
-      double flops = 0;
-      for (Eigen::Index j = 0; j < L.outerSize(); ++j) {
-        const double c = static_cast<double>(L.outerIndexPtr()[j + 1] - L.outerIndexPtr()[j]);
-        flops += c * c;
-      }
-      const double per_iteration = 4.0 * static_cast<double>(L.nonZeros()) + 4.0 * static_cast<double>(A_.nonZeros()) + 10.0 * nf;
-      budget_ = static_cast<int>(std::clamp(flops / per_iteration, 1.0, 40.0));
-      x = ldlt_.solve(rhs);
-    }
-    if (!x.allFinite()) throw RunError("body '" + b.name + "': the implicit viscous solve gave a non-finite velocity");
-    for (std::size_t l = 0; l < n; ++l)
-      for (int c = 0; c < D; ++c)
-        if (const int r = dof_[l * D + c]; r >= 0) u_[l][c] = x[r];
-  }
+  // The viscous sub-step by damped Chebyshev stages, as many as the bound on the fastest rate asks.
+  const int stages = DampedChebyshev::stages_for(dt * st.lambda);
+  if (stages == 0)
+    throw RunError("body '" + b.name + "': the viscous sub-step would need more than " + std::to_string(2 * DampedChebyshev::kMaxStages) +
+                   " stages (dt times the bound on the fastest viscous rate: " + std::to_string(dt * st.lambda) +
+                   "); a nearly empty node under linear shape functions makes it so: use shape_function bspline2 or gimp, or damping explicit");
+  chebyshev(s, b, st, a, bv, dt, stages);
   // f = f_e - K_v u, and the joined partners' momentum exchange along n: the partner reaches the normal velocity u.n,
   // the damped field loses what it gains.
-  operate(s, b, st, a, bv, u_, q_);
   for (std::size_t l = 0; l < n; ++l) {
     g.f[off + nodes_[l]] -= q_[l];
     acc_k_.push_back(off + nodes_[l]), acc_f_.push_back(q_[l]);
@@ -280,114 +197,84 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
   for (Index id : nodes_) local_[id] = -1;
 }
 
-// The factor's unknowns by key (node-field x D + component) -> index, in a table over all node-fields; the previous
-// factor's entries are cleared first.
-template <int D> void ImplicitViscosity<D>::index_factor_keys(std::size_t keys) {
-  if (factor_slot_.size() != keys) factor_slot_.assign(keys, -1);
-  for (Index k : slot_keys_) factor_slot_[static_cast<std::size_t>(k)] = -1;
-  for (std::size_t i = 0; i < factor_key_.size(); ++i) factor_slot_[static_cast<std::size_t>(factor_key_[i])] = static_cast<int>(i);
-  slot_keys_ = factor_key_;
+DampedChebyshev::DampedChebyshev(int s) : s(s) {
+  w0 = 1 + kDamping / (static_cast<double>(s) * s);
+  T.assign(static_cast<std::size_t>(s + 1), 1.0);
+  double d0 = 0, d1 = 1;  // T_j'(w0)
+  T[1] = w0;
+  for (int j = 2; j <= s; ++j) {
+    T[j] = 2 * w0 * T[j - 1] - T[j - 2];
+    const double d = 2 * T[j - 1] + 2 * w0 * d1 - d0;
+    d0 = d1, d1 = d;
+  }
+  w1 = T[static_cast<std::size_t>(s)] / d1;
 }
 
-// This step's unknowns onto the factor's (map_: -1 where the factor has none); false when fewer than 90 % map (a
-// different body or a large change: factorise instead) or the table does not fit this grid.
-template <int D> bool ImplicitViscosity<D>::map_onto_factor(Index off, int nf) {
-  if (factor_slot_.empty()) return false;
-  map_.assign(static_cast<std::size_t>(nf), -1);
-  identity_ = nf == static_cast<int>(factor_key_.size());
-  int mapped = 0;
-  for (std::size_t l = 0; l < nodes_.size(); ++l)
+double DampedChebyshev::amplification(double z) const {
+  double t0 = 1, t1 = w0 - w1 * z;
+  for (int j = 2; j <= s; ++j) {
+    const double t = 2 * (w0 - w1 * z) * t1 - t0;
+    t0 = t1, t1 = t;
+  }
+  return t1 / T[static_cast<std::size_t>(s)];
+}
+
+int DampedChebyshev::stages_for(double z) {
+  if (!(z < std::numeric_limits<double>::infinity())) return 0;
+  const double need = 1.02 * 0.5 * z;  // each half-step's interval, with a margin for round-off in the bound
+  for (int s = std::max(1, static_cast<int>(std::sqrt(need / 1.2))); s <= kMaxStages; ++s)  // beta_s < 1.2 s^2: start below
+    if (DampedChebyshev(s).beta() >= need) return s;
+  return 0;
+}
+
+// The viscous sub-step as the flow M' du/dt = -K_v u of the free components from u0 = M'^-1 (M v* + ties), held ones
+// fixed, by the damped Chebyshev recurrence (M' = M + the joined partners' m_B n n^T, per node). Written for the
+// forces: Y_j = Y_0 - dt M'^-1 Q_j, Q_0 = 0, Q_1 = (w1 / w0) K Y_0, Q_j = mu_j Q_j-1 + nu_j Q_j-2 + mu'_j K Y_j-1 with
+// mu_j = 2 w0 T_j-1 / T_j, nu_j = -T_j-2 / T_j, mu'_j = 2 w1 T_j-1 / T_j (mu_j + nu_j = 1), so that Q_s is the step's
+// mean viscous force K_v u on every component, held ones included (it reaches the wall or member there), and the
+// free components' momentum change is exactly -dt Q_s.
+template <int D> void ImplicitViscosity<D>::chebyshev(Scene<D>& s, const Body& b, const Stencils& st, double a, double bv, double dt, int stages) {
+  const Grid<D>& g = *s.grid;
+  const Index off = b.field * g.nnodes();
+  const std::size_t n = nodes_.size();
+  minv_.resize(n);
+  for (std::size_t l = 0; l < n; ++l) minv_[l] = g.m[off + nodes_[l]] * Mat<D>::Identity();
+  for (const Tie& c : ties_) minv_[static_cast<std::size_t>(c.l)] += g.m[c.k] * c.n * c.n.transpose();
+  for (std::size_t l = 0; l < n; ++l) {
+    minv_[l] = minv_[l].inverse().eval();
     for (int c = 0; c < D; ++c)
-      if (const int r = dof_[l * D + c]; r >= 0) {
-        const std::size_t key = static_cast<std::size_t>((off + nodes_[l]) * D + c);
-        if (key >= factor_slot_.size()) return false;
-        map_[static_cast<std::size_t>(r)] = factor_slot_[key];
-        mapped += map_[static_cast<std::size_t>(r)] >= 0;
-        identity_ = identity_ && map_[static_cast<std::size_t>(r)] == r;
-      }
-  if (10 * static_cast<long>(mapped) < 9 * static_cast<long>(nf)) return false;
-  if (!identity_) jacobi_ = A_.diagonal();
-  return true;
-}
-
-// z = M^-1 r: the factor's solve on the mapped unknowns (the others zero in its right-hand side), Jacobi on the rest.
-// Block diagonal with SPD blocks (S^T A_f^-1 S, S the injection of the mapped unknowns), so CG's preconditioner.
-template <int D> void ImplicitViscosity<D>::precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) {
-  if (identity_) {
-    z = ldlt_.solve(r);
-    return;
+      if (free_[l][c] != 0) u_[l][c] = (minv_[l] * rhs_[l])[c];
   }
-  work_.setZero(static_cast<Eigen::Index>(factor_key_.size()));
-  for (Eigen::Index i = 0; i < r.size(); ++i)
-    if (const int j = map_[static_cast<std::size_t>(i)]; j >= 0) work_[j] = r[i];
-  work_ = ldlt_.solve(work_);
-  z.resize(r.size());
-  for (Eigen::Index i = 0; i < r.size(); ++i) {
-    const int j = map_[static_cast<std::size_t>(i)];
-    z[i] = j >= 0 ? work_[j] : r[i] / jacobi_[i];
-  }
-}
-
-// Conjugate gradients on A_ (its lower triangle stored) preconditioned by the last factor, from x = M^-1 b, to a
-// relative residual of 1e-10 (the step's own truncation error is far larger), within budget_ solves. Returns false
-// (x undefined) when that is not enough; a solve that needed more than half of them marks the factor stale, so
-// that the next step factorises afresh rather than try.
-template <int D> bool ImplicitViscosity<D>::preconditioned_solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
-  const auto A = A_.template selfadjointView<Eigen::Lower>();
-  const double tol = 1e-10 * b.norm();
-  precondition(b, x);
-  Eigen::VectorXd r = b - A * x;
-  int solves = 1;
-  auto done = [&] {
-    ++stats_.reused, stats_.iterations += solves - 1;
-    stale_ = 2 * solves > budget_;
-    return x.allFinite();
+  const DampedChebyshev cs(stages);
+  const double h = 0.5 * dt;  // two halves: R_s(z/2)^2 >= 0 (DampedChebyshev)
+  auto velocities = [&](const std::vector<Vec<D>>& Q) {  // Y = Y_0 - h M'^-1 Q on the free components
+    for (std::size_t l = 0; l < n; ++l) u_[l] = y0_[l] - h * free_[l].cwiseProduct(minv_[l] * Q[l]);
   };
-  if (r.norm() <= tol) return done();
-  Eigen::VectorXd z, q(b.size());
-  precondition(r, z);
-  Eigen::VectorXd p = z;
-  double rz = r.dot(z);
-  for (++solves; solves <= budget_; ++solves) {
-    q.noalias() = A * p;
-    const double alpha = rz / p.dot(q);
-    x += alpha * p, r -= alpha * q;
-    if (r.norm() <= tol) return done();
-    precondition(r, z);
-    const double rz1 = r.dot(z);
-    p = z + (rz1 / rz) * p, rz = rz1;
+  qsum_.assign(n, Vec<D>::Zero()), ky_.assign(n, Vec<D>::Zero()), q_.resize(n);
+  for (int half = 0; half < 2; ++half) {
+    y0_ = u_;
+    q2_.assign(n, Vec<D>::Zero());
+    operate(s, b, st, a, bv, u_, ky_);
+    for (std::size_t l = 0; l < n; ++l) q_[l] = (cs.w1 / cs.w0) * ky_[l];
+    for (int j = 2; j <= stages; ++j) {
+      velocities(q_);
+      operate(s, b, st, a, bv, u_, ky_);
+      const double mu = 2 * cs.w0 * cs.T[j - 1] / cs.T[j], nu = -cs.T[j - 2] / cs.T[j], mu1 = 2 * cs.w1 * cs.T[j - 1] / cs.T[j];
+      for (std::size_t l = 0; l < n; ++l) q2_[l] = mu * q_[l] + nu * q2_[l] + mu1 * ky_[l];
+      std::swap(q_, q2_);
+    }
+    velocities(q_);
+    for (std::size_t l = 0; l < n; ++l) qsum_[l] += 0.5 * q_[l];
   }
-  stats_.iterations += solves - 1;
-  return false;
+  std::swap(q_, qsum_);
+  ++stats_.steps, stats_.stages += 2 * stages;
+  for (const Vec<D>& v : u_)
+    if (!v.allFinite()) throw RunError("body '" + b.name + "': the viscous sub-step gave a non-finite velocity");
 }
 
-template <int D> void ImplicitViscosity<D>::save_state(StateWriter& w) const {
-  w.put(dissipated_);
-  w.put<std::uint8_t>(factored_ ? 1 : 0), w.put<std::uint8_t>(stale_ ? 1 : 0), w.put(budget_);
-  w.put(outer_), w.put(inner_), w.put(factored_values_), w.put(factor_key_), w.put(static_cast<std::uint64_t>(factor_slot_.size()));
-  w.put(stats_);
-}
+template <int D> void ImplicitViscosity<D>::save_state(StateWriter& w) const { w.put(dissipated_), w.put(stats_); }
 
-template <int D> void ImplicitViscosity<D>::load_state(StateReader& r) {
-  r.get(dissipated_);
-  factored_ = r.get<std::uint8_t>() != 0, stale_ = r.get<std::uint8_t>() != 0, r.get(budget_);
-  r.get(outer_), r.get(inner_), r.get(factored_values_), r.get(factor_key_);
-  const auto keys = r.get<std::uint64_t>();
-  r.get(stats_);
-  factor_slot_.clear(), slot_keys_.clear();
-  if (!factored_) return;
-  for (Index k : factor_key_)
-    if (k < 0 || static_cast<std::uint64_t>(k) >= keys) r.fail("the viscous factor names an unknown outside the grid");
-  index_factor_keys(static_cast<std::size_t>(keys));
-  const Eigen::Index n = static_cast<Eigen::Index>(outer_.size()) - 1;
-  r.expect_size("the viscous factor's values", factored_values_.size(), inner_.size());
-  if (n < 1 || static_cast<std::size_t>(outer_.back()) != inner_.size()) r.expect_size("the viscous factor's pattern", inner_.size(), outer_.empty() ? 0 : static_cast<std::size_t>(outer_.back()));
-  Eigen::Map<const Eigen::SparseMatrix<double>> m(n, n, static_cast<Eigen::Index>(inner_.size()), outer_.data(), inner_.data(), factored_values_.data());
-  A_ = m;
-  ldlt_.analyzePattern(A_);
-  ldlt_.factorize(A_);
-  factored_ = ldlt_.info() == Eigen::Success;
-}
+template <int D> void ImplicitViscosity<D>::load_state(StateReader& r) { r.get(dissipated_), r.get(stats_); }
 
 template <int D> void ImplicitViscosity<D>::account(const Grid<D>& g, double dt) {
   double w = 0;

@@ -2,25 +2,45 @@
 // A damped body's stress is sigma = sigma_e + sigma_v, sigma_v = a tr(D) I + 2 b D (a = beta lambda, b = beta mu,
 // beta = zeta / (pi f)). Integrated explicitly, sigma_v cuts the stable step to (2/w)(sqrt(1 + zeta^2) - zeta),
 // zeta = beta w / 2, w = 2 sqrt(D) c / h: for strong damping h^2 / (2 D beta c^2), the viscous limit of the grid's
-// checkerboard modes, which falls as h^2. Here the viscous nodal force is taken at the end of the step (backward
-// Euler on the viscous part, forward on the elastic one):
-//   (M + dt K_v) u = M v*,   v* = (p + dt f_e) / m,   f_v = -K_v u,
-//   K_v u = sum_p V_p sigma_v(D_p(u)) grad N_ip,   D_p(u) = sym(sum_i u_i (x) grad N_ip),
-// per damped body over the nodes of its field, by a sparse LDL^T factorisation (K_v is symmetric positive
-// semi-definite and the lumped M positive, so the system is SPD). f_e is P2G's nodal force less the viscous
-// stress of the last update, which P2G scattered with the elastic one; f_v then joins it, so that members, walls and
-// contact see one nodal force as before. The viscous part is unconditionally stable and the step is the elastic
-// CFL step.
+// checkerboard modes, which falls as h^2. Here the viscous part is a sub-step after the explicit elastic one: from
+// the predictor v* = (p + dt f_e) / m the nodal velocities follow the viscous flow
+//   M du/dt = -K_v u,   K_v u = sum_p V_p sigma_v(D_p(u)) grad N_ip,   D_p(u) = sym(sum_i u_i (x) grad N_ip),
+// per damped body over the nodes of its field for the step dt, and the step's viscous nodal force is the momentum it
+// removed, M (u - v*) / dt. f_e is P2G's nodal force less the viscous stress of the last update, which P2G scattered
+// with the elastic one; the viscous force then joins it, so that members, walls and contact see one nodal force as
+// before. The flow is integrated by damped Chebyshev stages (DampedChebyshev: explicit and matrix-free, about
+// 2 sqrt(dt lambda_max) passes of the viscous operator, lambda_max bounded per particle), so the step stays the
+// elastic CFL step. (A backward Euler solve by a sparse LDL^T factorisation did this until it cost 36 ms a step on
+// the buffer at h = 0.01 m: docs/performance.md.)
 #pragma once
 #include <vector>
 
-#include <Eigen/SparseCholesky>
-#include <Eigen/SparseCore>
 
 #include "engine/mpm/scene.hpp"
 #include "engine/mpm/transfer.hpp"
 
 namespace dmi {
+
+// Damped Chebyshev polynomials for the viscous sub-step (the first-order Runge-Kutta-Chebyshev method; van der
+// Houwen & Sommeijer 1980; Verwer, Hundsdorfer & Sommeijer 1990): R_s(z) = T_s(w0 - w1 z) / T_s(w0) for the decay
+// rate z = dt lambda, w0 = 1 + eps / s^2, w1 = T_s(w0) / T_s'(w0), so that R_s = 1 - z + O(z^2) and |R_s| <= 1 / T_s(w0)
+// on [0, beta_s], beta_s = (1 + w0) / w1. eps = 2 damps every mode of that interval at least to 1 / cosh 2 = 0.27
+// (the exact flow removes the grid's stiff modes; eps = 0 would keep them) at beta_s ~ 0.96 s^2. A step is two
+// half-steps, R_s(z / 2)^2 >= 0: a negative factor on the velocity of a stiff mode, combined with the explicit
+// elastic update, grows it (symplectic Euler with x' = x + dt v: trace 1 + R (1 - dt^2 w^2) exceeds 1 + R for R < 0).
+struct DampedChebyshev {
+  static constexpr double kDamping = 2.0;
+  static constexpr int kMaxStages = 200;  // per half-step; beyond, the direct solve
+  explicit DampedChebyshev(int s);
+  int s;
+  double w0 = 1, w1 = 1;
+  std::vector<double> T;  // T_j(w0), j = 0..s
+  double beta() const { return (1 + w0) / w1; }
+  double amplification(double z) const;  // R_s(z)
+  // The fewest stages per half-step whose interval holds z / 2 (a step's z), 0 when none up to kMaxStages does or z
+  // is not finite.
+  static int stages_for(double z);
+};
 
 template <int D> class ImplicitViscosity {
  public:
@@ -38,7 +58,7 @@ template <int D> class ImplicitViscosity {
   // constraint, as an elastic force does); where body contact would change the damped field, the other field's
   // nodal mass joins it along the contact normal n (the direction of the change), m_A + m_B n n^T, so that both leave
   // the solve with one normal velocity and the contact force includes the viscous one (momentum is exchanged, not
-  // made). Wall touch sets must be current. Throws RunError if the solve fails.
+  // made). Wall touch sets must be current. Throws RunError if the sub-step fails.
   void apply(Scene<D>& s, const TransferKernels<D>& kernels, double dt, double t, double mass_eps, const std::vector<char>& bodies,
             const Held& held);
   // True when the last apply() ran the body contact's surface detection for this step (the grid update may reuse it).
@@ -47,12 +67,11 @@ template <int D> class ImplicitViscosity {
   // dt sum_i (K_v u)_i . v^L_i.
   void account(const Grid<D>& g, double dt);
   double dissipated() const { return dissipated_; }  // J, since t = 0
-  // The dissipated energy and the factor CG reuses (as the matrix it factorised, refactorised on load), so that a
-  // restart repeats the uninterrupted run exactly.
+  // The dissipated energy and the counts, so that a restart repeats the uninterrupted run exactly.
   void save_state(StateWriter& w) const;
   void load_state(StateReader& r);
   struct Stats {
-    long factorisations = 0, reused = 0, iterations = 0;  // solves by a fresh factor; by the last one (CG), CG iterations
+    long steps = 0, stages = 0;  // viscous sub-steps, and their Chebyshev stages
   };
   const Stats& stats() const { return stats_; }
 
@@ -60,21 +79,26 @@ template <int D> class ImplicitViscosity {
   struct Stencils {
     int nn = 0;                // entries per particle
     std::vector<Index> node;   // per particle and entry: field-local node
+    std::vector<double> weight;  // N
     std::vector<Vec<D>> grad;  // grad N
+    double lambda = 0;         // bound on lambda_max(M^-1 K_v) (1/s), infinite for linear shape functions
   };
+  void chebyshev(Scene<D>& s, const Body& b, const Stencils& st, double a, double bv, double dt, int stages);
   void solve_body(Scene<D>& s, const Body& b, const Stencils& st, double a, double bv, double dt, double mass_eps, const Held& held);
   void operate(const Scene<D>& s, const Body& b, const Stencils& st, double a, double bv, const std::vector<Vec<D>>& u,
-               std::vector<Vec<D>>& out) const;
-  bool preconditioned_solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
-  bool map_onto_factor(Index off, int nf);
-  void index_factor_keys(std::size_t keys);
-  void precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z);
+               std::vector<Vec<D>>& out);
+  void incidence(const Stencils& st);
 
   std::vector<Stencils> stencils_;  // per body (damped ones only)
   std::vector<int> local_;          // field-local node -> unknown (-1: none)
   std::vector<int> entry_;          // per particle and entry: unknown (-1: none)
   std::vector<Index> nodes_;        // unknown -> field-local node
   std::vector<Vec<D>> rhs_, u_, q_;
+  std::vector<Vec<D>> y0_, q2_, ky_, qsum_;  // Chebyshev: Y_0, Q_j-2, K Y_j-1, the mean force
+  std::vector<Mat<D>> minv_;          // per unknown: M'^-1
+  std::vector<Mat<D>> sv_;            // operate: per particle V_p sigma_v
+  std::vector<int> inc_start_, inc_particle_, fill_;  // per unknown: its particle entries (CSR), their particle
+  std::vector<Vec<D>> inc_grad_;      // ... and grad N
   std::vector<Vec<D>> free_;        // per unknown: 1 for a free component, 0 for a held one
   std::vector<Vec<D>> vstar_, walled_, probe_;  // all node-fields: v*, after the walls and regions, after body contact
   struct Tie {
@@ -83,25 +107,7 @@ template <int D> class ImplicitViscosity {
     Vec<D> n;  // contact normal
   };
   std::vector<Tie> ties_;
-  std::vector<Mat<D>> blocks_;      // per unknown and neighbour offset: the block of A
-  std::vector<char> used_;
-  std::vector<int> dof_;            // per unknown component: free index, -1 held
-  std::vector<Eigen::Triplet<double>> triplets_;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
-  Eigen::SparseMatrix<double> A_;
-  std::vector<int> outer_, inner_;  // the pattern ldlt_ was analysed for
-  bool factored_ = false;           // ldlt_ holds a numeric factor (of an earlier step's matrix of that pattern)
-  std::vector<double> factored_values_;  // that matrix's values (pattern outer_, inner_)
-  std::vector<Index> factor_key_;   // per unknown of the factor: node-field x D + component
-  std::vector<int> factor_slot_;    // key -> the factor's unknown (-1: none), over all node-fields
-  std::vector<Index> slot_keys_;    // the keys set in factor_slot_
-  std::vector<int> map_;            // this step's unknown -> the factor's (-1: Jacobi)
-  bool identity_ = false;           // map_ is the identity
-  Eigen::VectorXd jacobi_, work_;
-  bool stale_ = false;              // the last reuse came close to the budget: factorise at the next step
-  int budget_ = 1;                  // solves a preconditioned CG may take: the factorisation's cost in solves
   Stats stats_;
-  std::vector<int> pair_slot_;      // per pair of stencil entries: the offset slot
   bool probed_ = false, detected_ = false;
   std::vector<Index> acc_k_;        // this step's solved node-fields ...
   std::vector<Vec<D>> acc_f_;       // ... and K_v u there

@@ -317,9 +317,8 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
     if (!doc.empty()) info.documents["peak_contact"] = doc;
   }
   if (const auto* iv = solver.viscosity()) {
-    info.numbers["viscous_factorisations"] = static_cast<double>(iv->stats().factorisations);
-    info.numbers["viscous_factor_reuses"] = static_cast<double>(iv->stats().reused);
-    info.numbers["viscous_cg_iterations"] = static_cast<double>(iv->stats().iterations);
+    info.numbers["viscous_steps"] = static_cast<double>(iv->stats().steps);
+    info.numbers["viscous_stages"] = static_cast<double>(iv->stats().stages);
   }
   if (const auto* mc = solver.member_contact()) {
     const MemberContactStats& st = mc->stats();

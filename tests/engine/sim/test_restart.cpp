@@ -90,9 +90,8 @@ TEST(Restart, ExplicitFrameIsBitIdentical) {
   expect_bit_identical_restart(s, "explicit", 777, 2);
 }
 
-// The buffered dam: the tyres' damping integrated implicitly, with the last factor reused by CG between
-// factorisations; stopped inside the impact (the boulder meets the buffer near 17 ms), the restart refactorises the
-// saved matrix and repeats the run exactly.
+// The buffered dam: the tyres' damping integrated implicitly (Chebyshev sub-steps, held components and contact ties);
+// stopped inside the impact (the boulder meets the buffer near 17 ms), the restart repeats the run exactly.
 TEST(Restart, ImplicitlyDampedBufferIsBitIdentical) {
   const auto variants = dmi::load_scenario_variants(std::string(DMI_SOURCE_DIR) + "/examples/concrete_dam_boulder_buffer.json");
   dmi::Scenario s = variants.at(0).scenario;
