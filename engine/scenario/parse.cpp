@@ -67,7 +67,8 @@ void read_mpm(Obj o, MpmConfig& m) {
                                      "default usl, but musl for linear shape functions (USL with linear shapes is unstable at nearly empty nodes)"});
   o.choice<bool>("damping", m.implicit_damping, {{"implicit", true}, {"explicit", false}},
                  Spec{.doc = "integration of the Kelvin-Voigt viscous stress of damped linear_elastic and neo_hookean materials: implicit "
-                             "(backward Euler on the grid, a linear solve per step; the step stays the elastic CFL step) or explicit "
+                             "(a viscous sub-step on the grid by damped Chebyshev stages, about 2 sqrt(dt lambda_max) operator passes; "
+                             "the step stays the elastic CFL step) or explicit "
                              "(the step shrinks to (2/w)(sqrt(1 + zeta^2) - zeta), as h^2 for strong damping). The fluids' viscosity is explicit"});
   if (!o.documenting() && m.shape == ShapeKind::linear && m.transfer == TransferKind::apic)
     o.fail("transfer", nullptr, "flip with shape_function linear (APIC with linear shape functions is unstable at nearly empty nodes; use gimp or bspline2 for APIC)");
