@@ -255,10 +255,7 @@ template <int D> void body_fronts(Scene<D>& s) {
   }
 }
 
-// The pair's correction at a node in surface detection: momentum-conserving, along the least-overlap axis.
-template <int D> void pair_contact(Scene<D>& s, std::vector<Vec<D>>& vel, Index id, double tol) {
-  const Grid<D>& g = *s.grid;
-  const auto& pair = s.body_pair[id];
+template <int D> bool pair_normal(const Scene<D>& s, Index id, double tol, Vec<D>& n) {
   const auto& front = s.body_front[id];
   // The least overlap over the three axes; none unless every axis's column holds both fields (a node beyond a
   // body's edge sees it only along a tilted axis).
@@ -266,16 +263,29 @@ template <int D> void pair_contact(Scene<D>& s, std::vector<Vec<D>>& vel, Index 
   double overlap = std::numeric_limits<double>::infinity();
   for (int j = 0; j < 3; ++j) {
     const double o = front[2 * j] + front[2 * j + 1];
-    if (!std::isfinite(o)) return;
+    if (!std::isfinite(o)) return false;
     if (o < overlap) overlap = o, best = j;
   }
-  if (overlap < -tol) return;  // separated along some axis
-  const Index nn = g.nnodes(), ka = pair[0] * nn + id, kb = pair[1] * nn + id;
-  const Vec<D> n = s.body_axes[id][best];  // from field a towards b
-  const double ma = g.m[ka], mb = g.m[kb];
+  if (overlap < -tol) return false;  // separated along some axis
+  n = s.body_axes[id][best];
+  return true;
+}
+
+template <int D> bool pair_masses_count(double ma, double mb) {
   // A field with under 1e-6 of the node's mass takes no force worth applying, and its correction P / m only
   // amplifies round-off (total momentum drifted by 1e-12 in the colliding-disk test, 1e-15 without).
-  if (std::min(ma, mb) < 1e-6 * (ma + mb)) return;
+  return !(std::min(ma, mb) < 1e-6 * (ma + mb));
+}
+
+// The pair's correction at a node in surface detection: momentum-conserving, along the least-overlap axis.
+template <int D> void pair_contact(Scene<D>& s, std::vector<Vec<D>>& vel, Index id, double tol) {
+  const Grid<D>& g = *s.grid;
+  const auto& pair = s.body_pair[id];
+  Vec<D> n;
+  if (!pair_normal(s, id, tol, n)) return;
+  const Index nn = g.nnodes(), ka = pair[0] * nn + id, kb = pair[1] * nn + id;
+  const double ma = g.m[ka], mb = g.m[kb];
+  if (!pair_masses_count<D>(ma, mb)) return;
   // Relative velocity of a to the pair's centre of mass, m_b (v_a - v_b) / (m_a + m_b); b's is -m_a/m_b of it, so
   // one impulse P applied as +P/m_a and -P/m_b makes the two corrections equal and opposite to round-off.
   const Vec<D> rel = mb * (vel[ka] - vel[kb]) / (ma + mb);
@@ -289,7 +299,8 @@ template <int D> void pair_contact(Scene<D>& s, std::vector<Vec<D>>& vel, Index 
   vel[kb] -= P / mb;
 }
 
-template <int D> void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel, bool fronts, const std::vector<Index>* nodes) {
+template <int D>
+void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel, bool fronts, const std::vector<Index>* nodes, const std::vector<char>* skip) {
   Grid<D>& g = *s.grid;
   const int nf = g.nfields();
   if (nf < 2) return;
@@ -300,7 +311,8 @@ template <int D> void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel, bool f
     if (fronts || s.body_pair.size() != static_cast<std::size_t>(nn)) body_fronts(s);
     const double tol = 1e-6 * g.h();
     parallel_for(0, na, [&](Index a) {
-      if (s.body_pair[active[a]][0] >= 0) pair_contact(s, vel, active[a], tol);
+      const auto& pair = s.body_pair[active[a]];
+      if (pair[0] >= 0 && !(skip && ((*skip)[pair[0]] != 0) != ((*skip)[pair[1]] != 0))) pair_contact(s, vel, active[a], tol);
     });
     return;
   }
@@ -349,7 +361,11 @@ template void keep_in_front_of_walls<2>(Scene<2>&, Index, Index);
 template void keep_in_front_of_walls<3>(Scene<3>&, Index, Index);
 template double apply_boundaries<2>(Scene<2>&, std::vector<Vec<2>>&, double, double, bool, bool, const std::vector<Index>*);
 template double apply_boundaries<3>(Scene<3>&, std::vector<Vec<3>>&, double, double, bool, bool, const std::vector<Index>*);
-template void body_contact<2>(Scene<2>&, std::vector<Vec<2>>&, bool, const std::vector<Index>*);
-template void body_contact<3>(Scene<3>&, std::vector<Vec<3>>&, bool, const std::vector<Index>*);
+template void body_contact<2>(Scene<2>&, std::vector<Vec<2>>&, bool, const std::vector<Index>*, const std::vector<char>*);
+template void body_contact<3>(Scene<3>&, std::vector<Vec<3>>&, bool, const std::vector<Index>*, const std::vector<char>*);
+template bool pair_normal<2>(const Scene<2>&, Index, double, Vec<2>&);
+template bool pair_normal<3>(const Scene<3>&, Index, double, Vec<3>&);
+template bool pair_masses_count<2>(double, double);
+template bool pair_masses_count<3>(double, double);
 
 }  // namespace dmi

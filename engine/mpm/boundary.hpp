@@ -45,6 +45,15 @@ template <int D> void keep_in_front_of_walls(Scene<D>& s, Index i0, Index i1);
 //   On curved bodies the fill lags the touch and the contact is soft (docs/verification.md).
 // fronts = false reuses the surface detection of an earlier call in the same step (the particles have not moved).
 // nodes: only these nodes, instead of the grid's active nodes (with fronts = false).
-template <int D> void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel, bool fronts = true, const std::vector<Index>* nodes = nullptr);
+// skip (surface detection): per field, 1 where its pairs with unflagged fields are corrected elsewhere
+// (RigidBodies::body_contact: the rigid body's whole mass against the node's).
+template <int D>
+void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel, bool fronts = true, const std::vector<Index>* nodes = nullptr,
+                  const std::vector<char>* skip = nullptr);
+// Surface detection at a node whose pair is set (Scene::body_pair, after body_contact's detection): false when the two
+// fields do not touch, else their normal n from pair[0] towards pair[1] (the axis of least overlap).
+template <int D> bool pair_normal(const Scene<D>& s, Index id, double tol, Vec<D>& n);
+// Whether both fields' masses at a node count for contact (neither below 1e-6 of their sum).
+template <int D> bool pair_masses_count(double ma, double mb);
 
 }  // namespace dmi

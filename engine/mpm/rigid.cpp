@@ -1,5 +1,7 @@
 #include "engine/mpm/rigid.hpp"
 
+#include "engine/mpm/boundary.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -230,6 +232,87 @@ double RigidBodies<D>::project_nodes(Scene<D>& s, std::vector<Vec<D>>& vel, doub
         vel[off + id] = vr;
       }
     worst = std::max(worst, change / scale);
+  }
+  return worst;
+}
+
+template <int D> std::vector<char> RigidBodies<D>::contact_fields(const Scene<D>& s) const {
+  std::vector<int> bodies(s.grid->nfields(), 0);
+  std::vector<char> rigid(s.grid->nfields(), 1);
+  for (const Body& b : s.bodies) ++bodies[b.field], rigid[b.field] = rigid[b.field] && b.rigid;
+  for (std::size_t f = 0; f < rigid.size(); ++f) rigid[f] = rigid[f] && bodies[f] == 1;
+  return rigid;
+}
+
+template <int D>
+double RigidBodies<D>::body_contact(Scene<D>& s, std::vector<Vec<D>>& vel, double s_min, const std::vector<Index>& nodes) const {
+  const Grid<D>& g = *s.grid;
+  if (g.nfields() < 2 || s.options.contact_detection != BodyDetection::surface || s.body_pair.size() != static_cast<std::size_t>(g.nnodes()))
+    return 0;
+  const std::vector<char> rigid = contact_fields(s);
+  const double tol = 1e-6 * g.h(), mu = s.options.contact_friction;
+  struct Contact { Index kb; double mb; Vec<3> r, n; };
+  std::vector<Contact> cs;
+  double worst = 0;
+  for (const State& st : bodies_) {
+    const int f = s.bodies[st.body].field;
+    if (!rigid[f]) continue;
+    const Index off = f * g.nnodes();
+    const NodalMotion<D> m = nodal_motion(g, vel, off, nodes);
+    if (!(m.M > 0)) continue;
+    cs.clear();
+    for (Index id : nodes) {
+      const auto& pair = s.body_pair[id];
+      if (pair[0] < 0 || (pair[0] != f && pair[1] != f)) continue;
+      const int o = pair[0] == f ? pair[1] : pair[0];
+      Vec<D> n;
+      if (rigid[o] || !pair_normal(s, id, tol, n)) continue;
+      const Index kb = o * g.nnodes() + id;
+      if (!pair_masses_count<D>(g.m[off + id], g.m[kb])) continue;
+      Contact c{kb, g.m[kb], Vec<3>::Zero(), Vec<3>::Zero()};
+      c.r.template head<D>() = g.node_pos(id) - m.xc;
+      c.n.template head<D>() = pair[0] == f ? n : Vec<D>(-n);  // from the rigid body towards the other field
+      cs.push_back(c);
+    }
+    if (cs.empty()) continue;
+    Mat<3> Iinv = Mat<3>::Zero();  // 2D: rotation about z only
+    if constexpr (D == 2) Iinv(2, 2) = 1 / m.I(2, 2); else Iinv = m.I.inverse();
+    Vec<3> V = Vec<3>::Zero(), W = m.w;
+    V.head<D>() = m.V;
+    const double scale = s_min + m.V.norm() + m.w.norm() * m.rmax;
+    for (int sweep = 0; sweep < 100; ++sweep) {
+      double moved = 0;  // largest impulse of the sweep
+      for (const Contact& c : cs) {
+        Vec<3> vb = Vec<3>::Zero();
+        vb.head<D>() = vel[c.kb];
+        const Vec<3> u = V + W.cross(c.r) - vb;  // the rigid side's velocity relative to the other field's
+        const double un = u.dot(c.n);
+        if (un <= 0) continue;  // separating
+        // u changes by A P for an impulse P on the body (-P on the node): A = K(r) + 1/m_b.
+        const Mat<3> rx = spin_matrix(c.r);  // [r]x
+        Mat<3> A = (1 / m.M + 1 / c.mb) * Mat<3>::Identity() - rx * Iinv * rx;
+        if constexpr (D == 2) A(2, 2) = 1;  // no motion along z: keep A invertible, u_z = 0
+        Vec<3> P = -A.inverse() * u;  // stick: the relative velocity removed
+        const double lam = -P.dot(c.n);
+        if ((P + lam * c.n).norm() > mu * lam) {  // slip: the normal approach removed, Coulomb's mu lam_n against the slip
+          const double ln = un / c.n.dot(A * c.n);
+          const Vec<3> ut = u - un * c.n;
+          P = -ln * c.n - (ut.norm() > 0 ? Vec<3>(mu * ln * ut.normalized()) : Vec<3>::Zero());
+        }
+        V += P / m.M, W += Iinv * c.r.cross(P);
+        vel[c.kb] -= P.template head<D>() / c.mb;
+        moved = std::max(moved, P.norm());
+      }
+      if (moved <= 1e-12 * m.M * scale) break;
+    }
+    NodalMotion<D> after = m;
+    after.V = V.head<D>(), after.w = W;
+    for (Index id : nodes)
+      if (g.m[off + id] > 0) {
+        const Vec<D> v = after.at(g.node_pos(id));
+        worst = std::max(worst, (v - vel[off + id]).norm() / scale);
+        vel[off + id] = v;
+      }
   }
   return worst;
 }

@@ -173,14 +173,18 @@ template <int D> void Solver<D>::rigid_constraints(double dt) {
         rigid_nodes_.push_back(id);
         break;
       }
-  double wall_change = 0;
+  // Body contact between a rigid body and a deformable field sees the body's whole mass (RigidBodies::body_contact);
+  // the other pairs at these nodes take boundary.hpp's node-by-node correction.
+  const std::vector<char> skip = rigid_->contact_fields(scene_);
+  double wall_change = 0, contact_change = 0;
   for (int it = 0; it < kRigidPasses; ++it) {
     const double change = rigid_->project_nodes(scene_, g.vL, s_min, &rigid_nodes_);
     boundary_work_ += rigid_->wall_contact(scene_, g.vL, dt, s_min, wall_change, &rigid_nodes_);  // plane walls on the hulls
-    if (std::max(change, wall_change) < 1e-8) return;
+    if (std::max({change, wall_change, contact_change}) < 1e-8) return;
     ++rigid_passes_;
     boundary_work_ += apply_boundaries(scene_, g.vL, dt, time_ + dt, true, false, &rigid_nodes_);
-    body_contact(scene_, g.vL, false, &rigid_nodes_);
+    contact_change = rigid_->body_contact(scene_, g.vL, s_min, rigid_nodes_);
+    body_contact(scene_, g.vL, false, &rigid_nodes_, &skip);
   }
   rigid_->project_nodes(scene_, g.vL, s_min, &rigid_nodes_);
   boundary_work_ += rigid_->wall_contact(scene_, g.vL, dt, s_min, wall_change, &rigid_nodes_);
