@@ -5,6 +5,8 @@
 #include <limits>
 #include <string>
 
+#include <Eigen/Eigenvalues>
+
 #include "engine/common/error.hpp"
 #include "engine/common/parallel.hpp"
 #include "engine/mpm/boundary.hpp"
@@ -48,21 +50,36 @@ void ImplicitViscosity<D>::apply(Scene<D>& s, const TransferKernels<D>& kernels,
     st.nn = kernels.stencils(s, b.begin, b.end, st.node, st.weight, st.grad);
     const std::vector<Mat<D>>& old = *s.materials[b.material]->viscous_stress();
     const Index off = b.field * nn;
-    // The bound on the fastest viscous rate, lambda_max(M^-1 K_v) <= max_p (D a + 2 b) S_p / rho_p, S_p = sum_i
-    // |grad N_ip|^2 / N_ip: D_p:sigma_v <= (D a + 2 b) |L_p|^2 and, by Cauchy-Schwarz, |L_p|^2 <= S_p sum_i N_ip |u_i|^2,
-    // while u^T M u >= sum_p m_p sum_i N_ip |u_i|^2. S_p is bounded where N vanishes as the square of the distance
-    // (quadratic B-splines: 4-6 / h^2 per axis; uGIMP), unbounded for linear hats (N linear, grad N constant).
+    // The bound on the fastest viscous rate, lambda_max(M^-1 K_v) <= max_p (a tr H_p + 2 b lambda_max(H_p)) / rho_p
+    // with H_p = sum_i grad N_ip grad N_ip^T / N_ip (D x D): with W_p = sum_i N_ip |u_i|^2, (tr D_p)^2 = (sum_i u_i .
+    // grad N_ip)^2 <= tr(H_p) W_p (Cauchy-Schwarz) and D_p:D_p <= |L_p|^2 = |U N^1/2 N^-1/2 G|^2 <= lambda_max(H_p) W_p
+    // (|A B|_F <= |A|_F |B|_2), while u^T M u >= sum_p m_p W_p. H_p is bounded where N vanishes as the square of the
+    // distance (quadratic B-splines: 4-6 / h^2 per axis; uGIMP), and grows near a nearly empty node of linear hats.
+    // The plain Cauchy-Schwarz bound on |L_p|^2 (tr H_p) read 4-5x the fastest rate on the buffered dam (power
+    // iteration), this one about half that: stages go as its square root.
     double lambda = 0;
     for (Index i = b.begin; i < b.end; ++i) {
       const std::size_t k0 = static_cast<std::size_t>(i - b.begin) * st.nn;
       const Mat<D> so = P.vol[i] * old[i];
-      double sp = 0;
+      Mat<D> H = Mat<D>::Zero();
+      bool finite = true;
       for (int e = 0; e < st.nn; ++e) {
-        g.f[off + st.node[k0 + e]] += so * st.grad[k0 + e];
-        const double g2 = st.grad[k0 + e].squaredNorm();
-        if (g2 > 0) sp += st.weight[k0 + e] > 0 ? g2 / st.weight[k0 + e] : std::numeric_limits<double>::infinity();
+        const Vec<D>& gr = st.grad[k0 + e];
+        g.f[off + st.node[k0 + e]] += so * gr;
+        if (!(gr.squaredNorm() > 0)) continue;
+        if (st.weight[k0 + e] > 0) H.noalias() += gr * gr.transpose() / st.weight[k0 + e]; else finite = false;
       }
-      lambda = std::max(lambda, (D * a + 2 * bv) * sp * P.vol[i] / P.mass[i]);
+      double top;
+      if constexpr (D == 2) {
+        const double m = 0.5 * H.trace(), d = H.determinant();
+        top = m + std::sqrt(std::max(0.0, m * m - d));
+      } else {
+        Eigen::SelfAdjointEigenSolver<Mat<D>> es;
+        es.computeDirect(H, Eigen::EigenvaluesOnly);
+        top = es.eigenvalues()(D - 1);
+      }
+      const double rate = finite ? (a * H.trace() + 2 * bv * top) * P.vol[i] / P.mass[i] : std::numeric_limits<double>::infinity();
+      lambda = std::max(lambda, rate);
     }
     st.lambda = lambda;
   }
