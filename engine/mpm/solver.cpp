@@ -275,7 +275,7 @@ template <int D> double Solver<D>::stable_time_step(double limit) const {
     dt_bodies.push_back(dt_b);
   }
   // The elastic step, and the explicit one with every damping limit. The implicit viscosity costs about
-  // 2 sqrt(dt / dt_damped) viscous operator passes per step (or a sparse solve, docs/performance.md): it is used only
+  // 2 sqrt(dt / dt_damped) viscous operator passes per step (docs/performance.md): it is used only
   // where it lengthens the step by more than kImplicitGain, for the bodies whose damped limit is below the elastic step.
   const double cfl = scene_.options.cfl;
   double dt_el = dt, dt_ex = dt;

@@ -78,7 +78,8 @@ void ImplicitViscosity<D>::apply(Scene<D>& s, const TransferKernels<D>& kernels,
         es.computeDirect(H, Eigen::EigenvaluesOnly);
         top = es.eigenvalues()(D - 1);
       }
-      const double rate = finite ? (a * H.trace() + 2 * bv * top) * P.vol[i] / P.mass[i] : std::numeric_limits<double>::infinity();
+      // a = beta lambda < 0 for a negative Poisson's ratio: a (tr D)^2 <= 0 then, and only the shear term bounds.
+      const double rate = finite ? (std::max(a, 0.0) * H.trace() + 2 * bv * top) * P.vol[i] / P.mass[i] : std::numeric_limits<double>::infinity();
       lambda = std::max(lambda, rate);
     }
     st.lambda = lambda;
@@ -193,13 +194,14 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
   for (const auto& [k, v] : held)
     if (k >= off && k < off + nn)
       if (const int l = local_[k - off]; l >= 0) free_[l].setZero(), u_[l] = v;
-  // The viscous sub-step by damped Chebyshev stages, as many as the bound on the fastest rate asks.
-  const int stages = DampedChebyshev::stages_for(dt * st.lambda);
-  if (stages == 0)
-    throw RunError("body '" + b.name + "': the viscous sub-step would need more than " + std::to_string(2 * DampedChebyshev::kMaxStages) +
-                   " stages (dt times the bound on the fastest viscous rate: " + std::to_string(dt * st.lambda) +
-                   "); a nearly empty node under linear shape functions makes it so: use shape_function bspline2 or gimp, or damping explicit");
-  chebyshev(s, b, st, a, bv, dt, stages);
+  // The viscous sub-step by damped Chebyshev stages, as many as the bound on the fastest rate asks, in more pieces of
+  // the step when one half-step would need more than kMaxStages (a nearly empty node under linear shape functions).
+  const double z = dt * st.lambda;
+  const int pieces = DampedChebyshev::pieces_for(z);
+  if (pieces == 0)
+    throw RunError("body '" + b.name + "': the bound on the fastest viscous rate is not finite (dt times it: " + std::to_string(z) +
+                   "; a particle on a node line of linear shape functions): use shape_function bspline2 or gimp, or damping explicit");
+  chebyshev(s, b, st, a, bv, dt, DampedChebyshev::stages_for(2 * z / pieces), pieces);
   // f = f_e - K_v u, and the joined partners' momentum exchange along n: the partner reaches the normal velocity u.n,
   // the damped field loses what it gains.
   for (std::size_t l = 0; l < n; ++l) {
@@ -237,20 +239,29 @@ double DampedChebyshev::amplification(double z) const {
 }
 
 int DampedChebyshev::stages_for(double z) {
-  if (!(z < std::numeric_limits<double>::infinity())) return 0;
+  static const double beta_max = DampedChebyshev(kMaxStages).beta();
   const double need = 1.02 * 0.5 * z;  // each half-step's interval, with a margin for round-off in the bound
-  for (int s = std::max(1, static_cast<int>(std::sqrt(need / 1.2))); s <= kMaxStages; ++s)  // beta_s < 1.2 s^2: start below
+  if (!(need <= beta_max)) return 0;   // also not finite
+  for (int s = std::max(1, static_cast<int>(std::sqrt(need / 1.4))); s <= kMaxStages; ++s)  // beta_s < 1.4 s^2: start below
     if (DampedChebyshev(s).beta() >= need) return s;
+  return 0;
+}
+
+int DampedChebyshev::pieces_for(double z) {
+  if (!(z < std::numeric_limits<double>::infinity())) return 0;
+  for (int p = 2; p <= (1 << 24); p *= 2)
+    if (stages_for(2 * z / p) > 0) return p;
   return 0;
 }
 
 // The viscous sub-step as the flow M' du/dt = -K_v u of the free components from u0 = M'^-1 (M v* + ties), held ones
 // fixed, by the damped Chebyshev recurrence (M' = M + the joined partners' m_B n n^T, per node). Written for the
-// forces: Y_j = Y_0 - dt M'^-1 Q_j, Q_0 = 0, Q_1 = (w1 / w0) K Y_0, Q_j = mu_j Q_j-1 + nu_j Q_j-2 + mu'_j K Y_j-1 with
-// mu_j = 2 w0 T_j-1 / T_j, nu_j = -T_j-2 / T_j, mu'_j = 2 w1 T_j-1 / T_j (mu_j + nu_j = 1), so that Q_s is the step's
-// mean viscous force K_v u on every component, held ones included (it reaches the wall or member there), and the
-// free components' momentum change is exactly -dt Q_s.
-template <int D> void ImplicitViscosity<D>::chebyshev(Scene<D>& s, const Body& b, const Stencils& st, double a, double bv, double dt, int stages) {
+// forces, per piece h = dt / pieces: Y_j = Y_0 - h M'^-1 Q_j, Q_0 = 0, Q_1 = (w1 / w0) K Y_0, Q_j = mu_j Q_j-1 +
+// nu_j Q_j-2 + mu'_j K Y_j-1 with mu_j = 2 w0 T_j-1 / T_j, nu_j = -T_j-2 / T_j, mu'_j = 2 w1 T_j-1 / T_j (mu_j + nu_j =
+// 1), so that the pieces' mean of Q_s is the step's mean viscous force K_v u on every component, held ones included
+// (it reaches the wall or member there), and the free components' momentum change is exactly -dt times it.
+template <int D>
+void ImplicitViscosity<D>::chebyshev(Scene<D>& s, const Body& b, const Stencils& st, double a, double bv, double dt, int stages, int pieces) {
   const Grid<D>& g = *s.grid;
   const Index off = b.field * g.nnodes();
   const std::size_t n = nodes_.size();
@@ -263,12 +274,12 @@ template <int D> void ImplicitViscosity<D>::chebyshev(Scene<D>& s, const Body& b
       if (free_[l][c] != 0) u_[l][c] = (minv_[l] * rhs_[l])[c];
   }
   const DampedChebyshev cs(stages);
-  const double h = 0.5 * dt;  // two halves: R_s(z/2)^2 >= 0 (DampedChebyshev)
+  const double h = dt / pieces;  // an even number of pieces: R_s(z/p)^p >= 0 (DampedChebyshev)
   auto velocities = [&](const std::vector<Vec<D>>& Q) {  // Y = Y_0 - h M'^-1 Q on the free components
     for (std::size_t l = 0; l < n; ++l) u_[l] = y0_[l] - h * free_[l].cwiseProduct(minv_[l] * Q[l]);
   };
   qsum_.assign(n, Vec<D>::Zero()), ky_.assign(n, Vec<D>::Zero()), q_.resize(n);
-  for (int half = 0; half < 2; ++half) {
+  for (int piece = 0; piece < pieces; ++piece) {
     y0_ = u_;
     q2_.assign(n, Vec<D>::Zero());
     operate(s, b, st, a, bv, u_, ky_);
@@ -281,10 +292,10 @@ template <int D> void ImplicitViscosity<D>::chebyshev(Scene<D>& s, const Body& b
       std::swap(q_, q2_);
     }
     velocities(q_);
-    for (std::size_t l = 0; l < n; ++l) qsum_[l] += 0.5 * q_[l];
+    for (std::size_t l = 0; l < n; ++l) qsum_[l] += q_[l] / pieces;
   }
   std::swap(q_, qsum_);
-  ++stats_.steps, stats_.stages += 2 * stages;
+  ++stats_.steps, stats_.stages += static_cast<long>(pieces) * stages;
   for (const Vec<D>& v : u_)
     if (!v.allFinite()) throw RunError("body '" + b.name + "': the viscous sub-step gave a non-finite velocity");
 }

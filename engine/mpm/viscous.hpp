@@ -26,11 +26,11 @@ namespace dmi {
 // rate z = dt lambda, w0 = 1 + eps / s^2, w1 = T_s(w0) / T_s'(w0), so that R_s = 1 - z + O(z^2) and |R_s| <= 1 / T_s(w0)
 // on [0, beta_s], beta_s = (1 + w0) / w1. eps = 2 damps every mode of that interval at least to 1 / cosh 2 = 0.27
 // (the exact flow removes the grid's stiff modes; eps = 0 would keep them) at beta_s ~ 0.96 s^2. A step is two
-// half-steps, R_s(z / 2)^2 >= 0: a negative factor on the velocity of a stiff mode, combined with the explicit
+// half-steps (or 4, 8, ... pieces), R_s(z / 2)^2 >= 0: a negative factor on the velocity of a stiff mode, combined with the explicit
 // elastic update, grows it (symplectic Euler with x' = x + dt v: trace 1 + R (1 - dt^2 w^2) exceeds 1 + R for R < 0).
 struct DampedChebyshev {
   static constexpr double kDamping = 2.0;
-  static constexpr int kMaxStages = 200;  // per half-step; beyond, the direct solve
+  static constexpr int kMaxStages = 200;  // per half-step; beyond, the step is cut in more pieces (pieces_for)
   explicit DampedChebyshev(int s);
   int s;
   double w0 = 1, w1 = 1;
@@ -40,6 +40,9 @@ struct DampedChebyshev {
   // The fewest stages per half-step whose interval holds z / 2 (a step's z), 0 when none up to kMaxStages does or z
   // is not finite.
   static int stages_for(double z);
+  // The fewest pieces of the step (2, 4, 8, ...; each by stages_for(2 z / pieces) stages) that keep the stages within
+  // kMaxStages; 0 when z is not finite.
+  static int pieces_for(double z);
 };
 
 template <int D> class ImplicitViscosity {
@@ -71,7 +74,7 @@ template <int D> class ImplicitViscosity {
   void save_state(StateWriter& w) const;
   void load_state(StateReader& r);
   struct Stats {
-    long steps = 0, stages = 0;  // viscous sub-steps, and their Chebyshev stages
+    long steps = 0, stages = 0;  // viscous sub-steps (per damped body and step), and their Chebyshev stages
   };
   const Stats& stats() const { return stats_; }
 
@@ -81,9 +84,9 @@ template <int D> class ImplicitViscosity {
     std::vector<Index> node;   // per particle and entry: field-local node
     std::vector<double> weight;  // N
     std::vector<Vec<D>> grad;  // grad N
-    double lambda = 0;         // bound on lambda_max(M^-1 K_v) (1/s), infinite for linear shape functions
+    double lambda = 0;         // bound on lambda_max(M^-1 K_v) (1/s); grows as 1/N near a node line of linear hats
   };
-  void chebyshev(Scene<D>& s, const Body& b, const Stencils& st, double a, double bv, double dt, int stages);
+  void chebyshev(Scene<D>& s, const Body& b, const Stencils& st, double a, double bv, double dt, int stages, int pieces);
   void solve_body(Scene<D>& s, const Body& b, const Stencils& st, double a, double bv, double dt, double mass_eps, const Held& held);
   void operate(const Scene<D>& s, const Body& b, const Stencils& st, double a, double bv, const std::vector<Vec<D>>& u,
                std::vector<Vec<D>>& out);

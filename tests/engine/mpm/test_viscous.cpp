@@ -57,6 +57,19 @@ TEST(DampedChebyshev, StableNonNegativeDampedAndFirstOrder) {
     }
   }
   EXPECT_EQ(DampedChebyshev::stages_for(std::numeric_limits<double>::infinity()), 0);
+  EXPECT_EQ(DampedChebyshev::stages_for(1e300), 0);
+  // Beyond kMaxStages a half-step, the step is cut in more (even) pieces, each held by its stages.
+  EXPECT_EQ(DampedChebyshev::pieces_for(37.0), 2);
+  for (double z : {1e6, 1e9}) {
+    const int p = DampedChebyshev::pieces_for(z);
+    EXPECT_GT(p, 2);
+    EXPECT_EQ(p % 2, 0);
+    const int s = DampedChebyshev::stages_for(2 * z / p);
+    ASSERT_GT(s, 0);
+    EXPECT_GE(DampedChebyshev(s).beta(), z / p);
+    EXPECT_EQ(DampedChebyshev::stages_for(4 * z / p), 0) << "not the fewest pieces at z " << z;
+  }
+  EXPECT_EQ(DampedChebyshev::pieces_for(std::numeric_limits<double>::infinity()), 0);
 }
 
 // The fixed-free bar (first mode 0.1 Hz) with zeta = 0.05 at its own frequency: the mode's energy decays as
@@ -101,6 +114,27 @@ TEST(ImplicitViscosity, DampedDiskOnElasticDiskConservesMomentumAndCreatesNoEner
   EXPECT_LT(d.balance(e0), 1e-3 * e0);     // nothing created
   EXPECT_GT(d.dissipated, 0.05 * e0);      // the collision is damped
   EXPECT_LT(s.steps(), 2000);              // ~ the elastic step (h 0.025 m, c 1.2 m/s, cfl 0.4: 3 s in ~400 steps)
+}
+
+// The same strongly damped disk with a negative Poisson's ratio (-0.9): the viscous Lame coefficient a = beta lambda
+// is negative, so the rate bound must not subtract it (it did, and the disk blew up in 4 steps); the collision stays
+// stable, momentum is conserved and no energy is created.
+TEST(ImplicitViscosity, AuxeticDampedDiskStaysStable) {
+  json j = json::parse(embedded_examples().at("colliding_disks.json"));
+  j["materials"][0]["poisson_ratio"] = -0.9;
+  j["materials"][0]["damping_ratio"] = 0.5;
+  j["materials"][0]["damping_frequency"] = 0.05;
+  j["materials"].push_back({{"name", "plain"}, {"model", "linear_elastic"}, {"density", 1000.0}, {"youngs_modulus", 1000.0}, {"poisson_ratio", 0.3}});
+  j["bodies"][1]["material"] = "plain";
+  j["analysis"]["end_time"] = 3.0;
+  Solver<2> s(build_scene<2>(parse_scenario(j, "disks.json")));
+  const Diagnostics<2> d0 = s.diagnostics();
+  const double e0 = d0.kinetic, p0 = 0.1 * std::sqrt(2.0) * 1000 * kPi * 0.04;
+  while (s.time() < 3.0 - 1e-12) s.step(s.stable_time_step(3.0 - s.time()));
+  const Diagnostics<2> d = s.diagnostics();
+  EXPECT_LT((d.momentum - d0.momentum).norm(), 1e-10 * p0);
+  EXPECT_LT(d.balance(e0), 1e-3 * e0);
+  EXPECT_GT(d.dissipated, 0.0);
 }
 
 }  // namespace
