@@ -5,7 +5,8 @@ under refinement to h = 0.01 m" and "What plane strain costs").
 Runs examples/concrete_dam_boulder_buffer.json without `compare` and without the solid check (the buffered variant
 alone) at the given cells, in 2D and optionally in 3D ("analysis": {"dimension": 3}, the boulder's velocity along x),
 and prints per cell the peak base shear, base moment and contact force on the member with the wall time, then the
-observed order, the extrapolated value and the GCI (Fs 1.25) from the three finest cells (ratio sqrt(2) expected).
+observed order, the extrapolated value and the GCI (Fs 1.25) from the three finest cells (bench/buffer_convergence.py's
+triple: no extrapolation when oscillating, diverging or below order 0.5).
 
   bench/buffered_refinement.py [--cells2d 0.04 0.0283 0.02 0.0141 0.01] [--cells3d 0.1 0.0707 0.05]
                                [--threads 2] [--out out/buffered_refinement]
@@ -20,6 +21,7 @@ import subprocess
 import h5py
 import numpy as np
 
+from buffer_convergence import triple
 from simrun import EXE, ROOT, simulate
 
 
@@ -37,18 +39,6 @@ def peaks(out, dim):
         r = h["supports/base/reaction"][:]
         return {"base shear": float(np.abs(r[:, 0]).max()), "base moment": float(np.abs(r[:, 2]).max()),
                 "contact": float(np.linalg.norm(h["frame/contact_force"][:], axis=1).max())}
-
-
-def study(f3, f2, f1, ratio):
-    """Observed order, extrapolated value and GCI (Fs 1.25) of three solutions, coarse to fine; None when oscillating."""
-    e21, e32 = f1 - f2, f2 - f3
-    if e21 == 0 or e21 * e32 <= 0:
-        return None
-    p = math.log(abs(e32 / e21)) / math.log(ratio)
-    rp = ratio ** p
-    if rp <= 1.0 + 1e-12:
-        return p, None, None
-    return p, f1 + e21 / (rp - 1), 1.25 * abs(e21 / f1) / (rp - 1)
 
 
 def run(cells, dim, threads, out_root):
@@ -72,16 +62,14 @@ def run(cells, dim, threads, out_root):
     for h, p, wall in rows:
         print("%-8.4g %15.1f %19.1f %13.1f %9.1f" % (h, p["base shear"] / 1e3, p["base moment"] / 1e3, p["contact"] / 1e3, wall))
     if len(rows) >= 3:
-        (h3, p3, _), (h2, p2, _), (h1, p1, _) = rows[-3:]
+        hs = [h for h, _, _ in rows[-3:]]
         for k in ("base shear", "base moment", "contact"):
-            s = study(p3[k], p2[k], p1[k], math.sqrt(h3 / h1))
-            if s is None:
-                print("%-12s oscillating or flat over the three finest cells" % k)
-            elif s[1] is None:
-                print("%-12s order %.2f: not in the asymptotic range" % (k, s[0]))
+            p, ext, note = triple(hs, [q[k] for _, q, _ in rows[-3:]])
+            if math.isfinite(ext):  # GCI (Fs 1.25) = 1.25 |f1 - f2| / f1 / (r^p - 1) = 1.25 |ext - f1| / f1
+                f1 = rows[-1][1][k]
+                print("%-12s order %.2f, extrapolated %.1f, GCI %.1f %%" % (k, p, ext / 1e3, 125 * abs(ext - f1) / abs(f1)))
             else:
-                print("%-12s order %.2f, extrapolated %.1f, GCI %.1f %%" % (k, s[0], s[1] / 1e3, 100 * s[2]))
-
+                print("%-12s %s%s" % (k, note, "" if not math.isfinite(p) else " (order %.2f)" % p))
 
 def main():
     ap = argparse.ArgumentParser()

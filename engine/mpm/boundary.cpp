@@ -271,7 +271,7 @@ template <int D> bool pair_normal(const Scene<D>& s, Index id, double tol, Vec<D
   return true;
 }
 
-template <int D> bool pair_masses_count(double ma, double mb) {
+bool pair_masses_count(double ma, double mb) {
   // A field with under 1e-6 of the node's mass takes no force worth applying, and its correction P / m only
   // amplifies round-off (total momentum drifted by 1e-12 in the colliding-disk test, 1e-15 without).
   return !(std::min(ma, mb) < 1e-6 * (ma + mb));
@@ -285,7 +285,7 @@ template <int D> void pair_contact(Scene<D>& s, std::vector<Vec<D>>& vel, Index 
   if (!pair_normal(s, id, tol, n)) return;
   const Index nn = g.nnodes(), ka = pair[0] * nn + id, kb = pair[1] * nn + id;
   const double ma = g.m[ka], mb = g.m[kb];
-  if (!pair_masses_count<D>(ma, mb)) return;
+  if (!pair_masses_count(ma, mb)) return;
   // Relative velocity of a to the pair's centre of mass, m_b (v_a - v_b) / (m_a + m_b); b's is -m_a/m_b of it, so
   // one impulse P applied as +P/m_a and -P/m_b makes the two corrections equal and opposite to round-off.
   const Vec<D> rel = mb * (vel[ka] - vel[kb]) / (ma + mb);
@@ -365,7 +365,5 @@ template void body_contact<2>(Scene<2>&, std::vector<Vec<2>>&, bool, const std::
 template void body_contact<3>(Scene<3>&, std::vector<Vec<3>>&, bool, const std::vector<Index>*, const std::vector<char>*);
 template bool pair_normal<2>(const Scene<2>&, Index, double, Vec<2>&);
 template bool pair_normal<3>(const Scene<3>&, Index, double, Vec<3>&);
-template bool pair_masses_count<2>(double, double);
-template bool pair_masses_count<3>(double, double);
 
 }  // namespace dmi

@@ -54,6 +54,6 @@ void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel, bool fronts = true, con
 // fields do not touch, else their normal n from pair[0] towards pair[1] (the axis of least overlap).
 template <int D> bool pair_normal(const Scene<D>& s, Index id, double tol, Vec<D>& n);
 // Whether both fields' masses at a node count for contact (neither below 1e-6 of their sum).
-template <int D> bool pair_masses_count(double ma, double mb);
+bool pair_masses_count(double ma, double mb);
 
 }  // namespace dmi

@@ -1,9 +1,9 @@
 #include "engine/mpm/rigid.hpp"
 
-#include "engine/mpm/boundary.hpp"
-
 #include <algorithm>
 #include <cmath>
+
+#include "engine/mpm/boundary.hpp"
 
 namespace dmi {
 namespace {
@@ -97,7 +97,28 @@ template <int D> struct NodalMotion {
     r.head<D>() = x - xc;
     return V + w.cross(r).head<D>();
   }
+  double speed_scale(double s_min) const { return s_min + V.norm() + w.norm() * rmax; }  // |V| + |omega| r_max + s
+  Mat<3> inverse_inertia() const {  // 2D: rotation about z only
+    Mat<3> Iinv = Mat<3>::Zero();
+    if constexpr (D == 2) Iinv(2, 2) = 1 / I(2, 2); else Iinv = I.inverse();
+    return Iinv;
+  }
 };
+
+// The rigid field's nodes (field offset off) take the motion m; returns the largest change of a nodal velocity over
+// scale.
+template <int D>
+double take_motion(const Grid<D>& g, std::vector<Vec<D>>& vel, Index off, const std::vector<Index>& nodes, const NodalMotion<D>& m,
+                   double scale) {
+  double change = 0;
+  for (Index id : nodes)
+    if (g.m[off + id] > 0) {
+      const Vec<D> v = m.at(g.node_pos(id));
+      change = std::max(change, (v - vel[off + id]).norm());
+      vel[off + id] = v;
+    }
+  return change / scale;
+}
 
 template <int D> NodalMotion<D> nodal_motion(const Grid<D>& g, const std::vector<Vec<D>>& vel, Index off, const std::vector<Index>& nodes) {
   NodalMotion<D> m;
@@ -151,8 +172,7 @@ double RigidBodies<D>::wall_contact(Scene<D>& s, std::vector<Vec<D>>& vel, doubl
     if (!hull[b.field] || !(dt > 0)) continue;
     NodalMotion<D> m = nodal_motion(g, vel, off, nodes);
     if (!(m.M > 0)) continue;
-    Mat<3> Iinv = Mat<3>::Zero();  // 2D: rotation about z only
-    if constexpr (D == 2) Iinv(2, 2) = 1 / m.I(2, 2); else Iinv = m.I.inverse();
+    const Mat<3> Iinv = m.inverse_inertia();
     std::vector<Contact> cs;
     for (Wall<D>& w : s.walls) {
       if (w.box || !(w.condition == WallCondition::slip || w.condition == WallCondition::friction)) continue;
@@ -203,13 +223,7 @@ double RigidBodies<D>::wall_contact(Scene<D>& s, std::vector<Vec<D>>& vel, doubl
     }
     NodalMotion<D> after = m;
     after.V = V.head<D>(), after.w = W;
-    const double scale = s_min + m.V.norm() + m.w.norm() * m.rmax;
-    for (Index id : nodes)
-      if (const double mi = g.m[off + id]; mi > 0) {
-        const Vec<D> v = after.at(g.node_pos(id));
-        change = std::max(change, (v - vel[off + id]).norm() / scale);
-        vel[off + id] = v;
-      }
+    change = std::max(change, take_motion(g, vel, off, nodes, after, m.speed_scale(s_min)));
   }
   return work;
 }
@@ -223,15 +237,7 @@ double RigidBodies<D>::project_nodes(Scene<D>& s, std::vector<Vec<D>>& vel, doub
     const Index off = s.bodies[st.body].field * g.nnodes();
     const NodalMotion<D> m = nodal_motion(g, vel, off, nodes);
     if (!(m.M > 0)) continue;
-    const double scale = s_min + m.V.norm() + m.w.norm() * m.rmax;
-    double change = 0;
-    for (Index id : nodes)
-      if (g.m[off + id] > 0) {
-        const Vec<D> vr = m.at(g.node_pos(id));
-        change = std::max(change, (vr - vel[off + id]).norm());
-        vel[off + id] = vr;
-      }
-    worst = std::max(worst, change / scale);
+    worst = std::max(worst, take_motion(g, vel, off, nodes, m, m.speed_scale(s_min)));
   }
   return worst;
 }
@@ -245,11 +251,11 @@ template <int D> std::vector<char> RigidBodies<D>::contact_fields(const Scene<D>
 }
 
 template <int D>
-double RigidBodies<D>::body_contact(Scene<D>& s, std::vector<Vec<D>>& vel, double s_min, const std::vector<Index>& nodes) const {
+double RigidBodies<D>::body_contact(Scene<D>& s, std::vector<Vec<D>>& vel, double s_min, const std::vector<Index>& nodes,
+                                    const std::vector<char>& rigid) const {
   const Grid<D>& g = *s.grid;
   if (g.nfields() < 2 || s.options.contact_detection != BodyDetection::surface || s.body_pair.size() != static_cast<std::size_t>(g.nnodes()))
     return 0;
-  const std::vector<char> rigid = contact_fields(s);
   const double tol = 1e-6 * g.h(), mu = s.options.contact_friction;
   struct Contact { Index kb; double mb; Vec<3> r, n; };
   std::vector<Contact> cs;
@@ -268,18 +274,17 @@ double RigidBodies<D>::body_contact(Scene<D>& s, std::vector<Vec<D>>& vel, doubl
       Vec<D> n;
       if (rigid[o] || !pair_normal(s, id, tol, n)) continue;
       const Index kb = o * g.nnodes() + id;
-      if (!pair_masses_count<D>(g.m[off + id], g.m[kb])) continue;
+      if (!pair_masses_count(g.m[off + id], g.m[kb])) continue;
       Contact c{kb, g.m[kb], Vec<3>::Zero(), Vec<3>::Zero()};
       c.r.template head<D>() = g.node_pos(id) - m.xc;
       c.n.template head<D>() = pair[0] == f ? n : Vec<D>(-n);  // from the rigid body towards the other field
       cs.push_back(c);
     }
     if (cs.empty()) continue;
-    Mat<3> Iinv = Mat<3>::Zero();  // 2D: rotation about z only
-    if constexpr (D == 2) Iinv(2, 2) = 1 / m.I(2, 2); else Iinv = m.I.inverse();
+    const Mat<3> Iinv = m.inverse_inertia();
     Vec<3> V = Vec<3>::Zero(), W = m.w;
     V.head<D>() = m.V;
-    const double scale = s_min + m.V.norm() + m.w.norm() * m.rmax;
+    const double scale = m.speed_scale(s_min);
     for (int sweep = 0; sweep < 100; ++sweep) {
       double moved = 0;  // largest impulse of the sweep
       for (const Contact& c : cs) {
@@ -307,12 +312,7 @@ double RigidBodies<D>::body_contact(Scene<D>& s, std::vector<Vec<D>>& vel, doubl
     }
     NodalMotion<D> after = m;
     after.V = V.head<D>(), after.w = W;
-    for (Index id : nodes)
-      if (g.m[off + id] > 0) {
-        const Vec<D> v = after.at(g.node_pos(id));
-        worst = std::max(worst, (v - vel[off + id]).norm() / scale);
-        vel[off + id] = v;
-      }
+    worst = std::max(worst, take_motion(g, vel, off, nodes, after, scale));
   }
   return worst;
 }

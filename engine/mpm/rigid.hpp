@@ -59,8 +59,9 @@ template <int D> class RigidBodies {
   // impulses on the body's nodal motion (the nodes then take it). Node by node with the node's mass, each constraint
   // pass closed only about m_rigid node / m_deformable node of the gap (180 passes a step on the buffered dam at
   // h 0.04 m, docs/performance.md). Returns the largest change of a rigid nodal velocity relative to the body's speed
-  // scale (as project_nodes).
-  double body_contact(Scene<D>& s, std::vector<Vec<D>>& vel, double s_min, const std::vector<Index>& nodes) const;
+  // scale (as project_nodes). rigid: contact_fields(s).
+  double body_contact(Scene<D>& s, std::vector<Vec<D>>& vel, double s_min, const std::vector<Index>& nodes,
+                      const std::vector<char>& rigid) const;
   // Rigid motion over dt from the projected velocities: centre, rotation, particle positions, F and L. False when
   // a particle left the grid's interior or became non-finite.
   bool move(Scene<D>& s, double dt);

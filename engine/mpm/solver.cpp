@@ -183,7 +183,7 @@ template <int D> void Solver<D>::rigid_constraints(double dt) {
     if (std::max({change, wall_change, contact_change}) < 1e-8) return;
     ++rigid_passes_;
     boundary_work_ += apply_boundaries(scene_, g.vL, dt, time_ + dt, true, false, &rigid_nodes_);
-    contact_change = rigid_->body_contact(scene_, g.vL, s_min, rigid_nodes_);
+    contact_change = rigid_->body_contact(scene_, g.vL, s_min, rigid_nodes_, skip);
     body_contact(scene_, g.vL, false, &rigid_nodes_, &skip);
   }
   rigid_->project_nodes(scene_, g.vL, s_min, &rigid_nodes_);

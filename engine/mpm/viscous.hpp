@@ -51,7 +51,7 @@ template <int D> class ImplicitViscosity {
   // one velocity field. Damped bodies in several fields (discrete tyres in contact with one another) stay explicit:
   // their contact would need one joint solve over the fields, which is not built.
   static bool needed(const Scene<D>& s);
-  // Node-field pairs (field * nnodes + node) the solve holds at a given velocity: members' stuck nodes.
+  // Node-field pairs (field * nnodes + node) the sub-step holds at a given velocity: members' stuck nodes.
   using Held = std::vector<std::pair<Index, Vec<D>>>;
   // Replaces the viscous part of the nodal force of the bodies flagged in `bodies` (a material is integrated
   // implicitly when any of its bodies is; its own dissipation count is then off) by the implicit one. Nodes with mass
@@ -60,14 +60,14 @@ template <int D> class ImplicitViscosity {
   // so are the members' stuck nodes in held (their viscous force then reaches the wall or member through the
   // constraint, as an elastic force does); where body contact would change the damped field, the other field's
   // nodal mass joins it along the contact normal n (the direction of the change), m_A + m_B n n^T, so that both leave
-  // the solve with one normal velocity and the contact force includes the viscous one (momentum is exchanged, not
+  // the sub-step with one normal velocity and the contact force includes the viscous one (momentum is exchanged, not
   // made). Wall touch sets must be current. Throws RunError if the sub-step fails.
   void apply(Scene<D>& s, const TransferKernels<D>& kernels, double dt, double t, double mass_eps, const std::vector<char>& bodies,
             const Held& held);
   // True when the last apply() ran the body contact's surface detection for this step (the grid update may reuse it).
   bool detected_contact() const { return detected_; }
-  // After the grid update: the work of this step's viscous nodal forces on the final velocities v^L is dissipated,
-  // dt sum_i (K_v u)_i . v^L_i.
+  // After the grid update: the work of this step's viscous nodal forces (the sub-step's mean K_v u) on the final
+  // velocities v^L is dissipated, dt sum_i (K_v u)_i . v^L_i.
   void account(const Grid<D>& g, double dt);
   double dissipated() const { return dissipated_; }  // J, since t = 0
   // The dissipated energy and the counts, so that a restart repeats the uninterrupted run exactly.
