@@ -49,6 +49,9 @@ struct PresetScene {
   std::optional<BoulderPreset> boulder;
   std::optional<DebrisPreset> debris;
   std::optional<BufferPreset> buffer;
+  // The without-buffer variant of a comparison: the buffer it is compared with, which sets the default cell of both
+  // (the comparison holds at one resolution).
+  std::optional<BufferPreset> compared_buffer;
   double cell_size = 0;          // the user's grid.cell_size, 0 = choose
   bool gravity_given = false;
   int dim = 2;                   // analysis.dimension: 2 (an elevation, plane strain) or 3

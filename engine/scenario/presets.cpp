@@ -306,7 +306,7 @@ json expand_presets(const json& j, const std::string& file, const std::string& v
   read_dam(root.object("dam", ""), p.dam);
   if (j.contains("boulder")) read_boulder(root.object("boulder", ""), p.boulder.emplace());
   if (j.contains("debris_surge")) read_debris(root.object("debris_surge", ""), p.debris.emplace());
-  if (j.contains("tyre_buffer") && variant != "without_buffer") read_buffer(root.object("tyre_buffer", ""), p.buffer.emplace());
+  if (j.contains("tyre_buffer")) read_buffer(root.object("tyre_buffer", ""), (variant == "without_buffer" ? p.compared_buffer : p.buffer).emplace());
   if (!p.boulder && !p.debris) {
     std::vector<std::string> present;
     for (auto it = j.begin(); it != j.end(); ++it) present.push_back(it.key());

@@ -65,9 +65,9 @@ TEST(Presets, BoulderKeepsItsMassAndTouchesTheBufferAfterTheGap) {
   const double gap = -0.3 - (b["shape"]["center"][0].get<double>() + r);
   EXPECT_NEAR(gap, 2 * h, 1e-9);
   EXPECT_NEAR(b["shape"]["center"][1].get<double>(), 3.6, 1e-12);
-  // Cell size: about r / 5, rounded down to a clean value.
-  EXPECT_LE(h, r / 5);
-  EXPECT_GE(h, r / 5 * 0.6);
+  // Cell size: the finer of r / 5 and 15 cells through the 0.3 m buffer, rounded down to a clean value (0.02 m).
+  EXPECT_LE(h, std::min(r / 5, 0.3 / 15) * (1 + 1e-12));
+  EXPECT_GE(h, std::min(r / 5, 0.3 / 15) * 0.6);
   // Sphere given by diameter: m = rho pi D^3 / 6.
   json j = concrete_boulder();
   j["boulder"].erase("mass");
@@ -90,6 +90,12 @@ TEST(Presets, CompareGivesTwoVariantsDifferingOnlyInTheBuffer) {
   EXPECT_EQ(b1.name, "boulder");
   EXPECT_NEAR(b1.shape.center[0] - b0.shape.center[0], 0.3, 1e-9);
   EXPECT_EQ(b0.shape.radius, b1.shape.radius);
+  // One resolution for both: the buffer's 15 cells through 0.3 m, also in the run without it (its boulder alone: 0.04).
+  EXPECT_DOUBLE_EQ(v[0].scenario.grid.cell_size, 0.02);
+  EXPECT_DOUBLE_EQ(v[1].scenario.grid.cell_size, 0.02);
+  json bare = concrete_boulder();
+  bare.erase("tyre_buffer"), bare.erase("compare");
+  EXPECT_DOUBLE_EQ(expand_presets(bare, "t.json")["grid"]["cell_size"].get<double>(), 0.04);
   EXPECT_FALSE(v[0].scenario.expanded_text.empty());
 }
 
