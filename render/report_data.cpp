@@ -110,6 +110,10 @@ json scenario_rows(const RunData& r) {
                            "same step, docs/verification.md); the step is the buffer's, at CFL 0.125");
     else if (k.value("model", "") == "elastic")
       row("boulder model", "elastic: on a bare face the rock's stiffness sets the impact's peak");
+    else if (k.value("model", "") == "elastic_when_touching")
+      row("boulder model", "elastic while it can touch the dam (on a bare face the rock's stiffness sets the impact's peak), rigid in "
+                           "free flight before and after the strike (its waves then do not set the step; its vibration after the "
+                           "rebound is given up, docs/verification.md)");
   }
   if (b.contains("debris_surge") && b["debris_surge"].contains("hydrograph")) {
     const json& k = b["debris_surge"];

@@ -438,7 +438,20 @@ template <int D> void MemberContact<D>::constrain_remap(const Scene<D>& s, std::
   }
 }
 
+template <int D> std::vector<std::array<Vec<D>, 2>> member_bounds(const FrameOf<D>& fr) {
+  std::vector<std::array<Vec<D>, 2>> boxes(static_cast<std::size_t>(fr.nelements()));
+  for (int e = 0; e < fr.nelements(); ++e) {
+    Vec<D> lo, hi;
+    curve_box(fr.curve(e), lo, hi);
+    const double reach = section_reach<D>(shape_of(fr, e));
+    boxes[e] = {(lo.array() - reach).matrix(), (hi.array() + reach).matrix()};
+  }
+  return boxes;
+}
+
 template class MemberContact<2>;
 template class MemberContact<3>;
+template std::vector<std::array<Vec<2>, 2>> member_bounds<2>(const FrameOf<2>&);
+template std::vector<std::array<Vec<3>, 2>> member_bounds<3>(const FrameOf<3>&);
 
 }  // namespace dmi

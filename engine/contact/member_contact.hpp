@@ -33,6 +33,7 @@
 // trial velocity v^k + dt f_tot/m approaching the member) rather than v^k alone, so the field never
 // pulls material towards a member in the step it starts to separate.
 #pragma once
+#include <array>
 #include <vector>
 
 #include "engine/mpm/scene.hpp"
@@ -75,6 +76,9 @@ struct MemberSectionShape {
   double a0 = 0, a1 = 0;  // radius or half depth at xi = 0 and 1 (m)
   double b0 = 0, b1 = 0;  // half width at xi = 0 and 1 (m), rectangles
 };
+
+// Each element's bounding box in its present shape (the deformed centre-line's Bezier hull grown by the section's reach).
+template <int D> std::vector<std::array<Vec<D>, 2>> member_bounds(const FrameOf<D>& fr);
 
 template <int D> class MemberContact {
  public:

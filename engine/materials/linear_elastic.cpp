@@ -37,6 +37,14 @@ template <int D> class LinearElastic final : public Material<D> {
     permute_array(elastic_, perm), permute_array(elastic_zz_, perm), permute_array(power_, perm), permute_array(viscous_, perm);
   }
   double dissipated() const override { return dissipated_; }
+  // The stress is integrated from rates (hypoelastic), so zero is a stress-free state at any F.
+  bool relax(Particles<D>& p, Index begin, Index end) override {
+    for (Index i = begin; i < end; ++i) {
+      p.stress[i].setZero(), p.stress_zz[i] = 0;
+      if (i < static_cast<Index>(elastic_.size())) elastic_[i].setZero(), elastic_zz_[i] = 0, viscous_[i].setZero();
+    }
+    return true;
+  }
   void save_state(StateWriter& w) const override { w.put(elastic_), w.put(elastic_zz_), w.put(power_), w.put(viscous_), w.put(dissipated_); }
   void load_state(StateReader& r) override { r.get(elastic_), r.get(elastic_zz_), r.get(power_), r.get(viscous_), r.get(dissipated_); }
   void attach(const Particles<D>& p, Index begin, Index end) override {

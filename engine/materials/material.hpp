@@ -46,6 +46,9 @@ template <int D> class Material {
   // While on, update() still keeps the viscous stress but leaves its dissipation to the implicit solve, which counts
   // the work of the viscous nodal forces on the grid's final velocities.
   virtual void set_implicit_viscosity(bool /*on*/) {}
+  // Makes particles [begin, end) stress-free in their present configuration (a body turning rigid, Solver::
+  // switch_free_bodies); false where the law cannot (its stress follows from F or from a history it cannot drop).
+  virtual bool relax(Particles<D>& /*p*/, Index /*begin*/, Index /*end*/) { return false; }
   // The solver reordered the particles: new[i] = old[perm[i]]; laws with per-particle arrays follow.
   virtual void permute(const std::vector<Index>& /*perm*/) {}
   // Internal variables (per-particle arrays, dissipated energy) for checkpoints; laws without any write nothing.

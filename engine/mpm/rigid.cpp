@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/materials/material.hpp"
 #include "engine/mpm/boundary.hpp"
 
 namespace dmi {
@@ -30,42 +31,80 @@ Mat<3> rotation(const Vec<3>& w, double dt) {
 
 template <int D> RigidBodies<D>::RigidBodies(Scene<D>& s) {
   const Particles<D>& P = s.particles;
-  for (std::size_t k = 0; k < s.bodies.size(); ++k) {
-    const Body& b = s.bodies[k];
-    if (!b.rigid) continue;
-    State st;
-    st.body = static_cast<int>(k);
-    if constexpr (D == 2) st.omega = 0; else st.omega.setZero();
-    for (Index i = b.begin; i < b.end; ++i) st.mass += P.mass[i], st.xc0 += P.mass[i] * P.x0[i];
-    st.xc0 /= st.mass;
-    st.xc = st.xc0;
-    Mat<3> own = Mat<3>::Zero();  // the particles' own (cell) inertia, m (a_j^2 + a_k^2) / 3 for half-sizes a
-    for (Index i = b.begin; i < b.end; ++i) {
-      Vec<3> r = Vec<3>::Zero(), a = Vec<3>::Zero();  // offset and half-sizes, padded to 3D
-      r.head<D>() = P.x0[i] - st.xc0;
-      a.head<D>() = P.half_size[i];
-      st.I0 += P.mass[i] * (r.squaredNorm() * Mat<3>::Identity() - r * r.transpose());
-      for (int c = 0; c < 3; ++c) own(c, c) += P.mass[i] * (a.squaredNorm() - a[c] * a[c]) / 3;
-    }
-    // A body of one particle (or one row of them, about its axis) has no orbital inertia: the own inertia keeps its
-    // spin finite there, and only there (elsewhere it would make the projection shrink a rigid spin every step).
-    const Mat<3> spin_plane = D == 2 ? Mat<3>(Vec<3>(0, 0, 1).asDiagonal()) : Mat<3>::Identity();
-    for (int c = 0; c < 3; ++c)
-      if (spin_plane(c, c) > 0 && !(st.I0(c, c) > 1e-6 * own(c, c))) st.I0(c, c) += own(c, c);
-    bodies_.push_back(st);
-  }
+  ref_.assign(P.size(), Vec<D>::Zero());
+  F0_.assign(P.size(), Mat<D>::Identity());
+  for (std::size_t k = 0; k < s.bodies.size(); ++k)
+    if (s.bodies[k].rigid) bodies_.push_back(make_state(s, static_cast<int>(k), P.x0));
   project(s);
   move(s, 0.0);
 }
 
-template <int D> void RigidBodies<D>::project(Scene<D>& s) {
+// A rigid body in the configuration x of its particles: mass, centre, inertia about it; the particles' reference
+// offsets from the centre and their F at this moment (F_p = R F_0 from then on).
+template <int D> typename RigidBodies<D>::State RigidBodies<D>::make_state(const Scene<D>& s, int k, const std::vector<Vec<D>>& x) {
+  const Particles<D>& P = s.particles;
+  const Body& b = s.bodies[k];
+  if (ref_.size() < P.size()) ref_.resize(P.size(), Vec<D>::Zero()), F0_.resize(P.size(), Mat<D>::Identity());
+  State st;
+  st.body = k;
+  if constexpr (D == 2) st.omega = 0; else st.omega.setZero();
+  for (Index i = b.begin; i < b.end; ++i) st.mass += P.mass[i], st.xc0 += P.mass[i] * x[i];
+  st.xc0 /= st.mass;
+  st.xc = st.xc0;
+  Mat<3> own = Mat<3>::Zero();  // the particles' own (cell) inertia, m (a_j^2 + a_k^2) / 3 for half-sizes a
+  for (Index i = b.begin; i < b.end; ++i) {
+    ref_[i] = x[i] - st.xc0;
+    F0_[i] = P.F[i];
+    Vec<3> r = Vec<3>::Zero(), a = Vec<3>::Zero();  // offset and half-sizes, padded to 3D
+    r.head<D>() = ref_[i];
+    a.head<D>() = P.half_size[i];
+    st.I0 += P.mass[i] * (r.squaredNorm() * Mat<3>::Identity() - r * r.transpose());
+    for (int c = 0; c < 3; ++c) own(c, c) += P.mass[i] * (a.squaredNorm() - a[c] * a[c]) / 3;
+  }
+  // A body of one particle (or one row of them, about its axis) has no orbital inertia: the own inertia keeps its
+  // spin finite there, and only there (elsewhere it would make the projection shrink a rigid spin every step).
+  const Mat<3> spin_plane = D == 2 ? Mat<3>(Vec<3>(0, 0, 1).asDiagonal()) : Mat<3>::Identity();
+  for (int c = 0; c < 3; ++c)
+    if (spin_plane(c, c) > 0 && !(st.I0(c, c) > 1e-6 * own(c, c))) st.I0(c, c) += own(c, c);
+  return st;
+}
+
+template <int D> double RigidBodies<D>::add(Scene<D>& s, int k) {
   Particles<D>& P = s.particles;
-  for (State& st : bodies_) {
+  const Body& b = s.bodies[k];
+  auto kinetic = [&] {
+    double e = 0;
+    for (Index i = b.begin; i < b.end; ++i) e += 0.5 * P.mass[i] * P.v[i].squaredNorm();
+    return e;
+  };
+  const double before = kinetic();
+  bodies_.push_back(make_state(s, k, P.x));
+  project_one(s, bodies_.back());
+  move_one(s, bodies_.back(), 0.0);
+  return before - kinetic();
+}
+
+template <int D> void RigidBodies<D>::remove(int k) {
+  bodies_.erase(std::remove_if(bodies_.begin(), bodies_.end(), [k](const State& st) { return st.body == k; }), bodies_.end());
+}
+
+template <int D> void RigidBodies<D>::permute(const std::vector<Index>& perm) {
+  if (ref_.size() < perm.size()) ref_.resize(perm.size(), Vec<D>::Zero()), F0_.resize(perm.size(), Mat<D>::Identity());
+  permute_array(ref_, perm), permute_array(F0_, perm);
+}
+
+template <int D> void RigidBodies<D>::project(Scene<D>& s) {
+  for (State& st : bodies_) project_one(s, st);
+}
+
+template <int D> void RigidBodies<D>::project_one(Scene<D>& s, State& st) {
+  Particles<D>& P = s.particles;
+  {
     const Body& b = s.bodies[st.body];
     Vec<D> p = Vec<D>::Zero();
     Vec<3> l = Vec<3>::Zero();
     for (Index i = b.begin; i < b.end; ++i) {
-      const Vec<D> r = st.R * (P.x0[i] - st.xc0);
+      const Vec<D> r = st.R * ref_[i];
       p += P.mass[i] * P.v[i];
       if constexpr (D == 2) {
         l.z() += P.mass[i] * (r.x() * P.v[i].y() - r.y() * P.v[i].x());
@@ -79,7 +118,7 @@ template <int D> void RigidBodies<D>::project(Scene<D>& s) {
     } else {
       st.omega = (st.R * st.I0 * st.R.transpose()).ldlt().solve(l);
     }
-    for (Index i = b.begin; i < b.end; ++i) P.v[i] = st.V + cross(st.omega, Vec<D>(st.R * (P.x0[i] - st.xc0)));
+    for (Index i = b.begin; i < b.end; ++i) P.v[i] = st.V + cross(st.omega, Vec<D>(st.R * ref_[i]));
   }
 }
 
@@ -329,41 +368,52 @@ template <int D> void RigidBodies<D>::take_nodal_motion(Scene<D>& s, const std::
     } else {
       st.omega = affine ? m.w : Vec<3>((st.R * st.I0 * st.R.transpose()).ldlt().solve(m.I * m.w));
     }
-    for (Index i = b.begin; i < b.end; ++i) P.v[i] = st.V + cross(st.omega, Vec<D>(st.R * (P.x0[i] - st.xc0)));
+    for (Index i = b.begin; i < b.end; ++i) P.v[i] = st.V + cross(st.omega, Vec<D>(st.R * ref_[i]));
   }
 }
 
 template <int D> bool RigidBodies<D>::move(Scene<D>& s, double dt) {
+  bool ok = true;
+  for (State& st : bodies_) ok = move_one(s, st, dt) && ok;
+  return ok;
+}
+
+template <int D> bool RigidBodies<D>::move_one(Scene<D>& s, State& st, double dt) {
   Particles<D>& P = s.particles;
   bool ok = true;
-  for (State& st : bodies_) {
-    const Body& b = s.bodies[st.body];
-    st.xc += dt * st.V;
-    st.R = rotation(st.omega, dt) * st.R;
-    const Mat<D> W = spin_matrix(st.omega);
-    for (Index i = b.begin; i < b.end; ++i) {
-      const Vec<D> r = st.R * (P.x0[i] - st.xc0);
-      P.x[i] = st.xc + r;
-      P.v[i] = st.V + cross(st.omega, r);
-      P.F[i] = st.R;
-      P.L[i] = W;
-      P.C[i] = W;  // the affine velocity of APIC: exact for a rigid motion
-      ok = ok && s.grid->interior(P.x[i]) && P.v[i].allFinite();
-    }
+  const Body& b = s.bodies[st.body];
+  st.xc += dt * st.V;
+  st.R = rotation(st.omega, dt) * st.R;
+  const Mat<D> W = spin_matrix(st.omega);
+  for (Index i = b.begin; i < b.end; ++i) {
+    const Vec<D> r = st.R * ref_[i];
+    P.x[i] = st.xc + r;
+    P.v[i] = st.V + cross(st.omega, r);
+    P.F[i] = st.R * F0_[i];
+    P.L[i] = W;
+    P.C[i] = W;  // the affine velocity of APIC: exact for a rigid motion
+    ok = ok && s.grid->interior(P.x[i]) && P.v[i].allFinite();
   }
   return ok;
 }
 
+// The rigid set changes during a run (rigid_when_free bodies): every state is written whole, with the reference offsets.
 template <int D> void RigidBodies<D>::save_state(StateWriter& w) const {
   w.tag("rigid");
   w.put<std::uint64_t>(bodies_.size());
-  for (const State& st : bodies_) w.put(st.xc), w.put(st.V), w.put(st.R), w.put(st.omega);
+  for (const State& st : bodies_)
+    w.put(st.body), w.put(st.mass), w.put(st.xc0), w.put(st.I0), w.put(st.xc), w.put(st.V), w.put(st.R), w.put(st.omega);
+  w.put(ref_), w.put(F0_);
 }
 
 template <int D> void RigidBodies<D>::load_state(StateReader& r) {
   r.tag("rigid");
-  r.expect_size("rigid bodies", r.get<std::uint64_t>(), bodies_.size());
-  for (State& st : bodies_) r.get(st.xc), r.get(st.V), r.get(st.R), r.get(st.omega);
+  const auto n = r.get<std::uint64_t>();
+  if (n > (std::uint64_t{1} << 20)) r.fail("rigid body count " + std::to_string(n) + " out of range");
+  bodies_.resize(static_cast<std::size_t>(n));
+  for (State& st : bodies_)
+    r.get(st.body), r.get(st.mass), r.get(st.xc0), r.get(st.I0), r.get(st.xc), r.get(st.V), r.get(st.R), r.get(st.omega);
+  r.get(ref_), r.get(F0_);
 }
 
 template class RigidBodies<2>;

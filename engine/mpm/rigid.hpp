@@ -6,7 +6,8 @@
 // the inertia their velocities carry: with the particles' own inertia added, a rigid motion would not be a fixed point
 // of the projection and every step would take a fraction of the spin away), then the body moves rigidly:
 // x_c += dt V, R <- exp(dt [omega]x) R, x_p = x_c + R (x0_p - x_c0); F_p = R, L_p = [omega]x. No wave speed limits
-// its step, only |v| dt < h.
+// its step, only |v| dt < h. A body may also join while the run goes (Body::rigid_when_free): x0_p and x_c0 are then
+// its configuration at that moment, and F_p = R F_p(then).
 #pragma once
 #include <type_traits>
 #include <vector>
@@ -22,6 +23,14 @@ template <int D> class RigidBodies {
   // velocities).
   explicit RigidBodies(Scene<D>& s);
   bool empty() const { return bodies_.empty(); }
+  // A rigid_when_free body turning rigid: it joins in its present configuration (centre, inertia and the particles'
+  // offsets from the centre now, their F kept as F_0), its velocities projected on the rigid motion. Returns the
+  // kinetic energy the projection removed (its vibration, J).
+  double add(Scene<D>& s, int body);
+  // The body leaves: its particles keep the rigid motion's last positions, velocities, F = R F_0 and L.
+  void remove(int body);
+  // The solver reordered the particles (new[i] = old[perm[i]]).
+  void permute(const std::vector<Index>& perm);
   // Particle velocities of every rigid body projected on its rigid motion (momentum and angular momentum kept).
   void project(Scene<D>& s);
   // After G2P: each rigid body takes the motion its nodes ended the step with (vel, rigid after the constraint
@@ -78,7 +87,14 @@ template <int D> class RigidBodies {
     Mat<3> I0 = Mat<3>::Zero();  // inertia about the centre in the initial orientation (2D: I0(2,2))
     Spin omega{};
   };
+  State make_state(const Scene<D>& s, int body, const std::vector<Vec<D>>& x);
+  void project_one(Scene<D>& s, State& st);
+  bool move_one(Scene<D>& s, State& st, double dt);
   std::vector<State> bodies_;
+  // Per particle (indexed like the particles; meaningful on the rigid bodies' ranges): the offset from the body's
+  // centre when it became rigid (x_p = x_c + R ref_p) and F then (F_p = R F0_p).
+  std::vector<Vec<D>> ref_;
+  std::vector<Mat<D>> F0_;
 };
 
 // Per velocity field: 1 when plane walls act on it through wall_contact rather than node by node (the field holds

@@ -25,6 +25,9 @@ struct Body {
   int field = 0;        // velocity field (multi-field contact) this body scatters to
   Index begin = 0, end = 0;  // particle range
   bool rigid = false;   // moves as a rigid body (engine/mpm/rigid.hpp): no stress, no wave-speed step limit
+  // An elastic body that moves rigidly while nothing is near it (Solver::switch_free_bodies): rigid is then its state
+  // of the moment.
+  bool rigid_when_free = false;
   // A rigid body's shape for its contact with plane walls, in its initial configuration: the convex hull of these
   // points (D coordinates each) swept by a ball of hull_radius (a ball: its centre and radius; a box or polygon:
   // its corners and 0).
@@ -70,6 +73,7 @@ struct SolverOptions {
   double cfl = 0.5;
   bool implicit_damping = true;  // Kelvin-Voigt viscosity on the grid, backward Euler (engine/mpm/viscous.hpp)
   double dt_max = 0.0;          // 0: no user bound
+  double free_dt_max = 0.0;     // the largest step while a rigid_when_free body moves rigidly (the history interval); 0: none
   double contact_friction = 0.0;
   BodyDetection contact_detection = BodyDetection::surface;
   double cell_volume = 0.0;     // h^D, times the thickness in 2D (m^3)

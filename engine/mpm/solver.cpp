@@ -11,6 +11,7 @@
 
 #include "engine/common/error.hpp"
 #include "engine/mpm/boundary.hpp"
+#include "engine/mpm/clearance.hpp"
 #include "engine/mpm/reduce.hpp"
 
 namespace dmi {
@@ -31,7 +32,7 @@ template <int D> Solver<D>::Solver(Scene<D> scene) : scene_(std::move(scene)) {
       for (Index i = b.begin; i < b.end; ++i) scene_.particles.stress[i].setZero(), scene_.particles.stress_zz[i] = 0;
   if (scene_.frame) members_ = std::make_unique<MemberContact<D>>(*scene_.grid);
   if (scene_.options.implicit_damping && ImplicitViscosity<D>::needed(scene_)) viscosity_ = std::make_unique<ImplicitViscosity<D>>();
-  if (std::any_of(scene_.bodies.begin(), scene_.bodies.end(), [](const Body& b) { return b.rigid; }))
+  if (std::any_of(scene_.bodies.begin(), scene_.bodies.end(), [](const Body& b) { return b.rigid || b.rigid_when_free; }))
     rigid_ = std::make_unique<RigidBodies<D>>(scene_);
 }
 
@@ -67,8 +68,38 @@ template <int D> void Solver<D>::step(double dt) {
   lap(kG2P);
   advance_members(dt);                         // stage 2: the frame under the reactions (eqs. 27-29 or Newmark)
   lap(kFrame);
+  switch_free_bodies();                        // rigid_when_free bodies: rigid while clear of everything, else elastic
   time_ += dt;
   ++steps_;
+}
+
+// A rigid_when_free body turns rigid when nothing is near it (body_is_clear) and elastic again as soon as something is,
+// before any node is shared: its waves set the step only while it can touch something. Turning rigid it gives up its
+// vibration (the kinetic energy the rigid projection removes) and its strain energy (relaxed to stress-free), counted
+// as dissipated.
+template <int D> void Solver<D>::switch_free_bodies() {
+  if (!rigid_) return;
+  const double h = scene_.grid->h();
+  const MemberCoupling& mc = scene_.coupling;
+  const Clearance c = Clearance::of(h, mc.decay_scale * h + (mc.distance == DistanceKind::material ? 1.5 * h : 0.0));
+  bool any = false;
+  for (std::size_t k = 0; k < scene_.bodies.size(); ++k) {
+    Body& b = scene_.bodies[k];
+    if (!b.rigid_when_free) continue;
+    const bool clear = body_is_clear(scene_, static_cast<int>(k), c);
+    if (clear && !b.rigid) {
+      Material<D>& mat = *scene_.materials[b.material];
+      const double strain = mat.strain_energy(scene_.particles, b.begin, b.end);
+      if (!mat.relax(scene_.particles, b.begin, b.end)) throw std::logic_error("rigid_when_free on a material that cannot relax");
+      frozen_energy_ += strain + rigid_->add(scene_, static_cast<int>(k));
+      b.rigid = true, ++free_switches_;
+    } else if (!clear && b.rigid) {
+      rigid_->remove(static_cast<int>(k));
+      b.rigid = false, ++free_switches_;
+    }
+    any = any || b.rigid;
+  }
+  if (any) ++free_rigid_steps_;
 }
 
 template <int D> const char* Solver<D>::phase_name(int p) {
@@ -93,6 +124,7 @@ template <int D> void Solver<D>::sort_particles() {
   for (Index q : order) perm[next[P.body[q]]++] = q;
   P.permute(perm);
   for (auto& m : scene_.materials) m->permute(perm);
+  if (rigid_) rigid_->permute(perm);
 }
 
 template <int D> void Solver<D>::implicit_viscosity(double dt) {
@@ -150,7 +182,7 @@ template <int D> void Solver<D>::grid_update(double dt) {
   lap(kGridUpdate);
   body_contact(scene_, g.vL, !(viscosity_ && viscosity_->detected_contact()));  // detection once per step
   lap(kBodyContact);
-  if (rigid_) rigid_constraints(dt);
+  if (rigid_ && !rigid_->empty()) rigid_constraints(dt);
   lap(kRigid);
   if (viscosity_) viscosity_->account(g, dt);
   lap(kViscosity);
@@ -290,6 +322,10 @@ template <int D> double Solver<D>::stable_time_step(double limit) const {
   }
   // An explicit frame limits the step (2 / omega_max, scaled by the same fraction); Newmark does not.
   if (scene_.frame) dt = std::min(dt, scene_.options.cfl * scene_.frame->stable_time_step());
+  // A rigid_when_free body moving rigidly no longer bounds the step by its waves, and perhaps nothing else does.
+  if (scene_.options.free_dt_max > 0)
+    for (const Body& b : scene_.bodies)
+      if (b.rigid_when_free && b.rigid) dt = std::min(dt, scene_.options.free_dt_max);
   return dt;
 }
 
@@ -297,7 +333,8 @@ template <int D> void Solver<D>::save_state(StateWriter& w) const {
   w.tag("solver");
   w.put(time_), w.put(steps_), w.put(boundary_work_), w.put(courant_);
   scene_.particles.save_state(w);
-  for (const Body& b : scene_.bodies) w.put(b.end);  // an inflow's body grows
+  for (const Body& b : scene_.bodies) w.put(b.end), w.put<std::uint8_t>(b.rigid);  // an inflow's body grows; rigid_when_free
+  w.put(frozen_energy_), w.put(free_switches_), w.put(free_rigid_steps_);
   for (const Inflow<D>& in : scene_.inflows) in.save_state(w);
   w.put(scene_.grid->tile_particles());
   w.put<std::uint64_t>(scene_.materials.size());
@@ -315,7 +352,13 @@ template <int D> void Solver<D>::load_state(StateReader& r) {
   r.tag("solver");
   r.get(time_), r.get(steps_), r.get(boundary_work_), r.get(courant_);
   scene_.particles.load_state(r);
-  for (Body& b : scene_.bodies) r.get(b.end);
+  for (Body& b : scene_.bodies) {
+    r.get(b.end);
+    const auto rigid = r.get<std::uint8_t>();
+    if (rigid != b.rigid && !b.rigid_when_free) r.fail("body '" + b.name + "' rigid in the checkpoint, not in the scenario (or the reverse)");
+    b.rigid = rigid != 0;
+  }
+  r.get(frozen_energy_), r.get(free_switches_), r.get(free_rigid_steps_);
   r.expect_size("the bodies' particles", scene_.bodies.empty() ? 0 : static_cast<std::size_t>(scene_.bodies.back().end), scene_.particles.size());
   for (Inflow<D>& in : scene_.inflows) in.load_state(r);
   std::vector<Index> order;
@@ -342,6 +385,7 @@ template <int D> Diagnostics<D> Solver<D>::diagnostics() const {
   for (int c = 0; c < D; ++c) d.momentum[c] = deterministic_sum(np, [&](Index i) { return P.mass[i] * P.v[i][c]; });
   for (const Body& b : scene_.bodies) d.strain += scene_.materials[b.material]->strain_energy(P, b.begin, b.end);
   for (const auto& m : scene_.materials) d.dissipated += m->dissipated();
+  d.dissipated += frozen_energy_;
   if (viscosity_) d.dissipated += viscosity_->dissipated();
   d.boundary_work = boundary_work_;
   for (const Inflow<D>& in : scene_.inflows) d.inflow_mass += in.mass, d.inflow_momentum += in.momentum, d.inflow_energy += in.energy;

@@ -71,6 +71,9 @@ template <int D> class Solver {
   const std::array<double, kPhases>& phase_seconds() const { return phase_seconds_; }
   // Constraint passes on the rigid bodies' nodes beyond the first projection, summed over the steps (rigid_constraints).
   long rigid_passes() const { return rigid_passes_; }
+  // rigid_when_free bodies: how often one turned rigid or elastic, and the steps taken with one rigid.
+  long free_switches() const { return free_switches_; }
+  long free_rigid_steps() const { return free_rigid_steps_; }
 
  private:
   static constexpr long kSortInterval = 16;  // steps between particle reorderings (sort_particles)
@@ -85,9 +88,12 @@ template <int D> class Solver {
   void grid_update(double dt);
   bool grid_to_particles(double dt);
   void update_stress(double dt);
+  void switch_free_bodies();
   [[noreturn]] void fail(const std::string& what) const;
   bool profile_ = false;
   long rigid_passes_ = 0;
+  long free_switches_ = 0, free_rigid_steps_ = 0;
+  double frozen_energy_ = 0;  // J: vibration and strain energy given up by rigid_when_free bodies turning rigid
   std::vector<Index> rigid_nodes_;  // rigid_constraints: the active nodes where a rigid field has mass
   std::array<double, kPhases> phase_seconds_{};
   std::chrono::steady_clock::time_point lap_t_;

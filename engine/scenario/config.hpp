@@ -87,6 +87,7 @@ struct BodyConfig {
   InflowConfig inflow;
   int particles_per_cell = 2;                        // per direction
   bool rigid = false;                                // rigid body: no stress, translation and rotation only
+  bool rigid_when_free = false;                      // elastic in contact, rigid while nothing is near it
   DVec velocity;                                     // m/s
   // Optional sine mode added to velocity: v += amplitude sin(wavevector . (x - origin)).
   DVec sine_amplitude, sine_wavevector, sine_origin;  // m/s, rad/m, m

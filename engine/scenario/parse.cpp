@@ -232,6 +232,14 @@ void read_body(Obj& o, BodyConfig& b) {
                                           "matter (against a soft buffer), not for a hard impact whose peak the boulder's elasticity sets"});
   if (!o.documenting() && b.rigid && b.inflow.present)
     o.fail("rigid", o.raw("rigid", Spec{}, "boolean", ""), "false on a body that an inflow fills (debris is not rigid)");
+  o.boolean("rigid_when_free", b.rigid_when_free,
+            Spec{.doc = "a linear-elastic body that is elastic while anything is near it (another body, a wall, a region or a "
+                        "member within a few cells) and moves as a rigid body while nothing is: its waves then no longer set the "
+                        "step. On becoming rigid its vibration (the kinetic energy the rigid projection removes) and its strain "
+                        "energy are given up (counted as dissipated) and it is stress-free when it turns elastic again. For a "
+                        "boulder that rebounds from a hard impact and flies on"});
+  if (!o.documenting() && b.rigid_when_free && (b.rigid || b.inflow.present))
+    o.fail("rigid_when_free", o.raw("rigid_when_free", Spec{}, "boolean", ""), "false on a rigid body or one that an inflow fills");
   b.velocity.assign(o.context().dim, 0.0);
   o.vector("velocity", b.velocity, any("m/s", "initial velocity"));
   Obj m = o.object("velocity_sine", "optional sine mode added to the initial velocity, v += amplitude sin(wavevector . (x - origin)); "
@@ -841,6 +849,10 @@ void check_semantics(const Scenario& s, const std::string& file) {
           s.analysis.plane == Plane::stress)
         throw InputError(file, p + "/material", "\"" + b.material + "\"", "a material other than " + m.model + " in plane stress "
                                                                         "(Drucker-Prager debris and slurries need plane strain or 3D)");
+    for (const auto& m : s.materials)
+      if (m.name == b.material && b.rigid_when_free && m.model != "linear_elastic")
+        throw InputError(file, p + "/rigid_when_free", "true", "false, or a linear_elastic material for the body (its material is " + m.model +
+                                                               ": only a linear-elastic body can be relaxed to stress-free when it turns rigid)");
     if (b.inflow.present) {
       est += check_inflow(s, file, i);
       continue;

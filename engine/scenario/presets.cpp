@@ -162,9 +162,10 @@ void read_boulder(Obj o, BoulderPreset& b) {
                                                         "middle of the dam (0: the middle of the crest, or the middle column)"});
   o.choice<std::string>("model", b.model, {{"auto", "auto"}, {"rigid", "rigid"}, {"elastic", "elastic"}},
                         Spec{.doc = "auto: rigid when it strikes a tyre buffer (its deformation does not matter against rubber thousands of "
-                                    "times softer, and the step is then the buffer's, not the rock's), elastic on a bare face (the rock's "
-                                    "elasticity sets a hard impact's peak); rigid or elastic to choose. A rigid boulder that reaches a "
-                                    "member stops the run"});
+                                    "times softer, and the step is then the buffer's, not the rock's); on a bare face elastic while it can "
+                                    "touch the dam (the rock's elasticity sets a hard impact's peak) and rigid in free flight before and "
+                                    "after the strike (bodies[].rigid_when_free); rigid or elastic (throughout) to choose. A rigid boulder "
+                                    "that reaches a member stops the run"});
   o.finish();
   if (o.documenting()) return;
   if ((b.diameter > 0) == (b.mass > 0)) o.fail("diameter", nullptr, "either diameter or mass (exactly one of them)");

@@ -184,6 +184,7 @@ template <int D> Scene<D> build_scene(const Scenario& s) {
     body.material = mat;
     body.field = multi ? static_cast<int>(b) : 0;
     body.rigid = bc.rigid;
+    body.rigid_when_free = bc.rigid_when_free;
     if (bc.rigid) rigid_hull(bc.shape, D, body);
     body.begin = static_cast<Index>(sc.particles.size());
     if (bc.inflow.present) {  // created as the debris enters (engine/mpm/inflow.hpp)
@@ -240,6 +241,9 @@ template <int D> Scene<D> build_scene(const Scenario& s) {
   sc.options.implicit_damping = s.mpm.implicit_damping;
   sc.options.cfl = s.analysis.cfl;
   sc.options.dt_max = s.analysis.dt_max;
+  // While a rigid_when_free body is rigid nothing else may bound the step (a bare frame under Newmark does not): the
+  // recorded histories then set it.
+  sc.options.free_dt_max = s.output.history_interval > 0 ? s.output.history_interval : s.analysis.end_time / 2000;
   sc.options.contact_friction = s.contact.friction;
   sc.options.contact_detection = s.contact.detection;
   sc.options.cell_volume = std::pow(h, D) * (D == 2 ? s.analysis.thickness : 1.0);

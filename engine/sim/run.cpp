@@ -304,6 +304,8 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
     for (int p = 0; p < Solver<D>::kPhases; ++p) info.numbers[key(Solver<D>::phase_name(p))] = solver.phase_seconds()[p];
     info.numbers["profile_time_step_seconds"] = profile_time_step;
     info.numbers["profile_recorder_seconds"] = profile_recorder;
+    info.numbers["free_rigid_switches"] = static_cast<double>(solver.free_switches());
+    info.numbers["free_rigid_steps"] = static_cast<double>(solver.free_rigid_steps());
     info.numbers["rigid_passes_per_step"] = solver.steps() > first_step ? double(solver.rigid_passes()) / double(solver.steps() - first_step) : 0.0;
   }
   info.numbers["dt_min"] = loop.dt_min;

@@ -105,6 +105,23 @@ TEST(Restart, ImplicitlyDampedBufferIsBitIdentical) {
   expect_bit_identical_restart(s, "damped", 400, 1);
 }
 
+// A rigid_when_free disc (tests/engine/mpm/test_rigid.cpp's wall strike): stopped while elastic on the wall and while
+// rigid after the rebound, the restart restores which bodies are rigid, their rigid states and reference offsets, and
+// the energy given up, and continues bit for bit.
+TEST(Restart, RigidWhenFreeIsBitIdentical) {
+  const std::string file = std::string(DMI_SOURCE_DIR) + "/examples/wall_impact.json";
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(file));
+  j["analysis"]["end_time"] = 0.2;
+  j["grid"] = {{"origin", {-0.1, -0.3}}, {"size", {0.8, 0.6}}, {"cell_size", 0.02}};
+  j["materials"][0]["youngs_modulus"] = 1e9;
+  j["bodies"] = {{{"name", "disc"}, {"material", "elastic"}, {"particles_per_cell", 2}, {"rigid_when_free", true},
+                  {"shape", {{"type", "ball"}, {"center", {0.3, 0.0}}, {"radius", 0.1}}}, {"velocity", {-2, 0}}}};
+  j["output"].erase("probes");
+  const dmi::Scenario s = dmi::parse_scenario(j.dump(), file);
+  expect_bit_identical_restart(s, "free_elastic", 3000, 2);
+  expect_bit_identical_restart(s, "free_rigid", 7400, 1);  // of ~7 640: refrozen near 6 900
+}
+
 // Debris entering from a CSV hydrograph: the particle count grows; stopped while it enters, the restart restores the
 // body's range, the plug length and the totals, and continues bit for bit.
 TEST(Restart, InflowIsBitIdentical) {
