@@ -135,6 +135,13 @@ json field_case(const Model& m, const std::string& name, const Eigen::VectorXd& 
 
 }  // namespace
 
+void prepare_solid_check(const SolidCheckConfig& c) {
+  try {
+    factorised(c);
+  } catch (...) {  // run_solid_check meets the same error and reports it
+  }
+}
+
 SolidCheckDocuments run_solid_check(const Scenario& s, const std::string& peak_contact_json) {
   const SolidCheckConfig& c = s.solid_check;
   const std::shared_ptr<const Factorised> fm = factorised(c);

@@ -25,5 +25,8 @@ struct SolidCheckDocuments {
 // peak_contact_json: the run's "peak_contact" document ("" when the run had none). Throws
 // InputError when a simulation load case has no contact loads to take.
 SolidCheckDocuments run_solid_check(const Scenario& s, const std::string& peak_contact_json);
+// Builds and factorises the dam body's model now (kept for run_solid_check, which otherwise does it on first use): a
+// caller with a core to spare runs it beside the simulations. Errors are left to run_solid_check.
+void prepare_solid_check(const SolidCheckConfig& c);
 
 }  // namespace dmi
