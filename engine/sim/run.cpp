@@ -5,6 +5,7 @@
 #include <omp.h>
 
 #include <cctype>
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cmath>
@@ -304,8 +305,6 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
     for (int p = 0; p < Solver<D>::kPhases; ++p) info.numbers[key(Solver<D>::phase_name(p))] = solver.phase_seconds()[p];
     info.numbers["profile_time_step_seconds"] = profile_time_step;
     info.numbers["profile_recorder_seconds"] = profile_recorder;
-    info.numbers["free_rigid_switches"] = static_cast<double>(solver.free_switches());
-    info.numbers["free_rigid_steps"] = static_cast<double>(solver.free_rigid_steps());
     info.numbers["rigid_passes_per_step"] = solver.steps() > first_step ? double(solver.rigid_passes()) / double(solver.steps() - first_step) : 0.0;
   }
   info.numbers["dt_min"] = loop.dt_min;
@@ -317,6 +316,10 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
     info.documents["structure"] = structure_document(s, *solver.scene().frame);
     const std::string doc = rec.peak_contact_document(*solver.scene().frame);
     if (!doc.empty()) info.documents["peak_contact"] = doc;
+  }
+  if (std::any_of(solver.scene().bodies.begin(), solver.scene().bodies.end(), [](const Body& b) { return b.rigid_when_free; })) {
+    info.numbers["free_rigid_switches"] = static_cast<double>(solver.free_switches());
+    info.numbers["free_rigid_steps"] = static_cast<double>(solver.free_rigid_steps());
   }
   if (const auto* iv = solver.viscosity()) {
     info.numbers["viscous_steps"] = static_cast<double>(iv->stats().steps);
