@@ -943,6 +943,15 @@ void check_semantics(const Scenario& s, const std::string& file) {
   if (!s.member_contact.bonded.empty() && s.member_contact.bonded.size() < s.bodies.size() && s.contact.method == ContactMethod::single_field)
     throw InputError(file, "/member_contact/bonded", json(s.member_contact.bonded).dump(),
                      "all bodies or none with contact.method single_field (the bodies share one velocity field); use multi_field");
+  // A rigid body moves with its field's nodes: in a field shared with other bodies it would take their motion too.
+  if (s.contact.method == ContactMethod::single_field && s.bodies.size() > 1)
+    for (std::size_t i = 0; i < s.bodies.size(); ++i)
+      if (s.bodies[i].rigid || s.bodies[i].rigid_when_free) {
+        const char* key = s.bodies[i].rigid ? "rigid" : "rigid_when_free";
+        throw InputError(file, "/bodies/" + std::to_string(i) + "/" + key, "true",
+                         std::string("false with contact.method single_field and more than one body (a rigid body takes the motion of its "
+                                     "velocity field's nodes, which the other bodies share); use multi_field"));
+      }
   // With one velocity field for all bodies the members cannot act on only some of them.
   const std::set<std::string> listed(s.member_contact.bodies.begin(), s.member_contact.bodies.end());
   if (!listed.empty() && listed.size() < s.bodies.size() && s.contact.method == ContactMethod::single_field)
