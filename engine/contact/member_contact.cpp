@@ -139,7 +139,7 @@ template <int D> void MemberContact<D>::find_candidates(const Scene<D>& s) {
   const Grid<D>& g = *s.grid;
   const FrameOf<D>& fr = *s.frame;
   // With the material distance, x-bar may lie up to a stencil half-width (1.5 h) nearer the member.
-  const double ln = s.coupling.decay_scale * g.h() + (s.coupling.distance == DistanceKind::material ? 1.5 * g.h() : 0.0);
+  const double ln = member_contact_layer(s.coupling, g.h());
   for (const Candidate& c : cand_) slot_[c.node] = -1;
   cand_.clear();
   // Nodes that can hold mass: the box of the occupied tiles' reach.

@@ -77,6 +77,12 @@ struct MemberSectionShape {
   double b0 = 0, b1 = 0;  // half width at xi = 0 and 1 (m), rectangles
 };
 
+// The layer l_n beyond a member's surface whose nodes are contact candidates: decay_scale h, and with the material
+// distance x-bar may lie up to a stencil half-width (1.5 h) nearer the member.
+inline double member_contact_layer(const MemberCoupling& c, double h) {
+  return c.decay_scale * h + (c.distance == DistanceKind::material ? 1.5 * h : 0.0);
+}
+
 // Each element's bounding box in its present shape (the deformed centre-line's Bezier hull grown by the section's reach).
 template <int D> std::vector<std::array<Vec<D>, 2>> member_bounds(const FrameOf<D>& fr);
 

@@ -80,8 +80,7 @@ template <int D> void Solver<D>::step(double dt) {
 template <int D> void Solver<D>::switch_free_bodies() {
   if (!rigid_) return;
   const double h = scene_.grid->h();
-  const MemberCoupling& mc = scene_.coupling;
-  const Clearance c = Clearance::of(h, mc.decay_scale * h + (mc.distance == DistanceKind::material ? 1.5 * h : 0.0));
+  const Clearance c = Clearance::of(h, member_contact_layer(scene_.coupling, h));
   bool any = false;
   for (std::size_t k = 0; k < scene_.bodies.size(); ++k) {
     Body& b = scene_.bodies[k];

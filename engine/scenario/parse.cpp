@@ -844,15 +844,15 @@ void check_semantics(const Scenario& s, const std::string& file) {
     const std::string p = "/bodies/" + std::to_string(i);
     dup(bodies, b.name, p + "/name");
     if (!mats.count(b.material)) throw InputError(file, p + "/material", "\"" + b.material + "\"", "the name of one of the materials");
-    for (const auto& m : s.materials)
-      if (m.name == b.material && (m.model == "drucker_prager" || m.model == "mu_i" || m.model == "newtonian" || m.model == "bingham") &&
-          s.analysis.plane == Plane::stress)
+    for (const auto& m : s.materials) {
+      if (m.name != b.material) continue;
+      if ((m.model == "drucker_prager" || m.model == "mu_i" || m.model == "newtonian" || m.model == "bingham") && s.analysis.plane == Plane::stress)
         throw InputError(file, p + "/material", "\"" + b.material + "\"", "a material other than " + m.model + " in plane stress "
                                                                         "(Drucker-Prager debris and slurries need plane strain or 3D)");
-    for (const auto& m : s.materials)
-      if (m.name == b.material && b.rigid_when_free && m.model != "linear_elastic")
+      if (b.rigid_when_free && m.model != "linear_elastic")
         throw InputError(file, p + "/rigid_when_free", "true", "false, or a linear_elastic material for the body (its material is " + m.model +
                                                                ": only a linear-elastic body can be relaxed to stress-free when it turns rigid)");
+    }
     if (b.inflow.present) {
       est += check_inflow(s, file, i);
       continue;

@@ -119,7 +119,7 @@ class Builder {
 
   PresetScene p_;  // a copy: the buffer's resolved top is written back
   const DamPreset& d_;
-  bool rigid_boulder_ = false;
+  bool rigid_boulder_ = false, free_boulder_ = false;  // rigid throughout; rigid_when_free (elastic while it can touch)
   std::string file_;
   double h_ = 0, slope_ = 0, end_time_ = 0, boulder_r_ = 0, boulder_m_ = 0, impact_y_ = 0, boulder_speed_ = 0;
   json out_ = json::object(), materials_ = json::array(), bodies_ = json::array(), probes_ = json::array(), bonded_ = json::array();
@@ -243,7 +243,7 @@ json Builder::design_basis() const {
     out["boulder"] = json{{"mass_kg", boulder_m_}, {"diameter_m", std::cbrt(6 * boulder_m_ / (b.density * kPi))}, {"density_kg_m3", b.density},
                           {"youngs_modulus_Pa", b.youngs_modulus}, {"poisson_ratio", b.poisson_ratio}, {"speed_m_s", boulder_speed_},
                           {"impact_height_m", impact_y_},
-                          {"model", rigid_boulder_ ? "rigid" : b.model == "auto" ? "elastic_when_touching" : "elastic"}};
+                          {"model", rigid_boulder_ ? "rigid" : free_boulder_ ? "elastic_when_touching" : "elastic"}};
   }
   if (p_.debris) {
     const DebrisPreset& f = *p_.debris;
@@ -513,10 +513,10 @@ void Builder::add_boulder() {
   rigid_boulder_ = b.model == "rigid" || (b.model == "auto" && p_.buffer);
   // On a bare face (auto) the rock is elastic while it can touch something and rigid in free flight, before and
   // after the strike: its waves then set the step only around the impact.
-  const bool when_free = b.model == "auto" && !p_.buffer;
+  free_boulder_ = b.model == "auto" && !p_.buffer;
   bodies_.push_back(json{{"name", "boulder"}, {"material", "rock"}, {"shape", {{"type", "ball"}, {"center", at(cx, cy, ca)}, {"radius", clean(r)}}},
                          {"velocity", space ? json{vx, va, vy} : json{vx, vy}}, {"rigid", rigid_boulder_}});
-  if (when_free) bodies_.back()["rigid_when_free"] = true;
+  if (free_boulder_) bodies_.back()["rigid_when_free"] = true;
   probes_.push_back(json{{"name", "boulder"}, {"type", "body"}, {"body", "boulder"}, {"quantities", {"velocity", "kinetic_energy", "position"}}});
   box_.add(cx - r, cy - r), box_.add(cx + r, cy + r);
   // End: arrival plus after_arrival() (0.15 s, or 1.5 cantilever periods on a bare face in 3D).
