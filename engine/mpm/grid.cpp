@@ -33,7 +33,6 @@ Grid<D>::Grid(const Vec<D>& origin, const IVec<D>& cells, double h, int nfields)
   pf_storage_.assign(2 * D * n + 4, 0.0);  // + slack to start on a 32-byte boundary
   const auto addr = reinterpret_cast<std::uintptr_t>(pf_storage_.data());
   pf_ = pf_storage_.data() + ((32 - addr % 32) % 32) / sizeof(double);
-  if (D == 3) flag_.assign(static_cast<std::size_t>(nnodes_), 0);
   tile_count_.assign(static_cast<std::size_t>(ntiles_), 0);
 }
 
@@ -55,26 +54,68 @@ template <int D> void Grid<D>::zero_node(Index id) {
 // Cost O(particles + occupied tiles), never O(box): tiles are counted in a persistent array that
 // is reset only where it was touched.
 template <int D> void Grid<D>::bin(const std::vector<Vec<D>>& x) {
-  // Zero the nodes of the previous step, so every node outside the active set is zero.
-  const Index nold = static_cast<Index>(active_.size());
-  parallel_for(0, nold, [&](Index a) { zero_node(active_[a]); });
-
-  const Index np = static_cast<Index>(x.size());
+  clear();  // the nodes of the previous binning, so every node outside the new active set is zero
   tile_of_.resize(x.size());
-  tile_particles_.resize(x.size());
-  occupied_.clear();
-  count_sort_tiles(x);
-  const Index nocc = static_cast<Index>(occupied_.size());
+  home_.resize(x.size());
+  count_sort_tiles(&x);
+  build_runs_and_nodes(static_cast<Index>(x.size()));
+}
 
+template <int D> void Grid<D>::clear() {
+  const Index na = static_cast<Index>(active_.size());
+  parallel_for(0, na, [&](Index a) { zero_node(active_[a]); });
+}
+
+// Only what P2G accumulates: p and f are written whole by its unpacking, v and v^L by the grid update, at every active
+// node (zeroing all nine fields cost 2/3 of a binning, 1 M particles).
+template <int D> void Grid<D>::clear_sums() {
+  const Index na = static_cast<Index>(active_.size());
+  parallel_for(0, na, [&](Index a) {
+    for (int fld = 0; fld < nfields_; ++fld) {
+      const Index k = fld * nnodes_ + active_[a];
+      m[k] = 0;
+      if (nfields_ > 1) grad_m[k].setZero(), vol[k] = 0;
+    }
+  });
+}
+
+template <int D> bool Grid<D>::outgrown(const std::vector<Vec<D>>& x) const {
+  if (x.size() != home_.size()) return true;
+  const Index np = static_cast<Index>(x.size());
+  constexpr Index kChunk = 4096;
+  return parallel_or((np + kChunk - 1) / kChunk, np > kParallelMin, [&](Index k) {
+    // In grid coordinates, particle i is held while T home - kMargin <= xr < T home + T + kMargin along each axis (the
+    // cell test on floor(xr), without the floor: branch-free, vectorisable; NaN counts as out).
+    bool out = false;
+    for (Index i = k * kChunk; i < std::min(np, (k + 1) * kChunk); ++i)
+      for (int d = 0; d < D; ++d) {
+        const double xr = (x[i][d] - origin_[d]) * inv_h_, lo = home_[i][d] * T - kMargin;
+        out |= !(xr >= lo && xr < lo + (T + 2 * kMargin));
+      }
+    return static_cast<int>(out);
+  }) != 0;
+}
+
+template <int D> void Grid<D>::restore_binning(std::vector<Index> tiles) {
+  clear();
+  tile_of_ = std::move(tiles);
+  home_.resize(tile_of_.size());
+  for (std::size_t i = 0; i < tile_of_.size(); ++i) home_[i] = tile_coord(tile_of_[i]);
+  count_sort_tiles(nullptr);
+  build_runs_and_nodes(static_cast<Index>(tile_of_.size()));
+}
+
+template <int D> void Grid<D>::build_runs_and_nodes(Index np) {
   color_runs_build(np);
   active_.clear();
   if constexpr (D == 2) {  // the active nodes in ascending order without a sort
     active_nodes_2d();
     return;
   }
-  for (Index k = 0; k < nocc; ++k) {
+  if (flag_.size() != static_cast<std::size_t>(nnodes_)) flag_.assign(static_cast<std::size_t>(nnodes_), 0);
+  for (Index t : occupied_) {
     IVec<D> lo, hi;
-    tile_nodes(occupied_[k], lo, hi);
+    tile_nodes(t, lo, hi);
     any_node_in_box<D>(lo, hi, [&](const IVec<D>& ijk) {
       const Index id = node_id(ijk);
       if (!flag_[id]) {
@@ -90,7 +131,7 @@ template <int D> void Grid<D>::bin(const std::vector<Vec<D>>& x) {
 }
 
 // Row runs: a maximal run of occupied tiles with equal (ty[, tz]) (occupied_ ascends in tile id = x fastest), coloured
-// by the parity of ty (and tz); rows two apart are 2 T cells apart. Measured against single tiles in 2^D colours
+// by ty (and tz) modulo 3; rows three apart are 3 T cells apart. Measured against single tiles in 2^D colours
 // (1 M particles, quadratic B-splines, docs/performance.md): a colour's tiles were every other tile of every other
 // row, so each pass read the particle arrays in 1/4 slices, and the scatter took 1.7x as long out of cache.
 template <int D> void Grid<D>::color_runs_build(Index np) {
@@ -105,17 +146,17 @@ template <int D> void Grid<D>::color_runs_build(Index np) {
     for (Index k = r.begin; k < r.end; k = by_rows ? r.end : k + 1) {
       const IVec<D> ti = tile_coord(occupied_[k]);
       int color = 0;
-      for (int d = by_rows ? 1 : 0; d < D; ++d) color |= (ti[d] & 1) << (by_rows ? d - 1 : d);
+      for (int d = D - 1; d >= (by_rows ? 1 : 0); --d) color = 3 * color + ti[d] % 3;
       color_runs_[color].push_back(by_rows ? r : TileRun{k, k + 1});
     }
 }
 
-template <int D> Index Grid<D>::tile_of(const Vec<D>& x) const {
+template <int D> Index Grid<D>::tile_of(const Vec<D>& x, IVec<D>& cell) const {
   const Vec<D> xr = grid_coord(x);
   Index t = 0;
   for (int d = D - 1; d >= 0; --d) {
-    const int c = std::clamp(static_cast<int>(std::floor(xr[d])), 0, cells_[d] - 1);
-    t = t * tiles_[d] + c / T;
+    cell[d] = std::clamp(static_cast<int>(std::floor(xr[d])), 0, cells_[d] - 1);
+    t = t * tiles_[d] + cell[d] / T;
   }
   return t;
 }
@@ -125,8 +166,10 @@ template <int D> Index Grid<D>::tile_of(const Vec<D>& x) const {
 // tile follow in chunk order, and each fills its own chunk, so the order is exactly the serial one (particles by
 // tile, then by index). Serially these two passes over the particles limited two threads (docs/performance.md). The
 // counting pass also finds each particle's tile (a pass of its own before: 4.3 of 11.6 ms binning 1 M particles).
-template <int D> void Grid<D>::count_sort_tiles(const std::vector<Vec<D>>& x) {
-  const Index np = static_cast<Index>(x.size());
+template <int D> void Grid<D>::count_sort_tiles(const std::vector<Vec<D>>* x) {
+  const Index np = static_cast<Index>(tile_of_.size());
+  tile_particles_.resize(tile_of_.size());
+  occupied_.clear();
   const int nt = np > kParallelMin ? std::max(1, omp_get_max_threads()) : 1;
   if (static_cast<int>(chunk_count_.size()) < nt) chunk_count_.resize(static_cast<std::size_t>(nt));
   chunk_occupied_.resize(static_cast<std::size_t>(nt));
@@ -138,8 +181,12 @@ template <int D> void Grid<D>::count_sort_tiles(const std::vector<Vec<D>>& x) {
     std::vector<Index>& occ = chunk_occupied_[c];
     occ.clear();
     for (Index i = chunk(c); i < chunk(c + 1); ++i) {  // the tile of each particle, counted as it is found
-      const Index t = tile_of(x[i]);
-      tile_of_[i] = t;
+      Index t = tile_of_[i];
+      if (x) {
+        IVec<D> cell;
+        t = tile_of_[i] = tile_of((*x)[i], cell);
+        for (int d = 0; d < D; ++d) home_[i][d] = cell[d] / T;
+      }
       if (cnt[t]++ == 0) occ.push_back(t);
     }
   };
@@ -181,34 +228,45 @@ template <int D> void Grid<D>::count_sort_tiles(const std::vector<Vec<D>>& x) {
     for (Index t : occupied_) counts(c)[t] = 0;
 }
 
-// The nodes the occupied tiles' particles can touch (tile (tx, ty): node columns [tx T - 1, tx T + T + 1], rows
-// [ty T - 1, ty T + T + 1]), in ascending node id, in O(active nodes + occupied tiles): occupied_ is sorted by tile
-// id, so each tile row's tiles are a contiguous run ordered by tx; a node row j is reached by at most two tile rows,
-// whose column intervals are merged in order. Replaces collecting in tile order and sorting (std::sort was 3-4 % of
-// a 1 M-particle step, serial).
+// The nodes the occupied tiles' particles can touch (tile_nodes), in ascending node id, in O(active nodes + occupied
+// tiles): occupied_ is sorted by tile id, so each tile row's tiles are a contiguous run ordered by tx; the tile rows
+// reaching node row j are a window of consecutive rows_ (at most kWindow), whose column intervals are merged in
+// order. Replaces collecting in tile order and sorting (std::sort was 3-4 % of a 1 M-particle step, serial).
 template <int D> void Grid<D>::active_nodes_2d() {
   if constexpr (D == 2) {
-    auto ty_of = [&](const TileRun& r) { return static_cast<int>(occupied_[r.begin] / tiles_[0]); };  // rows_: one tile row each
-    auto row_lo = [](int ty) { return ty * T - 1; };
-    auto row_hi = [](int ty) { return ty * T + T + 1; };
-    int next_row = 0;  // rows below it are done
-    for (std::size_t g = 0; g < rows_.size(); ++g) {
-      for (int j = std::max({next_row, row_lo(ty_of(rows_[g])), 0}); j <= std::min(row_hi(ty_of(rows_[g])), nodes_[1] - 1); ++j) {
-        // Tile rows reaching row j among rows g and g + 1 (ascending in ty; g - 1 ended below j).
-        const TileRun* a = &rows_[g];
-        const TileRun* b = g + 1 < rows_.size() && row_lo(ty_of(rows_[g + 1])) <= j ? &rows_[g + 1] : nullptr;
-        Index ia = a->begin, ib = b ? b->begin : 0;
-        int last = -1;  // last column emitted in this row
-        while (ia < a->end || (b && ib < b->end)) {
-          const bool take_a = !b || ib >= b->end || (ia < a->end && occupied_[ia] % tiles_[0] <= occupied_[ib] % tiles_[0]);
-          const Index t = take_a ? occupied_[ia++] : occupied_[ib++];
-          const int tx = static_cast<int>(t % tiles_[0]);
-          const int c0 = std::max({last + 1, tx * T - 1, 0}), c1 = std::min(tx * T + T + 1, nodes_[0] - 1);
-          for (int c = c0; c <= c1; ++c) active_.push_back(static_cast<Index>(j) * nodes_[0] + c);
-          last = std::max(last, c1);
-        }
-        next_row = j + 1;
+    constexpr int kReach = T + 3 + 2 * kMargin, kWindow = (kReach + T - 1) / T + 1;  // node rows a tile row reaches
+    const std::size_t nr = rows_.size();
+    auto ty_of = [&](std::size_t g) { return static_cast<int>(occupied_[rows_[g].begin] / tiles_[0]); };  // rows_: one tile row each
+    auto lo_of = [](int t) { return t * T - 1 - kMargin; };
+    auto hi_of = [](int t) { return t * T + T + 1 + kMargin; };
+    std::size_t a = 0, b = 0;  // window [a, b): the tile rows reaching node row j
+    for (int j = 0; j < nodes_[1];) {
+      while (a < nr && hi_of(ty_of(a)) < j) ++a;
+      if (b < a) b = a;
+      while (b < nr && lo_of(ty_of(b)) <= j) ++b;
+      if (a == b) {  // no tile row reaches j: on to the next one that reaches anything
+        if (a == nr) break;
+        j = std::max(j + 1, lo_of(ty_of(a)));
+        continue;
       }
+      Index at[kWindow], end[kWindow];
+      const int w = static_cast<int>(b - a);
+      for (int k = 0; k < w; ++k) at[k] = rows_[a + k].begin, end[k] = rows_[a + k].end;
+      int last = -1;  // last column emitted in this row
+      while (true) {
+        int pick = -1, tx = 0;
+        for (int k = 0; k < w; ++k)
+          if (at[k] < end[k]) {
+            const int t = static_cast<int>(occupied_[at[k]] % tiles_[0]);
+            if (pick < 0 || t < tx) pick = k, tx = t;
+          }
+        if (pick < 0) break;
+        ++at[pick];
+        const int c0 = std::max({last + 1, lo_of(tx), 0}), c1 = std::min(hi_of(tx), nodes_[0] - 1);
+        for (int c = c0; c <= c1; ++c) active_.push_back(static_cast<Index>(j) * nodes_[0] + c);
+        last = std::max(last, c1);
+      }
+      ++j;
     }
   }
 }

@@ -2,12 +2,16 @@
 // and an active-node list rebuilt each step from the occupied tiles, so per-step cost follows
 // the occupied cells, not the box. Several velocity fields (one per contact body) share a node
 // layout: array index = field * nnodes + node.
-// Particles are binned into tiles of T^D cells. The scatter's work items are runs of occupied tiles in one colour:
-// a run's particles are contiguous in the tile order, and same-colour runs are >= T cells apart, wider than any
-// stencil (T = 4 > 2 + 1), so a colour's runs scatter in parallel without locks, and the summation order per node
-// (colour, run, particle order) does not depend on the thread count. Runs are whole tile rows along x (colour: the
-// parity of the other tile coordinates, 2^(D-1) colours), which stream the particle arrays; with too few rows to
-// share among threads, single tiles coloured by the parity of all their coordinates (2^D colours).
+// Particles are binned into tiles of T^D cells. A binning stays valid while every particle lies within kMargin cells
+// of its tile (outgrown() says when not), so most steps only clear the fields (clear()) and keep the tile order,
+// the scatter's runs and the active nodes: binning was 15 % of a 1 M-particle step (docs/performance.md). A tile's
+// particles therefore reach the nodes [T t - 1 - kMargin, T t + T + 1 + kMargin] (tile_nodes).
+// The scatter's work items are runs of occupied tiles in one colour: a run's particles are contiguous in the tile
+// order, and same-colour runs are 3 T cells apart, wider than any reach (3 T - 1 - kMargin > T + 1 + kMargin), so a
+// colour's runs scatter in parallel without locks, and the summation order per node (colour, run, particle order)
+// does not depend on the thread count. Runs are whole tile rows along x (colour: the other tile coordinates modulo
+// 3, 3^(D-1) colours), which stream the particle arrays; with too few rows to share among threads, single tiles
+// coloured by all their coordinates modulo 3 (3^D colours).
 #pragma once
 #include <array>
 #include <vector>
@@ -64,6 +68,18 @@ template <int D> class Grid {
   // active-node list. Every field is zero at every node when it returns (the previous step's
   // active nodes are cleared), so nodes outside the active set never hold stale values.
   void bin(const std::vector<Vec<D>>& x);
+  // The step's clear while the binning holds: zeroes the sums P2G accumulates into (m; grad m and vol with several
+  // fields) at the active nodes. The rest is written whole at every active node each step (p, f by P2G's unpacking,
+  // v, v^L by the solver's grid update, zero where a node is empty).
+  void clear_sums();
+  // True when the binning no longer holds the particles at x: their number changed, or one lies more than kMargin
+  // cells outside its tile (its stencil may then reach nodes outside the active set, or a same-colour run's).
+  bool outgrown(const std::vector<Vec<D>>& x) const;
+  static constexpr int kMargin = 1;  // cells a particle may move out of its tile before a rebinning
+  // Checkpoint restart: each particle's tile at the last binning, and the binning rebuilt from them (the same tile
+  // order, runs and active nodes, hence the same summation order as the run that wrote them).
+  const std::vector<Index>& particle_tiles() const { return tile_of_; }
+  void restore_binning(std::vector<Index> tiles);
 
   double h() const { return h_; }
   double inv_h() const { return inv_h_; }
@@ -78,7 +94,7 @@ template <int D> class Grid {
     Index begin, end;
   };
   const std::vector<TileRun>& color_runs(int c) const { return color_runs_[c]; }
-  static constexpr int kColors = 1 << D;
+  static constexpr int kColors = D == 2 ? 9 : 27;  // 3^D
   // Fewest tile rows for row runs when the particles are many enough to scatter in parallel.
   static constexpr Index kMinRows = 16;
   // Occupied tiles (tile ids, ascending); index k into this list is the "occupied-tile index".
@@ -94,13 +110,13 @@ template <int D> class Grid {
     }
     return ti;
   }
-  // Nodes a particle of tile t can touch (cells [T t, T t + T - 1] -> nodes [T t - 1, T t + T + 1]), clamped to the
-  // grid: lo and hi inclusive along each axis.
+  // Nodes a particle of tile t can touch while the binning holds (cells [T t - kMargin, T t + T - 1 + kMargin] -> nodes
+  // [T t - 1 - kMargin, T t + T + 1 + kMargin]), clamped to the grid: lo and hi inclusive along each axis.
   void tile_nodes(Index t, IVec<D>& lo, IVec<D>& hi) const {
     const IVec<D> ti = tile_coord(t);
     for (int d = 0; d < D; ++d) {
-      lo[d] = std::max(0, ti[d] * T - 1);
-      hi[d] = std::min(nodes_[d] - 1, ti[d] * T + T + 1);
+      lo[d] = std::max(0, ti[d] * T - 1 - kMargin);
+      hi[d] = std::min(nodes_[d] - 1, ti[d] * T + T + 1 + kMargin);
     }
   }
   // Nodes within the quadratic B-spline support (1.5 cells) of a point at grid coordinates xr, clamped to the grid.
@@ -113,8 +129,6 @@ template <int D> class Grid {
   // Particles of occupied tile k: tile_particles()[tile_start()[k] .. tile_start()[k+1]).
   const std::vector<Index>& tile_start() const { return tile_start_; }
   const std::vector<Index>& tile_particles() const { return tile_particles_; }
-  // Checkpoint restart: the particle order of the last binning, which the next particle sort uses.
-  void restore_tile_particles(std::vector<Index> order) { tile_particles_ = std::move(order); }
 
   // Nodal fields, size nfields * nnodes.
   std::vector<double> m;        // mass (kg)
@@ -138,16 +152,19 @@ template <int D> class Grid {
   Index nnodes_, ntiles_;
   int nfields_;
   void active_nodes_2d();
-  Index tile_of(const Vec<D>& x) const;  // tile id of a position (cells clamped to the grid)
-  void count_sort_tiles(const std::vector<Vec<D>>& x);
+  void clear();  // every field zeroed at the active nodes
+  Index tile_of(const Vec<D>& x, IVec<D>& cell) const;  // tile id of a position and its cell (clamped to the grid)
+  void count_sort_tiles(const std::vector<Vec<D>>* x);  // tile_of_ from x, or as it is (x null)
+  void build_runs_and_nodes(Index np);
   void color_runs_build(Index np);  // rows_ and color_runs_ from occupied_
   std::vector<TileRun> rows_;        // occupied tiles by tile row (equal y [and z] tile coordinates), ascending
   std::vector<std::vector<Index>> chunk_count_, chunk_occupied_;  // per-thread tile counts (chunk 0 uses tile_count_)
   std::vector<Index> active_;
   std::vector<unsigned char> flag_;  // 3D active-node collection only
+  std::vector<IVec<D>> home_;        // each particle's tile coordinates at the last binning
   void zero_node(Index id);
   std::vector<Index> tile_of_, tile_start_, tile_particles_, tile_count_, occupied_;
-  std::array<std::vector<TileRun>, (1 << D)> color_runs_;
+  std::array<std::vector<TileRun>, kColors> color_runs_;
 };
 
 }  // namespace dmi

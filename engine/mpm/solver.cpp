@@ -39,7 +39,8 @@ template <int D> Solver<D>::Solver(Scene<D> scene) : scene_(std::move(scene)) {
 // The step as named phases (docs/architecture.md, "The step").
 template <int D> void Solver<D>::step(double dt) {
   if (profile_) lap_t_ = std::chrono::steady_clock::now();
-  if (steps_ % kSortInterval == 1) sort_particles();  // locality for the scatter (from the second step on)
+  const bool sort = steps_ % kSortInterval == 1;  // locality for the scatter (from the second step on)
+  if (sort) sort_particles();
   for (Inflow<D>& in : scene_.inflows) {  // debris entering the driven zone
     if (steps_ % kSortInterval == 0 && backed_up(scene_, in, time_)) {
       std::ostringstream os;
@@ -51,7 +52,12 @@ template <int D> void Solver<D>::step(double dt) {
     }
     inject(scene_, in, time_, dt);
   }
-  scene_.grid->bin(scene_.particles.x);      // tiles, active nodes, zeroed fields
+  if (const bool out = !sort && scene_.grid->outgrown(scene_.particles.x); sort || out) {
+    rebins_ += out;
+    scene_.grid->bin(scene_.particles.x);    // tiles, active nodes, zeroed fields
+  } else {
+    scene_.grid->clear_sums();               // the binning holds: zeroed mass (and contact sums)
+  }
   lap(kBinning);
   particles_to_grid();                         // m_i, p_i, f_i = f_int + f_ext (eqs. 5-8)
   lap(kP2G);
@@ -174,6 +180,7 @@ template <int D> void Solver<D>::grid_update(double dt) {
         g.vL[k] = g.v[k] + dt * g.f[k] / g.m[k];  // eqs. (4), (9)
       } else {
         g.m[k] = 0;  // empty node: excluded from boundaries and contact
+        g.v[k].setZero(), g.vL[k].setZero();  // (a step that kept the binning did not zero them)
       }
     }
   });
@@ -335,7 +342,7 @@ template <int D> void Solver<D>::save_state(StateWriter& w) const {
   for (const Body& b : scene_.bodies) w.put(b.end), w.put<std::uint8_t>(b.rigid);  // an inflow's body grows; rigid_when_free
   w.put(frozen_energy_), w.put(free_switches_), w.put(free_rigid_steps_);
   for (const Inflow<D>& in : scene_.inflows) in.save_state(w);
-  w.put(scene_.grid->tile_particles());
+  w.put(scene_.grid->particle_tiles());
   w.put<std::uint64_t>(scene_.materials.size());
   for (const auto& m : scene_.materials) m->save_state(w);
   for (const auto& wall : scene_.walls) w.put(wall.force);
@@ -360,10 +367,14 @@ template <int D> void Solver<D>::load_state(StateReader& r) {
   r.get(frozen_energy_), r.get(free_switches_), r.get(free_rigid_steps_);
   r.expect_size("the bodies' particles", scene_.bodies.empty() ? 0 : static_cast<std::size_t>(scene_.bodies.back().end), scene_.particles.size());
   for (Inflow<D>& in : scene_.inflows) in.load_state(r);
-  std::vector<Index> order;
-  r.get(order);
-  if (!order.empty()) r.expect_size("the particle order", order.size(), scene_.particles.size());
-  scene_.grid->restore_tile_particles(std::move(order));
+  std::vector<Index> tiles;
+  r.get(tiles);
+  if (!tiles.empty()) {
+    r.expect_size("the particles' tiles", tiles.size(), scene_.particles.size());
+    for (Index t : tiles)
+      if (t < 0 || t >= scene_.grid->ntiles()) r.fail("a particle's tile out of the grid");
+    scene_.grid->restore_binning(std::move(tiles));
+  }
   r.expect_size("materials", r.get<std::uint64_t>(), scene_.materials.size());
   for (auto& m : scene_.materials) m->load_state(r);
   for (auto& wall : scene_.walls) r.get(wall.force);

@@ -81,8 +81,9 @@ TEST(Grid, ParticleOrderByTileIsStableAndThreadIndependent) {
 }
 
 // The scatter's work items: every occupied tile in exactly one run, runs of consecutive occupied tiles, and no node
-// reached by two runs of one colour (the lock-free scatter's condition). Many particles on few tile rows fall back to
-// single tiles in 2^D colours; otherwise runs are whole tile rows in 2^(D-1) colours.
+// reached by two runs of one colour (the lock-free scatter's condition, with each tile's reach widened by the margin
+// its particles may move before a rebinning). Many particles on few tile rows fall back to single tiles in 3^D
+// colours; otherwise runs are whole tile rows in 3^(D-1) colours.
 void check_runs(const Grid<2>& g, bool expect_rows) {
   std::vector<int> seen(g.occupied().size(), 0);
   bool rows = true;
@@ -108,7 +109,8 @@ void check_runs(const Grid<2>& g, bool expect_rows) {
   }
   for (int n : seen) ASSERT_EQ(n, 1);
   EXPECT_EQ(rows, expect_rows);
-  if (expect_rows) EXPECT_TRUE(g.color_runs(2).empty() && g.color_runs(3).empty());
+  if (expect_rows)
+    for (int c = 3; c < Grid<2>::kColors; ++c) EXPECT_TRUE(g.color_runs(c).empty());
 }
 
 TEST(Grid, ScatterRunsCoverTheTilesAndSameColourRunsDoNotShareNodes) {
@@ -126,6 +128,54 @@ TEST(Grid, ScatterRunsCoverTheTilesAndSameColourRunsDoNotShareNodes) {
   Grid<2> small(Vec<2>(0, 0), IVec<2>(61, 37), 0.1, 1);
   small.bin(few);
   check_runs(small, true);
+}
+
+// The binning is kept between steps while every particle stays within kMargin cells of its tile: a move of less than
+// a cell keeps it, a move of two cells (some particle then sits two cells beyond its tile) does not, and neither does
+// a change in the number of particles.
+TEST(Grid, BinningHoldsWhileParticlesStayWithinTheMargin) {
+  ASSERT_EQ(Grid<2>::kMargin, 1);
+  Grid<2> g(Vec<2>(0, 0), IVec<2>(122, 74), 0.05, 1);
+  const std::vector<Vec<2>> x = scattered_particles();
+  g.bin(x);
+  EXPECT_FALSE(g.outgrown(x));
+  for (const Vec<2>& d : {Vec<2>(0.99 * 0.05, 0), Vec<2>(0, -0.99 * 0.05), Vec<2>(0.7 * 0.05, 0.7 * 0.05)}) {
+    std::vector<Vec<2>> y = x;
+    for (auto& p : y) p += d;
+    EXPECT_FALSE(g.outgrown(y)) << d.transpose();
+  }
+  for (const Vec<2>& d : {Vec<2>(2.0 * 0.05, 0), Vec<2>(0, -2.0 * 0.05)}) {
+    std::vector<Vec<2>> y = x;
+    for (auto& p : y) p += d;
+    EXPECT_TRUE(g.outgrown(y)) << d.transpose();
+  }
+  std::vector<Vec<2>> one = x;
+  one[123] += Vec<2>(0, 9 * 0.05);  // a single particle far out
+  EXPECT_TRUE(g.outgrown(one));
+  std::vector<Vec<2>> more = x;
+  more.push_back(x[0]);
+  EXPECT_TRUE(g.outgrown(more));
+}
+
+// A checkpoint keeps each particle's tile; the binning rebuilt from them is the one the run had (order, runs, nodes).
+TEST(Grid, BinningRestoredFromTheParticlesTilesIsTheSame) {
+  const std::vector<Vec<2>> x = scattered_particles();
+  Grid<2> g(Vec<2>(0, 0), IVec<2>(122, 74), 0.05, 1), r(Vec<2>(0, 0), IVec<2>(122, 74), 0.05, 1);
+  g.bin(x);
+  std::vector<Vec<2>> y = x;
+  for (auto& p : y) p += Vec<2>(0.03, -0.02);  // moved since the binning: the restored one must not re-bin them
+  ASSERT_FALSE(g.outgrown(y));
+  r.restore_binning(g.particle_tiles());
+  EXPECT_EQ(r.tile_particles(), g.tile_particles());
+  EXPECT_EQ(r.tile_start(), g.tile_start());
+  EXPECT_EQ(r.occupied(), g.occupied());
+  EXPECT_EQ(r.active(), g.active());
+  for (int c = 0; c < Grid<2>::kColors; ++c) {
+    ASSERT_EQ(r.color_runs(c).size(), g.color_runs(c).size());
+    for (std::size_t k = 0; k < g.color_runs(c).size(); ++k)
+      EXPECT_TRUE(r.color_runs(c)[k].begin == g.color_runs(c)[k].begin && r.color_runs(c)[k].end == g.color_runs(c)[k].end);
+  }
+  EXPECT_FALSE(r.outgrown(y));
 }
 
 }  // namespace

@@ -68,7 +68,7 @@ TEST(Solver, DeterministicAcrossThreadCounts) {
       Solver<2> s = solver_for<2>(j);
       ASSERT_GT(static_cast<Index>(s.scene().particles.size()), kParallelMin);
       s.step(s.stable_time_step(1.0));
-      EXPECT_EQ(s.scene().grid->color_runs(2).empty(), by_rows) << "work items: rows on the fine grid, tiles on the coarse one";
+      EXPECT_EQ(s.scene().grid->color_runs(3).empty(), by_rows) << "work items: rows on the fine grid, tiles on the coarse one";
       run_to(s, 1.5);  // after the impact the disks overlap in y (14 rows at the end): single tiles from then on
       x[t - 1] = s.scene().particles.x;
       ke[t - 1] = s.diagnostics().kinetic;
