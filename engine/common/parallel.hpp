@@ -24,7 +24,7 @@ template <class F> inline void parallel_for(Index begin, Index end, F&& f) {
 }
 
 // Indices handed out dynamically in runs of consecutive ones, about 8 runs per thread (work items of very different
-// particle counts balance; consecutive single tiles of a colour are neighbours 8 cells apart, and single tiles handed
+// particle counts balance; consecutive single tiles of a colour are neighbours 12 cells apart, and single tiles handed
 // to alternating threads shared the cache lines of the nodal mass between them at every tile edge).
 template <class F> inline void parallel_for_dynamic(Index n, bool parallel, F&& f) {
   if (!parallel) {

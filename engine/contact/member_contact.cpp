@@ -230,22 +230,15 @@ template <int D> void MemberContact<D>::find_candidates(const Scene<D>& s) {
   }
 }
 
-// mx_i = sum_p m_p N_ip x_p at the candidate nodes, from the particles of the tiles that reach them.
 // mx_i = sum_p m_p N_ip x_p at the candidate nodes, from the particles of the occupied tiles that
-// reach them: tile t's particles touch nodes [T t - 1, T t + T + 1], so node n is reached by tiles
-// ceil((n - T - 1) / T) .. floor((n + 1) / T) along each axis.
+// reach them (Grid::tiles_reaching, the inverse of Grid::tile_nodes).
 template <int D> void MemberContact<D>::mass_positions(const Scene<D>& s, const TransferKernels<D>& kernels) {
   const Grid<D>& g = *s.grid;
-  constexpr int T = Grid<D>::T;
   if (tile_flag_.size() != static_cast<std::size_t>(g.ntiles())) tile_flag_.assign(static_cast<std::size_t>(g.ntiles()), 0);
   marked_.clear();
   for (const Candidate& c : cand_) {
-    const IVec<D> n = g.node_ijk(c.node);
     IVec<D> lo, hi;
-    for (int d = 0; d < D; ++d) {
-      lo[d] = std::max(0, (n[d] - 1 + T - 1) / T - 1);  // ceil((n - T - 1) / T), n >= 0
-      hi[d] = std::min(g.tiles()[d] - 1, (n[d] + 1) / T);
-    }
+    g.tiles_reaching(g.node_ijk(c.node), lo, hi);
     IVec<D> t = lo;
     while (true) {
       Index id = t[D - 1];

@@ -3,7 +3,7 @@
 // the occupied cells, not the box. Several velocity fields (one per contact body) share a node
 // layout: array index = field * nnodes + node.
 // Particles are binned into tiles of T^D cells. A binning stays valid while every particle lies within kMargin cells
-// of its tile (outgrown() says when not), so most steps only clear the fields (clear()) and keep the tile order,
+// of its tile (outgrown() says when not), so most steps only zero P2G's sums (clear_sums()) and keep the tile order,
 // the scatter's runs and the active nodes: binning was 15 % of a 1 M-particle step (docs/performance.md). A tile's
 // particles therefore reach the nodes [T t - 1 - kMargin, T t + T + 1 + kMargin] (tile_nodes).
 // The scatter's work items are runs of occupied tiles in one colour: a run's particles are contiguous in the tile
@@ -117,6 +117,15 @@ template <int D> class Grid {
     for (int d = 0; d < D; ++d) {
       lo[d] = std::max(0, ti[d] * T - 1 - kMargin);
       hi[d] = std::min(nodes_[d] - 1, ti[d] * T + T + 1 + kMargin);
+    }
+  }
+  // The tiles whose particles can touch node n while the binning holds (the inverse of tile_nodes: T t - 1 - kMargin <=
+  // n <= T t + T + 1 + kMargin), clamped to the grid: lo and hi inclusive along each axis.
+  void tiles_reaching(const IVec<D>& n, IVec<D>& lo, IVec<D>& hi) const {
+    for (int d = 0; d < D; ++d) {
+      const int a = n[d] - T - 1 - kMargin;  // lo = ceil(a / T), at least 0
+      lo[d] = a <= 0 ? 0 : (a + T - 1) / T;
+      hi[d] = std::min(tiles_[d] - 1, (n[d] + 1 + kMargin) / T);
     }
   }
   // Nodes within the quadratic B-spline support (1.5 cells) of a point at grid coordinates xr, clamped to the grid.

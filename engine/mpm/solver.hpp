@@ -68,7 +68,8 @@ template <int D> class Solver {
   enum Phase { kBinning, kP2G, kWallTouch, kViscosity, kMembers, kGridUpdate, kBodyContact, kRigid, kG2P, kFrame, kPhases };
   static const char* phase_name(int p);
   void profile(bool on) { profile_ = on; }
-  // Binnings forced by particles leaving their tiles' margin (the others fall on particle sorts), for benchmarks.
+  // Binnings other than the particle sorts' (a particle left its tile's margin, particles were added, the first one),
+  // for benchmarks.
   long rebins() const { return rebins_; }
   const std::array<double, kPhases>& phase_seconds() const { return phase_seconds_; }
   // Constraint passes on the rigid bodies' nodes beyond the first projection, summed over the steps (rigid_constraints).
@@ -96,7 +97,7 @@ template <int D> class Solver {
   long rigid_passes_ = 0;
   long free_switches_ = 0, free_rigid_steps_ = 0;
   double frozen_energy_ = 0;  // J: vibration and strain energy given up by rigid_when_free bodies turning rigid
-  long rebins_ = 0;  // binnings because particles moved out of their tiles' margin (the others fall on sorts)
+  long rebins_ = 0;  // binnings not on a sort step: particles moved out of their tiles' margin or added, the first
   std::vector<Index> rigid_nodes_;  // rigid_constraints: the active nodes where a rigid field has mass
   std::array<double, kPhases> phase_seconds_{};
   std::chrono::steady_clock::time_point lap_t_;

@@ -5,6 +5,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -155,6 +156,55 @@ TEST(Grid, BinningHoldsWhileParticlesStayWithinTheMargin) {
   std::vector<Vec<2>> more = x;
   more.push_back(x[0]);
   EXPECT_TRUE(g.outgrown(more));
+}
+
+// While the binning holds, every node of a moved particle's stencil (the widest: nodes floor(xr) - 1 .. floor(xr) + 2
+// along each axis) is active, and the particle's tile is among those Grid::tiles_reaching gives for each of those
+// nodes (member contact gathers the mass-weighted positions there from those tiles' particles). Every particle moves
+// by up to a cell in each direction, so many sit a cell outside their tile.
+TEST(Grid, StencilsOfMovedParticlesStayInsideTheBinning) {
+  const double h = 0.05;
+  Grid<2> g(Vec<2>(0, 0), IVec<2>(122, 74), h, 1);
+  const std::vector<Vec<2>> x = scattered_particles();
+  g.bin(x);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-0.999 * h, 0.999 * h);
+  std::vector<Vec<2>> y = x;
+  for (auto& p : y) p += Vec<2>(u(rng), u(rng));
+  ASSERT_FALSE(g.outgrown(y));
+  const auto& active = g.active();
+  long outside = 0;
+  for (std::size_t k = 0; k < g.occupied().size(); ++k) {
+    const IVec<2> tile = g.tile_coord(g.occupied()[k]);
+    for (Index q = g.tile_start()[k]; q < g.tile_start()[k + 1]; ++q) {
+      const Vec<2> xr = y[g.tile_particles()[q]] / h;
+      const IVec<2> c(static_cast<int>(std::floor(xr[0])), static_cast<int>(std::floor(xr[1])));
+      outside += c[0] < tile[0] * Grid<2>::T || c[0] >= (tile[0] + 1) * Grid<2>::T || c[1] < tile[1] * Grid<2>::T ||
+                 c[1] >= (tile[1] + 1) * Grid<2>::T;
+      for (int j = std::max(0, c[1] - 1); j <= std::min(74, c[1] + 2); ++j)
+        for (int i = std::max(0, c[0] - 1); i <= std::min(122, c[0] + 2); ++i) {
+          ASSERT_TRUE(std::binary_search(active.begin(), active.end(), g.node_id(IVec<2>(i, j)))) << "node " << i << ", " << j;
+          IVec<2> lo, hi;
+          g.tiles_reaching(IVec<2>(i, j), lo, hi);
+          ASSERT_TRUE(tile[0] >= lo[0] && tile[0] <= hi[0] && tile[1] >= lo[1] && tile[1] <= hi[1]) << "node " << i << ", " << j;
+        }
+    }
+  }
+  EXPECT_GT(outside, 1000);  // the margin was used
+  // The inverse relation is exact: node n lies in tile_nodes(t) exactly when t lies in tiles_reaching(n).
+  for (Index t = 0; t < g.ntiles(); ++t) {
+    IVec<2> nlo, nhi;
+    g.tile_nodes(t, nlo, nhi);
+    const IVec<2> tc = g.tile_coord(t);
+    for (int j = 0; j < 75; ++j)
+      for (int i = 0; i < 123; ++i) {
+        IVec<2> lo, hi;
+        g.tiles_reaching(IVec<2>(i, j), lo, hi);
+        const bool in_nodes = i >= nlo[0] && i <= nhi[0] && j >= nlo[1] && j <= nhi[1];
+        const bool in_tiles = tc[0] >= lo[0] && tc[0] <= hi[0] && tc[1] >= lo[1] && tc[1] <= hi[1];
+        ASSERT_EQ(in_nodes, in_tiles) << "tile " << t << ", node " << i << ", " << j;
+      }
+  }
 }
 
 // A checkpoint keeps each particle's tile; the binning rebuilt from them is the one the run had (order, runs, nodes).
