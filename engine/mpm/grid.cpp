@@ -234,19 +234,17 @@ template <int D> void Grid<D>::count_sort_tiles(const std::vector<Vec<D>>* x) {
 // order. Replaces collecting in tile order and sorting (std::sort was 3-4 % of a 1 M-particle step, serial).
 template <int D> void Grid<D>::active_nodes_2d() {
   if constexpr (D == 2) {
-    constexpr int kReach = T + 3 + 2 * kMargin, kWindow = (kReach + T - 1) / T + 1;  // node rows a tile row reaches
+    constexpr int kReach = reach_hi(0) - reach_lo(0) + 1, kWindow = (kReach + T - 1) / T + 1;  // node rows a tile row reaches
     const std::size_t nr = rows_.size();
     auto ty_of = [&](std::size_t g) { return static_cast<int>(occupied_[rows_[g].begin] / tiles_[0]); };  // rows_: one tile row each
-    auto lo_of = [](int t) { return t * T - 1 - kMargin; };
-    auto hi_of = [](int t) { return t * T + T + 1 + kMargin; };
     std::size_t a = 0, b = 0;  // window [a, b): the tile rows reaching node row j
     for (int j = 0; j < nodes_[1];) {
-      while (a < nr && hi_of(ty_of(a)) < j) ++a;
+      while (a < nr && reach_hi(ty_of(a)) < j) ++a;
       if (b < a) b = a;
-      while (b < nr && lo_of(ty_of(b)) <= j) ++b;
+      while (b < nr && reach_lo(ty_of(b)) <= j) ++b;
       if (a == b) {  // no tile row reaches j: on to the next one that reaches anything
         if (a == nr) break;
-        j = std::max(j + 1, lo_of(ty_of(a)));
+        j = std::max(j + 1, reach_lo(ty_of(a)));
         continue;
       }
       Index at[kWindow], end[kWindow];
@@ -262,7 +260,7 @@ template <int D> void Grid<D>::active_nodes_2d() {
           }
         if (pick < 0) break;
         ++at[pick];
-        const int c0 = std::max({last + 1, lo_of(tx), 0}), c1 = std::min(hi_of(tx), nodes_[0] - 1);
+        const int c0 = std::max({last + 1, reach_lo(tx), 0}), c1 = std::min(reach_hi(tx), nodes_[0] - 1);
         for (int c = c0; c <= c1; ++c) active_.push_back(static_cast<Index>(j) * nodes_[0] + c);
         last = std::max(last, c1);
       }

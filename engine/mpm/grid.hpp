@@ -115,17 +115,20 @@ template <int D> class Grid {
   void tile_nodes(Index t, IVec<D>& lo, IVec<D>& hi) const {
     const IVec<D> ti = tile_coord(t);
     for (int d = 0; d < D; ++d) {
-      lo[d] = std::max(0, ti[d] * T - 1 - kMargin);
-      hi[d] = std::min(nodes_[d] - 1, ti[d] * T + T + 1 + kMargin);
+      lo[d] = std::max(0, reach_lo(ti[d]));
+      hi[d] = std::min(nodes_[d] - 1, reach_hi(ti[d]));
     }
   }
+  // Unclamped along one axis: the first and last node a particle of tile coordinate t can touch.
+  static constexpr int reach_lo(int t) { return t * T - 1 - kMargin; }
+  static constexpr int reach_hi(int t) { return t * T + T + 1 + kMargin; }
   // The tiles whose particles can touch node n while the binning holds (the inverse of tile_nodes: T t - 1 - kMargin <=
   // n <= T t + T + 1 + kMargin), clamped to the grid: lo and hi inclusive along each axis.
   void tiles_reaching(const IVec<D>& n, IVec<D>& lo, IVec<D>& hi) const {
     for (int d = 0; d < D; ++d) {
-      const int a = n[d] - T - 1 - kMargin;  // lo = ceil(a / T), at least 0
+      const int a = n[d] - reach_hi(0);  // lo = ceil(a / T), at least 0
       lo[d] = a <= 0 ? 0 : (a + T - 1) / T;
-      hi[d] = std::min(tiles_[d] - 1, (n[d] + 1 + kMargin) / T);
+      hi[d] = std::min(tiles_[d] - 1, (n[d] - reach_lo(0)) / T);
     }
   }
   // Nodes within the quadratic B-spline support (1.5 cells) of a point at grid coordinates xr, clamped to the grid.
