@@ -79,26 +79,56 @@ template <int D> void Solver<D>::step(double dt) {
   ++steps_;
 }
 
-// A rigid_when_free body turns rigid when nothing is near it (body_is_clear) and elastic again as soon as something is,
-// before any node is shared: its waves set the step only while it can touch something. Turning rigid it gives up its
-// vibration (the kinetic energy the rigid projection removes) and its strain energy (relaxed to stress-free), counted
-// as dissipated.
+// A rigid_when_free body turns rigid when nothing is near it (body_is_clear), or when it is leaving whatever is near:
+// from each, separated along some axis by a separation that grew over the last step and exceeds half a cell and the
+// reach of any of its particles along any direction (sqrt(D) times its largest reach along an axis), so no particle of
+// it touches. It turns elastic again as soon as that fails for something near, before any node is shared on an approach
+// (each side moves less than a cell a step; the clearances hold a cell and a half beyond the nodes a particle and a
+// member reach). A leaving body's nodes may still be contact candidates of a wall or of another body, which act on
+// a field approaching them only, and hold a rigid field as well as an elastic one; of a member only where member
+// contact needs touching particles (sharp decay, surface detection, not stick; else the rigid body would meet the
+// member, which a rigid body may not); velocity regions always need the clearance. Its waves set the step only while
+// it can touch something. Turning rigid it gives up its vibration (the kinetic energy the rigid projection removes)
+// and its strain energy (relaxed to stress-free), counted as dissipated.
 template <int D> void Solver<D>::switch_free_bodies() {
   if (!rigid_) return;
   const double h = scene_.grid->h();
   const Clearance c = Clearance::of(h, member_contact_layer(scene_.coupling, h));
+  const MemberCoupling& mc = scene_.coupling;
+  const bool touch_only = mc.decay == DecayKind::sharp && mc.detection == DetectionKind::surface && mc.mode != MemberContactMode::stick;
+  const Particles<D>& P = scene_.particles;
+  free_gaps_.resize(scene_.bodies.size());
   bool any = false;
   for (std::size_t k = 0; k < scene_.bodies.size(); ++k) {
     Body& b = scene_.bodies[k];
     if (!b.rigid_when_free) continue;
-    const bool clear = body_is_clear(scene_, static_cast<int>(k), c);
-    if (clear && !b.rigid) {
+    std::vector<double>& last = free_gaps_[k];  // the last step's separations, 3 per item
+    const bool some = body_gaps(scene_, static_cast<int>(k), c, gaps_);
+    const bool bonded = std::find(mc.bonded_fields.begin(), mc.bonded_fields.end(), b.field) != mc.bonded_fields.end();
+    double reach = 0;
+    for (Index i = b.begin; i < b.end; ++i) reach = std::max({reach, P.reach_lo[i].maxCoeff(), P.reach_hi[i].maxCoeff()});
+    const double apart = std::max(0.5 * h, std::sqrt(double(D)) * reach);
+    bool clear = some, leaving = some && last.size() == 3 * gaps_.size();
+    for (std::size_t i = 0; i < gaps_.size(); ++i) {
+      const Gap& g = gaps_[i];
+      if (g.gap() >= g.clear) continue;
+      clear = false;
+      bool away = g.kind == Gap::body || g.kind == Gap::wall || (g.kind == Gap::member && touch_only && !bonded);
+      bool grew = false;
+      for (int d = 0; d < 3 && away && leaving; ++d) grew = grew || (g.sep[d] > apart && g.sep[d] > last[3 * i + d]);
+      leaving = leaving && away && grew;
+    }
+    last.resize(3 * gaps_.size());
+    for (std::size_t i = 0; i < gaps_.size(); ++i)
+      for (int d = 0; d < 3; ++d) last[3 * i + d] = gaps_[i].sep[d];
+    const bool free = clear || leaving;
+    if (free && !b.rigid) {
       Material<D>& mat = *scene_.materials[b.material];
       const double strain = mat.strain_energy(scene_.particles, b.begin, b.end);
       if (!mat.relax(scene_.particles, b.begin, b.end)) throw std::logic_error("rigid_when_free on a material that cannot relax");
       frozen_energy_ += strain + rigid_->add(scene_, static_cast<int>(k));
       b.rigid = true, ++free_switches_;
-    } else if (!clear && b.rigid) {
+    } else if (!free && b.rigid) {
       rigid_->remove(static_cast<int>(k));
       b.rigid = false, ++free_switches_;
     }
@@ -156,10 +186,16 @@ template <int D> void Solver<D>::member_boundary_forces(double dt) {
                        "' met a beam-column member; rigid bodies meet walls and other bodies only (make it elastic, or keep a buffer between)");
 }
 
+// A frame free of contact loads this step (no reactions, no attached mass: free vibration under its other loads) is
+// advanced in equal sub-steps no longer than its ringing step: when a rigid body in flight lengthens the step, the
+// frame still resolves the modes its damping leaves ringing. Under contact loads the frame takes the coupling's step.
 template <int D> void Solver<D>::advance_members(double dt) {
   if (!scene_.frame) return;
+  const double dt_ring = scene_.frame->ringing_step();
+  const bool free = !members_ || members_->loads().empty();
+  const int n = free && dt > dt_ring ? static_cast<int>(std::ceil(dt / dt_ring)) : 1;
   try {
-    scene_.frame->advance(dt);
+    for (int i = 0; i < n; ++i) scene_.frame->advance(dt / n);
   } catch (const std::runtime_error& e) {  // non-finite state, Newton failure
     throw RunError("run stopped at step " + std::to_string(steps_ + 1) + ", t = " + std::to_string(time_) +
                    " s: beam-column frame: " + e.what());
@@ -341,6 +377,8 @@ template <int D> void Solver<D>::save_state(StateWriter& w) const {
   scene_.particles.save_state(w);
   for (const Body& b : scene_.bodies) w.put(b.end), w.put<std::uint8_t>(b.rigid);  // an inflow's body grows; rigid_when_free
   w.put(frozen_energy_), w.put(free_switches_), w.put(free_rigid_steps_);
+  w.put<std::uint64_t>(free_gaps_.size());
+  for (const auto& g : free_gaps_) w.put(g);
   for (const Inflow<D>& in : scene_.inflows) in.save_state(w);
   w.put(scene_.grid->particle_tiles());
   w.put<std::uint64_t>(scene_.materials.size());
@@ -365,6 +403,10 @@ template <int D> void Solver<D>::load_state(StateReader& r) {
     b.rigid = rigid != 0;
   }
   r.get(frozen_energy_), r.get(free_switches_), r.get(free_rigid_steps_);
+  const auto ngaps = r.get<std::uint64_t>();
+  if (ngaps != 0 && ngaps != scene_.bodies.size()) r.fail("rigid_when_free gaps for " + std::to_string(ngaps) + " bodies, not " + std::to_string(scene_.bodies.size()));
+  free_gaps_.resize(static_cast<std::size_t>(ngaps));
+  for (auto& g : free_gaps_) r.get(g);
   r.expect_size("the bodies' particles", scene_.bodies.empty() ? 0 : static_cast<std::size_t>(scene_.bodies.back().end), scene_.particles.size());
   for (Inflow<D>& in : scene_.inflows) in.load_state(r);
   std::vector<Index> tiles;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "engine/contact/member_contact.hpp"
+#include "engine/mpm/clearance.hpp"
 #include "engine/mpm/scene.hpp"
 #include "engine/mpm/transfer.hpp"
 #include "engine/mpm/rigid.hpp"
@@ -97,6 +98,8 @@ template <int D> class Solver {
   long rigid_passes_ = 0;
   long free_switches_ = 0, free_rigid_steps_ = 0;
   double frozen_energy_ = 0;  // J: vibration and strain energy given up by rigid_when_free bodies turning rigid
+  std::vector<std::vector<double>> free_gaps_;  // rigid_when_free bodies: the last step's separations (body_gaps), 3 per item
+  std::vector<Gap> gaps_;                        // scratch
   long rebins_ = 0;  // binnings not on a sort step: particles moved out of their tiles' margin or added, the first
   std::vector<Index> rigid_nodes_;  // rigid_constraints: the active nodes where a rigid field has mass
   std::array<double, kPhases> phase_seconds_{};

@@ -8,6 +8,8 @@
 // A lumped mass is block diagonal by node (a node's rotational block of a space frame is a full 3 x 3 in global
 // axes: torsional and bending rotary inertias differ); each free block is inverted once.
 #pragma once
+#include <cmath>
+#include <limits>
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <algorithm>
@@ -52,6 +54,15 @@ class AssembledSystem {
   // out = C v = alpha M v + beta K0 v.
   void damping_force(const Eigen::VectorXd& v, Eigen::VectorXd& out) const;
   bool damped() const { return alpha_ > 0 || beta_ > 0; }
+  // The largest step that resolves, with omega dt <= 1/2, every mode the Rayleigh damping leaves underdamped:
+  // zeta(omega) = alpha / (2 omega) + beta omega / 2 < 1 below omega_u = (1 + sqrt(1 - alpha beta)) / beta. Newmark's
+  // period error there is (omega dt)^2 / 12 <= 2 % (Hughes 1987, sec. 9.3); the modes above omega_u do not ring.
+  // +infinity without stiffness-proportional damping (no mode is overdamped; the HHT dissipation handles the
+  // unresolved ones) or when every mode is overdamped (alpha beta >= 1).
+  double ringing_step() const {
+    if (!(beta_ > 0) || alpha_ * beta_ >= 1) return std::numeric_limits<double>::infinity();
+    return 0.5 * beta_ / (1 + std::sqrt(1 - alpha_ * beta_));
+  }
   // a = M^-1 r on the free DOFs (0 on restrained ones); lumped: node blocks, consistent: factorised once.
   // r is masked in place (restrained entries zeroed).
   void solve_mass(Eigen::VectorXd& r, Eigen::VectorXd& a) const;

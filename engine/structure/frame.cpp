@@ -113,6 +113,7 @@ void Frame::add_distributed_load(int e, const Vec2& w_local) {
 }
 
 double Frame::stable_time_step() const { return impl_->dyn.integrator->stable_time_step(); }
+double Frame::ringing_step() const { return impl_->sys.ringing_step(); }
 
 void Frame::advance(double dt) {
   impl_->update_loads();

@@ -135,6 +135,8 @@ class Frame {
   // Explicit: the largest step for which eqs. (27)-(29) are stable, 2 / omega_max of M^-1 K
   // (no safety factor; the caller applies its CFL fraction). Newmark: +infinity.
   double stable_time_step() const;
+  // The step below which the frame is advanced when free of contact loads (AssembledSystem::ringing_step).
+  double ringing_step() const;
   // Advances by dt with the loads held constant over the step.
   void advance(double dt);
   // Static solution for the current loads (state set to it, velocity zero): K d = f, or under the corotational

@@ -140,6 +140,7 @@ void SpaceFrame::add_distributed_load(int e, const Vec3& w_local) {
 }
 
 double SpaceFrame::stable_time_step() const { return impl_->dyn.integrator->stable_time_step(); }
+double SpaceFrame::ringing_step() const { return impl_->sys.ringing_step(); }
 
 void SpaceFrame::advance(double dt) {
   impl_->update_loads();

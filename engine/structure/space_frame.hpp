@@ -122,6 +122,8 @@ class SpaceFrame {
   void add_distributed_load(int e, const Vec3& w_local);  // uniform, per metre, along (e1, e2, e3)
 
   double stable_time_step() const;
+  // The step below which the frame is advanced when free of contact loads (AssembledSystem::ringing_step).
+  double ringing_step() const;
   void advance(double dt);
   // Static solution for the current loads (frame.hpp, solve_static).
   void solve_static(int increments = 1);

@@ -241,6 +241,33 @@ TEST(FrameDynamics, RayleighDampingMatchesLogarithmicDecrement) {
   }
 }
 
+// The ringing step: the modes Rayleigh damping leaves underdamped, zeta(omega) = alpha / (2 omega) + beta omega / 2 < 1,
+// lie below omega_u = 1 / (2 dt_ring), where zeta = 1; each natural frequency with zeta < 1 has omega dt_ring <= 1/2.
+// Without stiffness-proportional damping no mode is overdamped: no such step.
+TEST(FrameDynamics, RingingStepResolvesEveryUnderdampedMode) {
+  const Beam b;
+  FrameModel m = straight(b, 12);
+  support(m, 0, true, true, true);
+  const std::vector<double> w = Frame(m).natural_frequencies(3 * 12);
+  EXPECT_TRUE(std::isinf(Frame(m).ringing_step()));
+  m.rayleigh_mass = 2 * 0.05 * w[0];
+  m.rayleigh_stiffness = 2 * 0.05 / w[4];  // 5 % at the fifth mode: the highest modes are overdamped
+  const double dt = Frame(m).ringing_step(), wu = 0.5 / dt;
+  auto zeta = [&](double om) { return m.rayleigh_mass / (2 * om) + m.rayleigh_stiffness * om / 2; };
+  EXPECT_NEAR(zeta(wu), 1.0, 1e-12);
+  int ringing = 0, overdamped = 0;
+  for (double om : w) {
+    if (zeta(om) < 1) {
+      ++ringing;
+      EXPECT_LE(om * dt, 0.5);
+    } else {
+      ++overdamped;
+    }
+  }
+  EXPECT_GT(ringing, 4);
+  EXPECT_GT(overdamped, 0);
+}
+
 TEST(FrameDynamics, CorotationalCantileverCurlsIntoACircle) {
   Beam b;
   b.L = 1;
