@@ -56,7 +56,7 @@ class AssembledSystem {
   bool damped() const { return alpha_ > 0 || beta_ > 0; }
   // The largest step that resolves, with omega dt <= 1/2, every mode the Rayleigh damping leaves underdamped:
   // zeta(omega) = alpha / (2 omega) + beta omega / 2 < 1 below omega_u = (1 + sqrt(1 - alpha beta)) / beta. Newmark's
-  // period error there is (omega dt)^2 / 12 <= 2 % (Hughes 1987, sec. 9.3); the modes above omega_u do not ring.
+  // period error there is (omega dt)^2 / 12 <= 2.1 % (Hughes 2000, ch. 9); the modes above omega_u do not ring.
   // +infinity without stiffness-proportional damping (no mode is overdamped; the HHT dissipation handles the
   // unresolved ones) or when every mode is overdamped (alpha beta >= 1).
   double ringing_step() const {
