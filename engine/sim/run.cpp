@@ -256,7 +256,17 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   double profile_time_step = 0, profile_recorder = 0;  // o.profile: stable_time_step; recorder, snapshots, progress
   solver.profile(o.profile);
   auto last_ckpt = std::chrono::steady_clock::now();
+  // One thread below kParallelScene particles (re-checked as an inflow adds them); results do not depend on it.
+  const int requested = omp_get_max_threads();
+  int used = 0;
+  auto choose_threads = [&] {
+    const int t = static_cast<Index>(solver.scene().particles.size()) >= kParallelScene ? requested : 1;
+    if (t != omp_get_max_threads()) omp_set_num_threads(t);
+    used = std::max(used, t);
+  };
+  choose_threads();
   while (solver.time() < end - eps) {
+    if (solver.steps() % 64 == 0) choose_threads();
     const bool stop = o.stop_after_steps > 0 && solver.steps() >= o.stop_after_steps && solver.steps() > first_step;
     if (g_signal != 0 || stop) stop_run(g_signal, solver, rec, info, writer.get(), results_path, wall_now(),
                                         checkpoint, ckpt);
@@ -311,7 +321,9 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   info.numbers["dt_max"] = loop.dt_max;
   info.numbers["courant_max"] = loop.courant_max;   // numerical health (docs/results.md)
   info.numbers["jacobian_min"] = std::isfinite(loop.j_min) ? loop.j_min : 1.0;
-  info.numbers["threads"] = omp_get_max_threads();
+  info.numbers["threads"] = requested;
+  info.numbers["threads_used"] = used;  // the most the step loop used (kParallelScene)
+  omp_set_num_threads(requested);
   if (solver.scene().frame) {
     info.documents["structure"] = structure_document(s, *solver.scene().frame);
     const std::string doc = rec.peak_contact_document(*solver.scene().frame);
