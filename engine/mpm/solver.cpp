@@ -80,16 +80,17 @@ template <int D> void Solver<D>::step(double dt) {
 }
 
 // A rigid_when_free body turns rigid when nothing is near it (body_is_clear), or when it is leaving whatever is near:
-// from each, separated along some axis by a separation that grew over the last step and exceeds half a cell and the
-// reach of any of its particles along any direction (sqrt(D) times its largest reach along an axis), so no particle of
-// it touches. It turns elastic again as soon as that fails for something near, before any node is shared on an approach
-// (each side moves less than a cell a step; the clearances hold a cell and a half beyond the nodes a particle and a
-// member reach). A leaving body's nodes may still be contact candidates of a wall or of another body, which act on
-// a field approaching them only, and hold a rigid field as well as an elastic one; of a member only where member
-// contact needs touching particles (sharp decay, surface detection, not stick; else the rigid body would meet the
-// member, which a rigid body may not); velocity regions always need the clearance. Its waves set the step only while
-// it can touch something. Turning rigid it gives up its vibration (the kinetic energy the rigid projection removes)
-// and its strain energy (relaxed to stress-free), counted as dissipated.
+// from each, separated along some axis by a separation that grew over the last step and exceeds both half a cell and
+// the farthest any of its particles reaches (so no particle of it touches). It turns elastic again at the end of a
+// step in which that failed for something near (a body that was rigid through that step had no particle touching at
+// its start, so nothing could load it but walls and bodies, which hold rigid fields); on an approach from clear, before
+// any node is shared (each side moves less than a cell a step; the clearances hold a cell and a half beyond the nodes
+// a particle and a member reach). A leaving body's nodes may still be contact candidates of a wall or of another body,
+// which act on a field approaching them only and hold a rigid field as well as an elastic one; of a member only where
+// member contact needs touching particles (sharp decay, surface detection, not stick; else the rigid body would meet
+// the member, which a rigid body may not); velocity regions always need the clearance. Its waves set the step only
+// while it can touch something. Turning rigid it gives up its vibration (the kinetic energy the rigid projection
+// removes) and its strain energy (relaxed to stress-free), counted as dissipated.
 template <int D> void Solver<D>::switch_free_bodies() {
   if (!rigid_) return;
   const double h = scene_.grid->h();
@@ -105,9 +106,16 @@ template <int D> void Solver<D>::switch_free_bodies() {
     std::vector<double>& last = free_gaps_[k];  // the last step's separations, 3 per item
     const bool some = body_gaps(scene_, static_cast<int>(k), c, gaps_);
     const bool bonded = std::find(mc.bonded_fields.begin(), mc.bonded_fields.end(), b.field) != mc.bonded_fields.end();
+    // The farthest a particle reaches along a unit direction n (particle_reach: along n and along F^T n, each
+    // sum_j |a_j| r_j <= |a| |r|, r the larger reach per axis; |F^T n| <= sigma_max(F) <= sqrt of the largest row sum
+    // of |F^T F|), and the touching test's tolerance.
     double reach = 0;
-    for (Index i = b.begin; i < b.end; ++i) reach = std::max({reach, P.reach_lo[i].maxCoeff(), P.reach_hi[i].maxCoeff()});
-    const double apart = std::max(0.5 * h, std::sqrt(double(D)) * reach);
+    for (Index i = b.begin; i < b.end; ++i) {
+      const Mat<D> C = P.F[i].transpose() * P.F[i];
+      const double stretch = std::sqrt(C.cwiseAbs().rowwise().sum().maxCoeff());
+      reach = std::max(reach, P.reach_lo[i].cwiseMax(P.reach_hi[i]).norm() * std::max(1.0, stretch));
+    }
+    const double apart = std::max(0.5 * h, reach) + 1e-6 * h;
     bool clear = some, leaving = some && last.size() == 3 * gaps_.size();
     for (std::size_t i = 0; i < gaps_.size(); ++i) {
       const Gap& g = gaps_[i];
@@ -187,13 +195,18 @@ template <int D> void Solver<D>::member_boundary_forces(double dt) {
 }
 
 // A frame free of contact loads this step (no reactions, no attached mass: free vibration under its other loads) is
-// advanced in equal sub-steps no longer than its ringing step: when a rigid body in flight lengthens the step, the
-// frame still resolves the modes its damping leaves ringing. Under contact loads the frame takes the coupling's step.
+// advanced in equal sub-steps no longer than its ringing step, whatever lengthened the step (a rigid body in flight,
+// a light or slow material): it resolves the modes its damping leaves ringing. Under contact loads the frame takes
+// the coupling's step.
 template <int D> void Solver<D>::advance_members(double dt) {
   if (!scene_.frame) return;
   const double dt_ring = scene_.frame->ringing_step();
   const bool free = !members_ || members_->loads().empty();
-  const int n = free && dt > dt_ring ? static_cast<int>(std::ceil(dt / dt_ring)) : 1;
+  const double pieces = free && dt > dt_ring ? std::ceil(dt / dt_ring) : 1.0;
+  if (!(pieces <= 1e6))
+    throw RunError("run stopped at step " + std::to_string(steps_ + 1) + ": the frame's ringing step " + std::to_string(dt_ring) +
+                   " s would cut a step of " + std::to_string(dt) + " s into more than a million sub-steps");
+  const int n = static_cast<int>(pieces);
   try {
     for (int i = 0; i < n; ++i) scene_.frame->advance(dt / n);
   } catch (const std::runtime_error& e) {  // non-finite state, Newton failure

@@ -1,5 +1,9 @@
 #include "engine/structure/assembled_system.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <stdexcept>
@@ -25,6 +29,17 @@ double AssembledSystem::max_eigenvalue() const {
   // Exact (dense) for small frames; above ~200 elements the O(n^3) solve costs seconds, so the
   // element bound (conservative: a smaller stable step) is used.
   return nf <= kDenseEigenMax ? eigenvalues().maxCoeff() : element_bound_;
+}
+
+double AssembledSystem::ringing_step() const {
+  if (ringing_step_ < 0) {
+    ringing_step_ = std::numeric_limits<double>::infinity();
+    if (beta_ > 0 && alpha_ * beta_ < 1) {
+      const double wu = (1 + std::sqrt(1 - alpha_ * beta_)) / beta_, wmax = std::sqrt(max_eigenvalue());
+      ringing_step_ = 0.5 / (std::isfinite(wmax) && wmax > 0 ? std::min(wu, wmax) : wu);
+    }
+  }
+  return ringing_step_;
 }
 
 void AssembledSystem::factorise_mass(bool lumped) {

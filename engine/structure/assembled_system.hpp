@@ -55,14 +55,13 @@ class AssembledSystem {
   void damping_force(const Eigen::VectorXd& v, Eigen::VectorXd& out) const;
   bool damped() const { return alpha_ > 0 || beta_ > 0; }
   // The largest step that resolves, with omega dt <= 1/2, every mode the Rayleigh damping leaves underdamped:
-  // zeta(omega) = alpha / (2 omega) + beta omega / 2 < 1 below omega_u = (1 + sqrt(1 - alpha beta)) / beta. Newmark's
-  // period error there is (omega dt)^2 / 12 <= 2.1 % (Hughes 2000, ch. 9); the modes above omega_u do not ring.
-  // +infinity without stiffness-proportional damping (no mode is overdamped; the HHT dissipation handles the
-  // unresolved ones) or when every mode is overdamped (alpha beta >= 1).
-  double ringing_step() const {
-    if (!(beta_ > 0) || alpha_ * beta_ >= 1) return std::numeric_limits<double>::infinity();
-    return 0.5 * beta_ / (1 + std::sqrt(1 - alpha_ * beta_));
-  }
+  // zeta(omega) = alpha / (2 omega) + beta omega / 2 < 1 below omega_u = (1 + sqrt(1 - alpha beta)) / beta, and that
+  // the mesh carries (omega_max, max_eigenvalue): 1 / (2 min(omega_u, omega_max)). Newmark's period error there is
+  // (omega dt)^2 / 12 <= 2.1 % (Hughes 2000, ch. 9); the modes above omega_u do not ring. +infinity without
+  // stiffness-proportional damping (no mode is overdamped; the HHT dissipation handles the unresolved ones) or when
+  // every mode is overdamped (alpha beta >= 1). Computed once (the linear K0 and M; Rayleigh damping is refused with
+  // the corotational transformation).
+  double ringing_step() const;
   // a = M^-1 r on the free DOFs (0 on restrained ones); lumped: node blocks, consistent: factorised once.
   // r is masked in place (restrained entries zeroed).
   void solve_mass(Eigen::VectorXd& r, Eigen::VectorXd& a) const;
@@ -111,6 +110,7 @@ class AssembledSystem {
   Eigen::VectorXd free_, springs_;
   SpMat M_, K0_;
   double element_bound_ = 0;  // max over elements of lambda_max(K_e, M_e), plus the springs' share
+  mutable double ringing_step_ = -1;  // ringing_step(), once computed (-1: not yet)
 
  private:
   void check_mechanism() const;
