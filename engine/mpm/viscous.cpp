@@ -6,6 +6,7 @@
 #include <string>
 
 #include <Eigen/Eigenvalues>
+#include <omp.h>
 
 #include "engine/common/error.hpp"
 #include "engine/common/parallel.hpp"
@@ -114,22 +115,33 @@ void ImplicitViscosity<D>::apply(Scene<D>& s, const TransferKernels<D>& kernels,
   }
 }
 
-// out = K_v u over the unknowns: sum_p V_p sigma_v(D_p(u)) grad N_ip, in two passes that run in parallel and give
-// the same sums whatever the threads: each particle's V_p sigma_v, then each unknown's sum over its incident
-// particle entries in their order (incidence(): the order a serial scatter would add them).
+// out = K_v u over the unknowns: sum_p V_p sigma_v(D_p(u)) grad N_ip. On one thread (serial_) a scatter in particle
+// and entry order; else in two passes that run in parallel and give the same sums: each particle's V_p sigma_v, then
+// each unknown's sum over its incident particle entries in their order (incidence(): the order of that scatter).
 template <int D>
 void ImplicitViscosity<D>::operate(const Scene<D>& s, const Body& b, const Stencils& st, double a, double bv, const std::vector<Vec<D>>& u,
                                    std::vector<Vec<D>>& out) {
   const Particles<D>& P = s.particles;
-  sv_.resize(static_cast<std::size_t>(b.end - b.begin));
-  parallel_for(b.begin, b.end, [&](Index i) {
+  auto stress = [&](Index i) {  // V_p sigma_v(D_p(u))
     const std::size_t k0 = static_cast<std::size_t>(i - b.begin) * st.nn;
     Mat<D> L = Mat<D>::Zero();
     for (int n = 0; n < st.nn; ++n)
       if (const int l = entry_[k0 + n]; l >= 0) L.noalias() += u[l] * st.grad[k0 + n].transpose();
     const Mat<D> Dm = 0.5 * (L + L.transpose());
-    sv_[static_cast<std::size_t>(i - b.begin)] = P.vol[i] * (a * Dm.trace() * Mat<D>::Identity() + 2 * bv * Dm);
-  });
+    return Mat<D>(P.vol[i] * (a * Dm.trace() * Mat<D>::Identity() + 2 * bv * Dm));
+  };
+  if (serial_) {
+    out.assign(nodes_.size(), Vec<D>::Zero());
+    for (Index i = b.begin; i < b.end; ++i) {
+      const Mat<D> sv = stress(i);
+      const std::size_t k0 = static_cast<std::size_t>(i - b.begin) * st.nn;
+      for (int n = 0; n < st.nn; ++n)
+        if (const int l = entry_[k0 + n]; l >= 0) out[static_cast<std::size_t>(l)].noalias() += sv * st.grad[k0 + n];
+    }
+    return;
+  }
+  sv_.resize(static_cast<std::size_t>(b.end - b.begin));
+  parallel_for(b.begin, b.end, [&](Index i) { sv_[static_cast<std::size_t>(i - b.begin)] = stress(i); });
   out.resize(nodes_.size());
   parallel_for(0, static_cast<Index>(nodes_.size()), [&](Index l) {
     Vec<D> f = Vec<D>::Zero();
@@ -166,7 +178,9 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
   const std::size_t n = nodes_.size();
   entry_.resize(st.node.size());
   for (std::size_t e = 0; e < st.node.size(); ++e) entry_[e] = local_[st.node[e]];
-  incidence(st);
+  // One thread: both passes would run inline, and the scatter adds in the gather's order.
+  serial_ = omp_get_max_threads() == 1 || (b.end - b.begin <= kParallelMin && static_cast<Index>(n) <= kParallelMin);
+  if (!serial_) incidence(st);
   for (auto* v : {&rhs_, &u_, &q_}) v->assign(n, Vec<D>::Zero());
   free_.assign(n, Vec<D>::Ones());
   ties_.clear();

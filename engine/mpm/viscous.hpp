@@ -112,6 +112,7 @@ template <int D> class ImplicitViscosity {
   std::vector<Tie> ties_;
   Stats stats_;
   bool probed_ = false, detected_ = false;
+  bool serial_ = false;             // this step's operate(): one scatter pass (one thread), else two parallel passes
   std::vector<Index> acc_k_;        // this step's solved node-fields ...
   std::vector<Vec<D>> acc_f_;       // ... and K_v u there
   std::vector<char> material_on_;
