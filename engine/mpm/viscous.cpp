@@ -51,14 +51,17 @@ void ImplicitViscosity<D>::apply(Scene<D>& s, const TransferKernels<D>& kernels,
     st.nn = kernels.stencils(s, b.begin, b.end, st.node, st.weight, st.grad);
     const std::vector<Mat<D>>& old = *s.materials[b.material]->viscous_stress();
     const Index off = b.field * nn;
-    // The bound on the fastest viscous rate, lambda_max(M^-1 K_v) <= max_p (a tr H_p + 2 b lambda_max(H_p)) / rho_p
-    // with H_p = sum_i grad N_ip grad N_ip^T / N_ip (D x D): with W_p = sum_i N_ip |u_i|^2, (tr D_p)^2 = (sum_i u_i .
-    // grad N_ip)^2 <= tr(H_p) W_p (Cauchy-Schwarz) and D_p:D_p <= |L_p|^2 = |U N^1/2 N^-1/2 G|^2 <= lambda_max(H_p) W_p
-    // (|A B|_F <= |A|_F |B|_2), while u^T M u >= sum_p m_p W_p. H_p is bounded where N vanishes as the square of the
-    // distance (quadratic B-splines: 4-6 / h^2 per axis; uGIMP), and grows near a nearly empty node of linear hats.
-    // The plain Cauchy-Schwarz bound on |L_p|^2 (tr H_p) read 4-5x the fastest rate on the buffered dam (power
-    // iteration), this one about half that: stages go as its square root.
-    double lambda = 0;
+    // The bound on the fastest viscous rate: with H_p = sum_i grad N_ip grad N_ip^T / N_ip (D x D) and
+    // W_p = sum_i N_ip |u_i|^2, (tr D_p)^2 = (sum_i u_i . grad N_ip)^2 <= tr(H_p) W_p (Cauchy-Schwarz) and
+    // D_p:D_p <= |L_p|^2 = |U N^1/2 N^-1/2 G|^2 <= lambda_max(H_p) W_p (|A B|_F <= |A|_F |B|_2), so
+    // u^T K_v u <= sum_p q_p W_p = sum_i |u_i|^2 sum_p N_ip q_p, q_p = V_p (a tr H_p + 2 b lambda_max(H_p)), while
+    // u^T M u >= sum_p m_p W_p = sum_i |u_i|^2 sum_p N_ip m_p: lambda_max(M^-1 K_v) <= max_i sum_p N_ip q_p /
+    // sum_p N_ip m_p, at each node a weighted mean of the q_p / m_p around it (at most their largest, the bound used
+    // before). H_p is bounded where N vanishes as the square of the distance (quadratic B-splines: 4-6 / h^2 per axis;
+    // uGIMP), and grows near a nearly empty node of linear hats. The plain Cauchy-Schwarz bound on |L_p|^2 (tr H_p)
+    // read 4-5x the fastest rate on the buffered dam (power iteration), the spectral one about half that, per particle;
+    // stages go as the bound's square root.
+    if (rate_num_.size() != static_cast<std::size_t>(nn)) rate_num_.assign(static_cast<std::size_t>(nn), 0.0), rate_den_.assign(static_cast<std::size_t>(nn), 0.0);
     for (Index i = b.begin; i < b.end; ++i) {
       const std::size_t k0 = static_cast<std::size_t>(i - b.begin) * st.nn;
       const Mat<D> so = P.vol[i] * old[i];
@@ -80,8 +83,18 @@ void ImplicitViscosity<D>::apply(Scene<D>& s, const TransferKernels<D>& kernels,
         top = es.eigenvalues()(D - 1);
       }
       // a = beta lambda < 0 for a negative Poisson's ratio: a (tr D)^2 <= 0 then, and only the shear term bounds.
-      const double rate = finite ? (std::max(a, 0.0) * H.trace() + 2 * bv * top) * P.vol[i] / P.mass[i] : std::numeric_limits<double>::infinity();
-      lambda = std::max(lambda, rate);
+      const double q = finite ? (std::max(a, 0.0) * H.trace() + 2 * bv * top) * P.vol[i] : std::numeric_limits<double>::infinity();
+      for (int e = 0; e < st.nn; ++e)
+        if (const double w = st.weight[k0 + e]; w > 0) {
+          rate_num_[static_cast<std::size_t>(st.node[k0 + e])] += w * q;
+          rate_den_[static_cast<std::size_t>(st.node[k0 + e])] += w * P.mass[i];
+        }
+    }
+    double lambda = 0;
+    for (Index id : st.node) {
+      const auto j = static_cast<std::size_t>(id);
+      if (rate_den_[j] > 0) lambda = std::max(lambda, rate_num_[j] / rate_den_[j]);
+      rate_num_[j] = rate_den_[j] = 0;
     }
     st.lambda = lambda;
   }

@@ -100,6 +100,7 @@ template <int D> class ImplicitViscosity {
   std::vector<Vec<D>> y0_, q2_, ky_, qsum_;  // Chebyshev: Y_0, Q_j-2, K Y_j-1, the mean force
   std::vector<Mat<D>> minv_;          // per unknown: M'^-1
   std::vector<Mat<D>> sv_;            // operate: per particle V_p sigma_v
+  std::vector<double> rate_num_, rate_den_;  // per grid node: sum_p N_ip q_p and sum_p N_ip m_p (the rate bound)
   std::vector<int> inc_start_, inc_particle_, fill_;  // per unknown: its particle entries (CSR), their particle
   std::vector<Vec<D>> inc_grad_;      // ... and grad N
   std::vector<Vec<D>> free_;        // per unknown: 1 for a free component, 0 for a held one
