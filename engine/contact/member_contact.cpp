@@ -376,7 +376,7 @@ template <int D> void MemberContact<D>::boundary_forces(Scene<D>& s, double dt) 
       double q = weight(opt.decay, r, ln, hm, held_flag_[k] != 0);
       // Surface detection: only nodes engaged by particles touching the member, among those within l_n / 2 of
       // its surface on either side (as a rigid wall: a face between grid lines acts at the nearest node row).
-      if (mode != MemberContactMode::stick && opt.decay == DecayKind::sharp && opt.detection == DetectionKind::surface)
+      if (member_contact_needs_touch(opt, bonded))
         q = touch_.engaged(k) && (q > 0 || r <= 0.5 * ln * (1 + 1e-9)) ? 1.0 : 0.0;
       if (q == 0) continue;
       loaded_.push_back(Loaded{k, n, vstar, q, mode, false});

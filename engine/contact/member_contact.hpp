@@ -83,6 +83,12 @@ inline double member_contact_layer(const MemberCoupling& c, double h) {
   return c.decay_scale * h + (c.distance == DistanceKind::material ? 1.5 * h : 0.0);
 }
 
+// Whether member contact acts on a field only at nodes engaged by its particles touching the member (the sharp held
+// zone with surface detection, and not stick: bonded fields always stick).
+inline bool member_contact_needs_touch(const MemberCoupling& c, bool bonded) {
+  return !bonded && c.mode != MemberContactMode::stick && c.decay == DecayKind::sharp && c.detection == DetectionKind::surface;
+}
+
 // Each element's bounding box in its present shape (the deformed centre-line's Bezier hull grown by the section's reach).
 template <int D> std::vector<std::array<Vec<D>, 2>> member_bounds(const FrameOf<D>& fr);
 

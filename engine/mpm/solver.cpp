@@ -96,7 +96,6 @@ template <int D> void Solver<D>::switch_free_bodies() {
   const double h = scene_.grid->h();
   const Clearance c = Clearance::of(h, member_contact_layer(scene_.coupling, h));
   const MemberCoupling& mc = scene_.coupling;
-  const bool touch_only = mc.decay == DecayKind::sharp && mc.detection == DetectionKind::surface && mc.mode != MemberContactMode::stick;
   const Particles<D>& P = scene_.particles;
   free_gaps_.resize(scene_.bodies.size());
   bool any = false;
@@ -105,23 +104,26 @@ template <int D> void Solver<D>::switch_free_bodies() {
     if (!b.rigid_when_free) continue;
     std::vector<double>& last = free_gaps_[k];  // the last step's separations, 3 per item
     const bool some = body_gaps(scene_, static_cast<int>(k), c, gaps_);
-    const bool bonded = std::find(mc.bonded_fields.begin(), mc.bonded_fields.end(), b.field) != mc.bonded_fields.end();
-    // The farthest a particle reaches along a unit direction n (particle_reach: along n and along F^T n, each
-    // sum_j |a_j| r_j <= |a| |r|, r the larger reach per axis; |F^T n| <= sigma_max(F) <= sqrt of the largest row sum
-    // of |F^T F|), and the touching test's tolerance.
-    double reach = 0;
-    for (Index i = b.begin; i < b.end; ++i) {
-      const Mat<D> C = P.F[i].transpose() * P.F[i];
-      const double stretch = std::sqrt(C.cwiseAbs().rowwise().sum().maxCoeff());
-      reach = std::max(reach, P.reach_lo[i].cwiseMax(P.reach_hi[i]).norm() * std::max(1.0, stretch));
-    }
-    const double apart = std::max(0.5 * h, reach) + 1e-6 * h;
+    const bool touch_only = member_contact_needs_touch(mc, std::find(mc.bonded_fields.begin(), mc.bonded_fields.end(), b.field) != mc.bonded_fields.end());
     bool clear = some, leaving = some && last.size() == 3 * gaps_.size();
+    double apart = -1;  // the separation that leaves no particle touching, once something near asks for it
     for (std::size_t i = 0; i < gaps_.size(); ++i) {
       const Gap& g = gaps_[i];
       if (g.gap() >= g.clear) continue;
       clear = false;
-      bool away = g.kind == Gap::body || g.kind == Gap::wall || (g.kind == Gap::member && touch_only && !bonded);
+      const bool away = g.kind == Gap::body || g.kind == Gap::wall || (g.kind == Gap::member && touch_only);
+      if (away && leaving && apart < 0) {
+        // The farthest a particle reaches along a unit direction n (particle_reach: along n and along F^T n, each
+        // sum_j |a_j| r_j <= |a| |r|, r the larger reach per axis; |F^T n| <= sigma_max(F) <= sqrt of the largest row
+        // sum of |F^T F|), past half a cell, and the touching test's tolerance.
+        double reach = 0;
+        for (Index p = b.begin; p < b.end; ++p) {
+          const Mat<D> C = P.F[p].transpose() * P.F[p];
+          const double stretch = std::sqrt(C.cwiseAbs().rowwise().sum().maxCoeff());
+          reach = std::max(reach, P.reach_lo[p].cwiseMax(P.reach_hi[p]).norm() * std::max(1.0, stretch));
+        }
+        apart = std::max(0.5 * h, reach) + 1e-6 * h;
+      }
       bool grew = false;
       for (int d = 0; d < 3 && away && leaving; ++d) grew = grew || (g.sep[d] > apart && g.sep[d] > last[3 * i + d]);
       leaving = leaving && away && grew;

@@ -235,10 +235,11 @@ void read_body(Obj& o, BodyConfig& b) {
   o.boolean("rigid_when_free", b.rigid_when_free,
             Spec{.doc = "a linear-elastic body that is elastic while anything is near it (another body, a wall, a region or a "
                         "member within a few cells) and moves as a rigid body while nothing is, or while it is leaving whatever "
-                        "is near (apart by more than half a cell and its particles' reach, and moving further apart; members "
-                        "under the default touch-detected contact only): its waves then no longer set the step. On becoming rigid its vibration (the kinetic energy the rigid projection removes) and its strain "
-                        "energy are given up (counted as dissipated) and it is stress-free when it turns elastic again. For a "
-                        "boulder that rebounds from a hard impact and flies on"});
+                        "is near (apart by more than both half a cell and its particles' reach, and moving further apart; "
+                        "members under the default touch-detected contact only): its waves then no longer set the step. On "
+                        "becoming rigid its vibration (the kinetic energy the rigid projection removes) and its strain energy "
+                        "are given up (counted as dissipated) and it is stress-free when it turns elastic again. For a boulder "
+                        "that rebounds from a hard impact and flies on"});
   if (!o.documenting() && b.rigid_when_free && (b.rigid || b.inflow.present))
     o.fail("rigid_when_free", o.raw("rigid_when_free", Spec{}, "boolean", ""), "false on a rigid body or one that an inflow fills");
   b.velocity.assign(o.context().dim, 0.0);

@@ -256,8 +256,13 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   double profile_time_step = 0, profile_recorder = 0;  // o.profile: stable_time_step; recorder, snapshots, progress
   solver.profile(o.profile);
   auto last_ckpt = std::chrono::steady_clock::now();
-  // One thread below kParallelScene particles (re-checked as an inflow adds them); results do not depend on it.
+  // One thread below kParallelScene particles (re-checked as an inflow adds them); results do not depend on it. The
+  // calling thread's count is restored however the run ends (a sweep runs its next case on the same thread).
   const int requested = omp_get_max_threads();
+  struct RestoreThreads {
+    int n;
+    ~RestoreThreads() { omp_set_num_threads(n); }
+  } restore{requested};
   int used = 0;
   auto choose_threads = [&] {
     const int t = static_cast<Index>(solver.scene().particles.size()) >= kParallelScene ? requested : 1;
@@ -323,7 +328,6 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   info.numbers["jacobian_min"] = std::isfinite(loop.j_min) ? loop.j_min : 1.0;
   info.numbers["threads"] = requested;
   info.numbers["threads_used"] = used;  // the most the step loop used (kParallelScene)
-  omp_set_num_threads(requested);
   if (solver.scene().frame) {
     info.documents["structure"] = structure_document(s, *solver.scene().frame);
     const std::string doc = rec.peak_contact_document(*solver.scene().frame);

@@ -1,11 +1,9 @@
 #include "engine/structure/assembled_system.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-#include <Eigen/Eigenvalues>
-#include <cmath>
 #include <stdexcept>
 
 namespace dmi {

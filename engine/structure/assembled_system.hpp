@@ -8,8 +8,6 @@
 // A lumped mass is block diagonal by node (a node's rotational block of a space frame is a full 3 x 3 in global
 // axes: torsional and bending rotary inertias differ); each free block is inverted once.
 #pragma once
-#include <cmath>
-#include <limits>
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <algorithm>
