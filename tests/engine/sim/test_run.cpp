@@ -197,6 +197,24 @@ TEST(RunCli, MissingScenarioFileIsOneClearError) {
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
+// OpenMP waits passively unless the user set OMP_WAIT_POLICY: libgomp reads the variable when it loads and prints
+// what it took (a passive policy spins 0 times before sleeping; unset, it would display PASSIVE but spin 300 000).
+TEST(RunCli, OpenMPWaitsPassivelyUnlessTheUserSaysOtherwise) {
+  auto spin = [](const std::string& env) {
+    const fs::path err = fs::temp_directory_path() / ("dmi_omp_env_" + std::to_string(::getpid()));
+    const std::string cmd = "env -u OMP_WAIT_POLICY OMP_DISPLAY_ENV=verbose " + env + " " + DMI_BINARY + " --version > /dev/null 2> " + err.string();
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+    std::ifstream in(err);
+    std::string line, found;
+    while (std::getline(in, line))
+      if (line.find("GOMP_SPINCOUNT") != std::string::npos) found = line;
+    fs::remove(err);
+    return found;
+  };
+  EXPECT_NE(spin("").find("'0'"), std::string::npos) << spin("");
+  EXPECT_EQ(spin("OMP_WAIT_POLICY=active").find("'0'"), std::string::npos) << spin("OMP_WAIT_POLICY=active");
+}
+
 }  // namespace
 
 // Numerical health in /run: the Courant number never exceeds the cfl factor (the automatic step), and the smallest
