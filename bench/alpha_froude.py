@@ -22,7 +22,7 @@ over the channel, the mean wall force is rho v^2 h0 + rho g h0^2/2 + rho v h0 c 
 is the theory's alpha when c is the bore's speed: alpha and the toe speed test the same balance twice.
 
     /usr/bin/python3 bench/alpha_froude.py [--fr 1.5,2,3,4] [--cells 0.025,0.0125] [--threads 2] [--length 4]
-                                           [--viscosity 1e-3]
+                                           [--viscosity 1e-3] [--volume-relaxation 0]
 
 Runs `damimpact simulate FILE -o /tmp/alpha_fr/<name> -q`. Requires /usr/bin/python3 with h5py and numpy, and
 build/app/damimpact.
@@ -52,7 +52,7 @@ def bore(fr):
     return 0.5 * (lo + hi)
 
 
-def scenario(fr, cell, mu=1e-3):
+def scenario(fr, cell, mu=1e-3, relax=0.0):
     v = fr * math.sqrt(G * H0)
     eta = bore(fr)
     c = v / (eta - 1)
@@ -67,7 +67,7 @@ def scenario(fr, cell, mu=1e-3):
         "mpm": {"shape_function": "bspline2", "transfer": "apic"},
         "grid": {"origin": [0, -8 * cell], "size": [x_wall + 8 * cell, ymax + 8 * cell], "cell_size": cell},
         "materials": [{"name": "water", "model": "newtonian", "density": RHO, "bulk_modulus": RHO * (10 * v) ** 2,
-                       "viscosity": mu}],
+                       "viscosity": mu, "volume_relaxation": relax}],
         "bodies": [{"name": "stream", "material": "water", "particles_per_cell": 2,
                     "inflow": {"point": [X_IN, 0], "direction": [1, 0],
                                "hydrograph": {"time": [0, 0.05, end + 1], "depth": [0, H0, H0], "velocity": [v, v, v]}}}],
@@ -98,9 +98,9 @@ def bore_toe(x, vol):
     return (k + 1) * bw, d
 
 
-def run(fr, cell, threads, mu):
-    end, sc = scenario(fr, cell, mu)
-    name = "fr%g_h%g_mu%g_L%g" % (fr, cell, mu, L)
+def run(fr, cell, threads, mu, relax=0.0):
+    end, sc = scenario(fr, cell, mu, relax)
+    name = "fr%g_h%g_mu%g_L%g_r%g" % (fr, cell, mu, L, relax)
     out = os.path.join(TMP, name)
     r, wall = simulate(sc, out, threads)
     if r.returncode != 0:
@@ -135,13 +135,14 @@ def main():
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--length", type=float, default=L, help="channel length from the section to the wall (m)")
     ap.add_argument("--viscosity", type=float, default=1e-3, help="Pa s (water 1e-3; a slurry 1)")
+    ap.add_argument("--volume-relaxation", type=float, default=0.0, help="the water's volume_relaxation (0: off)")
     a = ap.parse_args()
     L = a.length
     print("| Fr | h (m) | peak alpha (jet) | alpha, bore state | spread of its thirds | bore theory | error | mean depth 0.1-0.4 m from the wall / h0 | theory H/h0 | toe speed (m/s) | theory c | wall (s) |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for fr in (float(x) for x in a.fr.split(",")):
         for cell in (float(x) for x in a.cells.split(",")):
-            r = run(fr, cell, a.threads, a.viscosity)
+            r = run(fr, cell, a.threads, a.viscosity, a.volume_relaxation)
             print("| %g | %g | %.2f | %.3f | %.3f | %.3f | %+.1f %% | %.2f | %.2f | %.3f | %.3f | %.0f |" % (
                 fr, cell, r["peak"], r["dyn"], r["spread"], r["alpha_th"], 100 * (r["dyn"] / r["alpha_th"] - 1), r["eta"], r["eta_th"],
                 r["speed"], r["c_th"], r["wall"]), flush=True)

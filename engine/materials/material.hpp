@@ -30,6 +30,9 @@ template <int D> class Material {
   // accumulated across particles, so disjoint sub-ranges may be updated concurrently and in any split with the
   // same result. The solver then updates stresses chunk by chunk inside G2P, while L and F are still in cache.
   virtual bool pointwise() const { return false; }
+  // For a fluid whose only state is its volume ratio J (F = J^(1/D) I): the time, in acoustic transits of a cell, over
+  // which J relaxes towards the space its particles fill (engine/mpm/fluid_volume.hpp); 0: not relaxed.
+  virtual double volume_relaxation() const { return 0.0; }
   // Stored (recoverable) strain energy of particles [begin, end) (J).
   virtual double strain_energy(const Particles<D>& p, Index begin, Index end) const = 0;
   // Energy dissipated since t = 0 (viscosity, plasticity) by all bodies of this material (J).

@@ -44,12 +44,13 @@ template <int D> class ViscousFluid final : public Material<D> {
   // newtonian: tau_y = 0 (the regularisation then has no effect).
   explicit ViscousFluid(const MaterialConfig& c)
       : rho_(c.density), K_(c.bulk_modulus), mu_(c.viscosity), tau_y_(c.model == "bingham" ? c.yield_stress : 0.0),
-        rate_c_(c.regularisation_rate) {
+        rate_c_(c.regularisation_rate), relax_(c.volume_relaxation) {
     if (!(rho_ > 0 && K_ > 0 && mu_ > 0 && tau_y_ >= 0 && (tau_y_ == 0 || rate_c_ > 0)))
       throw std::invalid_argument("material '" + c.name + "': " + c.model + " needs density, bulk_modulus, viscosity > 0, "
                                   "yield_stress >= 0 and regularisation_rate > 0");
   }
   double density() const override { return rho_; }
+  double volume_relaxation() const override { return relax_; }
   double wave_speed() const override { return std::sqrt(K_ / rho_); }
   double damping_time() const override { return (4.0 / 3.0) * max_viscosity() / K_; }
   void permute(const std::vector<Index>& perm) override { permute_array(power_, perm); }
@@ -97,6 +98,7 @@ template <int D> class ViscousFluid final : public Material<D> {
 
  private:
   double rho_, K_, mu_, tau_y_, rate_c_;  // kg/m^3, Pa, Pa s, Pa, 1/s
+  double relax_;                          // acoustic cell transits (engine/mpm/fluid_volume.hpp)
   std::vector<double> power_;             // W, by particle index
   double dissipated_ = 0;                 // J
 };

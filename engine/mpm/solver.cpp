@@ -32,6 +32,7 @@ template <int D> Solver<D>::Solver(Scene<D> scene) : scene_(std::move(scene)) {
       for (Index i = b.begin; i < b.end; ++i) scene_.particles.stress[i].setZero(), scene_.particles.stress_zz[i] = 0;
   if (scene_.frame) members_ = std::make_unique<MemberContact<D>>(*scene_.grid);
   if (scene_.options.implicit_damping && ImplicitViscosity<D>::needed(scene_)) viscosity_ = std::make_unique<ImplicitViscosity<D>>();
+  if (FluidVolumes<D>::needed(scene_)) fluid_ = std::make_unique<FluidVolumes<D>>();
   if (std::any_of(scene_.bodies.begin(), scene_.bodies.end(), [](const Body& b) { return b.rigid || b.rigid_when_free; }))
     rigid_ = std::make_unique<RigidBodies<D>>(scene_);
 }
@@ -71,6 +72,7 @@ template <int D> void Solver<D>::step(double dt) {
   // v_p, x_p, L_p, F_p (eqs. 13-14; MUSL remaps first), then per body its material law: inside G2P chunk by chunk
   // when every law is pointwise, else as a pass of its own.
   if (!grid_to_particles(dt)) update_stress(dt);
+  if (fluid_) fluid_->apply(scene_, *kernels_, dt);  // fluids' J towards the space their particles fill
   lap(kG2P);
   advance_members(dt);                         // stage 2: the frame under the reactions (eqs. 27-29 or Newmark)
   lap(kFrame);
@@ -404,6 +406,7 @@ template <int D> void Solver<D>::save_state(StateWriter& w) const {
   if (scene_.frame) scene_.frame->save_state(w);
   if (members_) members_->save_state(w);
   if (viscosity_) viscosity_->save_state(w); else w.put(0.0);  // load_state reads one or the other
+  if (fluid_) fluid_->save_state(w);
   if (rigid_) rigid_->save_state(w);
 }
 
@@ -440,6 +443,7 @@ template <int D> void Solver<D>::load_state(StateReader& r) {
   if (scene_.frame) scene_.frame->load_state(r);
   if (members_) members_->load_state(r);
   if (viscosity_) viscosity_->load_state(r); else r.get<double>();  // save_state writes 0 without one
+  if (fluid_) fluid_->load_state(r);
   if (rigid_) rigid_->load_state(r);
 }
 
@@ -454,6 +458,7 @@ template <int D> Diagnostics<D> Solver<D>::diagnostics() const {
   for (const auto& m : scene_.materials) d.dissipated += m->dissipated();
   d.dissipated += frozen_energy_;
   if (viscosity_) d.dissipated += viscosity_->dissipated();
+  if (fluid_) d.dissipated -= fluid_->added_energy();  // the volume relaxation's strain energy, as negative dissipation
   d.boundary_work = boundary_work_;
   for (const Inflow<D>& in : scene_.inflows) d.inflow_mass += in.mass, d.inflow_momentum += in.momentum, d.inflow_energy += in.energy;
   if (const auto* f = scene_.frame.get()) {

@@ -11,6 +11,7 @@
 #include "engine/mpm/scene.hpp"
 #include "engine/mpm/transfer.hpp"
 #include "engine/mpm/rigid.hpp"
+#include "engine/mpm/fluid_volume.hpp"
 #include "engine/mpm/viscous.hpp"
 
 namespace dmi {
@@ -116,6 +117,7 @@ template <int D> class Solver {
   std::unique_ptr<MemberContact<D>> members_;  // when the scene has a frame
   std::unique_ptr<ImplicitViscosity<D>> viscosity_;  // when a damped body is integrated implicitly
   std::unique_ptr<RigidBodies<D>> rigid_;            // when the scene has rigid bodies
+  std::unique_ptr<FluidVolumes<D>> fluid_;           // when a fluid relaxes its volumes
   double time_ = 0.0;
   long steps_ = 0;
   double boundary_work_ = 0.0;

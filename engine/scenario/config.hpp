@@ -59,6 +59,7 @@ struct MaterialConfig {
   double viscosity = 0.0;                                 // Pa s (newtonian, bingham)
   double yield_stress = 0.0;                              // Pa (bingham)
   double regularisation_rate = 0.01;                      // 1/s (bingham, Papanastasiou 1/m)
+  double volume_relaxation = 0.0;                         // acoustic cell transits (newtonian, bingham; 0 = off)
   double mu_s = 0.0, mu_2 = 0.0, inertial_I0 = 0.0;       // - (mu_i: Jop, Forterre & Pouliquen 2006)
   double grain_diameter = 0.0, grain_density = 2650.0;    // m, kg/m^3 (mu_i)
   double regularisation_alpha = 1.9;                      // - (mu_i: Barker & Gray 2017; 0 = none)

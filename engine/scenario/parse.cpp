@@ -109,6 +109,14 @@ void read_material(Obj& o, MaterialConfig& m) {
                                                             "sets the time step; take c >= 10x the fastest flow speed (about 1 % density error)", true));
     o.number("viscosity", m.viscosity, positive("Pa s", "dynamic (plastic, for bingham) viscosity mu: deviatoric stress s = 2 mu D'; "
                                                        "a large viscosity lowers the time step to about cfl h^2 density / (8/3 d mu) in d dimensions", true));
+    o.number("volume_relaxation", m.volume_relaxation,
+             Spec{.doc = "0 (default): the volume ratio J follows the velocity gradient alone. n > 0: each step J also relaxes "
+                         "towards the space the particles fill on the grid (their reference volumes at the nodes against the "
+                         "nodes' space in front of the walls) over n transits of sound across a cell (100 is a fair choice): a "
+                         "stopped or splashing stream then cannot pack more mass than its space holds (without it, 1.3-2.8x "
+                         "near a wall), but the fluid reads its density low within a cell or two of a free surface or of "
+                         "another body and carries less pressure there (docs/verification.md)",
+                  .min = 0});
   }
   o.end_when();
   if (o.when("model", m.model, "bingham")) {

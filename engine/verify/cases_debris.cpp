@@ -61,9 +61,10 @@ double time_at(const std::vector<double>& T, const std::vector<double>& Z, doubl
 // metric is the mean front speed dZ/dT between Z = 2 and Z = 4, which does not depend on the instant the
 // experiment's gate let the column go (the measured fronts trail any instant release by a delay of their own);
 // reference: the mean of the two sizes, tolerance: their difference (the experiment's own scatter).
-std::vector<CaseResult> dam_break() {
-  const CaseTimer timer;
-  const Scenario s = example_scenario("dam_break_water.json");
+// The water's volumes as the example keeps them (relax = 0) or relaxed towards the space they fill (materials[].volume_relaxation).
+double dam_break_front_speed(double relax) {
+  Scenario s = example_scenario("dam_break_water.json");
+  for (MaterialConfig& m : s.materials) m.volume_relaxation = relax;
   Solver<2> solver(build_scene<2>(s));
   const double a = 0.05715, h = s.grid.cell_size, dx = h / s.bodies[0].particles_per_cell, scale = std::sqrt(2 * 9.81 / a);
   std::vector<double> T{0.0}, Z{connected_front(solver.scene().particles, h, dx) / a};
@@ -71,6 +72,11 @@ std::vector<CaseResult> dam_break() {
     solver.step(solver.stable_time_step(s.analysis.end_time - solver.time()));
     T.push_back(solver.time() * scale), Z.push_back(connected_front(solver.scene().particles, h, dx) / a);
   }
+  return 2 / (time_at(T, Z, 4) - time_at(T, Z, 2));
+}
+
+std::vector<CaseResult> dam_break() {
+  const CaseTimer timer;
   const std::vector<double> T1{0.849, 1.212, 1.602, 2.283, 2.950, 3.598, 3.905, 4.592, 4.961, 5.316},  // a = 1.125 in
       Z1{1.245, 1.443, 1.884, 2.689, 3.728, 4.528, 4.999, 5.841, 6.271, 6.717};
   const std::vector<double> T2{0.832, 1.219, 1.997, 2.547, 3.345, 4.034, 4.418, 5.091},  // a = 2.25 in
@@ -79,7 +85,8 @@ std::vector<CaseResult> dam_break() {
   const double s1 = speed(T1, Z1), s2 = speed(T2, Z2), ref = 0.5 * (s1 + s2);
   std::vector<CaseResult> r;
   r.push_back(metric("dam_break", "front speed dZ/dT from Z = 2 to 4, n^2 = 2 (Martin & Moyce 1952; tolerance: their two column sizes' spread)",
-                     "-", speed(T, Z), ref, std::abs(s1 - s2) / ref));
+                     "-", dam_break_front_speed(0), ref, std::abs(s1 - s2) / ref));
+  r.push_back(metric("dam_break", "the same with the water's volume_relaxation 100", "-", dam_break_front_speed(100), ref, std::abs(s1 - s2) / ref));
   return stamp(r, timer.seconds());
 }
 
