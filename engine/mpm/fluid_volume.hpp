@@ -8,7 +8,7 @@
 // the space those nodes hold,
 //   J_grid,p = sum_i N_ip V_i / sum_i N_ip (sum_q N_iq V0_q),   V_i = integral of N_i over the space in front of the walls,
 // (the density-summation form of the equation of state, rho_p = rho0 / J_grid, as SPH takes rho = sum_q m_q W_pq,
-// Monaghan 1994; V_i = h^D away from walls), by J <- J (J_grid / J)^kappa, kappa = min(1, dt c0 / (n h)): over n
+// Monaghan 1992; V_i = h^D away from walls), by J <- J (J_grid / J)^kappa, kappa = min(1, dt c0 / (n h)): over n
 // acoustic cell transits, so the pressure noise of a density read from particle positions is filtered while a drift
 // that builds up over the flow's time is undone. The strain energy the relaxation changes, sum V0 (W(J') - W(J)), is
 // counted (added energy as negative dissipation) so that the energy balance stays closed and shows it.
