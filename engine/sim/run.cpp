@@ -187,6 +187,8 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
     info.numbers["steps_estimate"] = e.steps, info.numbers["wall_estimate_s"] = e.wall_s;
   }
 
+  // SIGINT and SIGTERM stop the run cleanly from before its partial results file exists.
+  const SignalGuard signals;
   std::unique_ptr<ResultsWriter> writer;
   const bool files = !o.out_dir.empty();
   std::string results_path, ckpt;
@@ -251,7 +253,6 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
     loop.dt_min = std::numeric_limits<double>::infinity(), loop.dt_max = 0, loop.courant_max = 0, loop.j_min = solver.min_jacobian();
   }
   Progress progress(o.progress, end, s.name);
-  const SignalGuard signals;
   const long first_step = solver.steps();
   double profile_time_step = 0, profile_recorder = 0;  // o.profile: stable_time_step; recorder, snapshots, progress
   solver.profile(o.profile);

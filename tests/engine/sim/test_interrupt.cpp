@@ -54,7 +54,12 @@ TEST(Interrupt, SigtermKeepsPartialHistoriesAndTheOlderCompleteResult) {
   j["analysis"]["end_time"] = 100.0;
   const fs::path long_run = dir / "long.json";
   std::ofstream(long_run) << j.dump();
+  ASSERT_FALSE(fs::exists(dir / "results.h5.partial"));
   pid = spawn({"simulate", long_run.string(), "-o", dir.string(), "-q"}, dir);
+  // Once the partial file exists the run handles the signal (its handlers come first); then let it step a while.
+  // Waiting for the file, not a fixed time: a program start takes seconds under a sanitizer on a loaded machine.
+  for (int k = 0; k < 1200 && !fs::exists(dir / "results.h5.partial"); ++k) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  ASSERT_TRUE(fs::exists(dir / "results.h5.partial"));
   std::this_thread::sleep_for(std::chrono::milliseconds(700));
   kill(pid, SIGTERM);
   waitpid(pid, &status, 0);
