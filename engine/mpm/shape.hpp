@@ -6,6 +6,7 @@
 //   bspline2: quadratic B-spline, S = 3/4 - r^2 (|r|<1/2), (3/2 - |r|)^2/2 (1/2<=|r|<3/2)
 #pragma once
 #include <cmath>
+#include <limits>
 
 #include "engine/common/types.hpp"
 
@@ -105,6 +106,29 @@ template <int D, class Shape> struct Stencil {
     g[0] = dwx[a] * W[r];
     for (int d = 1; d < D; ++d) g[d] = w[0][a] * dW[d - 1][r];
     return g;
+  }
+  // H = sum_i grad N_i grad N_i^T / N_i over the stencil (1/m^2), from the 1D factors: with A_d = sum_a w_d(a),
+  // B_d = sum_a w_d'(a) and C_d = sum_a w_d'(a)^2 / w_d(a), H_dd = C_d prod_(e != d) A_e and H_de = B_d B_e prod_(f != d, e)
+  // A_f (a node whose weight vanishes with its slope adds nothing; one whose slope does not makes H infinite).
+  Mat<D> inverse_weighted_slopes(double ih) const {
+    double A[D], B[D], C[D];
+    for (int d = 0; d < D; ++d) {
+      A[d] = B[d] = C[d] = 0;
+      for (int a = 0; a < K; ++a) {
+        const double s = dw[d][a] * ih;
+        A[d] += w[d][a], B[d] += s;
+        if (s != 0) C[d] += w[d][a] > 0 ? s * s / w[d][a] : std::numeric_limits<double>::infinity();
+      }
+    }
+    Mat<D> H;
+    for (int d = 0; d < D; ++d)
+      for (int e = 0; e < D; ++e) {
+        double v = d == e ? C[d] : B[d] * B[e];
+        for (int f = 0; f < D; ++f)
+          if (f != d && f != e) v *= A[f];
+        H(d, e) = v;
+      }
+    return H;
   }
   IVec<D> node(int r, int a) const {
     IVec<D> ijk;

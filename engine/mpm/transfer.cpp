@@ -29,17 +29,19 @@ template <int D, class Shape, bool SIMD> class Kernels final : public TransferKe
   }
 
   int stencils(const Scene<D>& s, Index begin, Index end, std::vector<Index>& node, std::vector<double>& weight,
-               std::vector<Vec<D>>& grad) const override {
+               std::vector<Vec<D>>& grad, std::vector<Mat<D>>* H) const override {
     const Grid<D>& g = *s.grid;
     const Particles<D>& P = s.particles;
     node.resize(static_cast<std::size_t>(end - begin) * St::NN);
     weight.resize(node.size()), grad.resize(node.size());
+    if (H) H->resize(static_cast<std::size_t>(end - begin));
     parallel_for(begin, end, [&](Index i) {
       St st;
       st.compute(P.x[i], P.half_size[i], g.origin(), g.inv_h());
       std::size_t k = static_cast<std::size_t>(i - begin) * St::NN;
       for (int r = 0; r < St::R; ++r)
         for (int a = 0; a < St::K; ++a, ++k) node[k] = g.node_id(st.node(r, a)), weight[k] = st.N(r, a), grad[k] = st.grad(r, a);
+      if (H) (*H)[static_cast<std::size_t>(i - begin)] = st.inverse_weighted_slopes(g.inv_h());
     });
     return St::NN;
   }

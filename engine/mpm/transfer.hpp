@@ -40,9 +40,10 @@ template <int D> class TransferKernels {
   // The stencils of particles [begin, end) for operators built outside the transfer (the implicit viscosity,
   // engine/mpm/viscous.hpp): NN = K^D entries per particle, node[k NN + n] the node's index in its field,
   // weight[k NN + n] its N and grad[k NN + n] its grad N (1/m), k = particle - begin. Entry n is the node base + (n's
-  // digits base K, axis 0 least significant). Returns NN.
+  // digits base K, axis 0 least significant). With H, also per particle sum_n grad N grad N^T / N (1/m^2; from the 1D
+  // factors, Stencil::inverse_weighted_slopes). Returns NN.
   virtual int stencils(const Scene<D>& s, Index begin, Index end, std::vector<Index>& node, std::vector<double>& weight,
-                       std::vector<Vec<D>>& grad) const = 0;
+                       std::vector<Vec<D>>& grad, std::vector<Mat<D>>* H = nullptr) const = 0;
   virtual void scatter_mass_position(const Scene<D>& s, const std::vector<Index>& tiles, std::vector<Vec<D>>& mx) const = 0;
 };
 

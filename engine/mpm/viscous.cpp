@@ -48,7 +48,7 @@ void ImplicitViscosity<D>::apply(Scene<D>& s, const TransferKernels<D>& kernels,
     if (!damped(b, a, bv)) continue;
     any = true;
     Stencils& st = stencils_[k];
-    st.nn = kernels.stencils(s, b.begin, b.end, st.node, st.weight, st.grad);
+    st.nn = kernels.stencils(s, b.begin, b.end, st.node, st.weight, st.grad, &st.H);
     const std::vector<Mat<D>>& old = *s.materials[b.material]->viscous_stress();
     const Index off = b.field * nn;
     // The bound on the fastest viscous rate: with H_p = sum_i grad N_ip grad N_ip^T / N_ip (D x D) and
@@ -58,26 +58,22 @@ void ImplicitViscosity<D>::apply(Scene<D>& s, const TransferKernels<D>& kernels,
     // u^T M u >= sum_p m_p W_p = sum_i |u_i|^2 sum_p N_ip m_p: lambda_max(M^-1 K_v) <= max_i sum_p N_ip q_p /
     // sum_p N_ip m_p, at each node a weighted mean of the q_p / m_p around it (at most their largest, the bound used
     // before). H_p is bounded where N vanishes as the square of the distance (quadratic B-splines: 4-6 / h^2 per axis;
-    // uGIMP), and grows near a nearly empty node of linear hats. The plain Cauchy-Schwarz bound on |L_p|^2 (tr H_p)
-    // read 4-5x the fastest rate on the buffered dam (power iteration), the spectral one about half that, per particle;
-    // stages go as the bound's square root.
+    // uGIMP), and grows near a nearly empty node of linear hats; the stencil sums it from its 1D factors (a few terms
+    // per axis instead of a product per entry). The plain Cauchy-Schwarz bound on |L_p|^2 (tr H_p) read 4-5x the
+    // fastest rate on the buffered dam (power iteration), the spectral one about half that, per particle; stages go
+    // as the bound's square root.
     if (rate_num_.size() != static_cast<std::size_t>(nn)) rate_num_.assign(static_cast<std::size_t>(nn), 0.0), rate_den_.assign(static_cast<std::size_t>(nn), 0.0);
     for (Index i = b.begin; i < b.end; ++i) {
       const std::size_t k0 = static_cast<std::size_t>(i - b.begin) * st.nn;
       const Mat<D> so = P.vol[i] * old[i];
-      Mat<D> H = Mat<D>::Zero();
-      bool finite = true;
-      for (int e = 0; e < st.nn; ++e) {
-        const Vec<D>& gr = st.grad[k0 + e];
-        g.f[off + st.node[k0 + e]] += so * gr;
-        if (!(gr.squaredNorm() > 0)) continue;
-        if (st.weight[k0 + e] > 0) H.noalias() += gr * gr.transpose() / st.weight[k0 + e]; else finite = false;
-      }
-      double top;
+      for (int e = 0; e < st.nn; ++e) g.f[off + st.node[k0 + e]] += so * st.grad[k0 + e];
+      const Mat<D>& H = st.H[static_cast<std::size_t>(i - b.begin)];
+      const bool finite = H.allFinite();
+      double top = 0;
       if constexpr (D == 2) {
         const double m = 0.5 * H.trace(), d = H.determinant();
-        top = m + std::sqrt(std::max(0.0, m * m - d));
-      } else {
+        if (finite) top = m + std::sqrt(std::max(0.0, m * m - d));
+      } else if (finite) {
         Eigen::SelfAdjointEigenSolver<Mat<D>> es;
         es.computeDirect(H, Eigen::EigenvaluesOnly);
         top = es.eigenvalues()(D - 1);
@@ -194,14 +190,14 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
   // One thread: both passes would run inline, and the scatter adds in the gather's order.
   serial_ = omp_get_max_threads() == 1 || (b.end - b.begin <= kParallelMin && static_cast<Index>(n) <= kParallelMin);
   if (!serial_) incidence(st);
-  for (auto* v : {&rhs_, &u_, &q_}) v->assign(n, Vec<D>::Zero());
+  for (auto* v : {&rhs_, &fe_, &u_, &q_}) v->assign(n, Vec<D>::Zero());
   free_.assign(n, Vec<D>::Ones());
   ties_.clear();
   for (std::size_t l = 0; l < n; ++l) {
     const Index k = off + nodes_[l];
     const double m = g.m[k];
     u_[l] = (g.p[k] + dt * g.f[k]) / m;  // v* (kept where held)
-    rhs_[l] = m * u_[l];
+    rhs_[l] = g.p[k], fe_[l] = g.f[k];   // the flow starts from the step's momentum and takes f_e as a constant force
     if (!probed_) continue;
     bool walled = false;  // held where a wall or region would change v*
     for (int c = 0; c < D; ++c)
@@ -214,8 +210,7 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
       const Index kb = f * nn + nodes_[l];
       if (f == b.field || !(g.m[kb] > mass_eps) || probe_[kb] == walled_[kb]) continue;  // partners are undamped: needed()
       ties_.push_back(Tie{kb, static_cast<int>(l), nrm});
-      const double mb = g.m[kb];
-      rhs_[l] += mb * vstar_[kb].dot(nrm) * nrm;
+      rhs_[l] += g.p[kb].dot(nrm) * nrm, fe_[l] += g.f[kb].dot(nrm) * nrm;
     }
   }
   for (const auto& [k, v] : held)
@@ -229,11 +224,11 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
     throw RunError("body '" + b.name + "': the bound on the fastest viscous rate is not finite (dt times it: " + std::to_string(z) +
                    "; a particle on a node line of linear shape functions): use shape_function bspline2 or gimp, or damping explicit");
   chebyshev(s, b, st, a, bv, dt, DampedChebyshev::stages_for(2 * z / pieces), pieces);
-  // f = f_e - K_v u, and the joined partners' momentum exchange along n: the partner reaches the normal velocity u.n,
-  // the damped field loses what it gains.
+  // q = mean K_v u - f_e (with the joined partners' f_e along n): f = -q less the partners' part, which their
+  // momentum exchange along n carries: the partner reaches the normal velocity u.n, the damped field loses what it gains.
   for (std::size_t l = 0; l < n; ++l) {
-    g.f[off + nodes_[l]] -= q_[l];
-    acc_k_.push_back(off + nodes_[l]), acc_f_.push_back(q_[l]);
+    g.f[off + nodes_[l]] -= q_[l] + fe_[l];
+    acc_k_.push_back(off + nodes_[l]), acc_f_.push_back(q_[l] + fe_[l]);
   }
   for (const Tie& c : ties_) {
     const Vec<D> fc = g.m[c.k] * (u_[c.l] - vstar_[c.k]).dot(c.n) * c.n / dt;
@@ -281,12 +276,16 @@ int DampedChebyshev::pieces_for(double z) {
   return 0;
 }
 
-// The viscous sub-step as the flow M' du/dt = -K_v u of the free components from u0 = M'^-1 (M v* + ties), held ones
-// fixed, by the damped Chebyshev recurrence (M' = M + the joined partners' m_B n n^T, per node). Written for the
-// forces, per piece h = dt / pieces: Y_j = Y_0 - h M'^-1 Q_j, Q_0 = 0, Q_1 = (w1 / w0) K Y_0, Q_j = mu_j Q_j-1 +
-// nu_j Q_j-2 + mu'_j K Y_j-1 with mu_j = 2 w0 T_j-1 / T_j, nu_j = -T_j-2 / T_j, mu'_j = 2 w1 T_j-1 / T_j (mu_j + nu_j =
-// 1), so that the pieces' mean of Q_s is the step's mean viscous force K_v u on every component, held ones included
-// (it reaches the wall or member there), and the free components' momentum change is exactly -dt times it.
+// The step as the flow M' du/dt = f_e - K_v u of the free components from u0 = M'^-1 (p + ties), the elastic force f_e
+// constant over it, held ones fixed, by the damped Chebyshev recurrence (M' = M + the joined partners' m_B n n^T, per
+// node). Written for the forces, per piece h = dt / pieces, with G(Y) = K Y - f_e: Y_j = Y_0 - h M'^-1 Q_j, Q_0 = 0,
+// Q_1 = (w1 / w0) G(Y_0), Q_j = mu_j Q_j-1 + nu_j Q_j-2 + mu'_j G(Y_j-1) with mu_j = 2 w0 T_j-1 / T_j, nu_j = -T_j-2 /
+// T_j, mu'_j = 2 w1 T_j-1 / T_j (mu_j + nu_j = 1), so that the pieces' mean of Q_s + f_e is the step's mean viscous
+// force K_v u on every component, held ones included (it reaches the wall or member there), and the free components'
+// momentum change is exactly -dt times the mean Q_s. A state where f_e and K_v u balance (a damped body creeping under
+// load) is a fixed point of every stage, so it is kept at any step; a kick of the whole step's f_e before the flow
+// (the earlier form) let the flow remove a part of it, an error of order dt lambda that at the rubber's CFL 0.5 read
+// the buffered dam's base shear 5-8 % low (docs/verification.md, "Rigid boulder").
 template <int D>
 void ImplicitViscosity<D>::chebyshev(Scene<D>& s, const Body& b, const Stencils& st, double a, double bv, double dt, int stages, int pieces) {
   const Grid<D>& g = *s.grid;
@@ -310,12 +309,12 @@ void ImplicitViscosity<D>::chebyshev(Scene<D>& s, const Body& b, const Stencils&
     y0_ = u_;
     q2_.assign(n, Vec<D>::Zero());
     operate(s, b, st, a, bv, u_, ky_);
-    for (std::size_t l = 0; l < n; ++l) q_[l] = (cs.w1 / cs.w0) * ky_[l];
+    for (std::size_t l = 0; l < n; ++l) q_[l] = (cs.w1 / cs.w0) * (ky_[l] - fe_[l]);
     for (int j = 2; j <= stages; ++j) {
       velocities(q_);
       operate(s, b, st, a, bv, u_, ky_);
       const double mu = 2 * cs.w0 * cs.T[j - 1] / cs.T[j], nu = -cs.T[j - 2] / cs.T[j], mu1 = 2 * cs.w1 * cs.T[j - 1] / cs.T[j];
-      for (std::size_t l = 0; l < n; ++l) q2_[l] = mu * q_[l] + nu * q2_[l] + mu1 * ky_[l];
+      for (std::size_t l = 0; l < n; ++l) q2_[l] = mu * q_[l] + nu * q2_[l] + mu1 * (ky_[l] - fe_[l]);
       std::swap(q_, q2_);
     }
     velocities(q_);

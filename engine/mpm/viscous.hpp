@@ -2,11 +2,11 @@
 // A damped body's stress is sigma = sigma_e + sigma_v, sigma_v = a tr(D) I + 2 b D (a = beta lambda, b = beta mu,
 // beta = zeta / (pi f)). Integrated explicitly, sigma_v cuts the stable step to (2/w)(sqrt(1 + zeta^2) - zeta),
 // zeta = beta w / 2, w = 2 sqrt(D) c / h: for strong damping h^2 / (2 D beta c^2), the viscous limit of the grid's
-// checkerboard modes, which falls as h^2. Here the viscous part is a sub-step after the explicit elastic one: from
-// the predictor v* = (p + dt f_e) / m the nodal velocities follow the viscous flow
-//   M du/dt = -K_v u,   K_v u = sum_p V_p sigma_v(D_p(u)) grad N_ip,   D_p(u) = sym(sum_i u_i (x) grad N_ip),
+// checkerboard modes, which falls as h^2. Here the nodal velocities of a damped body follow, from the step's
+// momentum p = M v, the flow under the elastic nodal force f_e held constant over the step,
+//   M du/dt = f_e - K_v u,   K_v u = sum_p V_p sigma_v(D_p(u)) grad N_ip,   D_p(u) = sym(sum_i u_i (x) grad N_ip),
 // per damped body over the nodes of its field for the step dt, and the step's viscous nodal force is the momentum it
-// removed, M (u - v*) / dt. f_e is P2G's nodal force less the viscous stress of the last update, which P2G scattered
+// removed, f_e - M (u - v) / dt. f_e is P2G's nodal force less the viscous stress of the last update, which P2G scattered
 // with the elastic one; the viscous force then joins it, so that members, walls and contact see one nodal force as
 // before. The flow is integrated by damped Chebyshev stages (DampedChebyshev: explicit and matrix-free, about
 // 2 sqrt(dt lambda_max) passes of the viscous operator, lambda_max bounded per particle), so the step stays the
@@ -84,6 +84,7 @@ template <int D> class ImplicitViscosity {
     std::vector<Index> node;   // per particle and entry: field-local node
     std::vector<double> weight;  // N
     std::vector<Vec<D>> grad;  // grad N
+    std::vector<Mat<D>> H;     // per particle sum grad N grad N^T / N (the rate bound)
     double lambda = 0;         // bound on lambda_max(M^-1 K_v) (1/s); grows as 1/N near a node line of linear hats
   };
   void chebyshev(Scene<D>& s, const Body& b, const Stencils& st, double a, double bv, double dt, int stages, int pieces);
@@ -96,7 +97,7 @@ template <int D> class ImplicitViscosity {
   std::vector<int> local_;          // field-local node -> unknown (-1: none)
   std::vector<int> entry_;          // per particle and entry: unknown (-1: none)
   std::vector<Index> nodes_;        // unknown -> field-local node
-  std::vector<Vec<D>> rhs_, u_, q_;
+  std::vector<Vec<D>> rhs_, fe_, u_, q_;  // M' Y_0 (momentum at t), f_e (joined along n at ties), Y, Q
   std::vector<Vec<D>> y0_, q2_, ky_, qsum_;  // Chebyshev: Y_0, Q_j-2, K Y_j-1, the mean force
   std::vector<Mat<D>> minv_;          // per unknown: M'^-1
   std::vector<Mat<D>> sv_;            // operate: per particle V_p sigma_v

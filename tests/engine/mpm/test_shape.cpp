@@ -1,5 +1,6 @@
 // Shape functions in 2D and 3D (the separable stencil the transfers walk): partition of unity, linear completeness
-// (sum N_i x_i = x_p) and gradient consistency (sum grad N_i = 0, sum grad N_i (x) x_i = I), and the derivative matches a finite difference.
+// (sum N_i x_i = x_p) and gradient consistency (sum grad N_i = 0, sum grad N_i (x) x_i = I), and the derivative matches a finite difference;
+// sum grad N_i grad N_i^T / N_i from the 1D factors equals the sum over the entries.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -35,6 +36,18 @@ template <int D, class Shape> void check_shape(double lp) {
       EXPECT_NEAR((first - x).norm(), 0.0, 1e-12);
       EXPECT_NEAR(grad.norm(), 0.0, 1e-12);
       EXPECT_NEAR((gx - Mat<D>::Identity()).norm(), 0.0, 1e-12);
+      // sum grad N grad N^T / N (the implicit viscosity's rate bound) from the 1D factors equals the sum over the
+      // entries; infinite in both where a node's weight vanishes but not its slope (linear hats on a node line).
+      Mat<D> H = Mat<D>::Zero();
+      bool finite = true;
+      for (int r = 0; r < st.R; ++r)
+        for (int k = 0; k < st.K; ++k)
+          if (const Vec<D> g = st.grad(r, k); g.squaredNorm() > 0) {
+            if (st.N(r, k) > 0) H += g * g.transpose() / st.N(r, k); else finite = false;
+          }
+      const Mat<D> Hs = st.inverse_weighted_slopes(inv_h);
+      EXPECT_EQ(Hs.allFinite(), finite) << "a " << a << " b " << b;
+      if (finite && Hs.allFinite()) EXPECT_LE((Hs - H).norm(), 1e-12 * H.norm()) << "a " << a << " b " << b;
       // Finite-difference check of grad N of each node along every axis (nodes fixed, particle moved).
       const double e = 1e-7;
       for (int d = 0; d < D; ++d) {

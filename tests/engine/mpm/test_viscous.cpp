@@ -96,6 +96,39 @@ TEST_P(DampedBar, DecaysAsTheClosedFormAtTheElasticStep) {
 }
 INSTANTIATE_TEST_SUITE_P(ImplicitViscosity, DampedBar, ::testing::Values("bspline2", "gimp", "linear"));
 
+// A strongly damped bar creeping under a constant load. Kelvin-Voigt damping proportional to the stiffness gives every
+// mode the same retardation time beta, so a bar loaded from rest creeps as u(t) = u_static (1 - exp(-t / beta)) up to
+// inertia, 1 / (beta omega_1)^2 = 6e-4 here. The fixed-free bar of bar_vibration.json (E 100 Pa, rho 1, nu 0, L 25 m,
+// first mode 0.1 Hz) under a body force 0.1 m/s^2 along it towards the support, beta = 63.7 s (zeta 1 at 0.005 Hz, 20
+// at the first mode):
+// the mean displacement u_static = rho g L^2 / (3 E) = 0.2083 m; at t = beta, 0.63212 of it. At the elastic step
+// (cfl 0.5, dt 0.025 s) the first mode's dt beta omega_1^2 is 0.63: a step that kicks the whole step's elastic force
+// before the viscous flow creeps at z / (e^z - 1) = 0.73 of the rate (0.52 at t = beta); the flow under the force
+// held constant creeps at the rate (error of order dt / beta = 4e-4). Tolerance 1 %: the grid's O(h^2) static error
+// (h / L = 0.02), inertia and the step. (Particles are reordered as they move: the mean is taken over all of them.)
+TEST(ImplicitViscosity, StronglyDampedBarCreepsAsTheClosedFormAtTheElasticStep) {
+  json j = json::parse(embedded_examples().at("bar_vibration.json"));
+  j["mpm"]["shape_function"] = "gimp";  // (quadratic B-splines at this stick wall: see docs/verification.md)
+  j["analysis"]["gravity"] = {-0.1, 0.0};
+  j["bodies"][0].erase("velocity_sine");
+  j["materials"][0]["damping_ratio"] = 1.0;
+  j["materials"][0]["damping_frequency"] = 0.005;
+  const double beta = 1.0 / (kPi * 0.005), u_static = 0.1 * 25.0 * 25.0 / (3 * 100.0);
+  Solver<2> s(build_scene<2>(parse_scenario(j, "creep.json")));
+  const std::vector<Vec<2>> x0 = s.scene().particles.x;
+  auto mean_displacement = [&] {
+    double m = 0, mu = 0;
+    const auto& P = s.scene().particles;
+    for (std::size_t i = 0; i < x0.size(); ++i) m += P.mass[i], mu += P.mass[i] * (P.x[i][0] - x0[i][0]);
+    return -mu / m;
+  };
+  while (s.time() < beta - 1e-9) s.step(s.stable_time_step(beta - s.time()));
+  EXPECT_NEAR(mean_displacement() / u_static, 1 - std::exp(-1.0), 0.01 * (1 - std::exp(-1.0)));
+  EXPECT_LT(s.steps(), 3000);  // the elastic step (h 0.5 m, c 10 m/s, cfl 0.5): 2 548 steps; explicit ~6 million
+  ASSERT_NE(s.viscosity(), nullptr);
+  EXPECT_EQ(s.viscosity()->stats().steps, s.steps());
+}
+
 // A strongly damped disk meets an elastic one without walls or gravity: the viscous forces are internal
 // (sum_i grad N_ip = 0) and the contact partner joins the solve by exchanging momentum, so momentum is conserved to
 // round-off, no energy is created, the collision is damped, and the step is the elastic one.

@@ -224,7 +224,7 @@ TEST(Presets, SteelOpenDamInThreeDimensions) {
 }
 
 // A homogenised buffer in 3D: a box on the vertical face across the whole crest, bonded to the member; the boulder
-// against it rigid (the preset's auto model) at CFL 0.125, starting 2 cells before the buffer's front.
+// against it rigid (the preset's auto model) at CFL 0.25, starting 2 cells before the buffer's front.
 TEST(Presets, TyreBufferInThreeDimensions) {
   const json j = json::parse(R"({"schema_version": 1, "name": "b3", "analysis": {"dimension": 3},
     "dam": {"type": "concrete_gravity", "height": 4, "crest_thickness": 1.0, "base_thickness": 1.6, "width": 2.0},
@@ -240,7 +240,7 @@ TEST(Presets, TyreBufferInThreeDimensions) {
   EXPECT_TRUE(boulder["rigid"].get<bool>());
   const double R = std::cbrt(3 * 1000 / (4 * kPi * 2650)), h = low["grid"]["cell_size"];
   EXPECT_NEAR(boulder["shape"]["center"][0].get<double>(), -0.3 - R - 2 * h, 1e-11);
-  EXPECT_DOUBLE_EQ(low["analysis"]["cfl"].get<double>(), 0.125);
+  EXPECT_DOUBLE_EQ(low["analysis"]["cfl"].get<double>(), 0.25);
   // The damping frequency of the buffer: k = E pi r^2 / t against the boulder's mass (2 MPa, 0.3 m).
   const json& m = named(low["materials"], "tyre_buffer");
   EXPECT_NEAR(m["damping_frequency"].get<double>(), std::sqrt(2e6 * kPi * R * R / 0.3 / 1000) / (2 * kPi), 1e-9);
