@@ -45,6 +45,25 @@ template <int D> Vec<D> constrain(const Vec<D>& v, const Vec<D>& n, WallConditio
 
 bool unilateral(const WallCondition c) { return c == WallCondition::slip || c == WallCondition::friction; }
 
+}  // namespace
+
+template <int D> bool wall_mirror(const Grid<D>& g, const Wall<D>& w, Index id, Index& image, Mat<D>& S) {
+  const bool bilateral = w.condition == WallCondition::stick || w.condition == WallCondition::roller;
+  if (!bilateral || w.box || w.mirror_axis < 0) return false;
+  Vec<D> n;
+  if (!wall_normal(w, g.node_pos(id), 1e-9 * g.h(), n)) return false;
+  IVec<D> ijk = g.node_ijk(id);
+  const int a = w.mirror_axis;
+  if (ijk[a] == w.mirror_index) return false;
+  ijk[a] = 2 * w.mirror_index - ijk[a];
+  if (ijk[a] < 0 || ijk[a] >= g.nodes()[a]) return false;
+  image = g.node_id(ijk);
+  S = w.condition == WallCondition::stick ? Mat<D>(-Mat<D>::Identity()) : Mat<D>(Mat<D>::Identity() - 2 * n * n.transpose());
+  return true;
+}
+
+namespace {
+
 // Signed distance from the wall to the nearest point of particle i's domain (negative: it overlaps the wall), and
 // the wall's outward normal there.
 template <int D> double surface_gap(const Wall<D>& w, const Particles<D>& P, Index i, Vec<D>& n) {
@@ -103,7 +122,7 @@ template <int D>
 double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double time, bool record, bool reset, const std::vector<Index>* nodes) {
   Grid<D>& g = *s.grid;
   if (record && reset) {
-    for (auto& w : s.walls) w.force.setZero();
+    for (auto& w : s.walls) w.force = w.carried, w.carried.setZero();
     for (auto& r : s.regions) r.force.setZero();
     for (auto& in : s.inflows) in.force.setZero();
   }
@@ -129,22 +148,12 @@ double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double
         if (surface && !w.touch.engaged(k)) continue;
         const Vec<D> before = vel[k];
         vel[k] = constrain(before, n, w.condition, w.friction);
-        const bool bilateral = w.condition == WallCondition::stick || w.condition == WallCondition::roller;
         bool mirrored = false;
-        if (bilateral && w.mirror_axis >= 0) {
-          IVec<D> ijk = g.node_ijk(id);
-          const int a = w.mirror_axis;
-          if (ijk[a] != w.mirror_index) {
-            ijk[a] = 2 * w.mirror_index - ijk[a];
-            if (ijk[a] >= 0 && ijk[a] < g.nodes()[a]) {
-              const Index km = fld * nn + g.node_id(ijk);
-              if (g.m[km] > 0) {  // odd reflection of the free node's velocity (normal part only for a roller)
-                const Vec<D> vm = vel[km];
-                vel[k] = w.condition == WallCondition::stick ? Vec<D>(-vm) : Vec<D>(vm - 2 * vm.dot(n) * n);
-                mirrored = true;
-              }
-            }
-          }
+        Index image;
+        Mat<D> S;
+        if (wall_mirror(g, w, id, image, S) && g.m[fld * nn + image] > 0) {  // the image's velocity, reflected
+          vel[k] = S * vel[fld * nn + image];
+          mirrored = true;
         }
         if (record) {
           const Vec<D> dp = m * (vel[k] - before);
@@ -355,6 +364,8 @@ void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel, bool fronts, const std:
   });
 }
 
+template bool wall_mirror<2>(const Grid<2>&, const Wall<2>&, Index, Index&, Mat<2>&);
+template bool wall_mirror<3>(const Grid<3>&, const Wall<3>&, Index, Index&, Mat<3>&);
 template void wall_touch<2>(Scene<2>&);
 template void wall_touch<3>(Scene<3>&);
 template void keep_in_front_of_walls<2>(Scene<2>&, Index, Index);

@@ -23,6 +23,11 @@ template <int D>
 double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double time, bool record, bool reset = true,
                         const std::vector<Index>* nodes = nullptr);
 
+// A bilateral plane wall on a grid line (Wall::mirror_axis) gives a node behind it the velocity of its image in front,
+// S v_image, S = -I (stick: the velocity is odd about the plane) or I - 2 n n^T (roller: its normal part is). False
+// when node id is not behind such a wall or its image is off the grid; apply_boundaries uses it where the image has mass.
+template <int D> bool wall_mirror(const Grid<D>& g, const Wall<D>& w, Index id, Index& image, Mat<D>& S);
+
 // Particles (of deformable bodies) whose centre has passed a plane wall are put back on its plane: positions only,
 // so momentum, energy and the deformation gradient are untouched. The walls act on nodes; where material presses
 // into a corner, the velocity interpolated to the particles next to it kept a part into the wall and they crept

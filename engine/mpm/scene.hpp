@@ -49,6 +49,9 @@ template <int D> struct Wall {
   // inside it (wide stencils: GIMP, B-splines). Keeps second-order convergence at fixed ends.
   int mirror_axis = -1;
   int mirror_index = 0;
+  // Force on the wall found before the grid update (the implicit viscosity's mirrored pairs, engine/mpm/viscous.hpp):
+  // the step's recorded force starts from it.
+  Vec<D> carried = Vec<D>::Zero();
   // Unilateral walls (slip, friction) with surface detection hold only the nodes engaged by particles touching
   // the wall (engine/mpm/touch.hpp; wall_touch in boundary.hpp fills touch each step). Node detection: every node
   // on or behind the wall that has mass.

@@ -192,7 +192,7 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
   if (!serial_) incidence(st);
   for (auto* v : {&rhs_, &fe_, &u_, &q_}) v->assign(n, Vec<D>::Zero());
   free_.assign(n, Vec<D>::Ones());
-  ties_.clear();
+  ties_.clear(), slaves_.clear(), walled_node_.assign(n, 0), master_of_.assign(n, 0);
   for (std::size_t l = 0; l < n; ++l) {
     const Index k = off + nodes_[l];
     const double m = g.m[k];
@@ -202,6 +202,7 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
     bool walled = false;  // held where a wall or region would change v*
     for (int c = 0; c < D; ++c)
       if (walled_[k][c] != vstar_[k][c]) free_[l][c] = 0, u_[l][c] = walled_[k][c], walled = true;
+    walled_node_[l] = walled;
     if (walled || !detected_) continue;
     const Vec<D> dv = probe_[k] - walled_[k];  // body contact would change the damped field: join its partners along n
     if (!(dv.squaredNorm() > 0)) continue;
@@ -215,7 +216,30 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
   }
   for (const auto& [k, v] : held)
     if (k >= off && k < off + nn)
-      if (const int l = local_[k - off]; l >= 0) free_[l].setZero(), u_[l] = v;
+      if (const int l = local_[k - off]; l >= 0) free_[l].setZero(), u_[l] = v, walled_node_[l] = 0;
+  // A node that a bilateral wall gives the velocity of its image in front (wall_mirror) follows that image through
+  // the flow, u_l = S u_image: it is no unknown of its own, its mass, momentum, f_e and K_v rows join the image's
+  // (M' += m_l S^T S = m_l, Galerkin: the bound on the rate still holds). Held at v*'s image instead, it pulled the
+  // material at a stick wall away from it in a growing mode (quadratic B-splines reach the nodes behind the wall).
+  // Only where the image is free and has no contact ties; otherwise it stays held.
+  // Only where the image is free, has no contact ties and no other such node (a corner's); otherwise it stays held.
+  if (probed_)
+    for (std::size_t l = 0; l < n; ++l) {
+      if (!walled_node_[l]) continue;
+      for (std::size_t w = 0; w < s.walls.size(); ++w) {
+        Index image;
+        Mat<D> S;
+        if (!wall_mirror(g, s.walls[w], nodes_[l], image, S)) continue;
+        const int mst = local_[image];
+        if (mst >= 0 && !master_of_[static_cast<std::size_t>(mst)] && free_[static_cast<std::size_t>(mst)] == Vec<D>::Ones() &&
+            std::none_of(ties_.begin(), ties_.end(), [&](const Tie& t) { return t.l == mst; })) {
+          slaves_.push_back(Slave{static_cast<int>(l), mst, static_cast<int>(w), S});
+          master_of_[static_cast<std::size_t>(mst)] = 1;
+        }
+        break;
+      }
+    }
+  for (const Slave& sl : slaves_) rhs_[sl.master] += sl.S.transpose() * rhs_[sl.l], fe_[sl.master] += sl.S.transpose() * fe_[sl.l];
   // The viscous sub-step by damped Chebyshev stages, as many as the bound on the fastest rate asks, in more pieces of
   // the step when one half-step would need more than kMaxStages (a nearly empty node under linear shape functions).
   const double z = dt * st.lambda;
@@ -226,7 +250,20 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
   chebyshev(s, b, st, a, bv, dt, DampedChebyshev::stages_for(2 * z / pieces), pieces);
   // q = mean K_v u - f_e (with the joined partners' f_e along n): f = -q less the partners' part, which their
   // momentum exchange along n carries: the partner reaches the normal velocity u.n, the damped field loses what it gains.
+  // A mirrored pair (image I, node l behind the wall): q_l and f_e,l are l's own, q_I and f_e,I the pair's (joined). l
+  // keeps its own force -q_l, which the wall then turns into u_l = S u_I and records; I takes its momentum change
+  // (m_I u_I - p_I) / dt, which exceeds its own force f_e,I - K_v u_I by a part of the wall's reaction carried by
+  // the joined mass: recorded with the wall's force of the step (Wall::carried).
+  for (const Slave& sl : slaves_) {
+    const auto l = static_cast<std::size_t>(sl.l), i = static_cast<std::size_t>(sl.master);
+    const Index k = off + nodes_[i];
+    const Vec<D> own = q_[i] - sl.S.transpose() * q_[l], fi = (g.m[k] * u_[i] - g.p[k]) / dt;  // own: K_v u_I - f_e,I
+    s.walls[static_cast<std::size_t>(sl.wall)].carried -= fi + own;
+    acc_k_.push_back(k), acc_f_.push_back(own + g.f[k]);
+    g.f[k] = fi;
+  }
   for (std::size_t l = 0; l < n; ++l) {
+    if (master_of_[l]) continue;
     g.f[off + nodes_[l]] -= q_[l] + fe_[l];
     acc_k_.push_back(off + nodes_[l]), acc_f_.push_back(q_[l] + fe_[l]);
   }
@@ -294,25 +331,35 @@ void ImplicitViscosity<D>::chebyshev(Scene<D>& s, const Body& b, const Stencils&
   minv_.resize(n);
   for (std::size_t l = 0; l < n; ++l) minv_[l] = g.m[off + nodes_[l]] * Mat<D>::Identity();
   for (const Tie& c : ties_) minv_[static_cast<std::size_t>(c.l)] += g.m[c.k] * c.n * c.n.transpose();
+  for (const Slave& sl : slaves_) minv_[static_cast<std::size_t>(sl.master)] += g.m[off + nodes_[static_cast<std::size_t>(sl.l)]] * Mat<D>::Identity();
   for (std::size_t l = 0; l < n; ++l) {
     minv_[l] = minv_[l].inverse().eval();
     for (int c = 0; c < D; ++c)
       if (free_[l][c] != 0) u_[l][c] = (minv_[l] * rhs_[l])[c];
   }
+  auto follow = [&] {  // mirrored nodes take their image's velocity
+    for (const Slave& sl : slaves_) u_[static_cast<std::size_t>(sl.l)] = sl.S * u_[static_cast<std::size_t>(sl.master)];
+  };
+  auto operate_joined = [&] {  // ky = K_v u, a mirrored node's rows joined to its image's
+    operate(s, b, st, a, bv, u_, ky_);
+    for (const Slave& sl : slaves_) ky_[static_cast<std::size_t>(sl.master)] += sl.S.transpose() * ky_[static_cast<std::size_t>(sl.l)];
+  };
+  follow();
   const DampedChebyshev cs(stages);
   const double h = dt / pieces;  // an even number of pieces: R_s(z/p)^p >= 0 (DampedChebyshev)
   auto velocities = [&](const std::vector<Vec<D>>& Q) {  // Y = Y_0 - h M'^-1 Q on the free components
     for (std::size_t l = 0; l < n; ++l) u_[l] = y0_[l] - h * free_[l].cwiseProduct(minv_[l] * Q[l]);
+    follow();
   };
   qsum_.assign(n, Vec<D>::Zero()), ky_.assign(n, Vec<D>::Zero()), q_.resize(n);
   for (int piece = 0; piece < pieces; ++piece) {
     y0_ = u_;
     q2_.assign(n, Vec<D>::Zero());
-    operate(s, b, st, a, bv, u_, ky_);
+    operate_joined();
     for (std::size_t l = 0; l < n; ++l) q_[l] = (cs.w1 / cs.w0) * (ky_[l] - fe_[l]);
     for (int j = 2; j <= stages; ++j) {
       velocities(q_);
-      operate(s, b, st, a, bv, u_, ky_);
+      operate_joined();
       const double mu = 2 * cs.w0 * cs.T[j - 1] / cs.T[j], nu = -cs.T[j - 2] / cs.T[j], mu1 = 2 * cs.w1 * cs.T[j - 1] / cs.T[j];
       for (std::size_t l = 0; l < n; ++l) q2_[l] = mu * q_[l] + nu * q2_[l] + mu1 * (ky_[l] - fe_[l]);
       std::swap(q_, q2_);

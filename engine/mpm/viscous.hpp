@@ -112,6 +112,12 @@ template <int D> class ImplicitViscosity {
     Vec<D> n;  // contact normal
   };
   std::vector<Tie> ties_;
+  struct Slave {
+    int l, master, wall;  // an unknown behind a bilateral wall on a grid line, its image in front (u_l = S u_master)
+    Mat<D> S;
+  };
+  std::vector<Slave> slaves_;
+  std::vector<char> walled_node_, master_of_;  // per unknown: held by a wall; the image of a mirrored node
   Stats stats_;
   bool probed_ = false, detected_ = false;
   bool serial_ = false;             // this step's operate(): one scatter pass (one thread), else two parallel passes

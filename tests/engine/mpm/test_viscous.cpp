@@ -106,9 +106,14 @@ INSTANTIATE_TEST_SUITE_P(ImplicitViscosity, DampedBar, ::testing::Values("bsplin
 // before the viscous flow creeps at z / (e^z - 1) = 0.73 of the rate (0.52 at t = beta); the flow under the force
 // held constant creeps at the rate (error of order dt / beta = 4e-4). Tolerance 1 %: the grid's O(h^2) static error
 // (h / L = 0.02), inertia and the step. (Particles are reordered as they move: the mean is taken over all of them.)
-TEST(ImplicitViscosity, StronglyDampedBarCreepsAsTheClosedFormAtTheElasticStep) {
+// The stick wall lies on a grid line, so the nodes behind it take their images' velocities reflected (wall_mirror);
+// quadratic B-splines reach them from the first cell. Held at v*'s image through the viscous flow, they drove a mode
+// that pulled the material off the wall, growing 2.4 % a step from t ~ 2 s (the mean displacement turned negative);
+// they now follow their images through it.
+class DampedCreep : public ::testing::TestWithParam<const char*> {};
+TEST_P(DampedCreep, StronglyDampedBarCreepsAsTheClosedFormAtTheElasticStep) {
   json j = json::parse(embedded_examples().at("bar_vibration.json"));
-  j["mpm"]["shape_function"] = "gimp";  // (quadratic B-splines at this stick wall: see docs/verification.md)
+  j["mpm"]["shape_function"] = GetParam();
   j["analysis"]["gravity"] = {-0.1, 0.0};
   j["bodies"][0].erase("velocity_sine");
   j["materials"][0]["damping_ratio"] = 1.0;
@@ -128,6 +133,7 @@ TEST(ImplicitViscosity, StronglyDampedBarCreepsAsTheClosedFormAtTheElasticStep) 
   ASSERT_NE(s.viscosity(), nullptr);
   EXPECT_EQ(s.viscosity()->stats().steps, s.steps());
 }
+INSTANTIATE_TEST_SUITE_P(ImplicitViscosity, DampedCreep, ::testing::Values("gimp", "bspline2"));
 
 // A strongly damped disk meets an elastic one without walls or gravity: the viscous forces are internal
 // (sum_i grad N_ip = 0) and the contact partner joins the solve by exchanging momentum, so momentum is conserved to
