@@ -240,10 +240,14 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
       }
     }
   for (const Slave& sl : slaves_) rhs_[sl.master] += sl.S.transpose() * rhs_[sl.l], fe_[sl.master] += sl.S.transpose() * fe_[sl.l];
-  // The viscous sub-step by damped Chebyshev stages, as many as the bound on the fastest rate asks, in more pieces of
-  // the step when one half-step would need more than kMaxStages (a nearly empty node under linear shape functions).
+  // The viscous sub-step by damped Chebyshev stages, as many as the bound on the fastest rate asks: in one piece where
+  // the body's elastic Courant number keeps (omega_max dt)^2 <= 1 (DampedChebyshev::one_piece), else in two half-steps,
+  // or more pieces when one half-step would need more than kMaxStages (a nearly empty node under linear shape functions).
   const double z = dt * st.lambda;
-  const int pieces = DampedChebyshev::pieces_for(z);
+  double vmax = 0;
+  for (Index i = b.begin; i < b.end; ++i) vmax = std::max(vmax, s.particles.v[i].norm());
+  const double omega_dt = 2 * std::sqrt(static_cast<double>(D)) * (s.materials[b.material]->wave_speed() + vmax) * dt / g.h();
+  const int pieces = DampedChebyshev::one_piece(omega_dt) && DampedChebyshev::stages_for(2 * z) > 0 ? 1 : DampedChebyshev::pieces_for(z);
   if (pieces == 0)
     throw RunError("body '" + b.name + "': the bound on the fastest viscous rate is not finite (dt times it: " + std::to_string(z) +
                    "; a particle on a node line of linear shape functions): use shape_function bspline2 or gimp, or damping explicit");
@@ -305,6 +309,8 @@ int DampedChebyshev::stages_for(double z) {
     if (DampedChebyshev(s).beta() >= need) return s;
   return 0;
 }
+
+bool DampedChebyshev::one_piece(double omega_dt) { return omega_dt * omega_dt <= 1.0; }
 
 int DampedChebyshev::pieces_for(double z) {
   if (!(z < std::numeric_limits<double>::infinity())) return 0;

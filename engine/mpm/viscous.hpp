@@ -25,9 +25,13 @@ namespace dmi {
 // Houwen & Sommeijer 1980; Verwer, Hundsdorfer & Sommeijer 1990): R_s(z) = T_s(w0 - w1 z) / T_s(w0) for the decay
 // rate z = dt lambda, w0 = 1 + eps / s^2, w1 = T_s(w0) / T_s'(w0), so that R_s = 1 - z + O(z^2) and |R_s| <= 1 / T_s(w0)
 // on [0, beta_s], beta_s = (1 + w0) / w1. eps = 2 damps every mode of that interval at least to 1 / cosh 2 = 0.27
-// (the exact flow removes the grid's stiff modes; eps = 0 would keep them) at beta_s ~ 0.96 s^2. A step is two
-// half-steps (or 4, 8, ... pieces), R_s(z / 2)^2 >= 0: a negative factor on the velocity of a stiff mode, combined with the explicit
-// elastic update, grows it (symplectic Euler with x' = x + dt v: trace 1 + R (1 - dt^2 w^2) exceeds 1 + R for R < 0).
+// (the exact flow removes the grid's stiff modes; eps = 0 would keep them) at beta_s ~ 0.96 s^2. With the elastic force
+// f = -w^2 x held over the flow, a mode of decay rate z and a = (w dt)^2 steps as v' = R v - (1 - R) a / z (x / dt),
+// x' = x + dt v' (symplectic Euler; a fixed point where f balances the viscous force): determinant R, trace
+// 1 + R - (1 - R) a / z, stable while (1 - R) a / z <= 2 (1 + R). On [0, z_1] (z_1 the first root of R_s, >= 1)
+// R >= 1 - z >= 0 and this is a <= 2 (1 + R); beyond it R >= -1/T_s(w0) >= -1/3, and it holds for a <= 1 at every s
+// (tested). So one piece where the body's elastic Courant number keeps a <= 1 (one_piece); elsewhere a step is two
+// half-steps (or 4, 8, ... pieces), R_s(z / 2)^2 >= 0, for which it is the explicit elastic limit a <= 4.
 struct DampedChebyshev {
   static constexpr double kDamping = 2.0;
   static constexpr int kMaxStages = 200;  // per half-step; beyond, the step is cut in more pieces (pieces_for)
@@ -43,6 +47,8 @@ struct DampedChebyshev {
   // The fewest pieces of the step (2, 4, 8, ...; each by stages_for(2 z / pieces) stages) that keep the stages within
   // kMaxStages; 0 when z is not finite.
   static int pieces_for(double z);
+  // Whether the step may be one piece: the fastest elastic mode's w dt (2 sqrt(D) (c + |v|) dt / h) at most 1.
+  static bool one_piece(double omega_dt);
 };
 
 template <int D> class ImplicitViscosity {

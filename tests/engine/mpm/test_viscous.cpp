@@ -73,6 +73,25 @@ TEST(DampedChebyshev, StableNonNegativeDampedAndFirstOrder) {
   EXPECT_EQ(DampedChebyshev::pieces_for(std::numeric_limits<double>::infinity()), 0);
 }
 
+// One piece per step: with the elastic force held over the flow a mode of decay rate z and a = (w dt)^2 is stable while
+// (1 - R) a / z <= 2 (1 + R) (viscous.hpp). For every stage count and every z its interval holds, at a = 1 (the most
+// DampedChebyshev::one_piece allows); it fails at a = 1.5 somewhere (the margin is not vacuous).
+TEST(DampedChebyshev, OnePieceIsStableWhereTheElasticStepKeepsOmegaDtAtMostOne) {
+  EXPECT_TRUE(DampedChebyshev::one_piece(1.0));
+  EXPECT_FALSE(DampedChebyshev::one_piece(1.001));
+  bool fails_wider = false;
+  for (int s = 1; s <= DampedChebyshev::kMaxStages; ++s) {
+    const DampedChebyshev c(s);
+    for (int k = 1; k <= 4000; ++k) {
+      const double z = c.beta() * k / 4000, r = c.amplification(z);
+      ASSERT_GE(r, -1.0 / 3 - 1e-12) << "s " << s << " z " << z;
+      ASSERT_LE((1 - r) * 1.0 / z, 2 * (1 + r) + 1e-12) << "s " << s << " z " << z;
+      fails_wider |= (1 - r) * 1.5 / z > 2 * (1 + r);
+    }
+  }
+  EXPECT_TRUE(fails_wider);
+}
+
 // The fixed-free bar (first mode 0.1 Hz) with zeta = 0.05 at its own frequency: the mode's energy decays as
 // exp(-2 zeta omega t). Explicitly the viscous step (beta = 0.16 s, h = 0.5 m, c = 10 m/s) is ~13x below the
 // elastic one; implicitly the step is the elastic one and the decay the same (within the 5 % the validate case
