@@ -221,7 +221,6 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
   // the flow, u_l = S u_image: it is no unknown of its own, its mass, momentum, f_e and K_v rows join the image's
   // (M' += m_l S^T S = m_l, Galerkin: the bound on the rate still holds). Held at v*'s image instead, it pulled the
   // material at a stick wall away from it in a growing mode (quadratic B-splines reach the nodes behind the wall).
-  // Only where the image is free and has no contact ties; otherwise it stays held.
   // Only where the image is free, has no contact ties and no other such node (a corner's); otherwise it stays held.
   if (probed_)
     for (std::size_t l = 0; l < n; ++l) {
@@ -352,7 +351,7 @@ void ImplicitViscosity<D>::chebyshev(Scene<D>& s, const Body& b, const Stencils&
   };
   follow();
   const DampedChebyshev cs(stages);
-  const double h = dt / pieces;  // an even number of pieces: R_s(z/p)^p >= 0 (DampedChebyshev)
+  const double h = dt / pieces;  // one piece, or an even number: R_s(z/p)^p >= 0 (DampedChebyshev)
   auto velocities = [&](const std::vector<Vec<D>>& Q) {  // Y = Y_0 - h M'^-1 Q on the free components
     for (std::size_t l = 0; l < n; ++l) u_[l] = y0_[l] - h * free_[l].cwiseProduct(minv_[l] * Q[l]);
     follow();
