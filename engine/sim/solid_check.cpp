@@ -76,19 +76,16 @@ std::pair<std::vector<double>, std::vector<double>> contact_profile(const json& 
   return {z, q};
 }
 
-json stress_peaks(const Model& m, const Eigen::VectorXd& u) {
-  const StressField field = recover_stress(m.mesh, m.mat, u);
+json stress_peaks(const Model& m, const StressField& field) {
   json out = json::object();
-  const std::pair<Measure, const char*> measures[] = {
-      {Measure::von_mises, "von_mises"}, {Measure::max_principal, "max_principal"}, {Measure::min_principal, "min_principal"}, {Measure::max_shear, "max_shear"}};
-  for (const auto& [ms, key] : measures) {
-    json at = json::object();
-    for (const auto& [loc, where] : {std::pair{Location::gauss, "gauss"}, std::pair{Location::centroid, "centroid"}, std::pair{Location::node, "node"}}) {
-      const Peak p = peak(field, ms, loc);
-      const Eigen::VectorXd x = point_coordinates(m.mesh, loc, p.index);
-      at[where] = {{"value_Pa", measure(field.at(loc)[p.index], ms)}, {"location_m", std::vector<double>(x.data(), x.data() + x.size())}};
+  const std::vector<Measure> ms = {Measure::von_mises, Measure::max_principal, Measure::min_principal, Measure::max_shear};
+  const char* keys[] = {"von_mises", "max_principal", "min_principal", "max_shear"};
+  for (const auto& [loc, where] : {std::pair{Location::gauss, "gauss"}, std::pair{Location::centroid, "centroid"}, std::pair{Location::node, "node"}}) {
+    const std::vector<Peak> pk = peaks(field, ms, loc);
+    for (std::size_t k = 0; k < ms.size(); ++k) {
+      const Eigen::VectorXd x = point_coordinates(m.mesh, loc, pk[k].index);
+      out[keys[k]][where] = {{"value_Pa", measure(field.at(loc)[pk[k].index], ms[k])}, {"location_m", std::vector<double>(x.data(), x.data() + x.size())}};
     }
-    out[key] = at;
   }
   return out;
 }
@@ -125,8 +122,7 @@ double sig6(double v) {
   return std::round(v * p) / p;
 }
 
-json field_case(const Model& m, const std::string& name, const Eigen::VectorXd& u) {
-  const StressField field = recover_stress(m.mesh, m.mat, u);
+json field_case(const std::string& name, const Eigen::VectorXd& u, const StressField& field) {
   json vm = json::array(), s1 = json::array(), du = json::array();
   for (const Stress6& st : field.nodal) vm.push_back(sig6(measure(st, Measure::von_mises))), s1.push_back(sig6(measure(st, Measure::max_principal)));
   for (Eigen::Index k = 0; k < u.size(); ++k) du.push_back(sig6(u[k]));
@@ -208,12 +204,13 @@ SolidCheckDocuments run_solid_check(const Scenario& s, const std::string& peak_c
     for (int n = 0; n < m.mesh.n_nodes(); ++n) umax = std::max(umax, sol.u.segment(dim * n, dim).norm());
     const Eigen::VectorXd total = total_reaction(m.mesh, sol.reaction, m.base);
     entry["load_resultant_N"] = fx;
-    entry["peaks"] = stress_peaks(m, sol.u);
+    const StressField field = recover_stress(m.mesh, m.mat, sol.u);
+    entry["peaks"] = stress_peaks(m, field);
     entry["max_nodal_base_reaction_N"] = rmax;
     entry["total_base_reaction_N"] = std::vector<double>(total.data(), total.data() + total.size());
     entry["max_displacement_m"] = umax;
     cases.push_back(entry);
-    field_cases.push_back(field_case(m, l.name, sol.u));
+    field_cases.push_back(field_case(l.name, sol.u, field));
   }
   json model{{"element", c.element}, {"cells", c.cells}, {"nodes", m.mesh.n_nodes()}, {"elements", m.mesh.n_elements()},
              {"height_m", c.height}, {"crest_thickness_m", c.crest_thickness}, {"base_thickness_m", c.base_thickness},

@@ -7,6 +7,10 @@
 namespace dmi::solid {
 
 namespace {
+// The band's dense blocks up to 1 GiB: measured on the dam body (downstream slope, E 25 GPa), the band factorised
+// 8 x 10 x 20 hex8 cells (5 940 unknowns, b = 329) in 0.17 s against 0.58 s by SimplicialLDLT, 8 x 20 x 10 (b = 599) in
+// 0.30 against 0.47 s, 16 x 20 x 40 (42 840 unknowns, b = 1 127, 0.77 GB) in 5.4 against 94 s.
+constexpr double kBandBytes = 1024.0 * 1024 * 1024;
 template <class ElementMatrix>
 Eigen::SparseMatrix<double> assemble(const Mesh& m, const Elastic& mat, ElementMatrix&& element_matrix) {
   m.validate();
@@ -73,9 +77,14 @@ StaticSolver::StaticSolver(const Eigen::SparseMatrix<double>& K, std::vector<int
   Kff.setFromTriplets(ff.begin(), ff.end());
   K_fc_.resize(n_free(), static_cast<int>(fixed_.size()));
   K_fc_.setFromTriplets(fc.begin(), fc.end());
+  const char* singular = "StaticSolver: K_ff is singular or not positive definite (insufficient supports?)";
+  banded_ = BandCholesky::bytes(n_free(), BandCholesky::bandwidth(Kff)) <= kBandBytes;
+  if (banded_) {
+    if (!band_.compute(Kff)) throw std::invalid_argument(singular);
+    return;
+  }
   ldlt_.compute(Kff);
-  if (ldlt_.info() != Eigen::Success || (ldlt_.vectorD().array() <= 0).any())
-    throw std::invalid_argument("StaticSolver: K_ff is singular or not positive definite (insufficient supports?)");
+  if (ldlt_.info() != Eigen::Success || (ldlt_.vectorD().array() <= 0).any()) throw std::invalid_argument(singular);
 }
 
 StaticSolution StaticSolver::solve(const Eigen::VectorXd& f, const Eigen::VectorXd& u_prescribed) const {
@@ -90,7 +99,7 @@ StaticSolution StaticSolver::solve(const Eigen::VectorXd& f, const Eigen::Vector
   Eigen::VectorXd rhs(n_free());
   for (int i = 0; i < n_free(); ++i) rhs(i) = f(free_[i]);
   rhs -= K_fc_ * uc;
-  const Eigen::VectorXd uf = ldlt_.solve(rhs);
+  const Eigen::VectorXd uf = banded_ ? band_.solve(rhs) : Eigen::VectorXd(ldlt_.solve(rhs));
   StaticSolution s;
   s.u = Eigen::VectorXd::Zero(n);
   for (int i = 0; i < n_free(); ++i) s.u(free_[i]) = uf(i);

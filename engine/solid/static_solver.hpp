@@ -8,6 +8,8 @@
 #include <Eigen/SparseCholesky>
 #include <vector>
 
+#include "engine/solid/band_cholesky.hpp"
+
 #include "engine/solid/element.hpp"
 #include "engine/solid/mesh.hpp"
 
@@ -36,6 +38,10 @@ class StaticSolver {
  private:
   Eigen::SparseMatrix<double> K_, K_fc_;
   std::vector<int> free_, fixed_;
+  // K_ff factorised within its band by dense blocks where that is cheap (the structured meshes, numbered layer by
+  // layer), else by a sparse LDL^T with AMD ordering.
+  bool banded_ = false;
+  BandCholesky band_;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
 };
 

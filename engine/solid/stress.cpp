@@ -1,6 +1,7 @@
 #include "engine/solid/stress.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -119,17 +120,25 @@ Eigen::VectorXd point_coordinates(const Mesh& m, Location l, int index) {
   return m.element_coordinates(e).transpose() * N;
 }
 
-Peak peak(const StressField& s, Measure m, Location l) {
+std::vector<Peak> peaks(const StressField& s, const std::vector<Measure>& ms, Location l) {
   const std::vector<Stress6>& pts = s.at(l);
   if (pts.empty()) throw std::invalid_argument("peak: empty stress field");
-  Peak p;
-  p.value = -INFINITY;
+  auto principal = [](Measure m) { return m == Measure::max_principal || m == Measure::min_principal || m == Measure::max_shear; };
+  const bool any_principal = std::any_of(ms.begin(), ms.end(), principal);
+  std::vector<Peak> out(ms.size());
+  for (Peak& p : out) p.value = -INFINITY;
   for (std::size_t i = 0; i < pts.size(); ++i) {
-    const double v = measure(pts[i], m);
-    const double key = m == Measure::max_principal ? v : std::abs(v);
-    if (key > p.value) p.value = key, p.index = static_cast<int>(i);
+    const Eigen::Vector3d ps = any_principal ? principal_stresses(pts[i]) : Eigen::Vector3d::Zero();
+    for (std::size_t k = 0; k < ms.size(); ++k) {
+      const Measure m = ms[k];
+      const double v = m == Measure::max_principal ? ps(0) : m == Measure::min_principal ? ps(2) : m == Measure::max_shear ? 0.5 * (ps(0) - ps(2)) : measure(pts[i], m);
+      const double key = m == Measure::max_principal ? v : std::abs(v);
+      if (key > out[k].value) out[k].value = key, out[k].index = static_cast<int>(i);
+    }
   }
-  return p;
+  return out;
 }
+
+Peak peak(const StressField& s, Measure m, Location l) { return peaks(s, {m}, l).front(); }
 
 }  // namespace dmi::solid

@@ -41,5 +41,7 @@ struct Peak {
   int index = -1;      // into StressField::at(location)
 };
 Peak peak(const StressField& s, Measure m, Location l);
+// The peaks of several measures at one location in one pass (principal stresses once per point).
+std::vector<Peak> peaks(const StressField& s, const std::vector<Measure>& ms, Location l);
 
 }  // namespace dmi::solid
