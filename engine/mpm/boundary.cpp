@@ -2,6 +2,7 @@
 #include "engine/mpm/boundary.hpp"
 #include "engine/mpm/rigid.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -64,6 +65,15 @@ template <int D> bool wall_mirror(const Grid<D>& g, const Wall<D>& w, Index id, 
 
 namespace {
 
+// Signed distance from the wall to a particle's centre x (the largest outward distance over a box's faces): surface_gap
+// is at least this less the particle's reach.
+template <int D> double centre_gap(const Wall<D>& w, const Vec<D>& x) {
+  if (!w.box) return (x - w.point).dot(w.normal);
+  double gap = -std::numeric_limits<double>::infinity();
+  for (int d = 0; d < D; ++d) gap = std::max({gap, w.lo[d] - x[d], x[d] - w.hi[d]});
+  return gap;
+}
+
 // Signed distance from the wall to the nearest point of particle i's domain (negative: it overlaps the wall), and
 // the wall's outward normal there.
 template <int D> double surface_gap(const Wall<D>& w, const Particles<D>& P, Index i, Vec<D>& n) {
@@ -89,11 +99,17 @@ template <int D> void wall_touch(Scene<D>& s) {
   const Index np = static_cast<Index>(P.size());
   const double tol = 1e-6 * g.h();
   std::vector<unsigned char> flag;
+  std::vector<double> bound;  // per particle: particle_reach_bound, so that the exact gap is computed only near a wall
   for (auto& w : s.walls) {
     if (!w.surface_detection || !unilateral(w.condition)) continue;
     w.touch.reset(static_cast<std::size_t>(g.nnodes()) * g.nfields());
+    if (bound.empty()) {
+      bound.resize(P.size());
+      parallel_for(0, np, [&](Index i) { bound[i] = particle_reach_bound(P, i); });
+    }
     flag.assign(P.size(), 0);
     parallel_for(0, np, [&](Index i) {
+      if (centre_gap(w, P.x[i]) - bound[i] > tol) return;  // the gap is at least this
       Vec<D> n;
       flag[i] = surface_gap(w, P, i, n) <= tol;
     });

@@ -35,6 +35,12 @@ template <int D> double particle_reach(const Particles<D>& P, Index i, const Vec
   return std::max(along(P.F[i].transpose() * n), along(n));
 }
 
+// An upper bound of particle_reach over every direction: sum_j |a_j| r_j <= |a| |r| <= |F|_F |r| (a = F^T n, |n| = 1,
+// r_j the larger of reach_lo_j and reach_hi_j), and |r| for the undeformed reach.
+template <int D> double particle_reach_bound(const Particles<D>& P, Index i) {
+  return std::max(1.0, P.F[i].norm()) * P.reach_lo[i].cwiseMax(P.reach_hi[i]).norm();
+}
+
 // Node-fields engaged by touching particles (grid field layout), reset entry by entry.
 class TouchSet {
  public:
