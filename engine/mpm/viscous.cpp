@@ -31,6 +31,7 @@ void ImplicitViscosity<D>::apply(Scene<D>& s, const TransferKernels<D>& kernels,
   const Particles<D>& P = s.particles;
   const Index nn = g.nnodes();
   acc_k_.clear(), acc_f_.clear();
+  for (auto& w : s.walls) w.carried.setZero();  // this step's share only (the grid update records and clears it)
   probed_ = detected_ = false;
   material_on_.assign(s.materials.size(), 0);
   for (std::size_t k = 0; k < s.bodies.size(); ++k) material_on_[s.bodies[k].material] |= bodies[k];
