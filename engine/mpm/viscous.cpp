@@ -231,7 +231,9 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
         Mat<D> S;
         if (!wall_mirror(g, s.walls[w], nodes_[l], image, S)) continue;
         const int mst = local_[image];
+        // ... and only where the walls and regions left it the image's velocity reflected (no later wall or region set it).
         if (mst >= 0 && !master_of_[static_cast<std::size_t>(mst)] && free_[static_cast<std::size_t>(mst)] == Vec<D>::Ones() &&
+            walled_[off + nodes_[l]] == S * walled_[off + image] &&
             std::none_of(ties_.begin(), ties_.end(), [&](const Tie& t) { return t.l == mst; })) {
           slaves_.push_back(Slave{static_cast<int>(l), mst, static_cast<int>(w), S});
           master_of_[static_cast<std::size_t>(mst)] = 1;
