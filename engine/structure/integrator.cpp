@@ -147,8 +147,11 @@ void Newmark::step_linear(FrameState& s, const Eigen::VectorXd& f, double dt, co
   }
   rhs_.array() *= sys_.free().array();
   dd_ = solver_.solve(rhs_);
-  const FrameState n = s;
-  kinematics(n, dd_, dt, s);
+  // kinematics() in place (no copy of the state each step): a_{n+1} into scratch, then v from the old v and a.
+  tmp_ = c0 * (dd_ - dt * s.v) - (0.5 / beta_ - 1) * s.a;
+  s.v = c1 * dd_ + (1 - gamma_ / beta_) * s.v + dt * (1 - 0.5 * gamma_ / beta_) * s.a;
+  s.a.swap(tmp_);
+  s.d += dd_;
 }
 
 // Corotational: Newton-Raphson on R(D) = f - (M + Ma) a_{n+1} - (1 + alpha)(f_int(d_{n+1}) + C v_{n+1})
