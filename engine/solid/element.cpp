@@ -65,21 +65,38 @@ Eigen::MatrixXd elasticity_matrix(const Elastic& mat) {
   return D;
 }
 
-Eigen::MatrixXd strain_displacement(const Eigen::MatrixXd& X, const Eigen::VectorXd& xi, double* detJ) {
-  const int dim = static_cast<int>(X.cols()), nen = static_cast<int>(X.rows());
-  if (nen != (1 << dim)) throw std::invalid_argument("strain_displacement: X must be 2^dim x dim");
-  Eigen::VectorXd N;
-  Eigen::MatrixXd dN;
-  shape_functions(dim, xi, N, dN);
-  const Eigen::MatrixXd J = X.transpose() * dN;  // J_ij = dx_i / dxi_j
-  const double det = J.determinant();
-  if (detJ) *detJ = det;
-  if (!(std::abs(det) > 0)) throw std::invalid_argument("strain_displacement: singular element Jacobian");
-  const Eigen::MatrixXd G = dN * J.inverse();  // dN_a / dx_j
-  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(dim == 3 ? 6 : 3, dim * nen);
+namespace {
+// B at xi in fixed sizes (one implementation for the public dynamic form, the stiffness and the stress recovery).
+template <int DIM> struct Fixed {
+  static constexpr int nen = 1 << DIM, ndof = DIM * nen, nstr = DIM == 3 ? 6 : 3;
+  using Coords = Eigen::Matrix<double, nen, DIM>;
+  using Point = Eigen::Matrix<double, DIM, 1>;
+  using B = Eigen::Matrix<double, nstr, ndof>;
+};
+
+template <int DIM> typename Fixed<DIM>::B b_matrix(const typename Fixed<DIM>::Coords& X, const typename Fixed<DIM>::Point& xi, double& det) {
+  constexpr int nen = Fixed<DIM>::nen;
+  const Eigen::MatrixXd& s = corner_signs(DIM);
+  constexpr double scale = 1.0 / nen;
+  Eigen::Matrix<double, nen, DIM> dN;
   for (int a = 0; a < nen; ++a) {
-    const int c = dim * a;
-    if (dim == 3) {
+    double f[DIM];  // 1D factors (1 + s_ad xi_d)
+    for (int d = 0; d < DIM; ++d) f[d] = 1 + s(a, d) * xi(d);
+    for (int d = 0; d < DIM; ++d) {
+      double p = scale * s(a, d);
+      for (int e = 0; e < DIM; ++e)
+        if (e != d) p *= f[e];
+      dN(a, d) = p;
+    }
+  }
+  const Eigen::Matrix<double, DIM, DIM> J = X.transpose() * dN;  // J_ij = dx_i / dxi_j
+  det = J.determinant();
+  if (!(std::abs(det) > 0)) throw std::invalid_argument("strain_displacement: singular element Jacobian");
+  const Eigen::Matrix<double, nen, DIM> G = dN * J.inverse();  // dN_a / dx_j
+  typename Fixed<DIM>::B B = Fixed<DIM>::B::Zero();
+  for (int a = 0; a < nen; ++a) {
+    const int c = DIM * a;
+    if constexpr (DIM == 3) {
       const double gx = G(a, 0), gy = G(a, 1), gz = G(a, 2);
       B(0, c) = gx, B(1, c + 1) = gy, B(2, c + 2) = gz;
       B(3, c + 1) = gz, B(3, c + 2) = gy;
@@ -93,25 +110,55 @@ Eigen::MatrixXd strain_displacement(const Eigen::MatrixXd& X, const Eigen::Vecto
   return B;
 }
 
+template <int DIM> Eigen::MatrixXd stiffness(const Eigen::MatrixXd& Xd, const Eigen::MatrixXd& Dd, double volume_factor) {
+  using F = Fixed<DIM>;
+  const typename F::Coords X = Xd;
+  const Eigen::Matrix<double, F::nstr, F::nstr> D = Dd;
+  const Eigen::MatrixXd& s = corner_signs(DIM);
+  Eigen::Matrix<double, F::ndof, F::ndof> K = Eigen::Matrix<double, F::ndof, F::ndof>::Zero();
+  for (int g = 0; g < F::nen; ++g) {
+    double detJ = 0;
+    const typename F::Point xi = s.row(g).transpose() / std::sqrt(3.0);
+    const typename F::B B = b_matrix<DIM>(X, xi, detJ);
+    const typename F::B DB = D * B;
+    K.noalias() += B.transpose() * DB * (detJ * volume_factor);
+  }
+  return K;
+}
+
+template <int DIM> Eigen::VectorXd stress_vector(const Eigen::MatrixXd& Xd, const Eigen::VectorXd& ue, const Eigen::VectorXd& xi, const Eigen::MatrixXd& D) {
+  using F = Fixed<DIM>;
+  double det = 0;
+  const typename F::B B = b_matrix<DIM>(typename F::Coords(Xd), typename F::Point(xi), det);
+  const Eigen::Matrix<double, F::nstr, 1> strain = B * typename Eigen::Matrix<double, F::ndof, 1>(ue);
+  return D * strain;
+}
+}  // namespace
+
+Eigen::MatrixXd strain_displacement(const Eigen::MatrixXd& X, const Eigen::VectorXd& xi, double* detJ) {
+  const int dim = static_cast<int>(X.cols()), nen = static_cast<int>(X.rows());
+  if ((dim != 2 && dim != 3) || nen != (1 << dim)) throw std::invalid_argument("strain_displacement: X must be 2^dim x dim");
+  if (xi.size() != dim) throw std::invalid_argument("shape_functions: xi must have dim entries");
+  double det = 0;
+  Eigen::MatrixXd B = dim == 3 ? Eigen::MatrixXd(b_matrix<3>(Fixed<3>::Coords(X), Fixed<3>::Point(xi), det))
+                               : Eigen::MatrixXd(b_matrix<2>(Fixed<2>::Coords(X), Fixed<2>::Point(xi), det));
+  if (detJ) *detJ = det;
+  return B;
+}
+
 namespace {
 void check_dims(const Eigen::MatrixXd& X, const Elastic& mat) {
   if (X.cols() != mat.dim())
     throw std::invalid_argument("element: solid3d needs hex8 (3 columns), plane analyses quad4 (2 columns)");
+  if (X.rows() != (1 << mat.dim())) throw std::invalid_argument("strain_displacement: X must be 2^dim x dim");
 }
 double volume_factor(const Elastic& mat) { return mat.dim() == 2 ? mat.thickness_m : 1.0; }
 }  // namespace
 
 Eigen::MatrixXd element_stiffness(const Eigen::MatrixXd& X, const Elastic& mat) {
   check_dims(X, mat);
-  const Eigen::MatrixXd D = elasticity_matrix(mat), gp = gauss_points(mat.dim());
-  const int n = static_cast<int>(X.size());
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
-  for (int g = 0; g < gp.rows(); ++g) {
-    double detJ = 0;
-    const Eigen::MatrixXd B = strain_displacement(X, gp.row(g).transpose(), &detJ);
-    K.noalias() += B.transpose() * D * B * (detJ * volume_factor(mat));
-  }
-  return K;
+  const Eigen::MatrixXd D = elasticity_matrix(mat);
+  return mat.dim() == 3 ? stiffness<3>(X, D, volume_factor(mat)) : stiffness<2>(X, D, volume_factor(mat));
 }
 
 Eigen::MatrixXd element_mass(const Eigen::MatrixXd& X, const Elastic& mat) {
@@ -135,7 +182,9 @@ Eigen::MatrixXd element_mass(const Eigen::MatrixXd& X, const Elastic& mat) {
 Stress6 element_stress(const Eigen::MatrixXd& X, const Eigen::VectorXd& ue, const Eigen::VectorXd& xi,
                        const Elastic& mat) {
   check_dims(X, mat);
-  const Eigen::VectorXd s = elasticity_matrix(mat) * strain_displacement(X, xi, nullptr) * ue;
+  if (xi.size() != mat.dim() || ue.size() != X.size()) throw std::invalid_argument("element_stress: xi or ue has the wrong size");
+  const Eigen::MatrixXd D = elasticity_matrix(mat);
+  const Eigen::VectorXd s = mat.dim() == 3 ? stress_vector<3>(X, ue, xi, D) : stress_vector<2>(X, ue, xi, D);
   Stress6 out;
   if (mat.dim() == 3) return s;
   const double syy = mat.analysis == Analysis::plane_strain ? mat.nu * (s(0) + s(1)) : 0.0;
