@@ -22,8 +22,9 @@ class BandCholesky {
   static int bandwidth(const Eigen::SparseMatrix<double>& A);
   // Storage of the factor's blocks for an n x n matrix of bandwidth b (two b x b blocks per b rows), bytes.
   static double bytes(int n, int b) { return 16.0 * n * std::max(b, 1); }
-  // Factorises A (its lower triangle is read; A must be square). False when a pivot is not positive (not positive
-  // definite to working precision).
+  // Factorises A (its lower triangle is read; A must be square). False, and nothing factorised, when a pivot is not
+  // above n eps max|A_ii| (not positive definite to working precision: singular matrices give round-off pivots of
+  // either sign).
   bool compute(const Eigen::SparseMatrix<double>& A);
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
   int rows() const { return n_; }

@@ -138,7 +138,7 @@ template <int DIM> Eigen::VectorXd stress_vector(const Eigen::MatrixXd& Xd, cons
 Eigen::MatrixXd strain_displacement(const Eigen::MatrixXd& X, const Eigen::VectorXd& xi, double* detJ) {
   const int dim = static_cast<int>(X.cols()), nen = static_cast<int>(X.rows());
   if ((dim != 2 && dim != 3) || nen != (1 << dim)) throw std::invalid_argument("strain_displacement: X must be 2^dim x dim");
-  if (xi.size() != dim) throw std::invalid_argument("shape_functions: xi must have dim entries");
+  if (xi.size() != dim) throw std::invalid_argument("strain_displacement: xi must have dim entries");
   double det = 0;
   Eigen::MatrixXd B = dim == 3 ? Eigen::MatrixXd(b_matrix<3>(Fixed<3>::Coords(X), Fixed<3>::Point(xi), det))
                                : Eigen::MatrixXd(b_matrix<2>(Fixed<2>::Coords(X), Fixed<2>::Point(xi), det));
@@ -150,7 +150,7 @@ namespace {
 void check_dims(const Eigen::MatrixXd& X, const Elastic& mat) {
   if (X.cols() != mat.dim())
     throw std::invalid_argument("element: solid3d needs hex8 (3 columns), plane analyses quad4 (2 columns)");
-  if (X.rows() != (1 << mat.dim())) throw std::invalid_argument("strain_displacement: X must be 2^dim x dim");
+  if (X.rows() != (1 << mat.dim())) throw std::invalid_argument("element: X must be 2^dim x dim");
 }
 double volume_factor(const Elastic& mat) { return mat.dim() == 2 ? mat.thickness_m : 1.0; }
 }  // namespace

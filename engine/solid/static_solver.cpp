@@ -1,6 +1,7 @@
 #include "engine/solid/static_solver.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -110,7 +111,8 @@ StaticSolver::StaticSolver(const Eigen::SparseMatrix<double>& K, std::vector<int
     return;
   }
   ldlt_.compute(Kff);
-  if (ldlt_.info() != Eigen::Success || (ldlt_.vectorD().array() <= 0).any()) throw std::invalid_argument(singular);
+  const double floor = n_free() * std::numeric_limits<double>::epsilon() * Kff.diagonal().cwiseAbs().maxCoeff();
+  if (ldlt_.info() != Eigen::Success || !(ldlt_.vectorD().array() > floor).all()) throw std::invalid_argument(singular);
 }
 
 StaticSolution StaticSolver::solve(const Eigen::VectorXd& f, const Eigen::VectorXd& u_prescribed) const {

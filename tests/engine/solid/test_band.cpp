@@ -74,5 +74,20 @@ TEST(BandCholesky, StructuredHex8BlockHasTheLayerBandAndMatchesTheSparseFactoris
   EXPECT_NEAR(total_reaction(m, s.reaction, nodes_at_height(m, 0.0))(0), -f.sum(), 1e-9 * f.sum());
 }
 
+// A block held along one edge only keeps a rigid rotation about it: K_ff is singular, its last pivot round-off of
+// either sign; the solver refuses it (a sign test alone let it through about half the time).
+TEST(BandCholesky, StructureFreeToRotateAboutAHeldEdgeIsRefused) {
+  TaperedBlock b;
+  b.nx = 2, b.ny = 3, b.nz = 2;
+  const Mesh m = hex8_tapered_block(b);
+  Elastic mat;
+  mat.E_Pa = 25e9, mat.nu = 0.2;
+  std::vector<int> edge;
+  for (int j = 0; j <= b.ny; ++j) edge.push_back(m.node_id(0, j, 0));
+  EXPECT_THROW(StaticSolver(assemble_stiffness(m, mat), node_dofs(m, edge)), std::invalid_argument);
+  // Held on the whole base it is stiff.
+  EXPECT_NO_THROW(StaticSolver(assemble_stiffness(m, mat), node_dofs(m, nodes_at_height(m, 0.0))));
+}
+
 }  // namespace
 }  // namespace dmi::solid
