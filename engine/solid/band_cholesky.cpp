@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 
 namespace dmi::solid {
@@ -34,21 +33,17 @@ bool BandCholesky::compute(const Eigen::SparseMatrix<double>& A) {
       if (kr == kc) diag_[kr](r - kr * b_, col - kc * b_) = it.value();
       else sub_[kc](r - kr * b_, col - kc * b_) = it.value();
     }
-  min_pivot_ = std::numeric_limits<double>::infinity();
   double max_diag = 0;
   for (int k = 0; k < nb; ++k) max_diag = std::max(max_diag, diag_[k].diagonal().cwiseAbs().maxCoeff());
+  const double floor = pivot_floor(n_, max_diag);
   auto fail = [&] { n_ = 0, diag_.clear(), sub_.clear(); return false; };
   for (int k = 0; k < nb; ++k) {
     Eigen::MatrixXd& Akk = diag_[k];
     if (k > 0) Akk.selfadjointView<Eigen::Lower>().rankUpdate(sub_[k - 1], -1.0);  // A_kk - L_k,k-1 L_k,k-1^T
     Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(Akk);  // in place: the lower triangle becomes L_kk
     if (llt.info() != Eigen::Success || !Akk.diagonal().allFinite()) return fail();
-    Akk.triangularView<Eigen::StrictlyUpper>().setZero();
     const double p = Akk.diagonal().minCoeff();
-    // A pivot at round-off level of the largest diagonal entry is a null vector whose sign rounding decided
-    // (a structure with too few supports), not a stiffness.
-    if (!(p * p > n_ * std::numeric_limits<double>::epsilon() * max_diag)) return fail();
-    min_pivot_ = std::min(min_pivot_, p * p);
+    if (!(p * p > floor)) return fail();
     if (k + 1 < nb)  // L_k+1,k = A_k+1,k L_kk^-T
       Akk.triangularView<Eigen::Lower>().transpose().solveInPlace<Eigen::OnTheRight>(sub_[k]);
   }

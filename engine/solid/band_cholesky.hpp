@@ -9,6 +9,7 @@
 // factorises several times faster than Eigen's SimplicialLDLT with AMD ordering (docs/performance.md).
 #pragma once
 #include <algorithm>
+#include <limits>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -22,20 +23,20 @@ class BandCholesky {
   static int bandwidth(const Eigen::SparseMatrix<double>& A);
   // Storage of the factor's blocks for an n x n matrix of bandwidth b (two b x b blocks per b rows), bytes.
   static double bytes(int n, int b) { return 16.0 * n * std::max(b, 1); }
+  // The smallest pivot d (of L D L^T; L_ii^2 here) taken as positive definite for an n x n matrix: a pivot at round-off
+  // level of the largest diagonal entry is a null vector whose sign rounding decided (a structure with too few
+  // supports), not a stiffness. Used by the band and the sparse factorisation alike.
+  static double pivot_floor(int n, double max_diag) { return n * std::numeric_limits<double>::epsilon() * max_diag; }
   // Factorises A (its lower triangle is read; A must be square). False, and nothing factorised, when a pivot is not
-  // above n eps max|A_ii| (not positive definite to working precision: singular matrices give round-off pivots of
-  // either sign).
+  // above pivot_floor (not positive definite to working precision).
   bool compute(const Eigen::SparseMatrix<double>& A);
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
   int rows() const { return n_; }
-  // The smallest diagonal entry of the factor, squared (positive after a successful compute).
-  double min_pivot() const { return min_pivot_; }
 
  private:
   int n_ = 0, b_ = 1;
   std::vector<Eigen::MatrixXd> diag_;  // L_kk, lower triangular
   std::vector<Eigen::MatrixXd> sub_;   // L_k+1,k
-  double min_pivot_ = 0;
 };
 
 }  // namespace dmi::solid

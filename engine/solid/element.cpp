@@ -22,24 +22,40 @@ const Eigen::MatrixXd& corner_signs(int dim) {
   throw std::invalid_argument("corner_signs: dim must be 2 or 3, got " + std::to_string(dim));
 }
 
-void shape_functions(int dim, const Eigen::VectorXd& xi, Eigen::VectorXd& N, Eigen::MatrixXd& dN) {
-  const Eigen::MatrixXd& s = corner_signs(dim);
-  if (xi.size() != dim) throw std::invalid_argument("shape_functions: xi must have dim entries");
-  const int nen = static_cast<int>(s.rows());
-  const double scale = 1.0 / (1 << dim);
-  N.resize(nen);
-  dN.resize(nen, dim);
-  for (int a = 0; a < nen; ++a) {
-    Eigen::VectorXd f(dim);  // 1D factors (1 + s_ad xi_d)
-    for (int d = 0; d < dim; ++d) f(d) = 1 + s(a, d) * xi(d);
-    N(a) = scale * f.prod();
-    for (int d = 0; d < dim; ++d) {
+namespace {
+// N and dN/dxi at xi in fixed sizes (one implementation for the public dynamic form and the element kernels below).
+template <int DIM> void shape_fixed(const Eigen::Matrix<double, DIM, 1>& xi, Eigen::Matrix<double, (1 << DIM), 1>& N,
+                                    Eigen::Matrix<double, (1 << DIM), DIM>& dN) {
+  const Eigen::MatrixXd& s = corner_signs(DIM);
+  constexpr double scale = 1.0 / (1 << DIM);
+  for (int a = 0; a < (1 << DIM); ++a) {
+    double f[DIM];  // 1D factors (1 + s_ad xi_d)
+    for (int d = 0; d < DIM; ++d) f[d] = 1 + s(a, d) * xi(d);
+    double prod = f[0];
+    for (int d = 1; d < DIM; ++d) prod *= f[d];
+    N(a) = scale * prod;
+    for (int d = 0; d < DIM; ++d) {
       double p = scale * s(a, d);
-      for (int e = 0; e < dim; ++e)
-        if (e != d) p *= f(e);
+      for (int e = 0; e < DIM; ++e)
+        if (e != d) p *= f[e];
       dN(a, d) = p;
     }
   }
+}
+
+template <int DIM> void shape_dynamic(const Eigen::VectorXd& xi, Eigen::VectorXd& N, Eigen::MatrixXd& dN) {
+  Eigen::Matrix<double, (1 << DIM), 1> Nf;
+  Eigen::Matrix<double, (1 << DIM), DIM> dNf;
+  shape_fixed<DIM>(Eigen::Matrix<double, DIM, 1>(xi), Nf, dNf);
+  N = Nf, dN = dNf;
+}
+}  // namespace
+
+void shape_functions(int dim, const Eigen::VectorXd& xi, Eigen::VectorXd& N, Eigen::MatrixXd& dN) {
+  corner_signs(dim);  // throws unless dim is 2 or 3
+  if (xi.size() != dim) throw std::invalid_argument("shape_functions: xi must have dim entries");
+  if (dim == 3) shape_dynamic<3>(xi, N, dN);
+  else shape_dynamic<2>(xi, N, dN);
 }
 
 Eigen::MatrixXd gauss_points(int dim) { return corner_signs(dim) / std::sqrt(3.0); }
@@ -76,19 +92,9 @@ template <int DIM> struct Fixed {
 
 template <int DIM> typename Fixed<DIM>::B b_matrix(const typename Fixed<DIM>::Coords& X, const typename Fixed<DIM>::Point& xi, double& det) {
   constexpr int nen = Fixed<DIM>::nen;
-  const Eigen::MatrixXd& s = corner_signs(DIM);
-  constexpr double scale = 1.0 / nen;
+  Eigen::Matrix<double, nen, 1> N;
   Eigen::Matrix<double, nen, DIM> dN;
-  for (int a = 0; a < nen; ++a) {
-    double f[DIM];  // 1D factors (1 + s_ad xi_d)
-    for (int d = 0; d < DIM; ++d) f[d] = 1 + s(a, d) * xi(d);
-    for (int d = 0; d < DIM; ++d) {
-      double p = scale * s(a, d);
-      for (int e = 0; e < DIM; ++e)
-        if (e != d) p *= f[e];
-      dN(a, d) = p;
-    }
-  }
+  shape_fixed<DIM>(xi, N, dN);
   const Eigen::Matrix<double, DIM, DIM> J = X.transpose() * dN;  // J_ij = dx_i / dxi_j
   det = J.determinant();
   if (!(std::abs(det) > 0)) throw std::invalid_argument("strain_displacement: singular element Jacobian");
@@ -114,11 +120,11 @@ template <int DIM> Eigen::MatrixXd stiffness(const Eigen::MatrixXd& Xd, const Ei
   using F = Fixed<DIM>;
   const typename F::Coords X = Xd;
   const Eigen::Matrix<double, F::nstr, F::nstr> D = Dd;
-  const Eigen::MatrixXd& s = corner_signs(DIM);
+  const Eigen::MatrixXd gp = gauss_points(DIM);
   Eigen::Matrix<double, F::ndof, F::ndof> K = Eigen::Matrix<double, F::ndof, F::ndof>::Zero();
   for (int g = 0; g < F::nen; ++g) {
     double detJ = 0;
-    const typename F::Point xi = s.row(g).transpose() / std::sqrt(3.0);
+    const typename F::Point xi = gp.row(g).transpose();
     const typename F::B B = b_matrix<DIM>(X, xi, detJ);
     const typename F::B DB = D * B;
     K.noalias() += B.transpose() * DB * (detJ * volume_factor);

@@ -1,7 +1,6 @@
 #include "engine/solid/static_solver.hpp"
 
 #include <algorithm>
-#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -111,7 +110,7 @@ StaticSolver::StaticSolver(const Eigen::SparseMatrix<double>& K, std::vector<int
     return;
   }
   ldlt_.compute(Kff);
-  const double floor = n_free() * std::numeric_limits<double>::epsilon() * Kff.diagonal().cwiseAbs().maxCoeff();
+  const double floor = BandCholesky::pivot_floor(n_free(), Kff.diagonal().cwiseAbs().maxCoeff());
   if (ldlt_.info() != Eigen::Success || !(ldlt_.vectorD().array() > floor).all()) throw std::invalid_argument(singular);
 }
 

@@ -39,18 +39,23 @@ Eigen::Vector3d principal_stresses(const Stress6& s) {
   return {ev(2), ev(1), ev(0)};
 }
 
+namespace {
+bool from_principal(Measure m) { return m == Measure::max_principal || m == Measure::min_principal || m == Measure::max_shear; }
+// A principal-stress measure from the principal stresses p (descending).
+double principal_measure(const Eigen::Vector3d& p, Measure m) {
+  return m == Measure::max_principal ? p(0) : m == Measure::min_principal ? p(2) : 0.5 * (p(0) - p(2));
+}
+}  // namespace
+
 double measure(const Stress6& s, Measure m) {
   switch (m) {
     case Measure::von_mises: {
       const double a = s(0) - s(1), b = s(1) - s(2), c = s(2) - s(0);
       return std::sqrt(0.5 * (a * a + b * b + c * c) + 3 * (s(3) * s(3) + s(4) * s(4) + s(5) * s(5)));
     }
-    case Measure::max_principal: return principal_stresses(s)(0);
-    case Measure::min_principal: return principal_stresses(s)(2);
-    case Measure::max_shear: {
-      const Eigen::Vector3d p = principal_stresses(s);
-      return 0.5 * (p(0) - p(2));
-    }
+    case Measure::max_principal:
+    case Measure::min_principal:
+    case Measure::max_shear: return principal_measure(principal_stresses(s), m);
     case Measure::sxx: return s(0);
     case Measure::syy: return s(1);
     case Measure::szz: return s(2);
@@ -123,15 +128,14 @@ Eigen::VectorXd point_coordinates(const Mesh& m, Location l, int index) {
 std::vector<Peak> peaks(const StressField& s, const std::vector<Measure>& ms, Location l) {
   const std::vector<Stress6>& pts = s.at(l);
   if (pts.empty()) throw std::invalid_argument("peak: empty stress field");
-  auto principal = [](Measure m) { return m == Measure::max_principal || m == Measure::min_principal || m == Measure::max_shear; };
-  const bool any_principal = std::any_of(ms.begin(), ms.end(), principal);
+  const bool any_principal = std::any_of(ms.begin(), ms.end(), from_principal);
   std::vector<Peak> out(ms.size());
   for (Peak& p : out) p.value = -INFINITY;
   for (std::size_t i = 0; i < pts.size(); ++i) {
     const Eigen::Vector3d ps = any_principal ? principal_stresses(pts[i]) : Eigen::Vector3d::Zero();
     for (std::size_t k = 0; k < ms.size(); ++k) {
       const Measure m = ms[k];
-      const double v = m == Measure::max_principal ? ps(0) : m == Measure::min_principal ? ps(2) : m == Measure::max_shear ? 0.5 * (ps(0) - ps(2)) : measure(pts[i], m);
+      const double v = from_principal(m) ? principal_measure(ps, m) : measure(pts[i], m);
       const double key = m == Measure::max_principal ? v : std::abs(v);
       if (key > out[k].value) out[k].value = key, out[k].index = static_cast<int>(i);
     }

@@ -75,11 +75,13 @@ void Newmark::initial_acceleration(FrameState& s, const Eigen::VectorXd& f) {
 
 // Increment D = d_{n+1} - d_n gives a_{n+1} = c0 (D - dt v_n) - (1/(2 beta) - 1) a_n and
 // v_{n+1} = c1 D + (1 - gamma/beta) v_n + dt (1 - gamma/(2 beta)) a_n, c0 = 1/(beta dt^2), c1 = gamma/(beta dt).
-void Newmark::kinematics(const FrameState& n, const Eigen::VectorXd& D, double dt, FrameState& s) const {
+// s may be n itself (the linear step updates in place, without copying the state): a_{n+1} goes through tmp_ first.
+void Newmark::kinematics(const FrameState& n, const Eigen::VectorXd& D, double dt, FrameState& s) {
   const double c0 = 1 / (beta_ * dt * dt), c1 = gamma_ / (beta_ * dt);
-  s.d = n.d + D;
-  s.a = c0 * (D - dt * n.v) - (0.5 / beta_ - 1) * n.a;
+  tmp_ = c0 * (D - dt * n.v) - (0.5 / beta_ - 1) * n.a;
   s.v = c1 * D + (1 - gamma_ / beta_) * n.v + dt * (1 - 0.5 * gamma_ / beta_) * n.a;
+  s.a.swap(tmp_);
+  s.d = n.d + D;
 }
 
 // Numeric LDLT of A; the symbolic analysis (AMD ordering, elimination tree) is redone only when A's sparsity pattern
@@ -147,11 +149,7 @@ void Newmark::step_linear(FrameState& s, const Eigen::VectorXd& f, double dt, co
   }
   rhs_.array() *= sys_.free().array();
   dd_ = solver_.solve(rhs_);
-  // kinematics() in place (no copy of the state each step): a_{n+1} into scratch, then v from the old v and a.
-  tmp_ = c0 * (dd_ - dt * s.v) - (0.5 / beta_ - 1) * s.a;
-  s.v = c1 * dd_ + (1 - gamma_ / beta_) * s.v + dt * (1 - 0.5 * gamma_ / beta_) * s.a;
-  s.a.swap(tmp_);
-  s.d += dd_;
+  kinematics(s, dd_, dt, s);
 }
 
 // Corotational: Newton-Raphson on R(D) = f - (M + Ma) a_{n+1} - (1 + alpha)(f_int(d_{n+1}) + C v_{n+1})

@@ -78,7 +78,7 @@ class Newmark final : public FrameTimeIntegrator {
 
  private:
   void initial_acceleration(FrameState& s, const Eigen::VectorXd& f);
-  void kinematics(const FrameState& n, const Eigen::VectorXd& D, double dt, FrameState& s) const;
+  void kinematics(const FrameState& n, const Eigen::VectorXd& D, double dt, FrameState& s);
   void step_linear(FrameState& s, const Eigen::VectorXd& f, double dt, const SpMat* Ma);
   void step_newton(FrameState& s, const Eigen::VectorXd& f, double dt, const SpMat* Ma);
   bool factorize(const SpMat& A, bool throw_on_failure = true);
