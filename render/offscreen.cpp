@@ -3,6 +3,8 @@
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
+#include <malloc.h>
+
 #include <filesystem>
 #include <stdexcept>
 
@@ -26,6 +28,14 @@ namespace {
 }  // namespace
 
 Offscreen::Offscreen() : impl_(std::make_unique<Impl>()) {
+  // Mesa's software rasteriser allocates each picture's buffers afresh (9.2 MB each for the demo's field pictures) and
+  // frees them after it. Above glibc's mmap threshold each was a new mapping, faulted in page by page and cleared:
+  // 119 of them, 1.0 GB, for the demo's 17 pictures, and page faults with that clearing took ~60 % of `render`'s
+  // samples (perf). Kept in the heap (threshold 32 MB, glibc's largest; the heap trimmed only beyond 512 MB) they
+  // are reused: minor faults ~200 k -> ~60 k, `render` of the demo 4.3-5.0 -> 3.2-3.6 s (docs/performance.md). Set when the
+  // first picture is made, so the simulation's allocations are not affected.
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, 512 << 20);
   auto get_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
   if (!get_display) fail("eglGetPlatformDisplayEXT lookup");
   impl_->display = get_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
