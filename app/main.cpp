@@ -311,7 +311,13 @@ int bench_command(const std::vector<std::string>& cases, bool as_json, bool quic
 // were checked here already; the environment (OMP_WAIT_POLICY) goes with them.
 int hand_over(char** argv) {
   std::error_code ec;
-  const std::filesystem::path full = std::filesystem::read_symlink("/proc/self/exe", ec).parent_path() / "damimpact-full";
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec || !self.is_absolute()) {  // never a path relative to the working directory
+    std::fprintf(stderr, "damimpact: error: /proc/self/exe: cannot read it (%s), so damimpact-full beside this binary cannot be found; "
+                 "run damimpact-full directly\n", ec ? ec.message().c_str() : "not an absolute path");
+    return 2;
+  }
+  const std::filesystem::path full = self.parent_path() / "damimpact-full";
   execv(full.c_str(), argv);
   std::fprintf(stderr, "damimpact: error: %s: cannot start it (%s); run, render, report, sweep and bench --out need it beside damimpact\n",
                full.c_str(), std::strerror(errno));

@@ -28,12 +28,15 @@ namespace {
 }  // namespace
 
 Offscreen::Offscreen() : impl_(std::make_unique<Impl>()) {
-  // Mesa's software rasteriser allocates each picture's buffers afresh (9.2 MB each for the demo's field pictures) and
-  // frees them after it. Above glibc's mmap threshold each was a new mapping, faulted in page by page and cleared:
-  // 119 of them, 1.0 GB, for the demo's 17 pictures, and page faults with that clearing took ~60 % of `render`'s
-  // samples (perf). Kept in the heap (threshold 32 MB, glibc's largest; the heap trimmed only beyond 512 MB) they
-  // are reused: minor faults ~200 k -> ~60 k, `render` of the demo 4.3-5.0 -> 3.2-3.6 s (docs/performance.md). Set when the
-  // first picture is made, so the simulation's allocations are not affected.
+  // Mesa's software rasteriser allocates each picture's buffers afresh (9.2 MB each for the demo's field pictures; 119
+  // of them, 1.0 GB, cleared on allocation, for its 17 pictures) and frees them after the picture. glibc took them from
+  // the heap after its automatic mmap threshold rose, but gave the heap top back after each picture (~350 MB trimmed
+  // over the demo, strace) and faulted it in again page by page: page faults and clearing were ~60 % of `render`'s
+  // samples (perf). Fixed thresholds keep the buffers in the heap: 32 MB for mmap, 512 MB before trimming (either one
+  // alone switches glibc's automatic threshold off and was slower: 389 k faults with the trim setting alone). Minor
+  // faults ~200 k -> ~60 k, `render` of the demo 4.3-5.0 -> 3.2-3.6 s (docs/performance.md, "Program start and
+  // pictures"). Set when the first picture is made: a sweep that writes case reports keeps the setting for its later
+  // cases (their memory is bounded by the peak already reached; a 6-case sweep ran faster, not larger).
   mallopt(M_MMAP_THRESHOLD, 32 << 20);
   mallopt(M_TRIM_THRESHOLD, 512 << 20);
   auto get_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
