@@ -197,6 +197,35 @@ TEST(RunCli, MissingScenarioFileIsOneClearError) {
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
+// The binary users call links neither VTK nor MPI and hands the commands that draw to damimpact-full beside the real
+// file (found through /proc/self/exe, so a symlink elsewhere works); alone, it says what is missing, in one line.
+TEST(RunCli, DrawingCommandsAreHandedToTheFullBinaryBesideIt) {
+  const fs::path d = fresh_dir("handover");
+  fs::create_directories(d);
+  fs::create_symlink(DMI_BINARY, d / "linked");
+  fs::copy_file(DMI_BINARY, d / "alone");
+  auto call = [](const fs::path& bin, const std::string& args) {
+    const fs::path err = fs::temp_directory_path() / ("dmi_handover_err_" + std::to_string(::getpid()));
+    const int rc = std::system((bin.string() + " " + args + " > /dev/null 2> " + err.string()).c_str());
+    std::ifstream in(err);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    fs::remove(err);
+    return Cli{WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, text};
+  };
+  const Cli linked = call(d / "linked", "render /nonexistent/run");
+  EXPECT_EQ(linked.status, 2);
+  EXPECT_NE(linked.err.find("/nonexistent/run: no results.h5"), std::string::npos) << linked.err;  // the full binary's own message
+  const Cli alone = call(d / "alone", "render /nonexistent/run");
+  EXPECT_EQ(alone.status, 2);
+  EXPECT_NE(alone.err.find((d / "damimpact-full").string() + ": cannot start it"), std::string::npos) << alone.err;
+  EXPECT_EQ(std::count(alone.err.begin(), alone.err.end(), '\n'), 1) << alone.err;
+  const Cli checked = call(d / "alone", "render");  // arguments are checked before the hand-over
+  EXPECT_EQ(checked.status, 2);
+  EXPECT_NE(checked.err.find("out is required"), std::string::npos) << checked.err;
+  EXPECT_EQ(call(d / "alone", "schema").status, 0);  // what needs no pictures runs alone
+  fs::remove_all(d);
+}
+
 // OpenMP waits passively unless the user set OMP_WAIT_POLICY: libgomp reads the variable when it loads and prints
 // what it took (a passive policy spins 0 times before sleeping; unset, it would display PASSIVE but spin 300 000).
 TEST(RunCli, OpenMPWaitsPassivelyUnlessTheUserSaysOtherwise) {
