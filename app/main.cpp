@@ -353,7 +353,12 @@ int main(int argc, char** argv) {
   // a passive default and re-execute once; a user's own setting is respected.
   if (!std::getenv("OMP_WAIT_POLICY")) {
     setenv("OMP_WAIT_POLICY", "passive", 1);
-    execv("/proc/self/exe", argv);  // returns only on failure: then go on as we are
+    // Through the file /proc/self/exe names, so that the process keeps its name (exec'd as /proc/self/exe it was
+    // called "exe" in ps, top and pgrep).
+    std::error_code ec;
+    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (!ec && self.is_absolute()) execv(self.c_str(), argv);
+    execv("/proc/self/exe", argv);  // returns only on failure (both): then go on as we are
   }
   CLI::App app{"damimpact " DMI_VERSION " - check dams hit by boulders and debris flows: MPM simulation, design checks, reports"};
   app.set_version_flag("--version", DMI_VERSION);
