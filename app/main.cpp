@@ -43,6 +43,13 @@
 
 namespace {
 
+// The file this process runs, as /proc/self/exe names it; empty when that cannot be read or is not an absolute path.
+std::filesystem::path own_file() {
+  std::error_code ec;
+  std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return !ec && self.is_absolute() ? self : std::filesystem::path();
+}
+
 dmi::ProgressMode progress_mode(bool quiet, const std::string& p) {
   if (quiet) return dmi::ProgressMode::quiet;
   if (p == "lines") return dmi::ProgressMode::lines;
@@ -310,11 +317,10 @@ int bench_command(const std::vector<std::string>& cases, bool as_json, bool quic
 // with VTK and MPI (125 shared libraries) it takes ~0.09 s to start, this one without them ~0.02 s. The arguments
 // were checked here already; the environment (OMP_WAIT_POLICY) goes with them.
 int hand_over(char** argv) {
-  std::error_code ec;
-  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (ec || !self.is_absolute()) {  // never a path relative to the working directory
-    std::fprintf(stderr, "damimpact: error: /proc/self/exe: cannot read it (%s), so damimpact-full beside this binary cannot be found; "
-                 "run damimpact-full directly\n", ec ? ec.message().c_str() : "not an absolute path");
+  const std::filesystem::path self = own_file();
+  if (self.empty()) {  // never a path relative to the working directory
+    std::fprintf(stderr, "damimpact: error: /proc/self/exe: cannot read it as an absolute path, so damimpact-full beside this binary "
+                 "cannot be found; run damimpact-full directly\n");
     return 2;
   }
   const std::filesystem::path full = self.parent_path() / "damimpact-full";
@@ -355,9 +361,7 @@ int main(int argc, char** argv) {
     setenv("OMP_WAIT_POLICY", "passive", 1);
     // Through the file /proc/self/exe names, so that the process keeps its name (exec'd as /proc/self/exe it was
     // called "exe" in ps, top and pgrep).
-    std::error_code ec;
-    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
-    if (!ec && self.is_absolute()) execv(self.c_str(), argv);
+    if (const std::filesystem::path self = own_file(); !self.empty()) execv(self.c_str(), argv);
     execv("/proc/self/exe", argv);  // returns only on failure (both): then go on as we are
   }
   CLI::App app{"damimpact " DMI_VERSION " - check dams hit by boulders and debris flows: MPM simulation, design checks, reports"};

@@ -25,9 +25,9 @@ struct Cli {
   std::string err;
 };
 
-Cli run_cli(const std::string& args) {
+Cli run_cli(const std::string& args, const std::string& binary = DMI_BINARY) {
   const fs::path err = fs::temp_directory_path() / ("dmi_run_err_" + std::to_string(::getpid()));
-  const std::string cmd = std::string(DMI_BINARY) + " " + args + " > /dev/null 2> " + err.string();
+  const std::string cmd = binary + " " + args + " > /dev/null 2> " + err.string();
   const int rc = std::system(cmd.c_str());
   std::ifstream in(err);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -204,14 +204,7 @@ TEST(RunCli, DrawingCommandsAreHandedToTheFullBinaryBesideIt) {
   fs::create_directories(d);
   fs::create_symlink(DMI_BINARY, d / "linked");
   fs::copy_file(DMI_BINARY, d / "alone");
-  auto call = [](const fs::path& bin, const std::string& args) {
-    const fs::path err = fs::temp_directory_path() / ("dmi_handover_err_" + std::to_string(::getpid()));
-    const int rc = std::system((bin.string() + " " + args + " > /dev/null 2> " + err.string()).c_str());
-    std::ifstream in(err);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    fs::remove(err);
-    return Cli{WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, text};
-  };
+  auto call = [](const fs::path& bin, const std::string& args) { return run_cli(args, bin.string()); };
   const Cli linked = call(d / "linked", "render /nonexistent/run");
   EXPECT_EQ(linked.status, 2);
   EXPECT_NE(linked.err.find("/nonexistent/run: no results.h5"), std::string::npos) << linked.err;  // the full binary's own message
