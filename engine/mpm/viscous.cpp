@@ -125,34 +125,46 @@ void ImplicitViscosity<D>::apply(Scene<D>& s, const TransferKernels<D>& kernels,
   }
 }
 
-// out = K_v u over the unknowns: sum_p V_p sigma_v(D_p(u)) grad N_ip. On one thread (serial_) a scatter in particle
-// and entry order; else in two passes that run in parallel and give the same sums: each particle's V_p sigma_v, then
-// each unknown's sum over its incident particle entries in their order (incidence(): the order of that scatter).
+// V_p sigma_v(D_p(u)) of one particle from its stencil entries (unknown l, grad N); an entry without an unknown names
+// the pad u[n] = 0, so the loop has no branch. NN: entries per particle when known at compile time (0: nn).
+template <int D, int NN>
+inline Mat<D> viscous_stress(const int* l, const Vec<D>* grad, int nn, const std::vector<Vec<D>>& u, double vol, double a, double bv) {
+  Mat<D> L = Mat<D>::Zero();
+  for (int e = 0; e < (NN > 0 ? NN : nn); ++e) L.noalias() += u[static_cast<std::size_t>(l[e])] * grad[e].transpose();
+  const Mat<D> Dm = 0.5 * (L + L.transpose());
+  return Mat<D>(vol * (a * Dm.trace() * Mat<D>::Identity() + 2 * bv * Dm));
+}
+
+// out = K_v u over the unknowns: sum_p V_p sigma_v(D_p(u)) grad N_ip (u and out carry the pad entry n). On one thread
+// (serial_) a scatter in particle and entry order; else in two passes that run in parallel and give the same sums:
+// each particle's V_p sigma_v, then each unknown's sum over its incident particle entries in their order (incidence():
+// the order of that scatter).
 template <int D>
-void ImplicitViscosity<D>::operate(const Scene<D>& s, const Body& b, const Stencils& st, double a, double bv, const std::vector<Vec<D>>& u,
-                                   std::vector<Vec<D>>& out) {
+template <int NN>
+void ImplicitViscosity<D>::operate_nn(const Scene<D>& s, const Body& b, const Stencils& st, double a, double bv, const std::vector<Vec<D>>& u,
+                                      std::vector<Vec<D>>& out) {
   const Particles<D>& P = s.particles;
-  auto stress = [&](Index i) {  // V_p sigma_v(D_p(u))
-    const std::size_t k0 = static_cast<std::size_t>(i - b.begin) * st.nn;
-    Mat<D> L = Mat<D>::Zero();
-    for (int n = 0; n < st.nn; ++n)
-      if (const int l = entry_[k0 + n]; l >= 0) L.noalias() += u[l] * st.grad[k0 + n].transpose();
-    const Mat<D> Dm = 0.5 * (L + L.transpose());
-    return Mat<D>(P.vol[i] * (a * Dm.trace() * Mat<D>::Identity() + 2 * bv * Dm));
+  const int nn = NN > 0 ? NN : st.nn;
+  auto stress = [&](Index i) {
+    const std::size_t k0 = static_cast<std::size_t>(i - b.begin) * static_cast<std::size_t>(nn);
+    return viscous_stress<D, NN>(&entry_[k0], &st.grad[k0], nn, u, P.vol[i], a, bv);
   };
   if (serial_) {
-    out.assign(nodes_.size(), Vec<D>::Zero());
+    out.assign(nodes_.size() + 1, Vec<D>::Zero());
     for (Index i = b.begin; i < b.end; ++i) {
       const Mat<D> sv = stress(i);
-      const std::size_t k0 = static_cast<std::size_t>(i - b.begin) * st.nn;
-      for (int n = 0; n < st.nn; ++n)
-        if (const int l = entry_[k0 + n]; l >= 0) out[static_cast<std::size_t>(l)].noalias() += sv * st.grad[k0 + n];
+      const std::size_t k0 = static_cast<std::size_t>(i - b.begin) * static_cast<std::size_t>(nn);
+      const int* l = &entry_[k0];
+      const Vec<D>* grad = &st.grad[k0];
+      for (int e = 0; e < nn; ++e) out[static_cast<std::size_t>(l[e])].noalias() += sv * grad[e];
     }
+    out.back().setZero();
     return;
   }
   sv_.resize(static_cast<std::size_t>(b.end - b.begin));
   parallel_for(b.begin, b.end, [&](Index i) { sv_[static_cast<std::size_t>(i - b.begin)] = stress(i); });
-  out.resize(nodes_.size());
+  out.resize(nodes_.size() + 1);
+  out.back().setZero();
   parallel_for(0, static_cast<Index>(nodes_.size()), [&](Index l) {
     Vec<D> f = Vec<D>::Zero();
     for (int j = inc_start_[l]; j < inc_start_[l + 1]; ++j) f.noalias() += sv_[inc_particle_[j]] * inc_grad_[j];
@@ -160,17 +172,27 @@ void ImplicitViscosity<D>::operate(const Scene<D>& s, const Body& b, const Stenc
   });
 }
 
+template <int D>
+void ImplicitViscosity<D>::operate(const Scene<D>& s, const Body& b, const Stencils& st, double a, double bv, const std::vector<Vec<D>>& u,
+                                   std::vector<Vec<D>>& out) {
+  switch (st.nn) {  // the stencils of linear hats, quadratic B-splines and uGIMP (3 nodes a side), and cubic reach
+    case D == 2 ? 4 : 8: return operate_nn<D == 2 ? 4 : 8>(s, b, st, a, bv, u, out);
+    case D == 2 ? 9 : 27: return operate_nn<D == 2 ? 9 : 27>(s, b, st, a, bv, u, out);
+    default: return operate_nn<0>(s, b, st, a, bv, u, out);
+  }
+}
+
 // Per unknown, the particle entries whose node it is, in entry order (counting sort of entry_), with their grad N.
 template <int D> void ImplicitViscosity<D>::incidence(const Stencils& st) {
   const std::size_t n = nodes_.size();
   inc_start_.assign(n + 1, 0);
   for (int l : entry_)
-    if (l >= 0) ++inc_start_[static_cast<std::size_t>(l) + 1];
+    if (l < static_cast<int>(n)) ++inc_start_[static_cast<std::size_t>(l) + 1];
   for (std::size_t l = 0; l < n; ++l) inc_start_[l + 1] += inc_start_[l];
   fill_.assign(inc_start_.begin(), inc_start_.end() - 1);
   inc_particle_.resize(static_cast<std::size_t>(inc_start_[n])), inc_grad_.resize(inc_particle_.size());
   for (std::size_t k = 0; k < entry_.size(); ++k)
-    if (const int l = entry_[k]; l >= 0) {
+    if (const int l = entry_[k]; l < static_cast<int>(n)) {
       const int j = fill_[static_cast<std::size_t>(l)]++;
       inc_particle_[static_cast<std::size_t>(j)] = static_cast<int>(k / static_cast<std::size_t>(st.nn)), inc_grad_[static_cast<std::size_t>(j)] = st.grad[k];
     }
@@ -187,11 +209,12 @@ void ImplicitViscosity<D>::solve_body(Scene<D>& s, const Body& b, const Stencils
     if (local_[id] < 0 && g.m[off + id] > mass_eps) local_[id] = static_cast<int>(nodes_.size()), nodes_.push_back(id);
   const std::size_t n = nodes_.size();
   entry_.resize(st.node.size());
-  for (std::size_t e = 0; e < st.node.size(); ++e) entry_[e] = local_[st.node[e]];
+  for (std::size_t e = 0; e < st.node.size(); ++e) entry_[e] = local_[st.node[e]] >= 0 ? local_[st.node[e]] : static_cast<int>(n);  // n: the pad
   // One thread: both passes would run inline, and the scatter adds in the gather's order.
   serial_ = omp_get_max_threads() == 1 || (b.end - b.begin <= kParallelMin && static_cast<Index>(n) <= kParallelMin);
   if (!serial_) incidence(st);
-  for (auto* v : {&rhs_, &fe_, &u_, &q_}) v->assign(n, Vec<D>::Zero());
+  for (auto* v : {&rhs_, &fe_, &q_}) v->assign(n, Vec<D>::Zero());
+  u_.assign(n + 1, Vec<D>::Zero());  // u_[n]: the pad of the entries without an unknown, always zero
   free_.assign(n, Vec<D>::Ones());
   ties_.clear(), slaves_.clear(), walled_node_.assign(n, 0), master_of_.assign(n, 0);
   for (std::size_t l = 0; l < n; ++l) {

@@ -97,11 +97,14 @@ template <int D> class ImplicitViscosity {
   void solve_body(Scene<D>& s, const Body& b, const Stencils& st, double a, double bv, double dt, double mass_eps, const Held& held);
   void operate(const Scene<D>& s, const Body& b, const Stencils& st, double a, double bv, const std::vector<Vec<D>>& u,
                std::vector<Vec<D>>& out);
+  template <int NN>
+  void operate_nn(const Scene<D>& s, const Body& b, const Stencils& st, double a, double bv, const std::vector<Vec<D>>& u,
+                  std::vector<Vec<D>>& out);
   void incidence(const Stencils& st);
 
   std::vector<Stencils> stencils_;  // per body (damped ones only)
   std::vector<int> local_;          // field-local node -> unknown (-1: none)
-  std::vector<int> entry_;          // per particle and entry: unknown (-1: none)
+  std::vector<int> entry_;          // per particle and entry: unknown (n, the pad, where none)
   std::vector<Index> nodes_;        // unknown -> field-local node
   std::vector<Vec<D>> rhs_, fe_, u_, q_;  // M' Y_0 (momentum at t), f_e (joined along n at ties), Y, Q
   std::vector<Vec<D>> y0_, q2_, ky_, qsum_;  // Chebyshev: Y_0, Q_j-2, K Y_j-1, the mean force

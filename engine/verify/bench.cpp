@@ -204,8 +204,8 @@ int bench_main(const std::vector<std::string>& cases, bool as_json, bool quick, 
     std::printf("\nSmall scenes against the kernel (1 thread; kernel: %ld particles, %.1f ns per particle-step)\n",
                 sm["kernel_particles"].get<long>(), sm["kernel_ns_per_particle_step"].get<double>());
     for (const auto& v : sm["variants"]) {
-      std::printf("%s: %.0f particles, %.0f steps, loop %.2f s, %.1f ns per particle-step = %.2f x kernel\n", v["variant"].get<std::string>().c_str(),
-                  v["particles"].get<double>(), v["steps"].get<double>(), v["loop_seconds"].get<double>(), v["ns_per_particle_step"].get<double>(),
+      std::printf("%s at h %g m: %.0f particles, %.0f steps, loop %.2f s, %.1f ns per particle-step = %.2f x kernel\n",
+                  v["variant"].get<std::string>().c_str(), v["cell_size"].get<double>(), v["particles"].get<double>(), v["steps"].get<double>(), v["loop_seconds"].get<double>(), v["ns_per_particle_step"].get<double>(),
                   v["ratio_to_kernel"].get<double>());
       for (const auto& [k, ns] : v["phases_ns"].items()) std::printf("  %-24s %8.1f ns\n", k.c_str(), ns.get<double>());
       std::printf("  rigid constraint passes per step: %.1f\n", v["rigid_passes_per_step"].get<double>());

@@ -331,7 +331,8 @@ json bench_dam(bool progress, bool quick) {
 }
 
 // Small scenes against the kernel (docs/performance.md): the demo's two variants (examples/
-// concrete_dam_boulder_buffer.json at h = 0.04 m, snapshots and solid check off) on one thread, their step loop's wall time per
+// concrete_dam_boulder_buffer.json, snapshots and solid check off) on one thread at h = 0.04 m (the cell the figures in
+// docs/performance.md were first taken at) and, unless quick, at the example's own cell, their step loop's wall time per
 // particle and step, phase by phase (Solver::Phase, the time-step estimate, the recorder), against the kernel's
 // (quadratic B-splines, FLIP, 1 M particles, or 100 k with quick) measured in the same run.
 json bench_small(bool progress, bool quick) {
@@ -343,32 +344,37 @@ json bench_small(bool progress, bool quick) {
   const double kernel_ns = 1e9 * kb.seconds_per_step / static_cast<double>(kb.particles);
   omp_set_num_threads(1);
   const char* file = "concrete_dam_boulder_buffer.json";
-  json j = json::parse(embedded_examples().at(file));
-  j.erase("solid_check");
-  j["grid"] = {{"cell_size", 0.04}};  // the resolution the figures in docs/performance.md were taken at (the old default)
+  const json example = json::parse(embedded_examples().at(file));
+  std::vector<double> cells{0.04};
+  if (!quick) cells.push_back(common_cell_size(parse_scenario_variants(example.dump(), std::string("examples/") + file), file));
   json variants = json::array();
-  for (ScenarioVariant& v : parse_scenario_variants(j.dump(), std::string("examples/") + file)) {
-    v.scenario.output.snapshot_interval = 0.0;
-    RunOptions ro;
-    ro.progress = ProgressMode::quiet, ro.profile = true;
-    const RunOutput o = run_scenario(v.scenario, ro);
-    const auto& n = o.results.info.numbers;
-    const double ps = n.at("particles") * n.at("steps");
-    json phases = json::object();
-    double loop = 0;
-    for (const auto& [k, sec] : n)
-      if (k.rfind("profile_", 0) == 0) {
-        const std::string name = k.substr(8, k.size() - 8 - 8);  // profile_<name>_seconds
-        phases[name] = 1e9 * sec / ps;
-        loop += sec;
-      }
-    json r = {{"variant", v.label}, {"particles", n.at("particles")}, {"steps", n.at("steps")}, {"loop_seconds", loop},
-              {"ns_per_particle_step", 1e9 * loop / ps}, {"ratio_to_kernel", 1e9 * loop / ps / kernel_ns}, {"phases_ns", phases},
-              {"rigid_passes_per_step", n.at("rigid_passes_per_step")}};
-    if (progress)
-      std::fprintf(stderr, "small %s: %.0f particles, %.0f steps, %.2f s, %.0f ns per particle-step (%.1f x kernel)\n", v.label.c_str(),
-                   n.at("particles"), n.at("steps"), loop, 1e9 * loop / ps, 1e9 * loop / ps / kernel_ns);
-    variants.push_back(r);
+  for (double h : cells) {
+    json j = example;
+    j.erase("solid_check");
+    j["grid"] = {{"cell_size", h}};
+    for (ScenarioVariant& v : parse_scenario_variants(j.dump(), std::string("examples/") + file)) {
+      v.scenario.output.snapshot_interval = 0.0;
+      RunOptions ro;
+      ro.progress = ProgressMode::quiet, ro.profile = true;
+      const RunOutput o = run_scenario(v.scenario, ro);
+      const auto& n = o.results.info.numbers;
+      const double ps = n.at("particles") * n.at("steps");
+      json phases = json::object();
+      double loop = 0;
+      for (const auto& [k, sec] : n)
+        if (k.rfind("profile_", 0) == 0) {
+          const std::string name = k.substr(8, k.size() - 8 - 8);  // profile_<name>_seconds
+          phases[name] = 1e9 * sec / ps;
+          loop += sec;
+        }
+      json r = {{"variant", v.label}, {"cell_size", h}, {"particles", n.at("particles")}, {"steps", n.at("steps")}, {"loop_seconds", loop},
+                {"ns_per_particle_step", 1e9 * loop / ps}, {"ratio_to_kernel", 1e9 * loop / ps / kernel_ns}, {"phases_ns", phases},
+                {"rigid_passes_per_step", n.at("rigid_passes_per_step")}};
+      if (progress)
+        std::fprintf(stderr, "small %s at h %g m: %.0f particles, %.0f steps, %.2f s, %.0f ns per particle-step (%.1f x kernel)\n",
+                     v.label.c_str(), h, n.at("particles"), n.at("steps"), loop, 1e9 * loop / ps, 1e9 * loop / ps / kernel_ns);
+      variants.push_back(r);
+    }
   }
   omp_set_num_threads(max_threads);
   return {{"kernel_ns_per_particle_step", kernel_ns}, {"kernel_particles", kb.particles}, {"variants", variants}};
