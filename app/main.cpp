@@ -25,6 +25,7 @@
 #ifndef DMI_LEAN
 #include "render/field.hpp"
 #include "render/render_main.hpp"
+#include "render/picture_helper.hpp"
 #include "render/charts.hpp"
 #include "render/report.hpp"
 #endif
@@ -416,6 +417,9 @@ int main(int argc, char** argv) {
   ren->add_option("--quantity", quantity, "particle colouring: von_mises | sigma_xx | sigma_yy | pressure")
       ->check(CLI::IsMember({"von_mises", "sigma_xx", "sigma_yy", "pressure"}))->capture_default_str();
   ren->add_flag("-q,--quiet", quiet, "no progress output");
+  long helper_of = 0;  // the second picture process of a render, run or report (render/picture_helper.hpp)
+  ren->add_option("--helper-of", helper_of, "internal: draw the pictures this process claims first, for process PID (run, render and report start it)")
+      ->check(CLI::PositiveNumber);
   std::string report_dir;
   bool no_pdf = false;
   CLI::App* rep = app.add_subcommand("report", "pictures and the HTML + PDF design report of a finished run: OUT/report.html, OUT/report.pdf");
@@ -475,6 +479,7 @@ int main(int argc, char** argv) {
 #ifdef DMI_LEAN
     if (*run || *ren || *rep || *swp || (*bch && !bench_out.empty())) return hand_over(argv);
 #else
+    dmi::render::set_picture_program(own_file().string());  // the second picture process runs this program
     if (*run) {  // the whole chain: simulation, then the design checks of what it wrote
       if (!limits_file.empty()) dmi::design::read_limits(limits_file);  // a bad limits file fails before the simulation
       int verdict = 0;
@@ -486,15 +491,20 @@ int main(int argc, char** argv) {
         const std::string design = (std::filesystem::path(out) / "design.json").string();
         verdict = dmi::design::check_main(written, limits_file, false, design, quiet, DMI_VERSION);
       }
-      if (!no_pdf) dmi::render::report_main(out, {quantity, quiet, true, DMI_VERSION});
+      if (!no_pdf) dmi::render::report_main(out, {quantity, quiet, true, DMI_VERSION, threads == 1 ? 1 : 2});
       return verdict;
     }
     if (*ren) {
-      dmi::render::render_main(render_dir, {quantity, quiet});
+      if (helper_of > 0) {  // the second picture process: its pictures are whole files; it ends without tearing VTK down
+        dmi::render::render_main(render_dir, {quantity, true, 1, helper_of});
+        std::fflush(nullptr);
+        std::_Exit(0);
+      }
+      dmi::render::render_main(render_dir, {quantity, quiet, 2});
       return 0;
     }
     if (*rep) {
-      dmi::render::report_main(report_dir, {quantity, quiet, !no_pdf, DMI_VERSION});
+      dmi::render::report_main(report_dir, {quantity, quiet, !no_pdf, DMI_VERSION, 2});
       return 0;
     }
 #endif

@@ -95,6 +95,7 @@ void render_chart(const ChartSpec& spec, const std::string& path) {
   bool any = false;
   for (const auto& c : spec.curves) any = any || c.x.size() >= 2;
   if (!any) throw std::runtime_error(path + ": a chart needs a curve with two points");
+  if (!spec.draw) return;
   auto win = Offscreen::instance().window(spec.width, spec.height);
   auto view = vtkSmartPointer<vtkContextView>::New();
   view->SetRenderWindow(win);

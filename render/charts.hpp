@@ -23,6 +23,7 @@ struct ChartSpec {
   bool x_tight = true;  // the x axis spans the data exactly (a time axis ends with the record); false: whole ticks
   bool log_x = false, log_y = false;  // logarithmic axes (VTK's own ticks)
   std::string svg_path;               // non-empty (ending .svg): the chart also as vector graphics there
+  bool draw = true;                   // false: nothing is drawn or written (another process draws it)
 };
 
 // Writes the chart as PNG (and as SVG with spec.svg_path); throws std::runtime_error when no curve has two points.

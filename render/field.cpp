@@ -320,9 +320,6 @@ FieldImage render_field(const std::vector<Panel>& panels, const FieldSpec& spec,
         img.peak = {f[k], {s.position[s.dim * k], s.position[s.dim * k + 1], s.dim == 3 ? s.position[s.dim * k + 2] : 0.0}, i, s.dim == 3};
   }
   img.clipped = img.peak.value > img.particles.hi * (1 + 1e-9) + 1e-9;
-  auto win = Offscreen::instance().window(spec.width, spec.height);
-  auto plut = lut(img.particles, spec.quantity != "von_mises");
-  auto mlut = lut(img.members, true);
   const int font = std::max(16, spec.width / 54);  // ~9 pt when the picture is printed 180 mm wide
   const double right = 0.76;  // panels left of the bars
   // The title strip holds the title (wrapped once), the members' legend line and the particle-scale line.
@@ -360,6 +357,10 @@ FieldImage render_field(const std::vector<Panel>& panels, const FieldSpec& spec,
       for (const auto& u : states[i].u) umax = std::max(umax, std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]));
     }
   img.deform_scale = umax > 0 ? nice_scale(0.04 * size / umax) : 0;
+  if (!spec.draw) return img;
+  auto win = Offscreen::instance().window(spec.width, spec.height);
+  auto plut = lut(img.particles, spec.quantity != "von_mises");
+  auto mlut = lut(img.members, true);
   // The oblique view's axes: towards the camera, up and right on the screen.
   const bool section = space && spec.section_y.has_value();
   const double view[3] = {section ? 0.0 : -0.62, section ? -1.0 : -0.62, section ? 0.0 : 0.48}, up0[3] = {0, 0, 1};

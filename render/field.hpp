@@ -41,6 +41,8 @@ struct FieldSpec {
   // 3D runs: a vertical section normal to y through y = section_y (m), seen from -y: the particles within a cell of it
   // and the members cut there (the part beyond it). Unset: the oblique view.
   std::optional<double> section_y;
+  // false: only the picture's description (scales, peak, deformation scale) is worked out; another process draws it.
+  bool draw = true;
 };
 
 // The particle with the largest field value over the panels: what a robust colour scale clips.

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cerrno>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -16,7 +17,11 @@
 #include "render/charts.hpp"
 #include "render/field.hpp"
 #include "render/frame_state.hpp"
+#include "render/picture_helper.hpp"
 #include "render/solid.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
 
 namespace dmi::render {
 
@@ -179,10 +184,22 @@ const json* plotted_check(const json& run) {
 
 }  // namespace
 
-json render_runs(const std::vector<RunData>& runs, const json& design_doc, const std::string& image_dir, const RenderOptions& o) {
+json render_runs(const std::vector<RunData>& runs, const json& design_doc, const std::string& image_dir, const RenderOptions& o,
+                 PictureHelper* helper) {
   fs::create_directories(image_dir);
   json manifest = json::array();
   const auto t0 = std::chrono::steady_clock::now();
+  const bool assist = o.helper_of > 0, shared = assist || (helper && helper->active());
+  const std::string owner = std::to_string(assist ? o.helper_of : static_cast<long>(::getpid()));
+  auto claim = [&](int k) { return fs::path(image_dir) / (".claim." + owner + "." + std::to_string(k)); };
+  int picture = 0;
+  auto mine = [&] {  // the pictures in the order below; shared, the first process to create a picture's claim draws it
+    const int k = picture++;
+    if (!shared) return true;
+    const int fd = ::open(claim(k).c_str(), O_CREAT | O_EXCL | O_WRONLY | O_CLOEXEC, 0644);
+    if (fd >= 0) return ::close(fd), true;
+    return errno != EEXIST && !assist;  // no claim possible: this process draws it
+  };
   auto add = [&](const std::string& file, const std::string& kind, const std::string& variant, const std::string& caption, int w, int h,
                  const FieldImage* f) {
     json e{{"file", file}, {"kind", kind}, {"variant", variant}, {"caption", caption}, {"width", w}, {"height", h}};
@@ -210,6 +227,7 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
     spec.quantity = o.quantity;
     const json& g = r.design["verdict"]["governing"];
     spec.title = name + ": " + qlabel + " near the governing instant (" + ms(tg) + (g.is_null() ? "" : ", " + g["title"].get<std::string>()) + ")";
+    spec.draw = mine();
     const std::string f1 = "field_" + tag + "_governing.png";
     const FieldImage gi = render_field({p}, spec, (fs::path(image_dir) / f1).string());
     add(f1, "field_governing", r.variant, spec.title + "; picture at the nearest snapshot, t = " + ms(r.results.snapshots[sg].time) + scale_note(gi, {p}),
@@ -224,6 +242,7 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
       const double yc = std::round(*cs.section_y * 100) / 100 + 0.0;  // + 0.0: no "-0.00"
       std::snprintf(b, sizeof b, ", section y = %.2f m through the impact point, seen from -y, at the contact peak (%s)", yc, ms(tp).c_str());
       cs.title = name + ": " + qlabel + b;
+      cs.draw = mine();
       const std::string f2 = "field_" + tag + "_section.png";
       const std::vector<Panel> one{{&r.results, fr, sp, "t = " + ms(r.results.snapshots[sp].time)}};
       const FieldImage ci = render_field(one, cs, (fs::path(image_dir) / f2).string());
@@ -253,6 +272,7 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
     for (const auto& [what, s] : seq) {
       if (!done.insert(s).second) continue;
       sspec.title = name + ": " + qlabel + ", " + what + " (t = " + ms(r.results.snapshots[s].time) + "), one colour scale for the sequence";
+      sspec.draw = mine();
       const std::string f = "field_" + tag + "_seq" + std::to_string(k++) + ".png";
       const std::vector<Panel> one{{&r.results, fr, s, what + ", t = " + ms(r.results.snapshots[s].time)}};
       const FieldImage si = render_field(one, sspec, (fs::path(image_dir) / f).string());
@@ -265,7 +285,7 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
     const std::string file = "solid_" + tag + ".png";
     const std::string title = r.results.info.scenario_name + ": solid-FE check of the dam body (linear, static, base fixed)";
     try {
-      if (const auto sp = render_solid(r.results, title, (fs::path(image_dir) / file).string())) {
+      if (const auto sp = render_solid(r.results, title, (fs::path(image_dir) / file).string(), 2400, 1100, mine())) {
         char b[1024];
         std::snprintf(b, sizeof b,
                       "%s: load case '%s'; left the body seen from upstream and above, von Mises stress (up to %.3g MPa); right the "
@@ -308,11 +328,13 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
     std::string name = runs[0].results.info.scenario_name;
     if (const auto k = name.rfind(" (with buffer)"); k != std::string::npos && k + 14 == name.size()) name.erase(k);
     spec.title = name + ": " + qlabel + (members ? " at each run's peak member stress" : " near each run's governing instant") + ", one colour scale";
+    spec.draw = mine();
     const FieldImage ci = render_field(panels, spec, (fs::path(image_dir) / "field_comparison.png").string());
     add("field_comparison.png", "field_comparison", "", spec.title + ": " + instants + scale_note(ci, panels), ci.width, ci.height, &ci);
     if (members && runs[0].frame->dim == 2) {  // the envelope colours a plane member's two faces; a space member's
                                                // vertices take the instant's section forces (not an envelope)
       spec.title = name + ": members coloured by their fibre-stress envelope over the run, one colour scale";
+      spec.draw = mine();
       const FieldImage ei = render_field(envelope, spec, (fs::path(image_dir) / "field_envelope.png").string());
       add("field_envelope.png", "field_comparison", "",
           spec.title + " (at each face the largest |fibre stress| of any instant); particles at the instants of the comparison above" + scale_note(ei, envelope),
@@ -338,6 +360,7 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
     for (auto& e : extra) c.curves.push_back(e);
     if (c.curves.empty()) return;
     c.svg_path = (fs::path(image_dir) / fs::path(file).replace_extension(".svg")).string();
+    c.draw = mine();
     render_chart(c, (fs::path(image_dir) / file).string());
     add(file, "chart", "", title, c.width, c.height, nullptr);
     manifest.back()["vector_file"] = fs::path(c.svg_path).filename().string();
@@ -404,24 +427,39 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
       }
       if (!e.curves.empty()) {
         e.svg_path = (fs::path(image_dir) / "chart_envelope.svg").string();
+        e.draw = mine();
         render_chart(e, (fs::path(image_dir) / "chart_envelope.png").string());
         add("chart_envelope.png", "chart", "", e.title, e.width, e.height, nullptr);
         manifest.back()["vector_file"] = "chart_envelope.svg";
       }
     }
   }
+  if (assist) return json{{"images", manifest}};  // the second process: the pictures only
+  const bool helped = shared && helper->wait();
+  std::error_code ec;
+  for (int k = 0; shared && k < picture; ++k) fs::remove(claim(k), ec);
+  if (shared && !helped) {  // it failed: draw everything here
+    RenderOptions all = o;
+    all.processes = 1, all.quiet = true;
+    return render_runs(runs, design_doc, image_dir, all, nullptr);
+  }
+  for (const auto& e : manifest)
+    for (const char* k : {"file", "vector_file"})
+      if (e.contains(k) && !fs::exists(fs::path(image_dir) / e[k].get<std::string>()))
+        throw std::runtime_error((fs::path(image_dir) / e[k].get<std::string>()).string() + ": the picture was not written");
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  json out{{"images", manifest}, {"quantity", o.quantity}, {"render_seconds", secs}};
+  json out{{"images", manifest}, {"quantity", o.quantity}, {"render_seconds", secs}, {"processes", helped ? 2 : 1}};
   std::ofstream(fs::path(image_dir) / "images.json") << out.dump(1) << "\n";
   return out;
 }
 
 json render_main(const std::string& out_dir, const RenderOptions& o) {
+  PictureHelper helper(out_dir, o.quantity, o.helper_of > 0 ? 1 : o.processes);
   json design_doc;
   const std::vector<RunData> runs = load_runs(out_dir, design_doc);
   std::error_code ec;
   const fs::path d = fs::is_directory(out_dir, ec) ? fs::path(out_dir) : fs::path(out_dir).parent_path();
-  return render_runs(runs, design_doc, (d / "images").string(), o);
+  return render_runs(runs, design_doc, (d / "images").string(), o, &helper);
 }
 
 }  // namespace dmi::render

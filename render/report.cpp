@@ -7,11 +7,22 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <csignal>
+#include <optional>
+#include <vector>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <kainjow/mustache.hpp>
 
+#include "render/picture_helper.hpp"
+
 #include "engine/common/error.hpp"
+
+extern char** environ;
 
 namespace dmi::render {
 
@@ -88,11 +99,6 @@ std::string find_weasyprint() {
   return "";
 }
 
-std::string shell_quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
 
 }  // namespace
 
@@ -104,31 +110,98 @@ std::string render_report_html(const json& data) {
   return tmpl.render(to_data(d));
 }
 
-std::string html_to_pdf(const std::string& html, const std::string& pdf_path, std::string* note) {
+PdfJob::PdfJob(const std::string& pdf_path, const std::string& base) : pdf_(pdf_path) {
   const std::string wp = find_weasyprint();
   if (wp.empty()) {
-    *note = "weasyprint not found on PATH: wrote the HTML report only (install it: apt-get install weasyprint)";
-    return "";
+    note_ = "weasyprint not found on PATH: wrote the HTML report only (install it: apt-get install weasyprint)";
+    return;
   }
-  std::error_code ec;
   const fs::path pdf = pdf_path, d = pdf.parent_path().empty() ? fs::path(".") : pdf.parent_path();
   const std::string stem = pdf.stem().string() + "." + std::to_string(::getpid());
-  const fs::path tmp = d / (stem + ".pdf.tmp"), log = d / (stem + ".weasyprint.log");
-  const std::string cmd = shell_quote(wp) + " -q " + shell_quote(html) + " " + shell_quote(tmp.string()) + " > " + shell_quote(log.string()) + " 2>&1";
-  const int rc = std::system(cmd.c_str());
-  std::string msg;
-  {
-    std::ifstream in(log);
-    std::getline(in, msg);
+  tmp_ = (d / (stem + ".pdf.tmp")).string(), log_ = (d / (stem + ".weasyprint.log")).string();
+  int fd[2];
+  if (::pipe2(fd, O_CLOEXEC) != 0) {
+    note_ = "weasyprint not started (no pipe): wrote the HTML report only";
+    return;
   }
-  fs::remove(log, ec);
-  if (rc != 0 || !fs::exists(tmp)) {
-    fs::remove(tmp, ec);
-    *note = "weasyprint failed (" + (msg.empty() ? "exit " + std::to_string(rc) : msg) + "): wrote the HTML report only";
+  std::vector<std::string> args{wp, "-q", "-u", base, "-", tmp_};
+  std::vector<char*> argv;
+  for (auto& x : args) argv.push_back(x.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_adddup2(&fa, fd[0], 0);  // the document on its stdin; dup2 clears close-on-exec there
+  posix_spawn_file_actions_addopen(&fa, 1, log_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&fa, 1, 2);
+  pid_t pid = -1;
+  const int rc = posix_spawn(&pid, wp.c_str(), &fa, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&fa);
+  ::close(fd[0]);
+  if (rc != 0) {
+    ::close(fd[1]);
+    note_ = "weasyprint failed (cannot start " + wp + "): wrote the HTML report only";
+    return;
+  }
+  pid_ = pid, pipe_ = fd[1];
+}
+
+PdfJob::~PdfJob() {
+  if (pipe_ >= 0) ::close(pipe_);
+  if (pid_ > 0) {
+    ::kill(pid_, SIGTERM);
+    int status = 0;
+    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+    }
+  }
+  std::error_code ec;
+  if (!tmp_.empty()) fs::remove(tmp_, ec), fs::remove(log_, ec);
+}
+
+std::string PdfJob::finish(const std::string& html, std::string* note) {
+  if (pid_ <= 0) {
+    *note = note_;
     return "";
   }
-  fs::rename(tmp, pdf);
-  return pdf.string();
+  // A weasyprint that ended early closes the pipe: the write then fails (EPIPE), not the process (SIGPIPE).
+  void (*old)(int) = std::signal(SIGPIPE, SIG_IGN);
+  for (std::size_t at = 0; at < html.size();) {
+    const ssize_t w = ::write(pipe_, html.data() + at, html.size() - at);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) break;
+    at += static_cast<std::size_t>(w);
+  }
+  std::signal(SIGPIPE, old);
+  ::close(pipe_), pipe_ = -1;
+  int status = 0;
+  pid_t r;
+  do r = ::waitpid(pid_, &status, 0);
+  while (r < 0 && errno == EINTR);
+  pid_ = -1;
+  const bool ok = r > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  std::string msg;
+  {
+    std::ifstream in(log_);
+    std::getline(in, msg);
+  }
+  std::error_code ec;
+  fs::remove(log_, ec);
+  if (!ok || !fs::exists(tmp_)) {
+    fs::remove(tmp_, ec);
+    *note = "weasyprint failed (" + (msg.empty() ? "exit " + std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) : msg) +
+            "): wrote the HTML report only";
+    return "";
+  }
+  fs::rename(tmp_, pdf_);
+  tmp_.clear();
+  return pdf_;
+}
+
+std::string html_to_pdf(const std::string& html_path, const std::string& pdf_path, std::string* note) {
+  std::ifstream in(html_path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  PdfJob job(pdf_path, html_path);
+  return job.finish(text.str(), note);
 }
 
 void write_text_atomic(const std::string& path, const std::string& text) { write_atomic(path, text); }
@@ -136,15 +209,18 @@ void write_text_atomic(const std::string& path, const std::string& text) { write
 ReportFiles report_main(const std::string& out_dir, const ReportOptions& o) {
   using clock = std::chrono::steady_clock;
   ReportFiles files;
-  json design_doc;
-  const std::vector<RunData> runs = load_runs(out_dir, design_doc);
+  PictureHelper helper(out_dir, o.quantity, o.picture_processes);
   std::error_code ec;
   const fs::path d = fs::is_directory(out_dir, ec) ? fs::path(out_dir) : fs::path(out_dir).parent_path();
+  json design_doc;
+  const std::vector<RunData> runs = load_runs(out_dir, design_doc);
+  std::optional<PdfJob> pdf;  // started now: it reads the document when the pictures are done
+  if (o.pdf) pdf.emplace((d / "report.pdf").string(), (d / "report.html").string());
   const fs::path images = d / "images";
   auto t0 = clock::now();
   json manifest;
   try {
-    manifest = render_runs(runs, design_doc, images.string(), {o.quantity, o.quiet});
+    manifest = render_runs(runs, design_doc, images.string(), {o.quantity, o.quiet}, &helper);
   } catch (const std::exception& e) {  // no pictures is not a reason to have no report
     std::fprintf(stderr, "damimpact: warning: pictures not rendered (%s); the report has no figures\n", e.what());
     manifest = json{{"images", json::array()}, {"error", e.what()}};
@@ -153,12 +229,13 @@ ReportFiles report_main(const std::string& out_dir, const ReportOptions& o) {
   t0 = clock::now();
   const json data = report_data(runs, design_doc, manifest, images.string(), o.software_version);
   files.html = (d / "report.html").string();
-  write_atomic(files.html, render_report_html(data));
+  const std::string html = render_report_html(data);
+  write_atomic(files.html, html);
   files.html_seconds = std::chrono::duration<double>(clock::now() - t0).count();
   if (!o.quiet) std::printf("wrote %s\n", files.html.c_str());
   if (!o.pdf) return files;
   t0 = clock::now();
-  files.pdf = html_to_pdf(files.html, (d / "report.pdf").string(), &files.pdf_note);
+  files.pdf = pdf->finish(html, &files.pdf_note);
   if (files.pdf.empty()) {
     std::fprintf(stderr, "damimpact: %s\n", files.pdf_note.c_str());
     return files;

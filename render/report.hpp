@@ -16,6 +16,7 @@ struct ReportOptions {
   bool quiet = false;
   bool pdf = true;
   std::string software_version;
+  int picture_processes = 1;  // 2: a second process draws every other picture (RenderOptions::processes)
 };
 
 struct ReportFiles {
@@ -40,8 +41,25 @@ std::string member_damping_text(const nlohmann::json& scenario);
 
 std::string base64(const std::string& bytes);
 
-// HTML -> PDF through weasyprint (written under a temporary name, renamed when whole). Returns the PDF path, or ""
-// with *note saying why not (weasyprint missing or failed).
+// HTML -> PDF through weasyprint, started before the document exists: it reads the HTML from a pipe, so that its
+// start-up (Python and its imports, ~0.6 s here) overlaps the work that makes the document (the pictures). The PDF is
+// written under a temporary name and renamed when whole.
+class PdfJob {
+ public:
+  // Starts weasyprint for pdf_path; relative links resolve against base (the HTML file's path). Without weasyprint on
+  // PATH, or when it cannot start, there is no job and finish() says why.
+  PdfJob(const std::string& pdf_path, const std::string& base);
+  ~PdfJob();  // a job not finished is stopped and its files removed
+  PdfJob(const PdfJob&) = delete;
+  PdfJob& operator=(const PdfJob&) = delete;
+  // Hands over the document and waits: the PDF's path, or "" with *note saying why not (weasyprint missing or failed).
+  std::string finish(const std::string& html, std::string* note);
+
+ private:
+  std::string pdf_, tmp_, log_, note_;
+  int pid_ = -1, pipe_ = -1;
+};
+// The same for an HTML file already written.
 std::string html_to_pdf(const std::string& html_path, const std::string& pdf_path, std::string* note);
 // Writes under a temporary name and renames; throws std::runtime_error naming the file.
 void write_text_atomic(const std::string& path, const std::string& text);

@@ -137,7 +137,7 @@ void section_camera(vtkRenderer* ren, const double b[6]) {
 
 }  // namespace
 
-std::optional<SolidPicture> render_solid(const Results& r, const std::string& title, const std::string& path, int width, int height) {
+std::optional<SolidPicture> render_solid(const Results& r, const std::string& title, const std::string& path, int width, int height, bool draw) {
   if (!r.info.documents.count("solid_field")) return std::nullopt;
   const Field f = read_field(r);
   SolidPicture pic;
@@ -156,6 +156,7 @@ std::optional<SolidPicture> render_solid(const Results& r, const std::string& ti
   double s1_abs = 0;
   for (double v : f.s1) s1_abs = std::max(s1_abs, std::abs(v));
   const Range s1_range{-std::max(s1_abs, 1.0), std::max(s1_abs, 1.0)};
+  if (!draw) return pic;
   auto vm_lut = lut(vm_range, false), s1_lut = lut(s1_range, true);
   const int font = std::max(16, width / 54);
   const double top = 1.0 - (4 * 1.3 * font + 12) / height, split = 0.40;

@@ -20,6 +20,8 @@ struct SolidPicture {
 
 // Renders the load case with the largest nodal principal tension; nullopt when the run has no solid field. Throws
 // std::runtime_error naming the file and the key when the document is malformed, inconsistent or not finite.
-std::optional<SolidPicture> render_solid(const Results& r, const std::string& title, const std::string& path, int width = 2400, int height = 1100);
+// draw = false: only the description is returned (another process draws the picture).
+std::optional<SolidPicture> render_solid(const Results& r, const std::string& title, const std::string& path, int width = 2400, int height = 1100,
+                                         bool draw = true);
 
 }  // namespace dmi::render

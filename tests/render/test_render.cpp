@@ -9,7 +9,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
+#include <sstream>
 #include <string>
 
 #include <vtkImageData.h>
@@ -22,6 +24,7 @@
 #include "render/charts.hpp"
 #include "render/field.hpp"
 #include "render/frame_state.hpp"
+#include "render/picture_helper.hpp"
 #include "render/render_main.hpp"
 #include "render/report.hpp"
 #include "render/solid.hpp"
@@ -229,6 +232,47 @@ TEST_F(Render, ReportHoldsEveryCheckAndItsPdfPagesRender) {
   for (const auto& e : fs::directory_iterator(pages)) n += e.path().extension() == ".png";
   EXPECT_GE(n, 4u);
   EXPECT_LE(n, 20u);
+}
+
+// Every picture, drawn by this process alone or shared with a second process (damimpact render --helper-of PID), is the
+// same file bit for bit, and the manifest is the same; a second process that fails leaves its pictures to this one.
+TEST_F(Render, PicturesSharedWithASecondProcessAreTheOnesOneProcessDraws) {
+  const fs::path images = dir / "images";
+  auto files = [&](const json& m) {
+    std::map<std::string, std::string> bytes;
+    for (const auto& e : m["images"]) {
+      std::ifstream in(images / e["file"].get<std::string>(), std::ios::binary);
+      std::stringstream ss;
+      ss << in.rdbuf();
+      bytes[e["file"]] = ss.str();
+    }
+    return bytes;
+  };
+  auto without_timing = [](json m) {
+    m.erase("render_seconds"), m.erase("processes");
+    return m;
+  };
+  dmi::render::set_picture_program("");
+  fs::remove_all(images);
+  const json alone = dmi::render::render_main(dir.string(), {"von_mises", true, 2});
+  EXPECT_EQ(alone["processes"], 1);  // no program set: no helper
+  const auto one = files(alone);
+  ASSERT_GE(one.size(), 3u);
+  for (const auto& [f, b] : one) EXPECT_GT(b.size(), 1000u) << f;
+  if (dmi::render::usable_cpus() < 2) GTEST_SKIP() << "one CPU: no second process";
+  dmi::render::set_picture_program(DMI_BINARY);
+  fs::remove_all(images);
+  const json shared = dmi::render::render_main(dir.string(), {"von_mises", true, 2});
+  EXPECT_EQ(shared["processes"], 2);
+  EXPECT_EQ(without_timing(shared), without_timing(alone));
+  EXPECT_TRUE(files(shared) == one);
+  dmi::render::set_picture_program("/bin/false");  // starts, draws nothing, exits 1
+  fs::remove_all(images);
+  const json fallback = dmi::render::render_main(dir.string(), {"von_mises", true, 2});
+  dmi::render::set_picture_program("");
+  EXPECT_EQ(fallback["processes"], 1);
+  EXPECT_EQ(without_timing(fallback), without_timing(alone));
+  EXPECT_TRUE(files(fallback) == one);
 }
 
 TEST_F(Render, WithoutWeasyprintTheHtmlIsStillWritten) {
