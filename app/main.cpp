@@ -198,9 +198,12 @@ int grid_study_run(const std::string& file, const std::string& out, int threads,
   dmi::resolve_file_references(source, file);  // the coarser levels are written into OUT/grid_study/
   const std::array<double, 3> h{h1, h1 * ratio, h1 * ratio * ratio};
   const double c1 = std::pow(ratio, -(dim + 1)), c2 = c1 * c1;
+  // Two or more cores: the coarser levels run beside the finest at the lowest priority (design/grid_study.hpp).
+  const bool overlap = (threads > 0 ? threads : omp_get_max_threads()) >= 2;
   if (!quiet) std::printf("grid study: cell sizes %.4g, %.4g, %.4g m (ratio %.3g); estimated cost %.2f times the single run at %.4g m "
-              "(particles ~ h^-%d, steps ~ h^-1: the coarser runs cost %.2f and %.2f of it)\n",
-              h[0], h[1], h[2], ratio, 1 + c1 + c2, h[0], dim, c1, c2);
+              "(particles ~ h^-%d, steps ~ h^-1: the coarser runs cost %.2f and %.2f of it)%s\n",
+              h[0], h[1], h[2], ratio, 1 + c1 + c2, h[0], dim, c1, c2,
+              overlap ? "; the coarser two run beside it at low priority, on the cores it leaves idle" : "");
   double wall_coarse = 0;
   const auto level_run = [&](const std::string& scen, const std::string& dir, int g) {
     std::vector<std::string> written;
@@ -210,12 +213,16 @@ int grid_study_run(const std::string& file, const std::string& out, int threads,
   const auto on_level = [&](int g, double hg, double wall) {
     if (g == 2) wall_coarse = wall;
     if (quiet) return;
+    if (overlap) {
+      std::printf("grid study: h = %.4g m done, %.1f s after the study began\n", hg, wall);
+      return;
+    }
     std::printf("grid study: h = %.4g m done in %.1f s", hg, wall);
     if (g == 2) std::printf("; the remaining runs should take about %.0f s", wall_coarse * (1 / c1 + 1 / c2));
     std::printf("\n");
   };
   const dmi::design::GridStudyOutcome r =
-      dmi::design::run_grid_study(file, source, h1, ratio, out, limits_file, level_run, quiet, DMI_VERSION, on_level);
+      dmi::design::run_grid_study(file, source, h1, ratio, out, limits_file, level_run, quiet, DMI_VERSION, on_level, overlap);
   const nlohmann::json& fine = r.design;
   const int verdict = r.passed ? 0 : 1;
   if (!quiet) {
@@ -418,8 +425,10 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"von_mises", "sigma_xx", "sigma_yy", "pressure"}))->capture_default_str();
   ren->add_flag("-q,--quiet", quiet, "no progress output");
   long helper_of = 0;  // the second picture process of a render, run or report (render/picture_helper.hpp)
-  ren->add_option("--helper-of", helper_of, "internal: draw the pictures this process claims first, for process PID (run, render and report start it)")
+  std::string claims;
+  ren->add_option("--helper-of", helper_of, "internal: the second picture process of process PID (run, render and report start it)")
       ->check(CLI::PositiveNumber);
+  ren->add_option("--claims", claims, "internal: with --helper-of, the folder of the pictures' claims")->check(CLI::ExistingDirectory);
   std::string report_dir;
   bool no_pdf = false;
   CLI::App* rep = app.add_subcommand("report", "pictures and the HTML + PDF design report of a finished run: OUT/report.html, OUT/report.pdf");
@@ -495,8 +504,9 @@ int main(int argc, char** argv) {
       return verdict;
     }
     if (*ren) {
-      if (helper_of > 0) {  // the second picture process: its pictures are whole files; it ends without tearing VTK down
-        dmi::render::render_main(render_dir, {quantity, true, 1, helper_of});
+      if (helper_of > 0 || !claims.empty()) {  // the second picture process: whole files; it ends without tearing VTK down
+        if (helper_of <= 0 || claims.empty()) throw dmi::InputError("render: --helper-of and --claims go together (internal options)");
+        dmi::render::render_main(render_dir, {quantity, true, 1, helper_of, claims});
         std::fflush(nullptr);
         std::_Exit(0);
       }

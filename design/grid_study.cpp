@@ -10,6 +10,11 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <thread>
+
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
 
 #include "design/design.hpp"
 #include "design/estimates.hpp"
@@ -126,14 +131,15 @@ bool judge_grid_study(json& design, const std::string& judge_on) {
 
 GridStudyOutcome run_grid_study(const std::string& file, const nlohmann::json& source, double h, double ratio, const std::string& out,
                                 const std::string& limits_file, const LevelSimulator& simulate, bool quiet,
-                                const std::string& software_version, const std::function<void(int, double, double)>& on_level) {
+                                const std::string& software_version, const std::function<void(int, double, double)>& on_level, bool overlap) {
   namespace fs = std::filesystem;
   GridStudyOutcome r;
   r.h = {h, h * ratio, h * ratio * ratio};
   std::array<std::string, 3> folders;
   std::array<nlohmann::json, 3> designs;
-  for (int g = 2; g >= 0; --g) {
-    const auto t0 = std::chrono::steady_clock::now();
+  const auto t_start = std::chrono::steady_clock::now();
+  auto level = [&](int g) {
+    const auto t0 = overlap ? t_start : std::chrono::steady_clock::now();  // overlapping: seconds since the study began
     char name[64];
     std::snprintf(name, sizeof name, "h_%.6g", r.h[g]);
     const std::string dir = g == 0 ? out : (fs::path(out) / "grid_study" / name).string();
@@ -153,6 +159,32 @@ GridStudyOutcome run_grid_study(const std::string& file, const nlohmann::json& s
     designs[g] = nlohmann::json::parse(d);
     r.wall[g] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (on_level) on_level(g, r.h[g], r.wall[g]);
+  };
+  if (!overlap) {
+    for (int g = 2; g >= 0; --g) level(g);
+  } else {
+    std::exception_ptr coarse_error;
+    std::thread coarse([&] {
+      ::setpriority(PRIO_PROCESS, static_cast<id_t>(::syscall(SYS_gettid)), 19);  // this thread and those it starts
+      try {
+        level(2), level(1);
+      } catch (...) {
+        coarse_error = std::current_exception();
+      }
+    });
+    struct Join {  // also when the finest level throws: the coarse thread ends first
+      std::thread& t;
+      ~Join() {
+        if (t.joinable()) t.join();
+      }
+    } join{coarse};
+    level(0);
+    coarse.join();
+    if (coarse_error) {  // the finest level's checks alone are not the study asked for (levels in turn leave none)
+      std::error_code ec;
+      fs::remove(fs::path(out) / "design.json", ec);
+      std::rethrow_exception(coarse_error);
+    }
   }
   r.design = designs[0];
   r.design["grid_study"] = grid_study_section(designs, r.h, folders);

@@ -38,10 +38,13 @@ struct GridStudyOutcome {
 // (JSON `source`, cell size h) at h, r h and r^2 h, coarsest first. The coarser levels run in
 // out/grid_study/h_<cell>/ from a copy of the scenario with grid.cell_size set (beside presets or in the low-level
 // grid), the finest in out itself from `file`; each level's design checks go to its design.json, and out/design.json
-// receives the grid_study section and the judged verdict. on_level (optional) hears of each finished level.
+// receives the grid_study section and the judged verdict. on_level (optional) hears of each finished level. With
+// overlap, the two coarser levels run in a second thread at the lowest CPU priority (nice 19) while the finest runs
+// in this one: they take the cores the finest level leaves idle (its variants end at different times) and little
+// else; simulate and on_level must then be safe to call from two threads at once.
 GridStudyOutcome run_grid_study(const std::string& file, const nlohmann::json& source, double h, double ratio, const std::string& out,
                                 const std::string& limits_file, const LevelSimulator& simulate, bool quiet,
                                 const std::string& software_version,
-                                const std::function<void(int level, double h, double seconds)>& on_level = {});
+                                const std::function<void(int level, double h, double seconds)>& on_level = {}, bool overlap = false);
 
 }  // namespace dmi::design

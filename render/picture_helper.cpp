@@ -1,19 +1,18 @@
 #include "render/picture_helper.hpp"
 
 #include <algorithm>
-#include <cerrno>
+#include <cstdlib>
+#include <filesystem>
 #include <vector>
 
-#include <fcntl.h>
 #include <sched.h>
-#include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-extern char** environ;
+#include "render/child.hpp"
 
 namespace dmi::render {
+
+namespace fs = std::filesystem;
 
 namespace {
 std::string& program() {
@@ -34,36 +33,40 @@ int usable_cpus() {
 PictureHelper::PictureHelper(const std::string& out_dir, const std::string& quantity, int processes) {
   const std::string exe = program();
   if (processes < 2 || exe.empty() || usable_cpus() < 2) return;
-  std::vector<std::string> args{exe, "render", out_dir, "--quantity", quantity, "-q", "--helper-of", std::to_string(::getpid())};
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  // Quiet: should it fail, this process draws its pictures and meets the same error itself, reported once.
-  posix_spawn_file_actions_t fa;
-  posix_spawn_file_actions_init(&fa);
-  posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
-  pid_t pid = -1;
-  if (posix_spawn(&pid, exe.c_str(), &fa, nullptr, argv.data(), environ) == 0) pid_ = pid;
-  posix_spawn_file_actions_destroy(&fa);
+  std::error_code ec;
+  std::string tmpl = (fs::temp_directory_path(ec) / "dmi_pictures_XXXXXX").string();
+  if (ec || !::mkdtemp(tmpl.data())) return;
+  claims_ = tmpl;
+  // Quiet (stdout and stderr to /dev/null): should it fail, this process draws its pictures and meets the same error
+  // itself, reported once.
+  pid_ = start_child({exe, "render", "--quantity", quantity, "-q", "--helper-of", std::to_string(::getpid()), "--claims", claims_, "--", out_dir},
+                     -1, "");
+  if (pid_ <= 0) fs::remove_all(claims_, ec), claims_.clear();
 }
 
 bool PictureHelper::wait() {
   if (pid_ <= 0) return false;
-  int status = 0;
-  pid_t r;
-  do r = waitpid(pid_, &status, 0);
-  while (r < 0 && errno == EINTR);
+  const int status = wait_child(pid_);
   pid_ = -1;
-  return r > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  return status == 0;
+}
+
+void PictureHelper::stop(const std::string& image_dir) {
+  if (pid_ <= 0) return;
+  stop_child(pid_);
+  pid_ = -1;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(image_dir, ec)) {
+    const std::string n = e.path().filename().string();
+    auto ends = [&](const std::string& s) { return n.size() > s.size() && n.compare(n.size() - s.size(), s.size(), s) == 0; };
+    if (ends(".tmp") || ends(".tmp.svg")) fs::remove(e.path(), ec);
+  }
 }
 
 PictureHelper::~PictureHelper() {
-  if (pid_ <= 0) return;
-  kill(pid_, SIGTERM);
-  int status = 0;
-  while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
-  }
+  if (pid_ > 0) stop_child(pid_);
+  std::error_code ec;
+  if (!claims_.empty()) fs::remove_all(claims_, ec);
 }
 
 }  // namespace dmi::render

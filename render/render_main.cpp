@@ -9,6 +9,7 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <vector>
 
 #include "design/design.hpp"
 #include "design/loads.hpp"
@@ -190,16 +191,23 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
   json manifest = json::array();
   const auto t0 = std::chrono::steady_clock::now();
   const bool assist = o.helper_of > 0, shared = assist || (helper && helper->active());
-  const std::string owner = std::to_string(assist ? o.helper_of : static_cast<long>(::getpid()));
-  auto claim = [&](int k) { return fs::path(image_dir) / (".claim." + owner + "." + std::to_string(k)); };
+  const fs::path claims = assist ? fs::path(o.claims) : shared ? fs::path(helper->claims()) : fs::path();
   int picture = 0;
   auto mine = [&] {  // the pictures in the order below; shared, the first process to create a picture's claim draws it
     const int k = picture++;
     if (!shared) return true;
-    const int fd = ::open(claim(k).c_str(), O_CREAT | O_EXCL | O_WRONLY | O_CLOEXEC, 0644);
+    const int fd = ::open((claims / std::to_string(k)).c_str(), O_CREAT | O_EXCL | O_WRONLY | O_CLOEXEC, 0644);
     if (fd >= 0) return ::close(fd), true;
-    return errno != EEXIST && !assist;  // no claim possible: this process draws it
+    return errno != EEXIST && !assist;  // no claim possible: this process draws it, the helper none
   };
+  struct StopHelper {  // an error here: the helper ends before this process goes on (a report without pictures)
+    PictureHelper* h;
+    const std::string& dir;
+    ~StopHelper() {
+      if (h) h->stop(dir);
+    }
+  } stop_helper{shared && !assist ? helper : nullptr, image_dir};
+  std::vector<std::string> rendered;  // shared: told when the helper has ended
   auto add = [&](const std::string& file, const std::string& kind, const std::string& variant, const std::string& caption, int w, int h,
                  const FieldImage* f) {
     json e{{"file", file}, {"kind", kind}, {"variant", variant}, {"caption", caption}, {"width", w}, {"height", h}};
@@ -210,7 +218,8 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
       e["quantity"] = o.quantity;
     }
     manifest.push_back(e);
-    if (!o.quiet) std::printf("rendered %s\n", (fs::path(image_dir) / file).string().c_str());
+    if (shared) rendered.push_back((fs::path(image_dir) / file).string());
+    else if (!o.quiet) std::printf("rendered %s\n", (fs::path(image_dir) / file).string().c_str());
   };
   const std::string qlabel = quantity_label(o.quantity);
   // Field pictures per run: the governing instant, then initial / contact start / peak / rebound on one scale.
@@ -436,13 +445,14 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
   }
   if (assist) return json{{"images", manifest}};  // the second process: the pictures only
   const bool helped = shared && helper->wait();
-  std::error_code ec;
-  for (int k = 0; shared && k < picture; ++k) fs::remove(claim(k), ec);
+  stop_helper.h = nullptr;
   if (shared && !helped) {  // it failed: draw everything here
     RenderOptions all = o;
-    all.processes = 1, all.quiet = true;
+    all.processes = 1;
     return render_runs(runs, design_doc, image_dir, all, nullptr);
   }
+  for (const std::string& r : rendered)
+    if (!o.quiet) std::printf("rendered %s\n", r.c_str());
   for (const auto& e : manifest)
     for (const char* k : {"file", "vector_file"})
       if (e.contains(k) && !fs::exists(fs::path(image_dir) / e[k].get<std::string>()))

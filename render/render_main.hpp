@@ -29,16 +29,16 @@ struct RenderOptions {
   bool quiet = false;
   int processes = 1;  // 2: a second process shares the pictures where two CPUs are free (PictureHelper)
   long helper_of = 0;  // > 0: this process is the second picture process of that process id: it draws the pictures it
-                       // claims first and writes no images.json
+  std::string claims;  // claims first in this folder (PictureHelper) and writes no images.json
 };
 
 class PictureHelper;
 
 // Renders everything into OUT/images/ and returns the manifest (also written as images.json).
 nlohmann::json render_main(const std::string& out_dir, const RenderOptions& o);
-// With an active helper, each picture is drawn by the process that claims it first (an exclusive file in image_dir,
-// removed at the end), so the helper takes pictures as soon as it is ready; render_runs waits for it (and draws its
-// pictures itself if it failed).
+// With an active helper, each picture is drawn by the process that claims it first (an exclusive file in the helper's
+// claims folder), so the helper takes pictures as soon as it is ready; render_runs waits for it (and draws every
+// picture itself if it failed; on an error of its own it stops the helper first).
 nlohmann::json render_runs(const std::vector<RunData>& runs, const nlohmann::json& design_doc, const std::string& image_dir,
                            const RenderOptions& o, PictureHelper* helper = nullptr);
 

@@ -12,17 +12,14 @@
 #include <vector>
 
 #include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <kainjow/mustache.hpp>
 
+#include "render/child.hpp"
 #include "render/picture_helper.hpp"
 
 #include "engine/common/error.hpp"
-
-extern char** environ;
 
 namespace dmi::render {
 
@@ -116,28 +113,19 @@ PdfJob::PdfJob(const std::string& pdf_path, const std::string& base) : pdf_(pdf_
     note_ = "weasyprint not found on PATH: wrote the HTML report only (install it: apt-get install weasyprint)";
     return;
   }
+  std::error_code ec;
   const fs::path pdf = pdf_path, d = pdf.parent_path().empty() ? fs::path(".") : pdf.parent_path();
   const std::string stem = pdf.stem().string() + "." + std::to_string(::getpid());
-  tmp_ = (d / (stem + ".pdf.tmp")).string(), log_ = (d / (stem + ".weasyprint.log")).string();
+  tmp_ = (d / (stem + ".pdf.tmp")).string();  // beside the PDF (renamed into place)
+  log_ = (fs::temp_directory_path(ec) / ("dmi_" + stem + ".weasyprint.log")).string();
   int fd[2];
   if (::pipe2(fd, O_CLOEXEC) != 0) {
     note_ = "weasyprint not started (no pipe): wrote the HTML report only";
     return;
   }
-  std::vector<std::string> args{wp, "-q", "-u", base, "-", tmp_};
-  std::vector<char*> argv;
-  for (auto& x : args) argv.push_back(x.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t fa;
-  posix_spawn_file_actions_init(&fa);
-  posix_spawn_file_actions_adddup2(&fa, fd[0], 0);  // the document on its stdin; dup2 clears close-on-exec there
-  posix_spawn_file_actions_addopen(&fa, 1, log_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&fa, 1, 2);
-  pid_t pid = -1;
-  const int rc = posix_spawn(&pid, wp.c_str(), &fa, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&fa);
+  const pid_t pid = start_child({wp, "-q", "-u", base, "-", tmp_}, fd[0], log_);  // the document on its stdin
   ::close(fd[0]);
-  if (rc != 0) {
+  if (pid <= 0) {
     ::close(fd[1]);
     note_ = "weasyprint failed (cannot start " + wp + "): wrote the HTML report only";
     return;
@@ -147,14 +135,10 @@ PdfJob::PdfJob(const std::string& pdf_path, const std::string& base) : pdf_(pdf_
 
 PdfJob::~PdfJob() {
   if (pipe_ >= 0) ::close(pipe_);
-  if (pid_ > 0) {
-    ::kill(pid_, SIGTERM);
-    int status = 0;
-    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
-    }
-  }
+  if (pid_ > 0) stop_child(pid_);
   std::error_code ec;
-  if (!tmp_.empty()) fs::remove(tmp_, ec), fs::remove(log_, ec);
+  if (!tmp_.empty()) fs::remove(tmp_, ec);
+  if (!log_.empty()) fs::remove(log_, ec);
 }
 
 std::string PdfJob::finish(const std::string& html, std::string* note) {
@@ -172,12 +156,8 @@ std::string PdfJob::finish(const std::string& html, std::string* note) {
   }
   std::signal(SIGPIPE, old);
   ::close(pipe_), pipe_ = -1;
-  int status = 0;
-  pid_t r;
-  do r = ::waitpid(pid_, &status, 0);
-  while (r < 0 && errno == EINTR);
+  const int status = wait_child(pid_);
   pid_ = -1;
-  const bool ok = r > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0;
   std::string msg;
   {
     std::ifstream in(log_);
@@ -185,10 +165,11 @@ std::string PdfJob::finish(const std::string& html, std::string* note) {
   }
   std::error_code ec;
   fs::remove(log_, ec);
-  if (!ok || !fs::exists(tmp_)) {
+  log_.clear();
+  if (status != 0 || !fs::exists(tmp_)) {
     fs::remove(tmp_, ec);
-    *note = "weasyprint failed (" + (msg.empty() ? "exit " + std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) : msg) +
-            "): wrote the HTML report only";
+    tmp_.clear();
+    *note = "weasyprint failed (" + (msg.empty() ? "exit " + std::to_string(status) : msg) + "): wrote the HTML report only";
     return "";
   }
   fs::rename(tmp_, pdf_);
@@ -199,7 +180,11 @@ std::string PdfJob::finish(const std::string& html, std::string* note) {
 std::string html_to_pdf(const std::string& html_path, const std::string& pdf_path, std::string* note) {
   std::ifstream in(html_path, std::ios::binary);
   std::stringstream text;
-  text << in.rdbuf();
+  if (in) text << in.rdbuf();
+  if (!in || text.str().empty()) {
+    *note = html_path + ": cannot read the HTML (missing or empty): no PDF";
+    return "";
+  }
   PdfJob job(pdf_path, html_path);
   return job.finish(text.str(), note);
 }

@@ -56,7 +56,7 @@ class PdfJob {
   std::string finish(const std::string& html, std::string* note);
 
  private:
-  std::string pdf_, tmp_, log_, note_;
+  std::string pdf_, tmp_, log_, note_;  // log_: weasyprint's messages, in the temporary folder
   int pid_ = -1, pipe_ = -1;
 };
 // The same for an HTML file already written.

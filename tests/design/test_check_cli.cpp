@@ -233,6 +233,20 @@ TEST_F(CheckCli, GridStudyOfAGridIndependentRunIsConvergedWithZeroIndex) {
   for (int k = 1; k <= 2; ++k) EXPECT_TRUE(fs::exists(fs::path(g["folders"][k].get<std::string>()) / "design.json"));
 }
 
+// On two cores the coarser levels run beside the finest (at low priority): the study reads the same numbers as
+// with the levels one after another (-t 1).
+TEST_F(CheckCli, GridStudyWithLevelsSideBySideReadsTheSameNumbers) {
+  const std::string scen = std::string(DMI_SOURCE_DIR) + "/tests/data/design/cantilever_self_weight.json";
+  const fs::path a = dir / "grid_serial", b = dir / "grid_overlap";
+  const Cli ca = cli("run " + scen + " -o " + a.string() + " -t 1 --grid-study --grid-ratio 2 --no-report -q");
+  const Cli cb = cli("run " + scen + " -o " + b.string() + " -t 2 --grid-study --grid-ratio 2 --no-report -q");
+  ASSERT_EQ(ca.status, 0) << ca.err;
+  ASSERT_EQ(cb.status, 0) << cb.err;
+  json ga = json::parse(slurp(a / "design.json"))["grid_study"], gb = json::parse(slurp(b / "design.json"))["grid_study"];
+  ga.erase("folders"), gb.erase("folders");
+  EXPECT_EQ(ga, gb);
+}
+
 TEST_F(CheckCli, GridStudyRefusesARatioBelowSqrtTwo) {
   const Cli c = cli("run " + std::string(DMI_SOURCE_DIR) + "/tests/data/design/cantilever_self_weight.json -o " + (dir / "g2").string() +
                     " --grid-study --grid-ratio 1.2 --no-report -q");

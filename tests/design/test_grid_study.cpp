@@ -2,6 +2,14 @@
 // convergence computed, and a missing or non-numeric value is an error naming the file.
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <stdexcept>
+#include <thread>
+
+#include <unistd.h>
+
 #include "design/grid_study.hpp"
 
 using namespace dmi::design;
@@ -41,4 +49,43 @@ TEST(GridStudy, ConservativeBoundCanFailADesignThatPassesOnTheFinestGrid) {
   EXPECT_FALSE(judge_grid_study(b, "conservative_bound"));
   EXPECT_EQ(b["verdict"]["status"], "fail");
   EXPECT_NE(b["verdict"]["note"].get<std::string>().find("conservative bound"), std::string::npos);
+}
+
+// Levels side by side: an error of a coarser level (its own thread) reaches the caller, after the finest level has
+// ended; an error of the finest level wins, and the coarser thread is joined first (no terminate).
+TEST(GridStudy, SideBySideLevelsReportTheirErrors) {
+  namespace fs = std::filesystem;
+  const fs::path out = fs::temp_directory_path() / ("dmi_gs_overlap_" + std::to_string(::getpid()));
+  const nlohmann::json source = {{"grid", {{"cell_size", 0.1}}}};
+  bool fine_ended = false;
+  const LevelSimulator coarse_fails = [&](const std::string&, const std::string&, int g) -> std::vector<std::string> {
+    if (g > 0) throw std::runtime_error("level " + std::to_string(g) + " failed");
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    fine_ended = true;
+    throw std::runtime_error("fine failed");
+  };
+  try {
+    run_grid_study("s.json", source, 0.1, 2.0, out.string(), "", coarse_fails, true, "test", {}, true);
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "fine failed");
+  }
+  EXPECT_TRUE(fine_ended);
+  // The finest level ends well (the cantilever simulated by the command-line tool), a coarser one fails: its error.
+  const LevelSimulator only_coarse_fails = [&](const std::string&, const std::string& dir, int g) -> std::vector<std::string> {
+    if (g == 2) throw std::runtime_error("level 2 failed");
+    if (g == 1) ADD_FAILURE() << "level 1 ran after level 2 failed";
+    const std::string cmd = std::string(DMI_BINARY) + " simulate " + DMI_SOURCE_DIR + "/tests/data/design/cantilever_self_weight.json -o " + dir + " -q";
+    if (std::system(cmd.c_str()) != 0) throw std::logic_error("the finest level's simulation failed");
+    return {dir + "/results.h5"};
+  };
+  try {
+    run_grid_study("s.json", source, 0.1, 2.0, out.string(), "", only_coarse_fails, true, "test", {}, true);
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "level 2 failed");
+  }
+  EXPECT_TRUE(fs::exists(out / "results.h5"));     // the finest level ran ...
+  EXPECT_FALSE(fs::exists(out / "design.json"));  // ... but its checks alone are not the study: removed
+  fs::remove_all(out);
 }

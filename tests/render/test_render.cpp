@@ -234,8 +234,9 @@ TEST_F(Render, ReportHoldsEveryCheckAndItsPdfPagesRender) {
   EXPECT_LE(n, 20u);
 }
 
-// Every picture, drawn by this process alone or shared with a second process (damimpact render --helper-of PID), is the
-// same file bit for bit, and the manifest is the same; a second process that fails leaves its pictures to this one.
+// Every picture, drawn by this process alone, by the second picture process alone (render --helper-of PID --claims
+// DIR) or shared between the two, is the same file bit for bit, and the manifest is the same; a helper that claims
+// pictures and then fails leaves them to this process; nothing of the sharing is left behind.
 TEST_F(Render, PicturesSharedWithASecondProcessAreTheOnesOneProcessDraws) {
   const fs::path images = dir / "images";
   auto files = [&](const json& m) {
@@ -252,6 +253,12 @@ TEST_F(Render, PicturesSharedWithASecondProcessAreTheOnesOneProcessDraws) {
     m.erase("render_seconds"), m.erase("processes");
     return m;
   };
+  auto leftovers = [&] {
+    std::vector<std::string> l;
+    for (const auto& e : fs::directory_iterator(images))
+      if (e.path().filename().string().find(".tmp") != std::string::npos) l.push_back(e.path().filename().string());
+    return l;
+  };
   dmi::render::set_picture_program("");
   fs::remove_all(images);
   const json alone = dmi::render::render_main(dir.string(), {"von_mises", true, 2});
@@ -259,6 +266,14 @@ TEST_F(Render, PicturesSharedWithASecondProcessAreTheOnesOneProcessDraws) {
   const auto one = files(alone);
   ASSERT_GE(one.size(), 3u);
   for (const auto& [f, b] : one) EXPECT_GT(b.size(), 1000u) << f;
+  // The helper's own drawing: with no claim taken before it, every picture; no manifest.
+  const fs::path claims = dir / "claims";
+  fs::create_directories(claims);
+  fs::remove_all(images);
+  ASSERT_EQ(sh(std::string(DMI_BINARY) + " render --helper-of " + std::to_string(::getpid()) + " --claims " + claims.string() + " -q -- " + dir.string()), 0);
+  EXPECT_FALSE(fs::exists(images / "images.json"));
+  EXPECT_TRUE(files(alone) == one);
+  EXPECT_EQ(sh(std::string(DMI_BINARY) + " render --helper-of 1 -q " + dir.string() + " 2>/dev/null"), 2);  // --claims missing
   if (dmi::render::usable_cpus() < 2) GTEST_SKIP() << "one CPU: no second process";
   dmi::render::set_picture_program(DMI_BINARY);
   fs::remove_all(images);
@@ -266,13 +281,19 @@ TEST_F(Render, PicturesSharedWithASecondProcessAreTheOnesOneProcessDraws) {
   EXPECT_EQ(shared["processes"], 2);
   EXPECT_EQ(without_timing(shared), without_timing(alone));
   EXPECT_TRUE(files(shared) == one);
-  dmi::render::set_picture_program("/bin/false");  // starts, draws nothing, exits 1
+  EXPECT_TRUE(leftovers().empty());
+  // A helper that claims the first three pictures and fails: this process draws everything.
+  const fs::path fake = dir / "fake_helper.sh";
+  std::ofstream(fake) << "#!/bin/sh\nwhile [ $# -gt 0 ]; do [ \"$1\" = --claims ] && touch \"$2/0\" \"$2/1\" \"$2/2\"; shift; done\nexit 1\n";
+  fs::permissions(fake, fs::perms::owner_all);
+  dmi::render::set_picture_program(fake.string());
   fs::remove_all(images);
   const json fallback = dmi::render::render_main(dir.string(), {"von_mises", true, 2});
   dmi::render::set_picture_program("");
   EXPECT_EQ(fallback["processes"], 1);
   EXPECT_EQ(without_timing(fallback), without_timing(alone));
   EXPECT_TRUE(files(fallback) == one);
+  EXPECT_TRUE(leftovers().empty());
 }
 
 TEST_F(Render, WithoutWeasyprintTheHtmlIsStillWritten) {
