@@ -510,7 +510,7 @@ int main(int argc, char** argv) {
         std::fflush(nullptr);
         std::_Exit(0);
       }
-      dmi::render::render_main(render_dir, {quantity, quiet, 2});
+      dmi::render::render_main(render_dir, {quantity, quiet, 2, 0, ""});
       return 0;
     }
     if (*rep) {

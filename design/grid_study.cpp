@@ -163,28 +163,35 @@ GridStudyOutcome run_grid_study(const std::string& file, const nlohmann::json& s
   if (!overlap) {
     for (int g = 2; g >= 0; --g) level(g);
   } else {
-    std::exception_ptr coarse_error;
-    std::thread coarse([&] {
-      ::setpriority(PRIO_PROCESS, static_cast<id_t>(::syscall(SYS_gettid)), 19);  // this thread and those it starts
-      try {
-        level(2), level(1);
-      } catch (...) {
-        coarse_error = std::current_exception();
-      }
-    });
-    struct Join {  // also when the finest level throws: the coarse thread ends first
-      std::thread& t;
+    // Each coarser level in its own thread: one level's two variants end at different times, and the other level's
+    // runs fill the core that leaves.
+    std::array<std::exception_ptr, 3> error;
+    std::array<std::thread, 3> coarse;
+    for (int g = 1; g <= 2; ++g)
+      coarse[g] = std::thread([&, g] {
+        ::setpriority(PRIO_PROCESS, static_cast<id_t>(::syscall(SYS_gettid)), 19);  // this thread and those it starts
+        try {
+          level(g);
+        } catch (...) {
+          error[g] = std::current_exception();
+        }
+      });
+    struct Join {  // also when the finest level throws: the coarser levels end first
+      std::array<std::thread, 3>& t;
       ~Join() {
-        if (t.joinable()) t.join();
+        for (auto& x : t)
+          if (x.joinable()) x.join();
       }
     } join{coarse};
     level(0);
-    coarse.join();
-    if (coarse_error) {  // the finest level's checks alone are not the study asked for (levels in turn leave none)
-      std::error_code ec;
-      fs::remove(fs::path(out) / "design.json", ec);
-      std::rethrow_exception(coarse_error);
-    }
+    for (auto& x : coarse)
+      if (x.joinable()) x.join();
+    for (int g = 2; g >= 1; --g)
+      if (error[g]) {  // the finest level's checks alone are not the study asked for (levels in turn leave none)
+        std::error_code ec;
+        fs::remove(fs::path(out) / "design.json", ec);
+        std::rethrow_exception(error[g]);
+      }
   }
   r.design = designs[0];
   r.design["grid_study"] = grid_study_section(designs, r.h, folders);

@@ -39,7 +39,7 @@ struct GridStudyOutcome {
 // out/grid_study/h_<cell>/ from a copy of the scenario with grid.cell_size set (beside presets or in the low-level
 // grid), the finest in out itself from `file`; each level's design checks go to its design.json, and out/design.json
 // receives the grid_study section and the judged verdict. on_level (optional) hears of each finished level. With
-// overlap, the two coarser levels run in a second thread at the lowest CPU priority (nice 19) while the finest runs
+// overlap, the two coarser levels run in two more threads at the lowest CPU priority (nice 19) while the finest runs
 // in this one: they take the cores the finest level leaves idle (its variants end at different times) and little
 // else; simulate and on_level must then be safe to call from two threads at once.
 GridStudyOutcome run_grid_study(const std::string& file, const nlohmann::json& source, double h, double ratio, const std::string& out,

@@ -261,7 +261,7 @@ TEST_F(Render, PicturesSharedWithASecondProcessAreTheOnesOneProcessDraws) {
   };
   dmi::render::set_picture_program("");
   fs::remove_all(images);
-  const json alone = dmi::render::render_main(dir.string(), {"von_mises", true, 2});
+  const json alone = dmi::render::render_main(dir.string(), {"von_mises", true, 2, 0, ""});
   EXPECT_EQ(alone["processes"], 1);  // no program set: no helper
   const auto one = files(alone);
   ASSERT_GE(one.size(), 3u);
@@ -277,7 +277,7 @@ TEST_F(Render, PicturesSharedWithASecondProcessAreTheOnesOneProcessDraws) {
   if (dmi::render::usable_cpus() < 2) GTEST_SKIP() << "one CPU: no second process";
   dmi::render::set_picture_program(DMI_BINARY);
   fs::remove_all(images);
-  const json shared = dmi::render::render_main(dir.string(), {"von_mises", true, 2});
+  const json shared = dmi::render::render_main(dir.string(), {"von_mises", true, 2, 0, ""});
   EXPECT_EQ(shared["processes"], 2);
   EXPECT_EQ(without_timing(shared), without_timing(alone));
   EXPECT_TRUE(files(shared) == one);
@@ -288,7 +288,7 @@ TEST_F(Render, PicturesSharedWithASecondProcessAreTheOnesOneProcessDraws) {
   fs::permissions(fake, fs::perms::owner_all);
   dmi::render::set_picture_program(fake.string());
   fs::remove_all(images);
-  const json fallback = dmi::render::render_main(dir.string(), {"von_mises", true, 2});
+  const json fallback = dmi::render::render_main(dir.string(), {"von_mises", true, 2, 0, ""});
   dmi::render::set_picture_program("");
   EXPECT_EQ(fallback["processes"], 1);
   EXPECT_EQ(without_timing(fallback), without_timing(alone));
