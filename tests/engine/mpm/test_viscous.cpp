@@ -186,7 +186,28 @@ TEST(ImplicitViscosity, DampedDiskOnElasticDiskConservesMomentumAndCreatesNoEner
 
 // The viscous operator scatters in one pass on one thread and runs as two parallel passes (per particle, then per node
 // over its particle entries in scatter order) on more: the same sums, so the same bits. The damped disk at h 0.01 m
-// (about 5 000 particles, above kParallelMin, so 2 threads run both passes in parallel), 40 steps through the impact.
+// (about 5 000 particles, above kParallelMin, so 2 threads run both passes in parallel), 40 steps, for every stencil
+// the operator is compiled for: 4 (linear hats) and 9 (quadratic B-splines, uGIMP) entries in 2D, 27 in 3D (the
+// same two bodies as balls, h 0.025 m).
+template <int D> void expect_thread_counts_agree(const json& j, const std::string& what) {
+  std::vector<Vec<D>> x[2], v[2];
+  for (int t = 1; t <= 2; ++t) {
+    omp_set_num_threads(t);
+    Solver<D> s(build_scene<D>(parse_scenario(j, "disks.json")));
+    ASSERT_GT(s.scene().bodies[0].end - s.scene().bodies[0].begin, kParallelMin) << what;
+    for (int k = 0; k < 40; ++k) s.step(s.stable_time_step(3.0));
+    ASSERT_NE(s.viscosity(), nullptr) << what;
+    ASSERT_GT(s.viscosity()->stats().stages, 0) << what;
+    x[t - 1] = s.scene().particles.x, v[t - 1] = s.scene().particles.v;
+  }
+  omp_set_num_threads(2);
+  ASSERT_EQ(x[0].size(), x[1].size());
+  for (std::size_t i = 0; i < x[0].size(); ++i) {
+    ASSERT_EQ(x[0][i], x[1][i]) << what << ", particle " << i;
+    ASSERT_EQ(v[0][i], v[1][i]) << what << ", particle " << i;
+  }
+}
+
 TEST(ImplicitViscosity, OneScatterPassEqualsTheParallelPasses) {
   json j = json::parse(embedded_examples().at("colliding_disks.json"));
   j["materials"][0]["damping_ratio"] = 0.5;
@@ -194,22 +215,20 @@ TEST(ImplicitViscosity, OneScatterPassEqualsTheParallelPasses) {
   j["materials"].push_back({{"name", "plain"}, {"model", "linear_elastic"}, {"density", 1000.0}, {"youngs_modulus", 1000.0}, {"poisson_ratio", 0.3}});
   j["bodies"][1]["material"] = "plain";
   j["grid"]["cell_size"] = 0.01;
-  std::vector<Vec<2>> x[2], v[2];
-  for (int t = 1; t <= 2; ++t) {
-    omp_set_num_threads(t);
-    Solver<2> s(build_scene<2>(parse_scenario(j, "disks.json")));
-    ASSERT_GT(s.scene().bodies[0].end - s.scene().bodies[0].begin, kParallelMin);
-    for (int k = 0; k < 40; ++k) s.step(s.stable_time_step(3.0));
-    ASSERT_NE(s.viscosity(), nullptr);
-    ASSERT_GT(s.viscosity()->stats().stages, 0);
-    x[t - 1] = s.scene().particles.x, v[t - 1] = s.scene().particles.v;
+  for (const char* shape : {"bspline2", "linear", "gimp"}) {
+    j["mpm"]["shape_function"] = shape;
+    expect_thread_counts_agree<2>(j, shape);
   }
-  omp_set_num_threads(2);
-  ASSERT_EQ(x[0].size(), x[1].size());
-  for (std::size_t i = 0; i < x[0].size(); ++i) {
-    ASSERT_EQ(x[0][i], x[1][i]) << "particle " << i;
-    ASSERT_EQ(v[0][i], v[1][i]) << "particle " << i;
-  }
+  // The same two balls in 3D (27-entry stencils).
+  json k = j;
+  k["mpm"]["shape_function"] = "bspline2";
+  k["analysis"] = {{"dimension", 3}, {"end_time", 3.0}, {"cfl", 0.4}, {"gravity", {0, 0, 0}}};
+  k["grid"] = {{"origin", {0, 0, 0}}, {"size", {1, 1, 0.5}}, {"cell_size", 0.025}};
+  k["bodies"][0]["shape"]["center"] = {0.25, 0.25, 0.25};
+  k["bodies"][1]["shape"]["center"] = {0.75, 0.75, 0.25};
+  k["bodies"][0]["velocity"] = {0.1, 0.1, 0.0};
+  k["bodies"][1]["velocity"] = {-0.1, -0.1, 0.0};
+  expect_thread_counts_agree<3>(k, "3D bspline2");
 }
 
 // The same strongly damped disk with a negative Poisson's ratio (-0.9): the viscous Lame coefficient a = beta lambda
