@@ -165,6 +165,7 @@ int simulate(const std::string& file, const std::string& out, int threads, bool 
                             j.r.results.info.numbers.at("wall_seconds"));
   };
   if (side_by_side) {
+    const dmi::InterruptScope signals;  // a signal stops every variant, also one still building its scene
     std::vector<std::thread> pool;
     for (int k = 0; k < nv; ++k) pool.emplace_back(run_one, k);
     // The variants check one dam body: its factorisation (most of a solid check's time) runs beside them instead of
@@ -221,8 +222,10 @@ int grid_study_run(const std::string& file, const std::string& out, int threads,
     if (g == 2) std::printf("; the remaining runs should take about %.0f s", wall_coarse * (1 / c1 + 1 / c2));
     std::printf("\n");
   };
-  const dmi::design::GridStudyOutcome r =
-      dmi::design::run_grid_study(file, source, h1, ratio, out, limits_file, level_run, quiet, DMI_VERSION, on_level, overlap);
+  const dmi::design::GridStudyOutcome r = [&] {
+    const dmi::InterruptScope signals;  // a signal stops every level, also one that starts after it
+    return dmi::design::run_grid_study(file, source, h1, ratio, out, limits_file, level_run, quiet, DMI_VERSION, on_level, overlap);
+  }();
   const nlohmann::json& fine = r.design;
   const int verdict = r.passed ? 0 : 1;
   if (!quiet) {

@@ -167,6 +167,13 @@ GridStudyOutcome run_grid_study(const std::string& file, const nlohmann::json& s
     // runs fill the core that leaves.
     std::array<std::exception_ptr, 3> error;
     std::array<std::thread, 3> coarse;
+    struct Join {  // also when the finest level (or starting a thread) throws: the coarser levels end first
+      std::array<std::thread, 3>& t;
+      ~Join() {
+        for (auto& x : t)
+          if (x.joinable()) x.join();
+      }
+    } join{coarse};
     for (int g = 1; g <= 2; ++g)
       coarse[g] = std::thread([&, g] {
         ::setpriority(PRIO_PROCESS, static_cast<id_t>(::syscall(SYS_gettid)), 19);  // this thread and those it starts
@@ -176,13 +183,6 @@ GridStudyOutcome run_grid_study(const std::string& file, const nlohmann::json& s
           error[g] = std::current_exception();
         }
       });
-    struct Join {  // also when the finest level throws: the coarser levels end first
-      std::array<std::thread, 3>& t;
-      ~Join() {
-        for (auto& x : t)
-          if (x.joinable()) x.join();
-      }
-    } join{coarse};
     level(0);
     for (auto& x : coarse)
       if (x.joinable()) x.join();

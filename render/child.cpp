@@ -20,8 +20,9 @@ pid_t start_child(const std::vector<std::string>& args, int in_fd, const std::st
   const pid_t pid = ::fork();
   if (pid != 0) return pid < 0 ? -1 : pid;
   if (::prctl(PR_SET_PDEATHSIG, SIGTERM) != 0 || ::getppid() != parent) ::_exit(127);  // the parent already gone
-  const int in = in_fd >= 0 ? in_fd : ::open("/dev/null", O_RDONLY);
-  const int o = ::open(out, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  // Close-on-exec: only the copies on 0, 1 and 2 reach the program.
+  const int in = in_fd >= 0 ? in_fd : ::open("/dev/null", O_RDONLY | O_CLOEXEC);
+  const int o = ::open(out, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (in < 0 || o < 0 || ::dup2(in, 0) < 0 || ::dup2(o, 1) < 0 || ::dup2(o, 2) < 0) ::_exit(127);
   ::execv(argv[0], argv.data());
   ::_exit(127);

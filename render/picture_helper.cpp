@@ -52,8 +52,7 @@ bool PictureHelper::wait() {
 }
 
 void PictureHelper::stop(const std::string& image_dir) {
-  if (pid_ <= 0) return;
-  stop_child(pid_);
+  if (pid_ > 0) stop_child(pid_);
   pid_ = -1;
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(image_dir, ec)) {

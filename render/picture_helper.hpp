@@ -23,7 +23,8 @@ class PictureHelper {
   const std::string& claims() const { return claims_; }
   // Waits for the helper to end: true when it drew its pictures (exit 0); false otherwise.
   bool wait();
-  // Ends it now (an error in this process) and removes what a picture cut short left in image_dir (*.tmp, *.tmp.svg).
+  // Ends it now if it runs (an error in this process) and removes what a picture cut short left in image_dir (*.tmp,
+  // *.tmp.svg).
   void stop(const std::string& image_dir);
 
  private:

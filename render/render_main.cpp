@@ -446,7 +446,8 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
   if (assist) return json{{"images", manifest}};  // the second process: the pictures only
   const bool helped = shared && helper->wait();
   stop_helper.h = nullptr;
-  if (shared && !helped) {  // it failed: draw everything here
+  if (shared && !helped) {  // it failed: draw everything here (after removing what a picture it cut short left)
+    helper->stop(image_dir);
     RenderOptions all = o;
     all.processes = 1;
     return render_runs(runs, design_doc, image_dir, all, nullptr);

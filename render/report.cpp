@@ -117,7 +117,14 @@ PdfJob::PdfJob(const std::string& pdf_path, const std::string& base) : pdf_(pdf_
   const fs::path pdf = pdf_path, d = pdf.parent_path().empty() ? fs::path(".") : pdf.parent_path();
   const std::string stem = pdf.stem().string() + "." + std::to_string(::getpid());
   tmp_ = (d / (stem + ".pdf.tmp")).string();  // beside the PDF (renamed into place)
-  log_ = (fs::temp_directory_path(ec) / ("dmi_" + stem + ".weasyprint.log")).string();
+  std::string log = (fs::temp_directory_path(ec) / "dmi_weasyprint_XXXXXX").string();  // a name no one can foresee
+  const int lfd = ::mkstemp(log.data());
+  if (lfd < 0) {
+    note_ = "weasyprint not started (no temporary file for its messages): wrote the HTML report only";
+    return;
+  }
+  ::close(lfd);
+  log_ = log;
   int fd[2];
   if (::pipe2(fd, O_CLOEXEC) != 0) {
     note_ = "weasyprint not started (no pipe): wrote the HTML report only";

@@ -14,6 +14,7 @@
 #include <functional>
 #include <memory>
 #include <sstream>
+#include <exception>
 #include <mutex>
 
 #include "engine/common/error.hpp"
@@ -32,22 +33,7 @@ namespace {
 // writes what it has into results.h5.partial (complete = 0) and throws Interrupted. Previous handlers come back after.
 volatile std::sig_atomic_t g_signal = 0;
 extern "C" void on_signal(int sig) { g_signal = sig; }
-// Runs side by side (the variants of one scenario, app/main.cpp) share it: the first installs the handlers, the last
-// restores the previous ones, and a signal stops every run.
-struct SignalGuard {
-  using Handler = void (*)(int);
-  static inline std::mutex mu;
-  static inline int users = 0;
-  static inline Handler old_int = nullptr, old_term = nullptr;
-  SignalGuard() {
-    const std::lock_guard<std::mutex> lock(mu);
-    if (users++ == 0) g_signal = 0, old_int = std::signal(SIGINT, on_signal), old_term = std::signal(SIGTERM, on_signal);
-  }
-  ~SignalGuard() {
-    const std::lock_guard<std::mutex> lock(mu);
-    if (--users == 0) std::signal(SIGINT, old_int), std::signal(SIGTERM, old_term);
-  }
-};
+using SignalGuard = InterruptScope;
 
 constexpr const char* kCheckpointName = "checkpoint.dmi";
 
@@ -399,6 +385,34 @@ RunOutput run_solid_only(const Scenario& s, const RunOptions& o) {
 }
 
 }  // namespace
+
+// Runs side by side (the variants of one scenario, the levels of a grid study) share the handlers: the first scope
+// installs them, the last restores the previous ones, and a signal stops every run. A scope held around all of them
+// keeps a signal from being forgotten between two runs (a run starting after it stops at once); when the outermost
+// scope ends normally with a signal that no run acted on, the signal is raised again under the previous handlers.
+namespace {
+std::mutex g_scope_mu;
+int g_scope_users = 0;
+void (*g_old_int)(int) = nullptr;
+void (*g_old_term)(int) = nullptr;
+}  // namespace
+
+InterruptScope::InterruptScope() {
+  const std::lock_guard<std::mutex> lock(g_scope_mu);
+  if (g_scope_users++ == 0) g_signal = 0, g_old_int = std::signal(SIGINT, on_signal), g_old_term = std::signal(SIGTERM, on_signal);
+}
+
+InterruptScope::~InterruptScope() {
+  int pending = 0;
+  {
+    const std::lock_guard<std::mutex> lock(g_scope_mu);
+    if (--g_scope_users != 0) return;
+    std::signal(SIGINT, g_old_int), std::signal(SIGTERM, g_old_term);
+    if (std::uncaught_exceptions() == 0) pending = g_signal;  // unwinding: the run that stopped reports it
+    g_signal = 0;
+  }
+  if (pending != 0) std::raise(pending);
+}
 
 RunEstimate preflight(const Scenario& s) {
   if (s.bodies.empty()) return {};

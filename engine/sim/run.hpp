@@ -28,6 +28,17 @@ struct RunOutput {
   std::string results_path;     // empty when nothing was written
 };
 
+// SIGINT / SIGTERM handling shared by runs (run_scenario holds one scope per run). Hold one around runs that belong
+// together (variants side by side, a grid study's levels) so that a signal stops all of them, also those that start
+// after it; a signal no run acted on is raised again when the outermost scope ends without an exception.
+class InterruptScope {
+ public:
+  InterruptScope();
+  ~InterruptScope();
+  InterruptScope(const InterruptScope&) = delete;
+  InterruptScope& operator=(const InterruptScope&) = delete;
+};
+
 // Throws InputError for a scenario that cannot be built, RunError when the run fails, and
 // std::runtime_error for file errors.
 RunOutput run_scenario(const Scenario& s, const RunOptions& o);
