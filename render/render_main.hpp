@@ -28,8 +28,10 @@ struct RenderOptions {
   std::string quantity = "von_mises";
   bool quiet = false;
   int processes = 1;  // 2: a second process shares the pictures where two CPUs are free (PictureHelper)
-  long helper_of = 0;  // > 0: this process is the second picture process of that process id: it draws the pictures it
-  std::string claims;  // claims first in this folder (PictureHelper) and writes no images.json
+  // helper_of > 0: this process is the second picture process of that process id; it draws the pictures whose claim
+  // it creates first in the folder `claims` (PictureHelper) and writes no images.json.
+  long helper_of = 0;
+  std::string claims;
 };
 
 class PictureHelper;

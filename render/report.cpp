@@ -96,7 +96,6 @@ std::string find_weasyprint() {
   return "";
 }
 
-
 }  // namespace
 
 std::string render_report_html(const json& data) {

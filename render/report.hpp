@@ -16,7 +16,7 @@ struct ReportOptions {
   bool quiet = false;
   bool pdf = true;
   std::string software_version;
-  int picture_processes = 1;  // 2: a second process draws every other picture (RenderOptions::processes)
+  int picture_processes = 1;  // 2: a second process shares the pictures (RenderOptions::processes)
 };
 
 struct ReportFiles {

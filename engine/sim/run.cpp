@@ -33,7 +33,6 @@ namespace {
 // writes what it has into results.h5.partial (complete = 0) and throws Interrupted. Previous handlers come back after.
 volatile std::sig_atomic_t g_signal = 0;
 extern "C" void on_signal(int sig) { g_signal = sig; }
-using SignalGuard = InterruptScope;
 
 constexpr const char* kCheckpointName = "checkpoint.dmi";
 
@@ -174,7 +173,7 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   }
 
   // SIGINT and SIGTERM stop the run cleanly from before its partial results file exists.
-  const SignalGuard signals;
+  const InterruptScope signals;
   std::unique_ptr<ResultsWriter> writer;
   const bool files = !o.out_dir.empty();
   std::string results_path, ckpt;
