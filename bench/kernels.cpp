@@ -7,13 +7,14 @@
 //   ScatterFloor: the production scatter (scatter_k3_avx, transfer2d_avx.hpp) over a minimal particle stream (9
 //                 doubles each, in tile-row order), with no indirection, no body lookup and no other pass: what
 //                 the scatter's nodal read-modify-writes cost alone.
-//   GatherFloor:  the production gather (gather_k3_avx) over a minimal particle stream (8 doubles each), with the
+//   GatherFloor:  the production gather (gather_rec_k3_avx) over a minimal particle stream (8 doubles each), with the
 //                 FLIP velocity, position and F updates: what G2P's arithmetic and nodal loads cost alone.
 //   CopyFloor:    every particle array read once and written once (the bytes of Particles<2>): the memory-traffic
 //                 time of one pass over all particle data.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <memory>
@@ -140,7 +141,7 @@ void ScatterFloor(benchmark::State& st) {
   st.SetItemsProcessed(st.iterations() * static_cast<long>(p.size()));
 }
 
-// The production gather (gather_k3_avx) over a minimal particle stream: weights, the 3 x 3 nodes' v and v^L, then
+// The production gather (gather_rec_k3_avx) over a minimal particle stream: weights, the 3 x 3 nodes' records, then
 // FLIP velocity, position and F updated in place (dt = 0: the particles stay put).
 void GatherFloor(benchmark::State& st) {
   struct P {
@@ -149,7 +150,8 @@ void GatherFloor(benchmark::State& st) {
   const int side = lattice_side();
   const Index nx = side / 2 + 4;
   std::vector<P> p = tile_ordered<P>(side, [](double x, double y) { return P{x, y, 0.1, 0.2, {1, 0, 0, 1}}; });
-  std::vector<double> v(2 * static_cast<std::size_t>(nx * nx), 0.1), vl(v.size(), 0.2);
+  std::vector<double> store(4 * static_cast<std::size_t>(nx * nx) + 4, 0.1);  // (v^L, v^L - v) per node, 32-byte aligned
+  const double* rec = store.data() + (32 - reinterpret_cast<std::uintptr_t>(store.data()) % 32) % 32 / sizeof(double);
   const double dt = 0;
   for (auto _ : st) {
     for (P& a : p) {
@@ -157,8 +159,8 @@ void GatherFloor(benchmark::State& st) {
       double wx[3], dwx[3], wy[3], dwy[3];
       BSpline2Shape::eval(a.x, 0, bx, wx, dwx);
       BSpline2Shape::eval(a.y, 0, by, wy, dwy);
-      const detail::GatherK3 g = detail::gather_k3_avx(vl.data(), v.data(), static_cast<Index>(by) * nx + bx, nx, wx, dwx, wy, dwy, 1.0);
-      a.vx += g.vpx - g.nvx, a.vy += g.vpy - g.nvy;
+      const detail::GatherRecK3 g = detail::gather_rec_k3_avx(rec, static_cast<Index>(by) * nx + bx, nx, wx, dwx, wy, dwy, 1.0);
+      a.vx += g.dvx, a.vy += g.dvy;
       a.x += dt * g.vpx, a.y += dt * g.vpy;
       const double f0 = a.F[0], f1 = a.F[1], f2 = a.F[2], f3 = a.F[3];
       a.F[0] = f0 + dt * (g.l00 * f0 + g.l01 * f2), a.F[1] = f1 + dt * (g.l00 * f1 + g.l01 * f3);

@@ -154,10 +154,14 @@ template <int D> class Grid {
   // 2D), so the scatter touches one record per node instead of two arrays (in 2D it adds it as one 4-wide vector);
   // unpacked into p, f (and zeroed) right after the scatter. The mass goes straight into m.
   double* pf() { return pf_; }
+  // G2P scratch (2D): v^L and the FLIP increment v^L - v^k of a node side by side (vLx, vLy, dvx, dvy), 32-byte aligned,
+  // packed from vL and v right before G2P, so the gather reads one aligned record per node instead of two arrays.
+  double* vrec() { return vrec_; }
 
  private:
-  std::vector<double> pf_storage_;
+  std::vector<double> pf_storage_, vrec_storage_;
   double* pf_ = nullptr;
+  double* vrec_ = nullptr;
   Vec<D> origin_;
   IVec<D> cells_, nodes_, tiles_;
   double h_, inv_h_;

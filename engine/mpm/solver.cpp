@@ -168,7 +168,12 @@ template <int D> void Solver<D>::sort_particles() {
   if (order.size() != P.size()) return;  // not binned yet
   std::vector<Index> next(scene_.bodies.size()), perm(P.size());
   for (std::size_t b = 0; b < scene_.bodies.size(); ++b) next[b] = scene_.bodies[b].begin;
-  for (Index q : order) perm[next[P.body[q]]++] = q;
+  bool same = true;
+  for (Index q : order) {
+    const Index k = next[P.body[q]]++;
+    perm[k] = q, same &= k == q;
+  }
+  if (same) return;  // the binning held since the last sort (no particle left its tile's margin): already in order
   P.permute(perm);
   for (auto& m : scene_.materials) m->permute(perm);
   if (rigid_) rigid_->permute(perm);

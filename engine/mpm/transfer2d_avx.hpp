@@ -1,8 +1,9 @@
 // AVX2 forms of the 2D FLIP scatter and gather for 3-node stencils (quadratic B-splines, uGIMP): the same equations
 // as the generic loops of transfer_kernels.hpp (Lin & Yang 2024, eqs. 5-8 and 13-14) with 4-wide vectors: a node's (px, py, fx, fy)
-// record is one aligned vector, and a stencil row's three velocities are 6 adjacent doubles (perf: the scalar loops
-// spilled their operands to the stack and spent their time in loads and stores). Sums are the same terms in the same
-// node order; rounding differs from the scalar loops by FMA contraction only. No access reaches past a row's third node
+// record is one aligned vector in the scatter, and (v^L, v^L - v) of a node one aligned record in the gather (perf: the
+// scalar loops spilled their operands to the stack and spent their time in loads and stores). Sums are the same terms
+// in the same node order; rounding differs from the scalar loops by FMA contraction and by FLIP's increment summed as
+// sum N (v^L - v) rather than sum N v^L - sum N v. No access reaches past a row's third node
 // (prefetches may: they never fault).
 #pragma once
 #include "engine/common/types.hpp"
@@ -77,47 +78,35 @@ namespace dmi::detail {
   }
 }
 
-// Horizontal sums of interleaved (x, y) lanes: lo = (x0, y0, x1, y1), hi = (x2, y2) -> (sum x, sum y).
-inline __m128d pair_sum(__m256d lo, __m128d hi) {
-  return _mm_add_pd(_mm_add_pd(_mm256_castpd256_pd128(lo), _mm256_extractf128_pd(lo, 1)), hi);
-}
-
-struct GatherK3 {
-  double vpx, vpy, nvx, nvy, l00, l01, l10, l11;  // sum N vL, sum N v, grad of vL (l_ij = sum vL_i dN_j)
+// Gather of one particle from the packed records of Grid::vrec, (vLx, vLy, dvx, dvy) per node with dv = v^L - v^k (the
+// FLIP increment), rows starting at node offset row0, nx apart: a row's three records are three aligned 4-wide loads,
+// and sum_a w_a r_a gives (sum N v^L, sum N dv) in one vector (no horizontal sums); the slopes' lanes 0-1 give the
+// gradient of v^L. Returns (vpx, vpy, dvx, dvy, l00, l01, l10, l11). Against two interleaved arrays (v^L, v) read
+// 6 + 6 doubles a row: docs/performance.md, "The gather from packed node records".
+struct GatherRecK3 {
+  double vpx, vpy, dvx, dvy, l00, l01, l10, l11;
 };
-
-// Gather of one particle from velocities vL and v (interleaved x, y) at rows starting at node offset row0.
-[[gnu::always_inline]] inline GatherK3 gather_k3_avx(const double* vl, const double* v, Index row0, Index nx, const double* wx, const double* dwx,
-                              const double* wy, const double* dwy, double ih) {
-  const __m256d WX = _mm256_set_pd(wx[1], wx[1], wx[0], wx[0]), DX = _mm256_set_pd(dwx[1], dwx[1], dwx[0], dwx[0]);
-  const __m128d WX2 = _mm_set1_pd(wx[2]), DX2 = _mm_set1_pd(dwx[2]);
-  __m256d aN = _mm256_setzero_pd(), aV = aN, aDx = aN, aDy = aN;
-  __m128d aN2 = _mm_setzero_pd(), aV2 = aN2, aDx2 = aN2, aDy2 = aN2;
+[[gnu::always_inline]] inline GatherRecK3 gather_rec_k3_avx(const double* rec, Index row0, Index nx, const double* wx, const double* dwx,
+                                                          const double* wy, const double* dwy, double ih) {
+  const __m256d W0 = _mm256_set1_pd(wx[0]), W1 = _mm256_set1_pd(wx[1]), W2 = _mm256_set1_pd(wx[2]);
+  const __m256d D0 = _mm256_set1_pd(dwx[0] * ih), D1 = _mm256_set1_pd(dwx[1] * ih), D2 = _mm256_set1_pd(dwx[2] * ih);
+  __m256d aN = _mm256_setzero_pd(), aDx = aN, aDy = aN;
   for (int b = 0; b < 3; ++b) {
-    const Index id = row0 + b * nx;
-    __builtin_prefetch(vl + 2 * (id + kNodeAhead));
-    __builtin_prefetch(v + 2 * (id + kNodeAhead));
-    const __m256d L = _mm256_loadu_pd(vl + 2 * id), V = _mm256_loadu_pd(v + 2 * id);
-    const __m128d L2 = _mm_loadu_pd(vl + 2 * id + 4), V2 = _mm_loadu_pd(v + 2 * id + 4);
-    const __m256d W = _mm256_set1_pd(wy[b]), dW = _mm256_set1_pd(dwy[b] * ih), Wh = _mm256_set1_pd(wy[b] * ih);
-    const __m256d wl = _mm256_mul_pd(WX, L);
-    aN = _mm256_fmadd_pd(W, wl, aN);
-    aDy = _mm256_fmadd_pd(dW, wl, aDy);
-    aDx = _mm256_fmadd_pd(Wh, _mm256_mul_pd(DX, L), aDx);
-    aV = _mm256_fmadd_pd(W, _mm256_mul_pd(WX, V), aV);
-    const __m128d W1 = _mm256_castpd256_pd128(W), dW1 = _mm256_castpd256_pd128(dW), Wh1 = _mm256_castpd256_pd128(Wh);
-    const __m128d wl2 = _mm_mul_pd(WX2, L2);
-    aN2 = _mm_fmadd_pd(W1, wl2, aN2);
-    aDy2 = _mm_fmadd_pd(dW1, wl2, aDy2);
-    aDx2 = _mm_fmadd_pd(Wh1, _mm_mul_pd(DX2, L2), aDx2);
-    aV2 = _mm_fmadd_pd(W1, _mm_mul_pd(WX2, V2), aV2);
+    const double* r = rec + 4 * (row0 + b * nx);
+    __builtin_prefetch(r + 4 * kNodeAhead);
+    const __m256d R0 = _mm256_load_pd(r), R1 = _mm256_load_pd(r + 4), R2 = _mm256_load_pd(r + 8);
+    const __m256d s = _mm256_fmadd_pd(W2, R2, _mm256_fmadd_pd(W1, R1, _mm256_mul_pd(W0, R0)));
+    const __m256d g = _mm256_fmadd_pd(D2, R2, _mm256_fmadd_pd(D1, R1, _mm256_mul_pd(D0, R0)));
+    const __m256d W = _mm256_set1_pd(wy[b]);
+    aN = _mm256_fmadd_pd(W, s, aN);
+    aDx = _mm256_fmadd_pd(W, g, aDx);
+    aDy = _mm256_fmadd_pd(_mm256_set1_pd(dwy[b] * ih), s, aDy);
   }
-  alignas(16) double n[2], nv[2], dx[2], dy[2];
-  _mm_store_pd(n, pair_sum(aN, aN2));
-  _mm_store_pd(nv, pair_sum(aV, aV2));
-  _mm_store_pd(dx, pair_sum(aDx, aDx2));
-  _mm_store_pd(dy, pair_sum(aDy, aDy2));
-  return GatherK3{n[0], n[1], nv[0], nv[1], dx[0], dy[0], dx[1], dy[1]};
+  alignas(32) double n[4], dx[4], dy[4];
+  _mm256_store_pd(n, aN);
+  _mm256_store_pd(dx, aDx);
+  _mm256_store_pd(dy, aDy);
+  return GatherRecK3{n[0], n[1], n[2], n[3], dx[0], dy[0], dx[1], dy[1]};
 }
 
 }  // namespace dmi::detail

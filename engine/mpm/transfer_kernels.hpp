@@ -269,6 +269,7 @@ template <int D> struct GatherCtx {
   const double* __restrict gvl;  // v^L, interleaved
   const double* __restrict gv;   // v^k (or the MUSL remap), interleaved
   const double* __restrict gm;   // nodal mass (0 on empty nodes after the grid update)
+  const double* __restrict rec;  // 2D: (v^L, v^L - v) per node (Grid::vrec), packed for the AVX2 FLIP gather
   GridView<D> g;
   double blend, dt;
 };
@@ -296,8 +297,8 @@ template <int D, class Shape, class Scheme, class Mode, bool SIMD> inline int ga
 #ifdef DMI_HAVE_AVX2_K3
     constexpr bool kVector = SIMD && D == 2 && K == 3 && !Scheme::affine && Mode::velocity && Mode::kinematics;
     if constexpr (kVector) {
-      const GatherK3 gk = gather_k3_avx(c.gvl, c.gv, node0, c.g.stride[1], st.w[0], st.dw[0], st.w[1], st.dw[1], c.g.ih);
-      vp[0] = gk.vpx, vp[1] = gk.vpy, dv[0] = gk.vpx - gk.nvx, dv[1] = gk.vpy - gk.nvy;
+      const GatherRecK3 gk = gather_rec_k3_avx(c.rec, node0, c.g.stride[1], st.w[0], st.dw[0], st.w[1], st.dw[1], c.g.ih);
+      vp[0] = gk.vpx, vp[1] = gk.vpy, dv[0] = gk.dvx, dv[1] = gk.dvy;
       l[0][0] = gk.l00, l[0][1] = gk.l01, l[1][0] = gk.l10, l[1][1] = gk.l11;
     }
 #else
@@ -425,8 +426,22 @@ template <int D, class Shape, class Scheme, class Mode, bool SIMD>
 G2PResult gather(Scene<D>& s, double dt, const typename TransferKernels<D>::ChunkHook* after) {
   Grid<D>& g = *s.grid;
   Particles<D>& P = s.particles;
+#ifdef DMI_HAVE_AVX2_K3
+  if constexpr (SIMD && D == 2 && Shape::K == 3 && !Scheme::affine && Mode::velocity && Mode::kinematics) {
+    // The records the vector gather reads, at the active nodes of every field (the particles' stencils lie inside them).
+    const auto& active = g.active();
+    const Index nn = g.nnodes();
+    double* rec = g.vrec();
+    parallel_for(0, static_cast<Index>(active.size()), [&](Index a) {
+      for (int fld = 0; fld < g.nfields(); ++fld) {
+        const Index k = fld * nn + active[a];
+        for (int d = 0; d < D; ++d) rec[2 * D * k + d] = g.vL[k][d], rec[2 * D * k + D + d] = g.vL[k][d] - g.v[k][d];
+      }
+    });
+  }
+#endif
   const GatherCtx<D> c{P.x.data(), P.v.data(), P.half_size.data(), P.C.data(), P.F.data(), P.L.data(), P.body.data(), s.bodies.data(),
-                       g.vL.data()->data(), g.v.data()->data(), g.m.data(), GridView<D>(g), s.options.flip_blend, dt};
+                       g.vL.data()->data(), g.v.data()->data(), g.m.data(), g.vrec(), GridView<D>(g), s.options.flip_blend, dt};
   const Index np = static_cast<Index>(P.size());
   constexpr Index kChunk = 1024;
   const Index nchunks = (np + kChunk - 1) / kChunk;

@@ -1,6 +1,7 @@
 // Shape functions in 2D and 3D (the separable stencil the transfers walk): partition of unity, linear completeness
 // (sum N_i x_i = x_p) and gradient consistency (sum grad N_i = 0, sum grad N_i (x) x_i = I), and the derivative matches a finite difference;
-// sum grad N_i grad N_i^T / N_i from the 1D factors equals the sum over the entries.
+// sum grad N_i grad N_i^T / N_i from the 1D factors equals the sum over the entries; each axis's weights are the 1D
+// definition's.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,6 +22,17 @@ template <int D, class Shape> void check_shape(double lp) {
       const Vec<D> x = origin + xr * h, half = Vec<D>::Constant(lp * h);
       Stencil<D, Shape> st;
       st.compute(x, half, origin, inv_h);
+      // Each axis as the 1D definition gives it (the 2D B-spline stencil evaluates both axes in one vector).
+      for (int d = 0; d < D; ++d) {
+        int base;
+        double w[Shape::K], dw[Shape::K];
+        Shape::eval((x[d] - origin[d]) * inv_h, lp, base, w, dw);
+        EXPECT_EQ(st.base[d], base);
+        for (int k = 0; k < Shape::K; ++k) {
+          EXPECT_NEAR(st.w[d][k], w[k], 1e-15);
+          EXPECT_NEAR(st.dw[d][k], dw[k], 1e-14);
+        }
+      }
       double sum = 0;
       Vec<D> first = Vec<D>::Zero(), grad = Vec<D>::Zero();
       Mat<D> gx = Mat<D>::Zero();
