@@ -4,7 +4,7 @@
 //   DMI_KERNEL_PARTICLES=N (default 1,000,000), OMP_NUM_THREADS=1 for one core.
 // items_per_second is particles per second through the phase (the whole step for Step). Figures only, nothing is
 // asserted; docs/performance.md ("What limits one core") reads them.
-//   ScatterFloor: the production scatter (scatter_k3_avx, transfer2d_avx.hpp) over a minimal particle stream (9
+//   ScatterFloor: the production scatter (scatter_k3_avx, transfer2d_avx.hpp) over a minimal particle stream (10
 //                 doubles each, in tile-row order), with no indirection, no body lookup and no other pass: what
 //                 the scatter's nodal read-modify-writes cost alone.
 //   GatherFloor:  the production gather (gather_rec_k3_avx) over a minimal particle stream (8 doubles each), with the
@@ -121,11 +121,11 @@ template <class P, class Make> std::vector<P> tile_ordered(int side, Make make) 
 
 void ScatterFloor(benchmark::State& st) {
   struct P {
-    double x, y, mvx, mvy, m, s00, s01, s10, s11;
+    double x, y, vx, vy, m, vol, s[4];  // s: stress column-major
   };
   const int side = lattice_side();
   const Index nx = side / 2 + 4;
-  const std::vector<P> p = tile_ordered<P>(side, [](double x, double y) { return P{x, y, 0.1, 0.2, 1.0, 1, 2, 2, 3}; });
+  const std::vector<P> p = tile_ordered<P>(side, [](double x, double y) { return P{x, y, 0.1, 0.2, 1.0, 1e-3, {1, 2, 2, 3}}; });
   std::vector<double> storage(4 * static_cast<std::size_t>(nx * nx) + 4), gm(static_cast<std::size_t>(nx * nx));
   double* pf = storage.data() + ((32 - reinterpret_cast<std::uintptr_t>(storage.data()) % 32) % 32) / sizeof(double);
   for (auto _ : st) {
@@ -134,7 +134,7 @@ void ScatterFloor(benchmark::State& st) {
       double wx[3], dwx[3], wy[3], dwy[3];
       BSpline2Shape::eval(a.x, 0, bx, wx, dwx);
       BSpline2Shape::eval(a.y, 0, by, wy, dwy);
-      detail::scatter_k3_avx(pf, gm.data(), static_cast<Index>(by) * nx + bx, nx, wx, dwx, wy, dwy, 1.0, a.m, a.mvx, a.mvy, a.s00, a.s01, a.s10, a.s11);
+      detail::scatter_k3_avx(pf, gm.data(), static_cast<Index>(by) * nx + bx, nx, wx, dwx, wy, dwy, 1.0, a.m, &a.vx, a.vol, a.s);
     }
     benchmark::ClobberMemory();
   }

@@ -27,12 +27,16 @@ namespace dmi::detail {
 // Scatter of one particle with weights wx, dwx, wy, dwy (grid units) to the 3 x 3 nodes from node0 (rows nx apart):
 // record (px, py, fx, fy) of node (a, b) += Wy_b P_a + dWy_b Q_a, and m += Wy_b wx_a m_p, where
 //   P_a = (wx_a m vx, wx_a m vy, dwx_a/h s00, dwx_a/h s10),  Q_a = wx_a (0, 0, s01, s11),  s = -V sigma,
-// i.e. N m v and -V sigma grad N with N = wx_a Wy_b, grad N = (dwx_a Wy_b / h, wx_a dWy_b). P_a, Q_a are built in
-// registers (a stack array filled by scalar stores and read back 4-wide stalled on store forwarding).
+// i.e. N m v and -V sigma grad N with N = wx_a Wy_b, grad N = (dwx_a Wy_b / h, wx_a dWy_b). v: the particle's velocity,
+// sigma: its in-plane stress column-major (s00, s10, s01, s11), both read as vectors: (m v, s col 0) and (0, s col 1)
+// are one product and one lane move each (built from scalars they were a dozen shuffles).
 [[gnu::always_inline]] inline void scatter_k3_avx(double* pf, double* gm, Index node0, Index nx, const double* wx, const double* dwx,
-                                                  const double* wy, const double* dwy, double ih, double mp, double mvx, double mvy,
-                                                  double s00, double s01, double s10, double s11) {
-  const __m256d V1 = _mm256_set_pd(s10, s00, mvy, mvx), V2 = _mm256_set_pd(s11, s01, 0.0, 0.0);
+                                                  const double* wy, const double* dwy, double ih, double mp, const double* v, double vol,
+                                                  const double* sigma) {
+  const __m256d S = _mm256_mul_pd(_mm256_loadu_pd(sigma), _mm256_set1_pd(-vol));
+  const __m128d mv = _mm_mul_pd(_mm_set1_pd(mp), _mm_loadu_pd(v));
+  const __m256d V1 = _mm256_insertf128_pd(_mm256_castpd128_pd256(mv), _mm256_castpd256_pd128(S), 1);  // (m v, s col 0)
+  const __m256d V2 = _mm256_permute2f128_pd(S, S, 0x18);                                              // (0, 0, s col 1)
   __m256d P[3], Q[3];
   for (int a = 0; a < 3; ++a) {
     const __m256d w = _mm256_set1_pd(wx[a]), d = _mm256_set1_pd(dwx[a] * ih);

@@ -148,8 +148,7 @@ inline void scatter_range(const ScatterCtx<D> c, Index q0, Index q1) {
     const Index node0 = c.bodies[c.body[i]].field * c.g.nn + c.g.base_id(st);
 #ifdef DMI_HAVE_AVX2_K3
     if constexpr (SIMD && D == 2 && K == 3 && !Scheme::affine && Fill::force) {
-      scatter_k3_avx(c.pf, c.gm, node0, c.g.stride[1], st.w[0], st.dw[0], st.w[1], st.dw[1], c.g.ih, mp, mv[0], mv[1], s[0][0], s[0][1],
-                     s[1][0], s[1][1]);
+      scatter_k3_avx(c.pf, c.gm, node0, c.g.stride[1], st.w[0], st.dw[0], st.w[1], st.dw[1], c.g.ih, mp, c.v[i].data(), c.vol[i], c.stress[i].data());
       if constexpr (Fill::contact)
         scatter_grad_k3_avx(c.gg, c.gvol, node0, c.g.stride[1], st.w[0], st.dw[0], st.w[1], st.dw[1], c.g.ih, mp, vip);
       continue;
