@@ -40,6 +40,9 @@ template <int D> class Grid {
   static constexpr int T = 4;  // tile width in cells
 
   Grid(const Vec<D>& origin, const IVec<D>& cells, double h, int nfields);
+  // Not copyable: pf() and vrec() point into the grid's own storage, aligned at construction.
+  Grid(const Grid&) = delete;
+  Grid& operator=(const Grid&) = delete;
 
   Index node_id(const IVec<D>& ijk) const {
     Index id = ijk[D - 1];
