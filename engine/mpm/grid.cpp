@@ -33,12 +33,16 @@ Grid<D>::Grid(const Vec<D>& origin, const IVec<D>& cells, double h, int nfields)
   pf_storage_.assign(2 * D * n + 4, 0.0);  // + slack to start on a 32-byte boundary
   const auto addr = reinterpret_cast<std::uintptr_t>(pf_storage_.data());
   pf_ = pf_storage_.data() + ((32 - addr % 32) % 32) / sizeof(double);
-  if constexpr (D == 2) {
-    vrec_storage_.assign(2 * D * n + 4, 0.0);
-    const auto a2 = reinterpret_cast<std::uintptr_t>(vrec_storage_.data());
-    vrec_ = vrec_storage_.data() + ((32 - a2 % 32) % 32) / sizeof(double);
-  }
   tile_count_.assign(static_cast<std::size_t>(ntiles_), 0);
+}
+
+template <int D> double* Grid<D>::vrec() {
+  if (!vrec_) {
+    vrec_storage_.assign(2 * D * static_cast<std::size_t>(nnodes_ * nfields_) + 4, 0.0);  // + slack for the alignment
+    const auto addr = reinterpret_cast<std::uintptr_t>(vrec_storage_.data());
+    vrec_ = vrec_storage_.data() + ((32 - addr % 32) % 32) / sizeof(double);
+  }
+  return vrec_;
 }
 
 template <int D> void Grid<D>::zero_node(Index id) {

@@ -40,7 +40,7 @@ template <int D> class Grid {
   static constexpr int T = 4;  // tile width in cells
 
   Grid(const Vec<D>& origin, const IVec<D>& cells, double h, int nfields);
-  // Not copyable: pf() and vrec() point into the grid's own storage, aligned at construction.
+  // Not copyable: pf() and vrec() point into the grid's own storage.
   Grid(const Grid&) = delete;
   Grid& operator=(const Grid&) = delete;
 
@@ -157,9 +157,11 @@ template <int D> class Grid {
   // 2D), so the scatter touches one record per node instead of two arrays (in 2D it adds it as one 4-wide vector);
   // unpacked into p, f (and zeroed) right after the scatter. The mass goes straight into m.
   double* pf() { return pf_; }
-  // G2P scratch (2D): v^L and the FLIP increment v^L - v^k of a node side by side (vLx, vLy, dvx, dvy), 32-byte aligned,
-  // packed from vL and v right before G2P, so the gather reads one aligned record per node instead of two arrays.
-  double* vrec() { return vrec_; }
+  // G2P scratch: v^L and the FLIP increment v^L - v^k of a node side by side (v^L_0..v^L_D-1, dv_0..dv_D-1), 32-byte
+  // aligned, packed from vL and v at the active nodes right before the vector gather, which alone reads it (its values
+  // are valid only inside that G2P; elsewhere they are stale). Allocated on the first call (serial code only), so
+  // scenes whose G2P does not take that path do not carry it.
+  double* vrec();
 
  private:
   std::vector<double> pf_storage_, vrec_storage_;

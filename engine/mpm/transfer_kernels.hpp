@@ -425,12 +425,13 @@ template <int D, class Shape, class Scheme, class Mode, bool SIMD>
 G2PResult gather(Scene<D>& s, double dt, const typename TransferKernels<D>::ChunkHook* after) {
   Grid<D>& g = *s.grid;
   Particles<D>& P = s.particles;
+  [[maybe_unused]] double* rec = nullptr;
 #ifdef DMI_HAVE_AVX2_K3
   if constexpr (SIMD && D == 2 && Shape::K == 3 && !Scheme::affine && Mode::velocity && Mode::kinematics) {
     // The records the vector gather reads, at the active nodes of every field (the particles' stencils lie inside them).
     const auto& active = g.active();
     const Index nn = g.nnodes();
-    double* rec = g.vrec();
+    rec = g.vrec();
     parallel_for(0, static_cast<Index>(active.size()), [&](Index a) {
       for (int fld = 0; fld < g.nfields(); ++fld) {
         const Index k = fld * nn + active[a];
@@ -440,7 +441,7 @@ G2PResult gather(Scene<D>& s, double dt, const typename TransferKernels<D>::Chun
   }
 #endif
   const GatherCtx<D> c{P.x.data(), P.v.data(), P.half_size.data(), P.C.data(), P.F.data(), P.L.data(), P.body.data(), s.bodies.data(),
-                       g.vL.data()->data(), g.v.data()->data(), g.m.data(), g.vrec(), GridView<D>(g), s.options.flip_blend, dt};
+                       g.vL.data()->data(), g.v.data()->data(), g.m.data(), rec, GridView<D>(g), s.options.flip_blend, dt};
   const Index np = static_cast<Index>(P.size());
   constexpr Index kChunk = 1024;
   const Index nchunks = (np + kChunk - 1) / kChunk;

@@ -87,6 +87,28 @@ TEST(Shape, GimpPartitionOfUnityAndConsistency) {
   check_shape<GimpShape>(0.5);
 }
 
+TEST(Shape, BSpline2StencilAxesMatchTheDefinitionOnCellLinesAndBelowTheOrigin) {
+  // Positions on cell lines and half-cell lines (exact in binary: h = 1/4) and left of the origin (negative bases): the
+  // 2D stencil's weights (both axes in one vector with AVX2) are the 1D definition's, bit for bit.
+  const double h = 0.25;
+  for (double x : {-1.0, -0.375, -0.125, 0.0, 0.125, 0.25, 0.375, 1.0, 2.625, 2.9375})
+    for (double y : {-0.5, 0.0625, 0.125, 1.75}) {
+      Stencil<2, BSpline2Shape> st;
+      st.compute(Vec<2>(x, y), Vec<2>::Zero(), Vec<2>::Zero(), 1 / h);
+      const double xr[2] = {x / h, y / h};
+      for (int d = 0; d < 2; ++d) {
+        int base;
+        double w[3], dw[3];
+        BSpline2Shape::eval(xr[d], 0, base, w, dw);
+        EXPECT_EQ(st.base[d], base) << x << " " << y;
+        for (int k = 0; k < 3; ++k) {
+          EXPECT_EQ(st.w[d][k], w[k]) << x << " " << y;
+          EXPECT_EQ(st.dw[d][k], dw[k]) << x << " " << y;
+        }
+      }
+    }
+}
+
 TEST(Shape, GimpReducesToLinearAwayFromCellEdges) {
   // With |r| in [lp, 1 - lp] the uGIMP weight is the linear hat.
   double s, ds;
