@@ -23,7 +23,8 @@ struct LineSnapshot {
   std::vector<std::pair<std::string, std::vector<double>>> point_scalars;  // name (with unit) -> one value per point
   std::vector<std::int32_t> member;  // per cell, member index
 };
-// Writes members as an ASCII .vtu of VTK_POLY_LINE cells (z = 0 in 2D). Throws std::runtime_error on failure.
+// Writes members as a .vtu of VTK_POLY_LINE cells, arrays appended raw as write_vtu's (z = 0 in 2D). Throws
+// std::runtime_error on failure.
 void write_lines_vtu(const std::string& path, const LineSnapshot& s);
 // Writes a .pvd collection; entries are (time, file name relative to the .pvd).
 void write_pvd(const std::string& path, const std::vector<std::pair<double, std::string>>& entries);

@@ -374,6 +374,19 @@ TEST_F(IoTest, PvdListsEntries) {
 namespace dmi {
 namespace {
 
+// The values of appended array `name` in a .vtu (every array appended raw: a UInt64 byte count, then the values).
+template <class T> std::vector<T> appended(const std::string& text, const std::string& name) {
+  const std::size_t tag = text.find("Name=\"" + name + "\"");
+  if (tag == std::string::npos) return {};
+  const std::size_t off = std::stoul(text.substr(text.find("offset=\"", tag) + 8));
+  const std::size_t start = text.find('_', text.find("<AppendedData")) + 1;
+  std::uint64_t bytes = 0;
+  std::memcpy(&bytes, text.data() + start + off, 8);
+  std::vector<T> v(bytes / sizeof(T));
+  std::memcpy(v.data(), text.data() + start + off + 8, v.size() * sizeof(T));
+  return v;
+}
+
 // Members as polylines: one VTK_POLY_LINE per element, point coordinates and fields as given.
 TEST(MemberVtu, WritesOnePolylinePerElementWithItsFields) {
   LineSnapshot s;
@@ -388,10 +401,17 @@ TEST(MemberVtu, WritesOnePolylinePerElementWithItsFields) {
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   std::filesystem::remove(path);
   EXPECT_NE(text.find("NumberOfPoints=\"6\" NumberOfCells=\"2\""), std::string::npos);
-  EXPECT_NE(text.find("Name=\"offsets\" format=\"ascii\">\n3\n6\n"), std::string::npos);
-  EXPECT_NE(text.find("Name=\"types\" format=\"ascii\">\n4\n4\n"), std::string::npos);
-  EXPECT_NE(text.find("1.5 -0.10000000000000001 0"), std::string::npos);
-  EXPECT_NE(text.find("Name=\"M (N m)\" format=\"ascii\">\n1\n2\n3\n4\n5\n6\n"), std::string::npos);
+  EXPECT_EQ(appended<std::int64_t>(text, "offsets"), (std::vector<std::int64_t>{3, 6}));
+  EXPECT_EQ(appended<std::int64_t>(text, "connectivity"), (std::vector<std::int64_t>{0, 1, 2, 3, 4, 5}));
+  EXPECT_EQ(appended<std::uint8_t>(text, "types"), (std::vector<std::uint8_t>{4, 4}));  // VTK_POLY_LINE
+  const std::vector<double> pts = appended<double>(text, "Points");
+  ASSERT_EQ(pts.size(), 18u);  // 3 components, z = 0 in 2D
+  EXPECT_EQ(pts[12], 1.5);
+  EXPECT_EQ(pts[13], -0.1);
+  EXPECT_EQ(pts[14], 0.0);
+  EXPECT_EQ(appended<double>(text, "M (N m)"), (std::vector<double>{1, 2, 3, 4, 5, 6}));
+  EXPECT_EQ(appended<std::int32_t>(text, "member"), (std::vector<std::int32_t>{0, 0}));
+  EXPECT_EQ(appended<double>(text, "displacement").size(), 18u);
   s.ends = {3, 5};  // does not cover the points: refused, nothing written
   EXPECT_THROW(write_lines_vtu(path, s), std::runtime_error);
   EXPECT_FALSE(std::filesystem::exists(path));
