@@ -169,10 +169,11 @@ GridStudyOutcome run_grid_study(const std::string& file, const nlohmann::json& s
     std::array<std::thread, 3> coarse;
     struct Join {  // also when the finest level (or starting a thread) throws: the coarser levels end first
       std::array<std::thread, 3>& t;
-      ~Join() {
+      void all() {
         for (auto& x : t)
           if (x.joinable()) x.join();
       }
+      ~Join() { all(); }
     } join{coarse};
     for (int g = 1; g <= 2; ++g)
       coarse[g] = std::thread([&, g] {
@@ -184,8 +185,7 @@ GridStudyOutcome run_grid_study(const std::string& file, const nlohmann::json& s
         }
       });
     level(0);
-    for (auto& x : coarse)
-      if (x.joinable()) x.join();
+    join.all();  // before their errors are read
     for (int g = 2; g >= 1; --g)
       if (error[g]) {  // the finest level's checks alone are not the study asked for (levels in turn leave none)
         std::error_code ec;

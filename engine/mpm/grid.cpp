@@ -9,6 +9,15 @@
 
 namespace dmi {
 
+namespace {
+// n zeroed doubles in storage, returned from the first 32-byte boundary (the 4-wide AVX2 records' aligned loads).
+double* aligned32(std::vector<double>& storage, std::size_t n) {
+  storage.assign(n + 4, 0.0);  // + slack to reach the boundary
+  const auto addr = reinterpret_cast<std::uintptr_t>(storage.data());
+  return storage.data() + ((32 - addr % 32) % 32) / sizeof(double);
+}
+}  // namespace
+
 template <int D>
 Grid<D>::Grid(const Vec<D>& origin, const IVec<D>& cells, double h, int nfields)
     : origin_(origin), cells_(cells), h_(h), inv_h_(1.0 / h), nfields_(nfields) {
@@ -30,18 +39,12 @@ Grid<D>::Grid(const Vec<D>& origin, const IVec<D>& cells, double h, int nfields)
     grad_m.assign(n, Vec<D>::Zero());
     vol.assign(n, 0.0);
   }
-  pf_storage_.assign(2 * D * n + 4, 0.0);  // + slack to start on a 32-byte boundary
-  const auto addr = reinterpret_cast<std::uintptr_t>(pf_storage_.data());
-  pf_ = pf_storage_.data() + ((32 - addr % 32) % 32) / sizeof(double);
+  pf_ = aligned32(pf_storage_, 2 * D * n);
   tile_count_.assign(static_cast<std::size_t>(ntiles_), 0);
 }
 
 template <int D> double* Grid<D>::vrec() {
-  if (!vrec_) {
-    vrec_storage_.assign(2 * D * static_cast<std::size_t>(nnodes_ * nfields_) + 4, 0.0);  // + slack for the alignment
-    const auto addr = reinterpret_cast<std::uintptr_t>(vrec_storage_.data());
-    vrec_ = vrec_storage_.data() + ((32 - addr % 32) % 32) / sizeof(double);
-  }
+  if (!vrec_) vrec_ = aligned32(vrec_storage_, 2 * D * static_cast<std::size_t>(nnodes_ * nfields_));
   return vrec_;
 }
 

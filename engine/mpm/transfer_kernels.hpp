@@ -273,6 +273,16 @@ template <int D> struct GatherCtx {
   double blend, dt;
 };
 
+// Whether G2P takes the AVX2 gather over the packed node records (Grid::vrec): 2D, 3-node stencils, FLIP, the full
+// update. gather() packs the records exactly when gather_range reads them.
+template <int D, class Shape, class Scheme, class Mode, bool SIMD>
+constexpr bool kVectorGather =
+#ifdef DMI_HAVE_AVX2_K3
+    SIMD && D == 2 && Shape::K == 3 && !Scheme::affine && Mode::velocity && Mode::kinematics;
+#else
+    false;
+#endif
+
 // G2P (Lin & Yang 2024, eqs. 13-14; APIC: Jiang et al. 2015) of particles [i0, i1). Returns 1 if one became non-finite or
 // left the grid interior.
 template <int D, class Shape, class Scheme, class Mode, bool SIMD> inline int gather_range(const GatherCtx<D> c, Index i0, Index i1) {
@@ -293,15 +303,13 @@ template <int D, class Shape, class Scheme, class Mode, bool SIMD> inline int ga
     // L += u_bar (x) sum over empty nodes of grad N.
     constexpr bool kEmptyFix = std::is_same_v<Shape, LinearShape> && Mode::kinematics;
     [[maybe_unused]] double ubar[D] = {}, gempty[D] = {};
+    constexpr bool kVector = kVectorGather<D, Shape, Scheme, Mode, SIMD>;
 #ifdef DMI_HAVE_AVX2_K3
-    constexpr bool kVector = SIMD && D == 2 && K == 3 && !Scheme::affine && Mode::velocity && Mode::kinematics;
     if constexpr (kVector) {
       const GatherRecK3 gk = gather_rec_k3_avx(c.rec, node0, c.g.stride[1], st.w[0], st.dw[0], st.w[1], st.dw[1], c.g.ih);
       vp[0] = gk.vpx, vp[1] = gk.vpy, dv[0] = gk.dvx, dv[1] = gk.dvy;
       l[0][0] = gk.l00, l[0][1] = gk.l01, l[1][0] = gk.l10, l[1][1] = gk.l11;
     }
-#else
-    constexpr bool kVector = false;
 #endif
     [[maybe_unused]] const NodeDistances<D, St> dist(st, c.g.h, std::bool_constant<Scheme::affine>{});
     // FLIP without the empty-node fix, row by row: the weights factor as w_x(a) W(r), so each row sums over its K
@@ -426,8 +434,7 @@ G2PResult gather(Scene<D>& s, double dt, const typename TransferKernels<D>::Chun
   Grid<D>& g = *s.grid;
   Particles<D>& P = s.particles;
   [[maybe_unused]] double* rec = nullptr;
-#ifdef DMI_HAVE_AVX2_K3
-  if constexpr (SIMD && D == 2 && Shape::K == 3 && !Scheme::affine && Mode::velocity && Mode::kinematics) {
+  if constexpr (kVectorGather<D, Shape, Scheme, Mode, SIMD>) {
     // The records the vector gather reads, at the active nodes of every field (the particles' stencils lie inside them).
     const auto& active = g.active();
     const Index nn = g.nnodes();
@@ -439,7 +446,6 @@ G2PResult gather(Scene<D>& s, double dt, const typename TransferKernels<D>::Chun
       }
     });
   }
-#endif
   const GatherCtx<D> c{P.x.data(), P.v.data(), P.half_size.data(), P.C.data(), P.F.data(), P.L.data(), P.body.data(), s.bodies.data(),
                        g.vL.data()->data(), g.v.data()->data(), g.m.data(), rec, GridView<D>(g), s.options.flip_blend, dt};
   const Index np = static_cast<Index>(P.size());
