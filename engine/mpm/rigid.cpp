@@ -166,6 +166,17 @@ template <int D> NodalMotion<D> nodal_motion(const Grid<D>& g, const std::vector
     if (const double mi = g.m[off + id]; mi > 0) m.M += mi, mx += mi * g.node_pos(id), p += mi * vel[off + id];
   if (!(m.M > 0)) return m;
   m.xc = mx / m.M, m.V = p / m.M;
+  if constexpr (D == 2) {  // rotation about z alone: I_zz = sum m |r|^2, L_z = sum m (r x v)_z (the 3 x 3 sums cost 3x)
+    double izz = 0, lz = 0, r2max = 0;
+    for (Index id : nodes)
+      if (const double mi = g.m[off + id]; mi > 0) {
+        const Vec<D> r = g.node_pos(id) - m.xc, &v = vel[off + id];
+        const double r2 = r.squaredNorm();
+        izz += mi * r2, lz += mi * (r.x() * v.y() - r.y() * v.x()), r2max = std::max(r2max, r2);
+      }
+    m.I(2, 2) = izz, m.w.z() = lz / izz, m.rmax = std::sqrt(r2max);
+    return m;
+  }
   Vec<3> l = Vec<3>::Zero();
   for (Index id : nodes)
     if (const double mi = g.m[off + id]; mi > 0) {
@@ -175,11 +186,7 @@ template <int D> NodalMotion<D> nodal_motion(const Grid<D>& g, const std::vector
       l += mi * r.cross(v);
       m.rmax = std::max(m.rmax, r.norm());
     }
-  if constexpr (D == 2) {
-    m.w.z() = l.z() / m.I(2, 2);
-  } else {
-    m.w = m.I.ldlt().solve(l);
-  }
+  m.w = m.I.ldlt().solve(l);
   return m;
 }
 

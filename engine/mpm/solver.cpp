@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -12,7 +13,6 @@
 #include "engine/common/error.hpp"
 #include "engine/mpm/boundary.hpp"
 #include "engine/mpm/clearance.hpp"
-#include "engine/mpm/reduce.hpp"
 
 namespace dmi {
 
@@ -456,9 +456,23 @@ template <int D> Diagnostics<D> Solver<D>::diagnostics() const {
   const auto& P = scene_.particles;
   Diagnostics<D> d;
   const Index np = static_cast<Index>(P.size());
-  d.kinetic = deterministic_sum(np, [&](Index i) { return 0.5 * P.mass[i] * P.v[i].squaredNorm(); });
-  d.gravity_work = deterministic_sum(np, [&](Index i) { return P.mass[i] * scene_.gravity.dot(P.x[i] - P.x0[i]); });
-  for (int c = 0; c < D; ++c) d.momentum[c] = deterministic_sum(np, [&](Index i) { return P.mass[i] * P.v[i][c]; });
+  // Kinetic energy, gravity's work and momentum in one pass, each summed as deterministic_sum would alone.
+  using Sums = std::array<double, 2 + D>;
+  const Sums sums = parallel_reduce(
+      Index(0), np, Sums{},
+      [&](Index i) {
+        Sums t;
+        t[0] = 0.5 * P.mass[i] * P.v[i].squaredNorm();
+        t[1] = P.mass[i] * scene_.gravity.dot(P.x[i] - P.x0[i]);
+        for (int c = 0; c < D; ++c) t[2 + c] = P.mass[i] * P.v[i][c];
+        return t;
+      },
+      [](Sums a, const Sums& b) {
+        for (std::size_t k = 0; k < a.size(); ++k) a[k] += b[k];
+        return a;
+      });
+  d.kinetic = sums[0], d.gravity_work = sums[1];
+  for (int c = 0; c < D; ++c) d.momentum[c] = sums[2 + c];
   for (const Body& b : scene_.bodies) d.strain += scene_.materials[b.material]->strain_energy(P, b.begin, b.end);
   for (const auto& m : scene_.materials) d.dissipated += m->dissipated();
   d.dissipated += frozen_energy_;
