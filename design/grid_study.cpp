@@ -95,7 +95,7 @@ json grid_study_section(const std::array<json, 3>& designs, const std::array<dou
       qs.push_back(quantity(variant, "governing_utilisation", "governing utilisation", "-", h, util));
     }
   }
-  json out = {{"method", "Roache 1994 grid convergence index, Celik et al. 2008 procedure (ASME V&V 20-2009); Fs 1.25, 3 outside the asymptotic range"},
+  json out = {{"method", "Roache 1994 grid convergence index, Celik et al. 2008 procedure (ASME V&V 20-2009); Fs 1.25, 3 outside the asymptotic range; order at most the method's, 2 (Oberkampf & Roy 2010)"},
               {"cell_sizes_m", {h[0], h[1], h[2]}}, {"refinement_ratios", {h[1] / h[0], h[2] / h[1]}},
               {"folders", {folders[0], folders[1], folders[2]}}, {"quantities", qs}};
   int not_converged = 0;

@@ -62,13 +62,14 @@ GridConvergence grid_convergence(const std::array<double, 3>& h, const std::arra
   double p_used = p;
   if (diverging) {
     c.behaviour = GridBehaviour::diverging;
-  } else if (p < 0.5 || p > 4) {
+  } else if (p < 0.5 || p > 1.1 * kFormalOrder) {
     c.behaviour = GridBehaviour::out_of_range;
   } else {
     c.behaviour = GridBehaviour::monotone;
+    p_used = std::min(p, kFormalOrder);
   }
   if (c.behaviour != GridBehaviour::monotone) {
-    p_used = std::clamp(diverging ? 0.5 : p, 0.5, 2.0);
+    p_used = std::clamp(diverging ? 0.5 : p, 0.5, kFormalOrder);
     c.safety_factor = 3.0;
   }
   c.order = diverging ? kNaN : p;
@@ -98,11 +99,18 @@ std::string describe(const GridConvergence& c) {
   switch (c.behaviour) {
     case GridBehaviour::converged: return "the same on all three grids";
     case GridBehaviour::monotone:
-      std::snprintf(b, sizeof b, "converging monotonically, observed order %.2f", c.order);
+      if (c.order > kFormalOrder)
+        std::snprintf(b, sizeof b, "converging monotonically, observed order %.2f (index with the method's order %.0f)", c.order, kFormalOrder);
+      else
+        std::snprintf(b, sizeof b, "converging monotonically, observed order %.2f", c.order);
       return b;
     case GridBehaviour::out_of_range:
-      std::snprintf(b, sizeof b, "converging but outside the asymptotic range (observed order %.2f); index with Fs = 3 and order %.1f",
-                    c.order, std::clamp(c.order, 0.5, 2.0));
+      if (c.order > kFormalOrder)
+        std::snprintf(b, sizeof b, "converging faster than the method's order %.0f (observed %.2f): not yet asymptotic; index with Fs = 3 and order %.0f",
+                      kFormalOrder, c.order, kFormalOrder);
+      else
+        std::snprintf(b, sizeof b, "converging but outside the asymptotic range (observed order %.2f); index with Fs = 3 and order %.1f",
+                      c.order, std::clamp(c.order, 0.5, kFormalOrder));
       return b;
     case GridBehaviour::oscillatory:
       return "NOT CONVERGED: oscillates under refinement; the uncertainty is 1.25 times the spread of the three values";
