@@ -38,6 +38,9 @@ std::string render_report_html(const nlohmann::json& data);
 // damps a mode at f by zeta(f) = alpha / (4 pi f) + pi f beta (Chopra 2012, eq. 11.4.3): the ratio at 10 Hz, 100 Hz,
 // 1 kHz and 10 kHz, since it grows with frequency and a bare hard impact excites kHz modes; "none" without damping.
 std::string member_damping_text(const nlohmann::json& scenario);
+// The report's row on the boulder's model (design basis boulder.model), with the run's CFL number for a rigid one (NaN:
+// not recorded); empty for a model it does not know.
+std::string boulder_model_text(const std::string& model, double cfl);
 
 std::string base64(const std::string& bytes);
 

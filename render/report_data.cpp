@@ -73,6 +73,19 @@ std::string member_damping_text(const json& scenario) {
          " %; ζ grows with frequency, so a bare hard impact's member peaks depend on it (docs/verification.md, structural damping)";
 }
 
+std::string boulder_model_text(const std::string& model, double cfl) {
+  if (model == "rigid")
+    return "rigid: against the tyre buffer its deformation does not matter (same loads as an elastic boulder at the same step, "
+           "docs/verification.md); the step is the buffer's" +
+           (std::isfinite(cfl) ? fmt(", at CFL %.3g", cfl) : std::string());
+  if (model == "elastic") return "elastic: on a bare face the rock's stiffness sets the impact's peak";
+  if (model == "elastic_when_touching")
+    return "elastic while it can touch the dam (on a bare face the rock's stiffness sets the impact's peak), rigid in free flight "
+           "before and after the strike (its waves then do not set the step; its vibration after the rebound is given up, "
+           "docs/verification.md)";
+  return "";
+}
+
 namespace {
 
 json scenario_rows(const RunData& r) {
@@ -105,15 +118,8 @@ json scenario_rows(const RunData& r) {
     row("rock", fmt("E %.3g GPa", num(k, {"youngs_modulus_Pa"}) / 1e9) + fmt(", ν %.2f", num(k, {"poisson_ratio"})) +
                     fmt(", ρ %.0f kg/m³", num(k, {"density_kg_m3"})));
     row("impact energy", fmt("%.4g kJ", 0.5 * num(k, {"mass_kg"}) * std::pow(num(k, {"speed_m_s"}), 2) / 1e3));
-    if (k.value("model", "") == "rigid")
-      row("boulder model", "rigid: against the tyre buffer its deformation does not matter (same loads as an elastic boulder at the "
-                           "same step, docs/verification.md); the step is the buffer's, at CFL 0.125");
-    else if (k.value("model", "") == "elastic")
-      row("boulder model", "elastic: on a bare face the rock's stiffness sets the impact's peak");
-    else if (k.value("model", "") == "elastic_when_touching")
-      row("boulder model", "elastic while it can touch the dam (on a bare face the rock's stiffness sets the impact's peak), rigid in "
-                           "free flight before and after the strike (its waves then do not set the step; its vibration after the "
-                           "rebound is given up, docs/verification.md)");
+    const auto& n = r.results.info.numbers;
+    if (const std::string t = boulder_model_text(k.value("model", ""), n.count("cfl") ? n.at("cfl") : NAN); !t.empty()) row("boulder model", t);
   }
   if (b.contains("debris_surge") && b["debris_surge"].contains("hydrograph")) {
     const json& k = b["debris_surge"];

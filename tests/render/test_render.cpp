@@ -209,6 +209,14 @@ TEST(RenderBasics, MemberDampingStatesTheRatioAcrossFrequencies) {
   EXPECT_EQ(dmi::render::member_damping_text(json{{"structure", json::object()}}), "none");
 }
 
+// The rigid boulder's row states the step the run took (its CFL number read from the results), not a number of its own.
+TEST(RenderBasics, RigidBoulderRowStatesTheRunsCfl) {
+  EXPECT_NE(dmi::render::boulder_model_text("rigid", 0.25).find("the step is the buffer's, at CFL 0.25"), std::string::npos);
+  EXPECT_NE(dmi::render::boulder_model_text("rigid", 0.125).find("at CFL 0.125"), std::string::npos);
+  EXPECT_EQ(dmi::render::boulder_model_text("rigid", NAN).find("CFL"), std::string::npos);
+  EXPECT_EQ(dmi::render::boulder_model_text("unknown", 0.25), "");
+}
+
 TEST_F(Render, ReportHoldsEveryCheckAndItsPdfPagesRender) {
   const auto files = dmi::render::report_main(dir.string(), {"von_mises", true, true, "test"});
   std::ifstream in(files.html);
