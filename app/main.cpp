@@ -206,9 +206,19 @@ int grid_study_run(const std::string& file, const std::string& out, int threads,
               h[0], h[1], h[2], ratio, 1 + c1 + c2, h[0], dim, c1, c2,
               overlap ? "; the coarser two run beside it at low priority, on the cores it leaves idle" : "");
   double wall_coarse = 0;
+  // Restarted, a coarser level continues from its own checkpoints (or keeps its complete results) as the finest does;
+  // one that never started (the levels in turn on one core) starts afresh. --stop-after counts the finest's steps only.
+  const auto resumable = [](const std::string& dir) {
+    if (!fs::is_directory(dir)) return false;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+      if (e.path().filename() == "checkpoint.dmi" || e.path().filename() == "results.h5") return true;
+    return false;
+  };
   const auto level_run = [&](const std::string& scen, const std::string& dir, int g) {
     std::vector<std::string> written;
-    simulate(scen, dir, threads, quiet || g > 0, progress, false, false, g == 0 ? rf : RestartFlags{}, &written);
+    RestartFlags lf = rf;
+    if (g > 0) lf.stop_after = 0, lf.restart = rf.restart && resumable(dir);
+    simulate(scen, dir, threads, quiet || g > 0, progress, false, false, lf, &written);
     return written;
   };
   const auto on_level = [&](int g, double hg, double wall) {

@@ -9,7 +9,9 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <map>
 #include <thread>
+#include <vector>
 
 #include "engine/io/results_writer.hpp"
 
@@ -79,5 +81,60 @@ TEST(Interrupt, SigtermKeepsPartialHistoriesAndTheOlderCompleteResult) {
   EXPECT_LT(partial.time.back(), 100.0);
   for (const auto& s : partial.series) EXPECT_EQ(s.samples(), partial.time.size()) << s.path;
   EXPECT_EQ(partial.info.strings.at("status"), "interrupted (SIGTERM)");
+  fs::remove_all(dir);
+}
+
+// A grid study runs its levels side by side (the coarse ones beside the finest): one SIGINT stops every level that
+// has started, each keeping its partial histories and a checkpoint, and nothing is checked or written as if complete
+// (no design.json, no results.h5); the same command with --restart goes on from the checkpoints.
+TEST(Interrupt, GridStudyLevelsAllStopAndRestartFromTheirCheckpoints) {
+  const fs::path dir = fs::temp_directory_path() / ("dmi_interrupt_grid_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(std::string(DMI_SOURCE_DIR) + "/tests/data/design/cantilever_self_weight.json"));
+  j["analysis"]["end_time"] = 100.0;  // ~40 s a level: a signal always arrives while they step
+  const fs::path scenario = dir / "long.json", out = dir / "out";
+  std::ofstream(scenario) << j.dump();
+  auto partials = [&] {
+    std::vector<fs::path> p;
+    if (fs::exists(out))
+      for (const auto& e : fs::recursive_directory_iterator(out))
+        if (e.path().filename() == "results.h5.partial") p.push_back(e.path());
+    return p;
+  };
+  auto interrupt_after_start = [&](const std::vector<std::string>& args, std::size_t wait_for) {
+    const pid_t pid = spawn(args, dir);
+    for (int k = 0; k < 1200 && partials().size() < wait_for; ++k) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    kill(pid, SIGINT);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return status;
+  };
+  const std::vector<std::string> cmd{"run", scenario.string(), "-o", out.string(), "--grid-study", "--no-report", "-q"};
+  int status = interrupt_after_start(cmd, 1);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 128 + SIGINT);
+  std::map<std::string, double> steps;
+  const auto levels = partials();
+  ASSERT_GE(levels.size(), 1u);
+  for (const fs::path& p : levels) {
+    const dmi::Results r = dmi::read_results(p.string(), false);
+    EXPECT_FALSE(r.complete) << p;
+    EXPECT_EQ(r.info.strings.at("status"), "interrupted (SIGINT)") << p;
+    EXPECT_TRUE(fs::exists(p.parent_path() / "checkpoint.dmi")) << p;
+    steps[p.string()] = r.info.numbers.at("steps");
+  }
+  for (const auto& e : fs::recursive_directory_iterator(out)) {
+    EXPECT_NE(e.path().filename(), "results.h5") << e.path();
+    EXPECT_NE(e.path().filename(), "design.json") << e.path();
+  }
+  std::vector<std::string> again = cmd;
+  again.push_back("--restart");
+  status = interrupt_after_start(again, levels.size());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 128 + SIGINT);
+  for (const auto& [p, n] : steps) EXPECT_GT(dmi::read_results(p, false).info.numbers.at("steps"), n) << p << ": not continued";
+  EXPECT_FALSE(fs::exists(out / "design.json"));
   fs::remove_all(dir);
 }
