@@ -206,18 +206,28 @@ int grid_study_run(const std::string& file, const std::string& out, int threads,
               h[0], h[1], h[2], ratio, 1 + c1 + c2, h[0], dim, c1, c2,
               overlap ? "; the coarser two run beside it at low priority, on the cores it leaves idle" : "");
   double wall_coarse = 0;
-  // Restarted, a coarser level continues from its own checkpoints (or keeps its complete results) as the finest does;
-  // one that never started (the levels in turn on one core) starts afresh. --stop-after counts the finest's steps only.
-  const auto resumable = [](const std::string& dir) {
-    if (!fs::is_directory(dir)) return false;
-    for (const auto& e : fs::recursive_directory_iterator(dir))
-      if (e.path().filename() == "checkpoint.dmi" || e.path().filename() == "results.h5") return true;
-    return false;
+  // Restarted, every level continues from its own checkpoints (or keeps its complete results), variant by variant as
+  // simulate() decides (resume_mode); a level with nothing to resume (it never started: the levels run in turn on one
+  // core, coarsest first) starts afresh. Only a study with nothing to resume at any level is refused, as a run is.
+  // --stop-after counts the finest level's steps only.
+  const auto resumable = [&](const std::string& dir) {
+    return std::any_of(variants.begin(), variants.end(), [&](const dmi::ScenarioVariant& v) {
+      return resume_mode(rf, v.label.empty() ? dir : (fs::path(dir) / v.label).string()) != Resume::fresh;
+    });
   };
+  if (rf.restart) {
+    bool any = resumable(out);
+    if (const fs::path levels = fs::path(out) / "grid_study"; fs::is_directory(levels))
+      for (const auto& e : fs::directory_iterator(levels)) any = any || (e.is_directory() && resumable(e.path().string()));
+    if (!any)
+      throw dmi::InputError(out + ": --restart: no checkpoint.dmi to continue from at any level of the grid study (it finished or was never "
+                            "started here); run without --restart to start afresh");
+  }
   const auto level_run = [&](const std::string& scen, const std::string& dir, int g) {
     std::vector<std::string> written;
     RestartFlags lf = rf;
-    if (g > 0) lf.stop_after = 0, lf.restart = rf.restart && resumable(dir);
+    lf.restart = rf.restart && resumable(dir);
+    if (g > 0) lf.stop_after = 0;
     simulate(scen, dir, threads, quiet || g > 0, progress, false, false, lf, &written);
     return written;
   };

@@ -119,7 +119,8 @@ json scenario_rows(const RunData& r) {
                     fmt(", ρ %.0f kg/m³", num(k, {"density_kg_m3"})));
     row("impact energy", fmt("%.4g kJ", 0.5 * num(k, {"mass_kg"}) * std::pow(num(k, {"speed_m_s"}), 2) / 1e3));
     const auto& n = r.results.info.numbers;
-    if (const std::string t = boulder_model_text(k.value("model", ""), n.count("cfl") ? n.at("cfl") : NAN); !t.empty()) row("boulder model", t);
+    const double cfl = n.count("cfl_used") ? n.at("cfl_used") : n.count("cfl") ? n.at("cfl") : NAN;  // cfl_used: reduced to the stable limit
+    if (const std::string t = boulder_model_text(k.value("model", ""), cfl); !t.empty()) row("boulder model", t);
   }
   if (b.contains("debris_surge") && b["debris_surge"].contains("hydrograph")) {
     const json& k = b["debris_surge"];

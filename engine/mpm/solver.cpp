@@ -456,7 +456,8 @@ template <int D> Diagnostics<D> Solver<D>::diagnostics() const {
   const auto& P = scene_.particles;
   Diagnostics<D> d;
   const Index np = static_cast<Index>(P.size());
-  // Kinetic energy, gravity's work and momentum in one pass, each summed as deterministic_sum would alone.
+  // Kinetic energy, gravity's work and momentum in one pass, each in deterministic_sum's chunks and order (the same for
+  // any thread count).
   using Sums = std::array<double, 2 + D>;
   const Sums sums = parallel_reduce(
       Index(0), np, Sums{},
