@@ -30,6 +30,7 @@
 #include "render/report.hpp"
 #endif
 #include "engine/common/error.hpp"
+#include "engine/io/results_writer.hpp"
 #include "engine/scenario/scenario.hpp"
 #include "engine/sim/run.hpp"
 #include "engine/sim/solid_check.hpp"
@@ -135,6 +136,15 @@ int simulate(const std::string& file, const std::string& out, int threads, bool 
     o.stop_after_steps = rf.stop_after;
     jobs[k].mode = resume_mode(rf, o.out_dir);
     o.restart = jobs[k].mode == Resume::from_checkpoint;
+    // A complete result is kept only if it was computed from this scenario (a checkpoint is checked by its fingerprint
+    // when it is read): a file edited since would otherwise leave a stale result, or mix scenarios in a grid study.
+    if (jobs[k].mode == Resume::done) {
+      const std::string kept = (std::filesystem::path(o.out_dir) / "results.h5").string();
+      const dmi::RunInfo info = dmi::read_results(kept, false).info;
+      if (info.scenario_json != v.scenario.source_text || info.variant != v.scenario.variant)
+        throw dmi::InputError(kept + ": --restart keeps a complete result only when it was computed from this scenario, and this one "
+                              "was computed from a different scenario text (edited since?): run without --restart to compute it afresh");
+    }
   }
   // --restart continues an interrupted run: with no checkpoint in any variant's folder (and not every variant done)
   // there is none, and starting afresh silently would hide a wrong folder.

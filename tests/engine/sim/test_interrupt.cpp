@@ -141,3 +141,30 @@ TEST(Interrupt, GridStudyLevelsAllStopAndRestartFromTheirCheckpoints) {
   EXPECT_FALSE(fs::exists(out / "design.json"));
   fs::remove_all(dir);
 }
+
+// --restart keeps a complete result only when it was computed from the scenario given: the same file keeps it (exit
+// 0), an edited one is refused with exit 2 naming the result, which is left as it was.
+TEST(Interrupt, RestartKeepsACompleteResultOnlyForItsOwnScenario) {
+  const fs::path dir = fs::temp_directory_path() / ("dmi_restart_kept_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(std::string(DMI_SOURCE_DIR) + "/tests/data/design/cantilever_self_weight.json"));
+  const fs::path scenario = dir / "s.json", out = dir / "out";
+  std::ofstream(scenario) << j.dump();
+  auto run = [&](const std::vector<std::string>& args) {
+    int status = 0;
+    waitpid(spawn(args, dir), &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  };
+  ASSERT_EQ(run({"simulate", scenario.string(), "-o", out.string(), "-q"}), 0);
+  const auto written = fs::last_write_time(out / "results.h5");
+  EXPECT_EQ(run({"simulate", scenario.string(), "-o", out.string(), "-q", "--restart"}), 0);
+  j["analysis"]["end_time"] = 2 * j["analysis"]["end_time"].get<double>();
+  std::ofstream(scenario, std::ios::trunc) << j.dump();
+  EXPECT_EQ(run({"simulate", scenario.string(), "-o", out.string(), "-q", "--restart"}), 2);
+  std::ifstream err(dir / "stderr.txt");
+  const std::string msg((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+  EXPECT_NE(msg.find((out / "results.h5").string() + ": --restart keeps a complete result only when"), std::string::npos) << msg;
+  EXPECT_EQ(fs::last_write_time(out / "results.h5"), written);
+  fs::remove_all(dir);
+}
