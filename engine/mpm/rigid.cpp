@@ -175,18 +175,17 @@ template <int D> NodalMotion<D> nodal_motion(const Grid<D>& g, const std::vector
         izz += mi * r2, lz += mi * (r.x() * v.y() - r.y() * v.x()), r2max = std::max(r2max, r2);
       }
     m.I(2, 2) = izz, m.w.z() = lz / izz, m.rmax = std::sqrt(r2max);
-    return m;
+  } else {
+    Vec<3> l = Vec<3>::Zero();
+    for (Index id : nodes)
+      if (const double mi = g.m[off + id]; mi > 0) {
+        const Vec<3> r = g.node_pos(id) - m.xc, &v = vel[off + id];
+        m.I += mi * (r.squaredNorm() * Mat<3>::Identity() - r * r.transpose());
+        l += mi * r.cross(v);
+        m.rmax = std::max(m.rmax, r.norm());
+      }
+    m.w = m.I.ldlt().solve(l);
   }
-  Vec<3> l = Vec<3>::Zero();
-  for (Index id : nodes)
-    if (const double mi = g.m[off + id]; mi > 0) {
-      Vec<3> r = Vec<3>::Zero(), v = Vec<3>::Zero();
-      r.head<D>() = g.node_pos(id) - m.xc, v.head<D>() = vel[off + id];
-      m.I += mi * (r.squaredNorm() * Mat<3>::Identity() - r * r.transpose());
-      l += mi * r.cross(v);
-      m.rmax = std::max(m.rmax, r.norm());
-    }
-  m.w = m.I.ldlt().solve(l);
   return m;
 }
 

@@ -38,12 +38,29 @@ pid_t spawn(const std::vector<std::string>& args, const fs::path& dir) {
   return pid;
 }
 
+// A fresh folder for one test under the temporary directory.
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / (name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+// The small cantilever scenario these tests run (0.01 s as given).
+nlohmann::json cantilever() {
+  return nlohmann::json::parse(std::ifstream(std::string(DMI_SOURCE_DIR) + "/tests/data/design/cantilever_self_weight.json"));
+}
+
+// What the spawned process wrote to its standard error.
+std::string stderr_of(const fs::path& dir) {
+  std::ifstream err(dir / "stderr.txt");
+  return std::string((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+}
+
 }  // namespace
 
 TEST(Interrupt, SigtermKeepsPartialHistoriesAndTheOlderCompleteResult) {
-  const fs::path dir = fs::temp_directory_path() / ("dmi_interrupt_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = fresh_dir("dmi_interrupt");
   const std::string source = std::string(DMI_SOURCE_DIR) + "/tests/data/design/cantilever_self_weight.json";
   // A complete result first (0.01 s).
   pid_t pid = spawn({"simulate", source, "-o", dir.string(), "-q"}, dir);
@@ -53,7 +70,7 @@ TEST(Interrupt, SigtermKeepsPartialHistoriesAndTheOlderCompleteResult) {
   const dmi::Results before = dmi::read_results((dir / "results.h5").string(), false);
   ASSERT_TRUE(before.complete);
   // The same scene for 100 s, stopped after half a second.
-  nlohmann::json j = nlohmann::json::parse(std::ifstream(source));
+  nlohmann::json j = cantilever();
   j["analysis"]["end_time"] = 100.0;
   const fs::path long_run = dir / "long.json";
   std::ofstream(long_run) << j.dump();
@@ -68,8 +85,7 @@ TEST(Interrupt, SigtermKeepsPartialHistoriesAndTheOlderCompleteResult) {
   waitpid(pid, &status, 0);
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 128 + SIGTERM);
-  std::ifstream err(dir / "stderr.txt");
-  const std::string msg((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+  const std::string msg = stderr_of(dir);
   EXPECT_NE(msg.find("run interrupted by SIGTERM at step"), std::string::npos) << msg;
   // The older complete file is untouched; the partial one holds the histories so far and says it is incomplete.
   const dmi::Results after = dmi::read_results((dir / "results.h5").string(), false);
@@ -91,10 +107,8 @@ TEST(Interrupt, SigtermKeepsPartialHistoriesAndTheOlderCompleteResult) {
 // restarted study is stopped sooner than the first (each level's partial rewritten, then 0.3 s against 1.5 s), so a
 // level that continued has at least its earlier steps and one started afresh has fewer.
 TEST(Interrupt, GridStudyLevelsAllStopAndRestartFromTheirCheckpoints) {
-  const fs::path dir = fs::temp_directory_path() / ("dmi_interrupt_grid_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  nlohmann::json j = nlohmann::json::parse(std::ifstream(std::string(DMI_SOURCE_DIR) + "/tests/data/design/cantilever_self_weight.json"));
+  const fs::path dir = fresh_dir("dmi_interrupt_grid");
+  nlohmann::json j = cantilever();
   j["analysis"]["end_time"] = 100.0;  // ~40 s a level: a signal always arrives while they step
   const fs::path scenario = dir / "long.json", out = dir / "out";
   std::ofstream(scenario) << j.dump();
@@ -145,10 +159,8 @@ TEST(Interrupt, GridStudyLevelsAllStopAndRestartFromTheirCheckpoints) {
 // --restart keeps a complete result only when it was computed from the scenario given: the same file keeps it (exit
 // 0), an edited one is refused with exit 2 naming the result, which is left as it was.
 TEST(Interrupt, RestartKeepsACompleteResultOnlyForItsOwnScenario) {
-  const fs::path dir = fs::temp_directory_path() / ("dmi_restart_kept_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  nlohmann::json j = nlohmann::json::parse(std::ifstream(std::string(DMI_SOURCE_DIR) + "/tests/data/design/cantilever_self_weight.json"));
+  const fs::path dir = fresh_dir("dmi_restart_kept");
+  nlohmann::json j = cantilever();
   const fs::path scenario = dir / "s.json", out = dir / "out";
   std::ofstream(scenario) << j.dump();
   auto run = [&](const std::vector<std::string>& args) {
@@ -162,8 +174,7 @@ TEST(Interrupt, RestartKeepsACompleteResultOnlyForItsOwnScenario) {
   j["analysis"]["end_time"] = 2 * j["analysis"]["end_time"].get<double>();
   std::ofstream(scenario, std::ios::trunc) << j.dump();
   EXPECT_EQ(run({"simulate", scenario.string(), "-o", out.string(), "-q", "--restart"}), 2);
-  std::ifstream err(dir / "stderr.txt");
-  const std::string msg((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+  const std::string msg = stderr_of(dir);
   EXPECT_NE(msg.find((out / "results.h5").string() + ": --restart keeps a complete result only when"), std::string::npos) << msg;
   EXPECT_EQ(fs::last_write_time(out / "results.h5"), written);
   fs::remove_all(dir);
