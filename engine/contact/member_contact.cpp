@@ -14,17 +14,21 @@ constexpr double kPi = 3.14159265358979323846;
 
 // Weight q of the boundary force at signed distance r from a member surface of half depth hm (eq. 16).
 // Sharp: a node is held fully (q = 1) once r <= r_on and, if it was held in the previous step, while
-// r <= r_on + l_n / 2; else it is free. r_on = max(0, (l_n - 2 hm) / 2): nodes on or inside the member surface, as a
+// r <= r_on + release; else it is free. r_on = max(0, (l_n - 2 hm) / 2): nodes on or inside the member surface, as a
 // rigid wall holds the nodes on or behind its plane, widened for members thinner than l_n so that the held band
 // (2 hm + 2 r_on >= l_n) always contains a grid node. The release band keeps a member that vibrates across the
 // threshold from switching a loaded node on and off every step: each switch is a plastic impact of the node, and
-// a hard impact lost 54-79 % of its energy without it. Linear 1 - r / l_n and cosine (1 + cos(pi r / l_n)) / 2 hold
+// a hard impact lost most of its energy without it. Unilateral contact releases at l_n / 2. Stuck material
+// (stick mode, bonded bodies) releases at l_n, one node spacing along a grid axis: a member surface moving
+// through the grid then holds the next node row (on or behind the surface) before it lets the last one go, and
+// the material stays on it however far the member moves. Linear 1 - r / l_n and cosine (1 + cos(pi r / l_n)) / 2 hold
 // nodes partly; a partly held node is braked by q of its approach velocity every step, a dashpot of impedance
 // ~ q (1 - q) rho c per unit area that absorbs a hard elastic impact (docs/verification.md, member contact).
-double weight(DecayKind k, double r, double ln, double hm, bool held_before) {
+double weight(DecayKind k, double r, double ln, double hm, bool held_before, bool stuck) {
   if (k == DecayKind::sharp) {
     const double on = std::max(0.0, 0.5 * ln - hm) + 1e-9 * ln;  // a node on the surface is held (round-off)
-    return r <= on || (held_before && r <= on + 0.5 * ln) ? 1.0 : 0.0;
+    const double release = stuck ? ln : 0.5 * ln;
+    return r <= on || (held_before && r <= on + release) ? 1.0 : 0.0;
   }
   if (r <= 0) return 1.0;
   if (r >= ln) return 0.0;
@@ -270,7 +274,7 @@ template <int D> void MemberContact<D>::mass_positions(const Scene<D>& s, const 
 template <int D> void MemberContact<D>::touching(const Scene<D>& s) {
   const Grid<D>& g = *s.grid;
   touch_.reset(static_cast<std::size_t>(g.nnodes()) * g.nfields());
-  if (s.coupling.decay != DecayKind::sharp || s.coupling.detection != DetectionKind::surface) return;
+  if (!member_contact_detects_touch(s.coupling, false)) return;
   const Particles<D>& P = s.particles;
   const FrameOf<D>& fr = *s.frame;
   const double tol = 1e-6 * g.h();
@@ -373,11 +377,15 @@ template <int D> void MemberContact<D>::boundary_forces(Scene<D>& s, double dt) 
         hm = arm.dot(n);  // the section's extent along n, for the weight's band
         vstar = vc + omega.cross(arm);
       }
-      double q = weight(opt.decay, r, ln, hm, held_flag_[k] != 0);
-      // Surface detection: only nodes engaged by particles touching the member, among those within l_n / 2 of
-      // its surface on either side (as a rigid wall: a face between grid lines acts at the nearest node row).
-      if (member_contact_needs_touch(opt, bonded))
-        q = touch_.engaged(k) && (q > 0 || r <= 0.5 * ln * (1 + 1e-9)) ? 1.0 : 0.0;
+      double q = weight(opt.decay, r, ln, hm, held_flag_[k] != 0, mode == MemberContactMode::stick);
+      // Surface detection: a node is taken only when engaged by particles touching the member, among those within
+      // l_n / 2 of its surface on either side (as a rigid wall: a face between grid lines acts at the nearest node
+      // row). Unilateral contact keeps it while touched; stuck material keeps it while in the release band.
+      if (member_contact_detects_touch(opt, bonded)) {
+        const bool taken = touch_.engaged(k) && (q > 0 || r <= 0.5 * ln * (1 + 1e-9));
+        const bool kept = mode == MemberContactMode::stick && held_flag_[k] && q > 0;
+        q = taken || kept ? 1.0 : 0.0;
+      }
       if (q == 0) continue;
       loaded_.push_back(Loaded{k, n, vstar, q, mode, false});
       Vec<D> fv = -g.f[k] + (m * vstar - g.p[k]) / dt;  // eq. (20)
@@ -401,7 +409,7 @@ template <int D> void MemberContact<D>::boundary_forces(Scene<D>& s, double dt) 
       else fr.add_point_load(c.element, c.xi, F, arm.cross(F));
       // The held material moves with the member: its mass joins the frame's inertia for the step
       // (all directions when stuck, the normal one when sliding).
-      fr.add_point_mass(c.element, c.xi, q * m * (mode == MemberContactMode::stick ? Mat<D>(Mat<D>::Identity()) : Mat<D>(n * n.transpose())));
+      fr.add_point_mass(c.element, c.xi, q * m * (mode == MemberContactMode::stick ? Mat<D>(Mat<D>::Identity()) : Mat<D>(n * n.transpose())), arm);
       force_ += F;
       loaded_.back().pressed = true;
       loads_.push_back(ContactLoadOf<D>{c.element, c.xi, c.xm + arm, F});

@@ -10,16 +10,18 @@
 //         the node presses and r <= r_on + l_n / 2 (hysteresis), else 0 -- the node set a rigid wall holds;
 //         linear / cosine (the paper's decay layer): 0 < q < 1 across l_n, which brakes a partly held node by q of
 //         its approach velocity every step -- a dashpot that absorbs a hard elastic impact (docs/verification.md)
-//   surface detection (default, sharp decay, separable and friction): a node is held only when engaged by a
-//         particle whose domain touches the member surface (engine/mpm/touch.hpp), as for a rigid wall
+//   surface detection (default, sharp decay): a node is taken only when engaged by a particle whose domain
+//         touches the member surface (engine/mpm/touch.hpp), as for a rigid wall; unilateral contact holds it while
+//         touched, stick keeps it (the material stays stuck) while it lies within l_n of the surface
 //   f_v = -f_tot + (m v* - p) / dt                    stick / prescribed velocity, eq. (20)
 //         normal part only, and only while it pushes the material away (f_v . n > 0): separable, eq. (21)
 //         plus a tangential part limited by mu f_v . n: friction (Coulomb)
 //   f_bc = q f_v added to the node (eq. 19); -f_bc acts on the member at the surface point x^M + c n, i.e. a
 //   force at x^M plus the moment of the offset, turned into consistent end forces by Frame::add_point_load.
-//   The held nodal mass q m (q m n n^T when sliding) is attached to the frame for the step
-//   (Frame::add_point_mass): the staggered scheme computes the reaction from v*_n, and without the
-//   added mass a heavy mass on a light member rang up (energy x 300 in a debris-on-pipe test).
+//   The held nodal mass q m (q m n n^T when sliding) is attached to the frame for the step at the surface point,
+//   moving as the section there (Frame::add_point_mass, consistent with the reaction's force and moment): the
+//   staggered scheme computes the reaction from v*_n, and a heavy mass on a light member needs its inertia, the
+//   rotary inertia of its offset included, in the frame's implicit step to stay stable.
 // v* is the velocity of the member's surface point: centre-line velocity plus omega x (c n) (frame
 // state at t_n).
 // In 3D the surface is the section's swept boundary: r is the signed distance to a round section (|x - x^M| - R)
@@ -83,10 +85,14 @@ inline double member_contact_layer(const MemberCoupling& c, double h) {
   return c.decay_scale * h + (c.distance == DistanceKind::material ? 1.5 * h : 0.0);
 }
 
-// Whether member contact acts on a field only at nodes engaged by its particles touching the member (the sharp held
-// zone with surface detection, and not stick: bonded fields always stick).
+// Whether member contact takes a node of a field only where its particles touch the member (the sharp held zone
+// with surface detection; bonded fields are held from the start, as stuck).
+inline bool member_contact_detects_touch(const MemberCoupling& c, bool bonded) {
+  return !bonded && c.decay == DecayKind::sharp && c.detection == DetectionKind::surface;
+}
+// Whether it holds such a node only while its particles touch (unilateral contact); stuck material stays held.
 inline bool member_contact_needs_touch(const MemberCoupling& c, bool bonded) {
-  return !bonded && c.mode != MemberContactMode::stick && c.decay == DecayKind::sharp && c.detection == DetectionKind::surface;
+  return member_contact_detects_touch(c, bonded) && c.mode != MemberContactMode::stick;
 }
 
 // Each element's bounding box in its present shape (the deformed centre-line's Bezier hull grown by the section's reach).

@@ -293,8 +293,9 @@ void read_wall(Obj& o, WallConfig& w) {
                           Spec{.doc = "stick: v = 0; roller: no normal velocity (bilateral); slip: frictionless contact, separable; friction: Coulomb contact, separable"});
   o.number("friction", w.friction, Spec{.doc = "Coulomb coefficient (condition = friction)", .min = 0});
   o.choice<DetectionKind>("detection", w.detection, {{"surface", DetectionKind::surface}, {"node", DetectionKind::node}},
-                          Spec{.doc = "contact detection of a unilateral boundary: surface (default) = a grid node is held only where the particles whose "
-                                        "domains touch it carry at least half the node's mass; node = every node on or behind the wall with mass is held, "
+                          Spec{.doc = "contact detection (sharp decay): surface (default) = a grid node is taken only where the particles whose "
+                                        "domains touch the member carry at least half the node's mass (unilateral contact holds it while "
+                                        "touched, stick while it stays in its band); node = every node on or behind the wall with mass is held, "
                                         "which engages the stencil's reach (1.5 h) ahead of the body and makes a hard impact's peak "
                                         "cell-dependent (docs/verification.md, hard impact)"});
 }
@@ -495,8 +496,9 @@ void read_member_contact(Obj o, MemberContactConfig& c, bool structure) {
   o.end_when();
   o.choice<DecayKind>("decay", c.decay, {{"sharp", DecayKind::sharp}, {"linear", DecayKind::linear}, {"cosine", DecayKind::cosine}},
                       Spec{.doc = "weight q of the boundary force across the decay layer l_n (Lin & Yang 2024, eq. 16): sharp (default) "
-                                  "= a node is held fully (q = 1) once r <= l_n / 2 and stays held while r <= l_n and the material "
-                                  "presses, else q = 0; linear 1 - r / l_n or cosine (1 + cos(pi r / l_n)) / 2 hold nodes partly, "
+                                  "= a node is held fully (q = 1) once on or inside the member surface (within l_n / 2 of it for members "
+                                  "thinner than l_n) and stays held while within l_n / 2 more and the material presses (stick: "
+                                  "while within l_n, pressing or not), else q = 0; linear 1 - r / l_n or cosine (1 + cos(pi r / l_n)) / 2 hold nodes partly, "
                                   "which acts as a dashpot of impedance ~ q (1 - q) rho c and absorbs a hard elastic impact "
                                   "(docs/verification.md, member contact)"});
   o.number("decay_scale", c.decay_scale, positive("", "multiplies the decay-layer thickness l_n of Lin & Yang 2024 eq. (18)"));
@@ -506,10 +508,11 @@ void read_member_contact(Obj o, MemberContactConfig& c, bool structure) {
                                      "position the node sees (eq. 25), which engages when the material, not its grid support, "
                                      "reaches the member (docs/verification.md)"});
   o.choice<DetectionKind>("detection", c.detection, {{"surface", DetectionKind::surface}, {"node", DetectionKind::node}},
-                          Spec{.doc = "contact detection of a unilateral boundary: surface (default) = a grid node is held only where the particles whose "
-                                        "domains touch it carry at least half the node's mass; node = every node on or inside the member surface with mass is held, "
+                          Spec{.doc = "contact detection (sharp decay): surface (default) = a grid node is taken only where the particles whose "
+                                        "domains touch the member carry at least half the node's mass (unilateral contact holds it while "
+                                        "touched, stick while it stays in its band); node = every node on or inside the member surface with mass is held, "
                                         "which engages the stencil's reach (1.5 h) ahead of the body and makes a hard impact's peak "
-                                        "cell-dependent (docs/verification.md, hard impact)" " (sharp decay, separable and friction modes)"});
+                                        "cell-dependent (docs/verification.md, hard impact)"});
   o.strings("bodies", c.bodies, {}, Spec{.doc = "names of the bodies the members act on; empty: all bodies"});
   o.strings("bonded", c.bonded, {}, Spec{.doc = "names of bodies bonded to the members: held by stick contact whatever the mode "
                                                 "(a tyre buffer fixed on the dam face, while a boulder meets the dam separably); "

@@ -74,13 +74,6 @@ void Frame::clear_loads() {
   impl_->f_current = false;
 }
 
-void Frame::add_point_mass(int e, double xi, const Eigen::Matrix2d& m) {
-  impl_->check_element(e, xi);
-  if (!m.allFinite()) throw std::invalid_argument("Frame: non-finite attached mass on element " + std::to_string(e));
-  const auto& el = model().elements[e];
-  impl_->dyn.add_point_mass(3, el.i, el.j, xi, m);
-}
-
 void Frame::add_nodal_load(int node, const Vec3& f) {
   impl_->check_node(node);
   if (!f.allFinite()) throw std::invalid_argument("Frame: non-finite load at node " + std::to_string(node));
@@ -92,17 +85,36 @@ void Frame::add_point_load(int e, double xi, const Vec2& F, double m) {
   impl_->check_element(e, xi);
   if (!F.allFinite() || !std::isfinite(m))
     throw std::invalid_argument("Frame: non-finite point load on element " + std::to_string(e));
+  const Eigen::Matrix<double, 6, 1> g = point_load_vector(e, xi, F, m);
+  const FrameElementDef& el = model().elements[e];
+  impl_->dyn.nodal.segment<3>(3 * el.i) += g.head<3>();
+  impl_->dyn.nodal.segment<3>(3 * el.j) += g.tail<3>();
+  impl_->f_current = false;
+}
+
+Eigen::Matrix<double, 6, 1> Frame::point_load_vector(int e, double xi, const Vec2& F, double m) const {
   const ElementCurve c = curve(e);
   const BeamShape sh = beam_shape(xi, c.L);
   const double fa = F.dot(c.e1), ft = F.dot(c.e2);
-  const FrameElementDef& el = model().elements[e];
-  const int node[2] = {el.i, el.j};
+  Eigen::Matrix<double, 6, 1> g;
   for (int k = 0; k < 2; ++k) {
     const double fw = sh.hermite[2 * k] * ft + sh.slope[2 * k] * m;
-    impl_->dyn.nodal.segment<2>(3 * node[k]) += sh.axial[k] * fa * c.e1 + fw * c.e2;
-    impl_->dyn.nodal(3 * node[k] + 2) += sh.hermite[2 * k + 1] * ft + sh.slope[2 * k + 1] * m;
+    g.segment<2>(3 * k) = sh.axial[k] * fa * c.e1 + fw * c.e2;
+    g(3 * k + 2) = sh.hermite[2 * k + 1] * ft + sh.slope[2 * k + 1] * m;
   }
-  impl_->f_current = false;
+  return g;
+}
+
+void Frame::add_point_mass(int e, double xi, const Eigen::Matrix2d& m, const Vec2& arm) {
+  impl_->check_element(e, xi);
+  if (!m.allFinite() || !arm.allFinite()) throw std::invalid_argument("Frame: non-finite attached mass on element " + std::to_string(e));
+  Eigen::Matrix<double, 6, 2> G;  // the point's velocity is G^T times the end DOFs (dual to the point load)
+  for (int a = 0; a < 2; ++a) {
+    const Vec2 F = Vec2::Unit(a);
+    G.col(a) = point_load_vector(e, xi, F, arm.x() * F.y() - arm.y() * F.x());
+  }
+  const auto& el = model().elements[e];
+  impl_->dyn.add_point_mass(3, el.i, el.j, G, m);
 }
 
 void Frame::add_distributed_load(int e, const Vec2& w_local) {

@@ -125,10 +125,13 @@ class Frame {
   // end forces with the element's interpolation (axial linear, transverse cubic Hermite; moment
   // through the Hermite slopes), in the element's current axes (initial axes for linear transf).
   void add_point_load(int e, double xi, const Vec2& F, double m = 0.0);
-  // Mass m (kg, a 2x2 translational block in global axes) attached at xi of element e for the next
-  // advance() only: material that member contact holds to the member moves with it, so it adds to the
-  // inertia of the step (implicit added mass). Lumped to the end nodes with weights 1 - xi, xi.
-  void add_point_mass(int e, double xi, const Eigen::Matrix2d& m);
+  // Mass m (kg, a 2x2 translational block in global axes) attached for the next advance() only at the point
+  // x(xi) + arm of element e, moving with the section there (centre-line velocity plus rotation times arm, dual to
+  // add_point_load with the moment arm x F): material that member contact holds to the member moves with it, so it
+  // adds to the inertia of the step (implicit added mass), consistently, the arm's rotary inertia included.
+  void add_point_mass(int e, double xi, const Eigen::Matrix2d& m, const Vec2& arm = Vec2::Zero());
+  // The end forces (Fx, Fy, Mz at the start node, then at the end node; global) of add_point_load.
+  Eigen::Matrix<double, 6, 1> point_load_vector(int e, double xi, const Vec2& F, double m) const;
   // Uniform load per unit length (N/m) in the element's local axes (along e1, along e2).
   void add_distributed_load(int e, const Vec2& w_local);
 

@@ -23,16 +23,15 @@ struct FrameDynamics {
   Eigen::VectorXd residual(const AssembledSystem& sys, const Eigen::VectorXd& f) const;
   void clear_loads() { nodal.setZero(), added.clear(); }
   double kinetic_energy(const AssembledSystem& sys) const { return 0.5 * state.v.dot(sys.mass() * state.v); }
-  // Mass m (a translational block in global axes) attached for the next step at xi between nodes i and j, lumped to
-  // them with weights 1 - xi, xi (node_dofs DOFs per node, translations first).
-  template <class Matrix> void add_point_mass(int node_dofs, int i, int j, double xi, const Matrix& m) {
-    for (int k = 0; k < 2; ++k) {
-      const int n = k == 0 ? i : j;
-      const double w = k == 0 ? 1 - xi : xi;
-      for (int a = 0; a < m.rows(); ++a)
-        for (int b = 0; b < m.cols(); ++b)
-          if (w * m(a, b) != 0) added.emplace_back(node_dofs * n + a, node_dofs * n + b, w * m(a, b));
-    }
+  // Mass m (a translational block in global axes) attached for the next step at a point whose velocity is G^T times
+  // the DOFs of nodes i and j (node_dofs each, node i first): the consistent block G m G^T, G the map of a point force
+  // to nodal forces (its columns: unit forces along the global axes), so that the mass moves as the point it sits on.
+  template <class GMatrix, class Matrix> void add_point_mass(int node_dofs, int i, int j, const GMatrix& G, const Matrix& m) {
+    const Eigen::MatrixXd block = G * m * G.transpose();
+    for (int a = 0; a < block.rows(); ++a)
+      for (int b = 0; b < block.cols(); ++b)
+        if (block(a, b) != 0)
+          added.emplace_back(node_dofs * (a < node_dofs ? i : j) + a % node_dofs, node_dofs * (b < node_dofs ? i : j) + b % node_dofs, block(a, b));
   }
 
   // Force and moment a support exerts on the frame, given the residual r of the total loads: a restrained DOF takes

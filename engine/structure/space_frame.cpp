@@ -105,6 +105,14 @@ void SpaceFrame::add_nodal_load(int node, const Vec6& f) {
 void SpaceFrame::add_point_load(int e, double xi, const Vec3& F, const Vec3& m) {
   impl_->check_element(e, xi);
   if (!F.allFinite() || !m.allFinite()) throw std::invalid_argument("SpaceFrame: non-finite point load on element " + std::to_string(e));
+  const Vec12 g = point_load_vector(e, xi, F, m);
+  const SpaceElementDef& el = model().elements[e];
+  impl_->dyn.nodal.segment<6>(6 * el.i) += g.head<6>();
+  impl_->dyn.nodal.segment<6>(6 * el.j) += g.tail<6>();
+  impl_->f_current = false;
+}
+
+Vec12 SpaceFrame::point_load_vector(int e, double xi, const Vec3& F, const Vec3& m) const {
   const SpaceChordState s = impl_->sys.element_state(e, impl_->dyn.state.d);
   const Vec3 f = s.R * F, t = s.R * m;
   const BeamShape sh = beam_shape(xi, s.L);
@@ -118,18 +126,19 @@ void SpaceFrame::add_point_load(int e, double xi, const Vec3& F, const Vec3& m) 
     l(o + 2) = sh.hermite[2 * k] * f(2) - sh.slope[2 * k] * t(1);            // plane 2: u3, t' = -th2, m' = -m2
     l(o + 4) = -(sh.hermite[2 * k + 1] * f(2) - sh.slope[2 * k + 1] * t(1));
   }
-  const Vec12 g = rotation12(s.R).transpose() * l;
-  const SpaceElementDef& el = model().elements[e];
-  impl_->dyn.nodal.segment<6>(6 * el.i) += g.head<6>();
-  impl_->dyn.nodal.segment<6>(6 * el.j) += g.tail<6>();
-  impl_->f_current = false;
+  return rotation12(s.R).transpose() * l;
 }
 
-void SpaceFrame::add_point_mass(int e, double xi, const Eigen::Matrix3d& m) {
+void SpaceFrame::add_point_mass(int e, double xi, const Eigen::Matrix3d& m, const Vec3& arm) {
   impl_->check_element(e, xi);
-  if (!m.allFinite()) throw std::invalid_argument("SpaceFrame: non-finite attached mass on element " + std::to_string(e));
+  if (!m.allFinite() || !arm.allFinite()) throw std::invalid_argument("SpaceFrame: non-finite attached mass on element " + std::to_string(e));
+  Eigen::Matrix<double, 12, 3> G;  // the point's velocity is G^T times the end DOFs (dual to the point load)
+  for (int a = 0; a < 3; ++a) {
+    const Vec3 F = Vec3::Unit(a);
+    G.col(a) = point_load_vector(e, xi, F, arm.cross(F));
+  }
   const auto& el = model().elements[e];
-  impl_->dyn.add_point_mass(6, el.i, el.j, xi, m);
+  impl_->dyn.add_point_mass(6, el.i, el.j, G, m);
 }
 
 void SpaceFrame::add_distributed_load(int e, const Vec3& w_local) {

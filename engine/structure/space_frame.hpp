@@ -116,9 +116,11 @@ class SpaceFrame {
   // Force F and moment m (global) at xi of element e as consistent end loads (axial linear, transverse Hermite,
   // torque linear, bending moments through the Hermite slopes).
   void add_point_load(int e, double xi, const Vec3& F, const Vec3& m = Vec3::Zero());
-  // Mass (a 3 x 3 translational block in global axes) attached at xi of element e for the next advance() only,
-  // lumped to the end nodes with weights 1 - xi, xi (frame.hpp, add_point_mass).
-  void add_point_mass(int e, double xi, const Eigen::Matrix3d& m);
+  // Mass (a 3 x 3 translational block in global axes) attached for the next advance() only at x(xi) + arm of
+  // element e, moving with the section there, consistently (frame.hpp, add_point_mass).
+  void add_point_mass(int e, double xi, const Eigen::Matrix3d& m, const Vec3& arm = Vec3::Zero());
+  // The end forces (global, start node then end node) of add_point_load.
+  Eigen::Matrix<double, 12, 1> point_load_vector(int e, double xi, const Vec3& F, const Vec3& m) const;
   void add_distributed_load(int e, const Vec3& w_local);  // uniform, per metre, along (e1, e2, e3)
 
   double stable_time_step() const;

@@ -22,6 +22,8 @@ void paper_a5_point_mass_reference(int elements, double dt, double t_end, double
 
 struct A5Run {
   std::vector<double> time, midspan;  // s, m (vertical displacement of the centre-line)
+  std::vector<double> block;          // m, the block's mean vertical displacement
+  std::vector<double> contact;        // N, the vertical contact force on the beam
   double t_impact = 0;                // first sample with a contact force on the beam (s)
   double wall = 0;                    // s
   long steps = 0;

@@ -362,5 +362,29 @@ TEST(FrameDynamics, PointLoadPowerEqualsNodalPower) {
   }
 }
 
+// The mass attached at a point offset from the centre-line moves as that point: G^T v is the centre-line velocity plus
+// the section's rotation times the arm, for any state, so q^T (G m G^T) q = m |v_point|^2 (the added kinetic energy).
+TEST(FrameDynamics, AttachedMassMovesWithTheSectionPoint) {
+  Beam b;
+  FrameModel m = straight(b, 3, 0.6);
+  support(m, 0, true, true, true);
+  Frame f(m);
+  f.add_nodal_load(3, Vec3(2e4, -3e4, 5e3));
+  const double dt = 0.5 * f.stable_time_step();
+  for (int k = 0; k < 37; ++k) f.advance(dt);  // general nodal and angular velocities
+  const Vec2 arm(-0.04, 0.11);
+  const int i = m.elements[1].i, j = m.elements[1].j;
+  Eigen::Matrix<double, 6, 1> q;
+  q << f.velocity().segment<3>(3 * i), f.velocity().segment<3>(3 * j);
+  for (double xi : {0.0, 0.37, 1.0}) {
+    Eigen::Matrix<double, 6, 2> G;
+    for (int a = 0; a < 2; ++a) G.col(a) = f.point_load_vector(1, xi, Vec2::Unit(a), arm.x() * Vec2::Unit(a).y() - arm.y() * Vec2::Unit(a).x());
+    const Vec2 point = f.velocity_at(1, xi) + f.angular_velocity_at(1, xi) * Vec2(-arm.y(), arm.x());
+    const Vec2 dual = G.transpose() * q;
+    EXPECT_NEAR((dual - point).norm(), 0.0, 1e-9 * point.norm()) << xi;
+    EXPECT_GT(std::abs(f.angular_velocity_at(1, xi)) * arm.norm(), 1e-3 * point.norm()) << xi;  // the arm matters here
+  }
+}
+
 }  // namespace
 }  // namespace dmi
