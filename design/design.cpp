@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "design/estimates.hpp"
+#include "engine/scenario/design_basis_json.hpp"
 #include "design/phases.hpp"
 #include "design/loads.hpp"
 #include "design/members.hpp"
@@ -98,6 +99,16 @@ json parse_document(const Results& r, const char* name, const std::string& where
     throw std::runtime_error(where + ": /documents/" + name + " is not valid JSON (" + e.what() + ")");
   }
 }
+
+}  // namespace
+
+std::optional<DesignBasis> read_design_basis(const Results& r, const std::string& where) {
+  const json doc = parse_document(r, "design_basis", where);
+  if (doc.is_null()) return std::nullopt;
+  return design_basis_from_json(doc, where, "/documents/design_basis");
+}
+
+namespace {
 
 // Solid-FE peaks (Lin, Cheng & Tuan, Table 1) and their concrete checks: max principal vs phi_f f_t, min principal vs phi_c alpha f'c.
 json solid_part(const json& doc, const Limits& L, std::vector<Check>& checks, const std::string& where) {
@@ -239,11 +250,11 @@ json design_run(const Results& r, const Limits& L, const std::string& where) {
   punching(parse_document(r, "peak_contact", where), members, L, checks, where);
   run["solid"] = solid_part(parse_document(r, "solid_check", where), L, checks, where);
   json est = json::array();
-  const json basis = parse_document(r, "design_basis", where);
-  if (!basis.is_null())
-    for (const auto& e : estimates(basis, base_shear, c.present ? c.peak_N : 0.0, where)) est.push_back(e.to_json());
+  const std::optional<DesignBasis> basis = read_design_basis(r, where);
+  if (basis)
+    for (const auto& e : estimates(*basis, base_shear, c.present ? c.peak_N : 0.0)) est.push_back(e.to_json());
   run["estimates"] = est;
-  run["debris_phases"] = debris_phases(r, basis, where);
+  run["debris_phases"] = basis ? debris_phases(r, *basis) : json(nullptr);
   run["checks"] = json::array();
   for (const auto& k : checks) run["checks"].push_back(k.to_json());
   run["verdict"] = verdict(checks);

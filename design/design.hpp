@@ -1,11 +1,13 @@
 // The design layer's entry points (docs/design-checks.md, docs/design-json.md): results.h5 in,
 // design.json out. Reads files only, never solver objects.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "core/design_basis.hpp"
 #include "design/limits.hpp"
 #include "engine/io/results.hpp"
 
@@ -16,6 +18,9 @@ constexpr int kDesignFormatVersion = 1;
 // The design of one run (an entry of design.json "runs"): envelopes, reactions, contact, solid-FE peaks,
 // closed-form estimates, checks and the verdict. `where` names the results file in errors.
 nlohmann::json design_run(const Results& r, const Limits& limits, const std::string& where);
+
+// The design basis the run carries (/documents/design_basis), validated; nullopt when it has none.
+std::optional<DesignBasis> read_design_basis(const Results& r, const std::string& where);
 
 // With vs without buffer: every compared peak and its reduction in % (docs/design-json.md "comparison").
 nlohmann::json compare_runs(const nlohmann::json& with_buffer, const nlohmann::json& without_buffer);

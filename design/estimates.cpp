@@ -20,26 +20,6 @@ json Estimate::to_json() const {
 
 namespace {
 
-struct Basis {
-  const json& j;
-  const std::string& where;
-  bool has(const char* obj, const char* key) const { return j.contains(obj) && j[obj].is_object() && j[obj].contains(key); }
-  double get(const char* obj, const char* key) const {
-    const std::string p = std::string("/documents/design_basis/") + obj + "/" + key;
-    if (!has(obj, key) || !j[obj][key].is_number()) throw std::runtime_error(where + ": " + p + " missing (expected a number)");
-    const double v = j[obj][key];
-    if (!(v > 0) || !std::isfinite(v)) throw std::runtime_error(where + ": " + p + " = " + j[obj][key].dump() + ": expected a number > 0");
-    return v;
-  }
-  double poisson(const char* obj) const {  // optional in old results files; in (-1, 0.5) when present
-    if (!has(obj, "poisson_ratio")) return std::nan("");
-    const json& v = j[obj]["poisson_ratio"];
-    if (!v.is_number() || !(v.get<double>() > -1 && v.get<double>() < 0.5))
-      throw std::runtime_error(where + ": /documents/design_basis/" + obj + "/poisson_ratio = " + v.dump() + ": expected a number in (-1, 0.5)");
-    return v.get<double>();
-  }
-};
-
 std::string fmt(const char* f, double a, double b = 0, double c = 0, double d = 0, double e = 0, double g = 0) {
   char s[256];
   std::snprintf(s, sizeof s, f, a, b, c, d, e, g);
@@ -63,28 +43,29 @@ struct Table {
 constexpr double kG = 9.81;
 constexpr double kAssumedFrictionDeg = 30;  // ASTRA's cushion friction angle when the basis gives none
 
-void boulder_rows(const Basis& b, const json& basis, Table& t) {
-  const std::string type = basis["dam"].value("type", "");
-  const bool buffer = basis.contains("tyre_buffer");
-  const double E = b.get("dam", "youngs_modulus_Pa"), nu = basis["dam"].value("poisson_ratio", 0.2), H = b.get("dam", "height_m");
-  const double W = b.get("dam", "width_m");
-  const double m = b.get("boulder", "mass_kg"), v = b.get("boulder", "speed_m_s"), D = b.get("boulder", "diameter_m"), r = 0.5 * D;
-  const double Er = b.get("boulder", "youngs_modulus_Pa"), nur = basis["boulder"].value("poisson_ratio", 0.25);
-  const double a = std::min(b.get("boulder", "impact_height_m"), H);
+void boulder_rows(const DesignBasis& basis, Table& t) {
+  const DamBasis& dam = basis.dam;
+  const BoulderBasis& rock = *basis.boulder;
+  const bool buffer = basis.buffer.has_value();
+  const double E = dam.youngs_modulus_Pa, nu = is_set(dam.poisson_ratio) ? dam.poisson_ratio : 0.2, H = dam.height_m;
+  const double W = dam.width_m;
+  const double m = rock.mass_kg, v = rock.speed_m_s, D = rock.diameter_m, r = 0.5 * D;
+  const double Er = rock.youngs_modulus_Pa, nur = is_set(rock.poisson_ratio) ? rock.poisson_ratio : 0.25;
+  const double a = std::min(rock.impact_height_m, H);
   const std::string mv = fmt("m = %.4g kg, v = %.3g m/s", m, v);
   double kb = 0, tb = 0, Eb = 0;  // buffer layer under the boulder's projected area pi D^2 / 4 (docs/design-checks.md)
   if (buffer) {
-    Eb = b.get("tyre_buffer", "youngs_modulus_Pa"), tb = b.get("tyre_buffer", "thickness_m");
+    Eb = basis.buffer->youngs_modulus_Pa, tb = basis.buffer->thickness_m;
     kb = sdof::buffer_layer_stiffness(Eb, std::numbers::pi * D * D / 4, tb);
   }
   // Lin, Cheng & Tuan eqs. (21)-(23): the dam as a cantilever SDOF struck by the boulder's impulse.
   double I = 0;
   const char* sdof_formula = buffer ? "F_T = m v ω, ω = √(k_eff / M), k_eff = 1/(1/k + 1/k_b), k = 3EI/H³, M = ρAH/2, k_b = E_b (πD²/4) / t_b"
                                     : "F_T = m v ω_n, ω_n = √(k / M), k = 3EI/H³, M = ρAH/2 (mean section)";
-  if (type == "concrete_gravity") {
-    const auto sec = sdof::tapered_rectangular_section(W, b.get("dam", "crest_thickness_m"), b.get("dam", "base_thickness_m"));
+  if (dam.type == DamKind::concrete_gravity) {
+    const auto sec = sdof::tapered_rectangular_section(W, dam.crest_thickness_m, dam.base_thickness_m);
     I = sec.second_moment_m4;
-    const auto c = sdof::cantilever_sdof(E, b.get("dam", "density_kg_m3"), sec, H);
+    const auto c = sdof::cantilever_sdof(E, dam.density_kg_m3, sec, H);
     const auto res = buffer ? sdof::buffered_boulder_on_dam(m, v, c.effective_mass_kg, c.stiffness_N_per_m, kb)
                             : sdof::boulder_on_dam(m, v, c.effective_mass_kg, c.stiffness_N_per_m);
     std::string p = mv + fmt(", k = %.3g N/m, M = %.4g kg", c.stiffness_N_per_m, c.effective_mass_kg);
@@ -92,7 +73,7 @@ void boulder_rows(const Basis& b, const json& basis, Table& t) {
     t.add("sdof_base_force", "SDOF peak base force (Lin, Cheng & Tuan)", sdof_formula, "Lin, Cheng & Tuan eqs. (21)-(23)", "peak_base_shear", p,
           res.peak_base_force_N);
   } else {
-    const double Dc = b.get("dam", "column_diameter_m"), tc = b.get("dam", "column_wall_thickness_m"), d = Dc - 2 * tc;
+    const double Dc = dam.column_diameter_m, tc = dam.column_wall_thickness_m, d = Dc - 2 * tc;
     I = std::numbers::pi / 64 * (std::pow(Dc, 4) - std::pow(d, 4));
     t.not_applicable("sdof_base_force", "SDOF peak base force (Lin, Cheng & Tuan)", sdof_formula, "Lin, Cheng & Tuan eqs. (21)-(23)",
                      "peak_base_shear", "written for a solid gravity dam as one cantilever; a steel open dam is a frame of columns");
@@ -125,7 +106,7 @@ void boulder_rows(const Basis& b, const json& basis, Table& t) {
   const double Hf = v * v / (2 * kG);
   const char* jp_formula = "P = 2.108 W^{2/3} λ^{2/5} H^{3/5} (kN, kN/m², m), W = m g, H = v²/(2g)";
   const char* jp_source = "Japan Road Association (2000) Rockfall Countermeasure Handbook";
-  const double nu_c = buffer ? b.poisson("tyre_buffer") : nu;
+  const double nu_c = buffer ? basis.buffer->poisson_ratio : nu;
   if (std::isnan(nu_c)) {
     t.not_applicable("japanese_rockfall", "Japanese rock-fall formula", jp_formula, jp_source, "peak_contact_force",
                      "the design basis has no tyre_buffer/poisson_ratio (results written before it was recorded)");
@@ -147,8 +128,8 @@ void boulder_rows(const Basis& b, const json& basis, Table& t) {
     t.not_applicable("astra_gallery", "ASTRA rock-fall gallery formula", as_formula, as_source, "peak_contact_force",
                      "the design basis has no tyre_buffer/poisson_ratio (results written before it was recorded)");
   } else {
-    const bool given = b.has("tyre_buffer", "friction_angle_deg");
-    const double phi = given ? b.get("tyre_buffer", "friction_angle_deg") : kAssumedFrictionDeg;
+    const bool given = is_set(basis.buffer->friction_angle_deg);
+    const double phi = given ? basis.buffer->friction_angle_deg : kAssumedFrictionDeg;
     const double ME = sdof::constrained_modulus(Eb, nu_c);
     t.add("astra_gallery", "ASTRA rock-fall gallery formula", as_formula, as_source, "peak_contact_force",
           fmt("e = %.3g m, r = %.3g m, M_E = %.3g kN/m², φ = %.3g°, E_k = %.4g kJ", tb, r, ME / 1e3, phi, 0.5 * m * v * v / 1e3),
@@ -162,9 +143,10 @@ void boulder_rows(const Basis& b, const json& basis, Table& t) {
 // E 1.25-20 MPa at h 0.05 m; +17 % at 40 MPa, +35 % at 80 MPa; docs/verification.md, "Debris surge: the front").
 constexpr double kDebrisModulusShownInertPa = 20e6;
 
-void debris_rows(const Basis& b, Table& t) {
-  const double W = b.get("dam", "width_m");
-  const double rho = b.get("debris_surge", "density_kg_m3"), h = b.get("debris_surge", "depth_m"), v = b.get("debris_surge", "speed_m_s");
+void debris_rows(const DesignBasis& basis, Table& t) {
+  const DebrisBasis& f = *basis.debris;
+  const double W = basis.dam.width_m;
+  const double rho = f.density_kg_m3, h = f.depth_m, v = f.speed_m_s;
   const std::string p = fmt("ρ = %.4g kg/m³, v = %.3g m/s, h = %.3g m, w = %.3g m", rho, v, h, W);
   t.add("geo_debris", "GEO Report 270 dynamic debris load", "F = α ρ v² h w, α = 2.5", "Kwan (2012) GEO Report 270", "peak_contact_force", p,
         sdof::debris_dynamic_force_N(2.5, rho, v, h, W));
@@ -174,18 +156,15 @@ void debris_rows(const Basis& b, Table& t) {
         "peak_contact_force", p, sdof::debris_dynamic_force_N(1, rho, v, h, W));
   const char* wave = "blunt-front elastic wave (a bound, not a design load)";
   const char* wave_f = "F = ρ c v h w, c = √(M/ρ), M = E(1−ν)/((1+ν)(1−2ν))";
-  const bool slurry = b.has("debris_surge", "bulk_modulus_Pa");
-  if ((!slurry && (!b.has("debris_surge", "youngs_modulus_Pa") || !b.has("debris_surge", "poisson_ratio"))) || !b.has("debris_surge", "front_length_m")) {
+  const bool slurry = is_set(f.bulk_modulus_Pa);
+  if ((!slurry && (!is_set(f.youngs_modulus_Pa) || !is_set(f.poisson_ratio))) || !is_set(f.front_length_m)) {
     t.not_applicable("blunt_front_wave", wave, wave_f, "Joukowsky (1900)", "peak_contact_force",
                      "needs the debris modulus and front length in the design basis (results written before they were recorded)");
     return;
   }
-  const json& fl = b.j["debris_surge"]["front_length_m"];
-  if (!fl.is_number() || !(fl.get<double>() >= 0) || !std::isfinite(fl.get<double>()))
-    throw std::runtime_error(b.where + ": /documents/design_basis/debris_surge/front_length_m = " + fl.dump() + ": expected a number >= 0");
-  const double front = fl.get<double>();
+  const double front = f.front_length_m;
   if (slurry) {  // a fluid: M = K (nu = 0 in the same formula), c0 its numerical sound speed
-    const double K = b.get("debris_surge", "bulk_modulus_Pa");
+    const double K = f.bulk_modulus_Pa;
     t.add("blunt_front_wave", wave, "F = ρ c₀ v h w, c₀ = √(K/ρ)", "Joukowsky (1900)", "peak_contact_force", p + fmt(", K = %.3g MPa", K / 1e6),
           sdof::debris_elastic_wave_force_N(rho, K, 0.0, v, h, W))
         .note = front > 0 ? fmt("a slurry's peak still grows with its sound speed c₀ = %.0f m/s behind a %.2f m snout (a weakly "
@@ -195,7 +174,7 @@ void debris_rows(const Basis& b, Table& t) {
                           : "this slurry has a blunt front (front_length 0): its arrival peak is this wave, set by the numerical sound speed c₀";
     return;
   }
-  const double E = b.get("debris_surge", "youngs_modulus_Pa"), nu = b.poisson("debris_surge");
+  const double E = f.youngs_modulus_Pa, nu = f.poisson_ratio;
   t.add("blunt_front_wave", wave, wave_f, "Joukowsky (1900)", "peak_contact_force", p + fmt(", E = %.3g MPa, ν = %.2f", E / 1e6, nu),
         sdof::debris_elastic_wave_force_N(rho, E, nu, v, h, W))
       .note = front > 0 ? fmt("reached only by a vertical, full-depth front; this surge's snout is %.2f m long, so its peak is set by the "
@@ -212,13 +191,11 @@ void debris_rows(const Basis& b, Table& t) {
 
 }  // namespace
 
-std::vector<Estimate> estimates(const json& basis, double shear, double contact, const std::string& where) {
+std::vector<Estimate> estimates(const DesignBasis& basis, double shear, double contact) {
   std::vector<Estimate> out;
-  if (!basis.is_object() || !basis.contains("dam")) return out;
-  const Basis b{basis, where};
   Table t{out, shear, contact};
-  if (basis.contains("boulder")) boulder_rows(b, basis, t);
-  if (basis.contains("debris_surge")) debris_rows(b, t);
+  if (basis.boulder) boulder_rows(basis, t);
+  if (basis.debris) debris_rows(basis, t);
   return out;
 }
 

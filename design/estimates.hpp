@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/design_basis.hpp"
+
 namespace dmi::design {
 
 struct Estimate {
@@ -22,9 +24,8 @@ struct Estimate {
   nlohmann::json to_json() const;
 };
 
-// Throws std::runtime_error naming `where` and the basis key when a needed value is missing or not positive.
-std::vector<Estimate> estimates(const nlohmann::json& basis, double simulated_base_shear_N, double simulated_contact_N,
-                                const std::string& where);
+// Every estimate of the scenario's kind (boulder, debris surge) for the basis, which design_basis_from_json validated.
+std::vector<Estimate> estimates(const DesignBasis& basis, double simulated_base_shear_N, double simulated_contact_N);
 
 // With a grid study (design["grid_study"]): each applicable estimate of a run gets the grid uncertainty of the simulated
 // peak it is compared with (simulated_gci, simulated_extrapolated_N and the ratio band ratio_low .. ratio_high for the

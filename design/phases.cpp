@@ -39,20 +39,12 @@ std::optional<DebrisPhases> debris_phases(const std::vector<double>& t, const st
   return p;
 }
 
-json debris_phases(const Results& r, const json& basis, const std::string& where) {
-  if (!basis.is_object() || !basis.contains("debris_surge")) return nullptr;
+json debris_phases(const Results& r, const DesignBasis& basis) {
+  if (!basis.debris || !is_set(basis.debris->length_m)) return nullptr;
   const Series* s = r.find("frame/contact_force");
   if (!s || s->components.size() != 2 || r.time.empty()) return nullptr;
-  auto get = [&](const char* obj, const char* key) {
-    const std::string p = std::string("/documents/design_basis/") + obj + "/" + key;
-    if (!basis.contains(obj) || !basis[obj].contains(key) || !basis[obj][key].is_number())
-      throw std::runtime_error(where + ": " + p + " missing (expected a number)");
-    const double v = basis[obj][key];
-    if (!(v > 0) || !std::isfinite(v)) throw std::runtime_error(where + ": " + p + " = " + basis[obj][key].dump() + ": expected a number > 0");
-    return v;
-  };
-  const double rho = get("debris_surge", "density_kg_m3"), h = get("debris_surge", "depth_m"), v = get("debris_surge", "speed_m_s");
-  const double L = get("debris_surge", "length_m"), w = get("dam", "width_m");
+  const DebrisBasis& f = *basis.debris;
+  const double rho = f.density_kg_m3, h = f.depth_m, v = f.speed_m_s, L = f.length_m, w = basis.dam.width_m;
   std::vector<double> F(r.time.size());
   for (std::size_t k = 0; k < F.size(); ++k) F[k] = std::hypot(s->data[2 * k], s->data[2 * k + 1]);
   const auto p = debris_phases(r.time, F, rho * v * v * h * w, L / v);

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/design_basis.hpp"
 #include "engine/io/results.hpp"
 
 namespace dmi::design {
@@ -29,6 +30,6 @@ std::optional<DebrisPhases> debris_phases(const std::vector<double>& t, const st
 
 // From a results file: the contact history and the design basis' surge (density, depth, speed, length, width).
 // Null when the basis has no debris surge or the file no contact history.
-nlohmann::json debris_phases(const Results& r, const nlohmann::json& basis, const std::string& where);
+nlohmann::json debris_phases(const Results& r, const DesignBasis& basis);
 
 }  // namespace dmi::design

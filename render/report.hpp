@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/design_basis.hpp"
 #include "render/render_main.hpp"
 
 namespace dmi::render {
@@ -40,7 +41,7 @@ std::string render_report_html(const nlohmann::json& data);
 std::string member_damping_text(const nlohmann::json& scenario);
 // The report's row on the boulder's model (design basis boulder.model), with the run's CFL number for a rigid one (NaN:
 // not recorded); empty for a model it does not know.
-std::string boulder_model_text(const std::string& model, double cfl);
+std::string boulder_model_text(BoulderModel model, double cfl);
 
 std::string base64(const std::string& bytes);
 

@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 
+#include "design/design.hpp"
 #include "render/report.hpp"
 #include "render/sha256.hpp"
 
@@ -73,13 +74,13 @@ std::string member_damping_text(const json& scenario) {
          " %; ζ grows with frequency, so a bare hard impact's member peaks depend on it (docs/verification.md, structural damping)";
 }
 
-std::string boulder_model_text(const std::string& model, double cfl) {
-  if (model == "rigid")
+std::string boulder_model_text(BoulderModel model, double cfl) {
+  if (model == BoulderModel::rigid)
     return "rigid: against the tyre buffer its deformation does not matter (same loads as an elastic boulder at the same step, "
            "docs/verification.md); the step is the buffer's" +
            (std::isfinite(cfl) ? fmt(", at CFL %.3g", cfl) : std::string());
-  if (model == "elastic") return "elastic: on a bare face the rock's stiffness sets the impact's peak";
-  if (model == "elastic_when_touching")
+  if (model == BoulderModel::elastic) return "elastic: on a bare face the rock's stiffness sets the impact's peak";
+  if (model == BoulderModel::elastic_when_touching)
     return "elastic while it can touch the dam (on a bare face the rock's stiffness sets the impact's peak), rigid in free flight "
            "before and after the strike (its waves then do not set the step; its vibration after the rebound is given up, "
            "docs/verification.md)";
@@ -91,61 +92,51 @@ namespace {
 json scenario_rows(const RunData& r) {
   json rows = json::array();
   auto row = [&](const std::string& k, const std::string& v) { rows.push_back({{"key", k}, {"value", v}}); };
-  const auto it = r.results.info.documents.find("design_basis");
-  if (it == r.results.info.documents.end()) {
+  const std::optional<DesignBasis> basis = design::read_design_basis(r.results, r.file);
+  if (!basis) {
     row("bodies", std::to_string(r.results.info.body_names.size()));
     if (r.frame) row("members", std::to_string(r.frame->members.size()));
     return rows;
   }
-  const json b = json::parse(it->second);
-  const json& dam = b["dam"];
-  const std::string type = dam.value("type", "");
-  row("dam", type == "concrete_gravity" ? "concrete gravity check dam" : type == "steel_open" ? "steel open check dam (pipe frame)" : type);
-  row("height", fmt("%.3g m", num(dam, {"height_m"})));
+  const DamBasis& dam = basis->dam;
+  const bool concrete = dam.type == DamKind::concrete_gravity;
+  row("dam", concrete ? "concrete gravity check dam" : "steel open check dam (pipe frame)");
+  row("height", fmt("%.3g m", dam.height_m));
   const bool space = r.frame && r.frame->dim == 3;
-  row(space ? (type == "steel_open" ? "column spacing across the channel" : "crest length (across the channel)") : "width represented (out of plane)",
-      fmt("%.3g m", num(dam, {"width_m"})));
-  if (type == "concrete_gravity")
-    row("crest / base thickness", fmt("%.3g m", num(dam, {"crest_thickness_m"})) + " / " + fmt("%.3g m", num(dam, {"base_thickness_m"})));
+  row(space ? (concrete ? "crest length (across the channel)" : "column spacing across the channel") : "width represented (out of plane)",
+      fmt("%.3g m", dam.width_m));
+  if (concrete)
+    row("crest / base thickness", fmt("%.3g m", dam.crest_thickness_m) + " / " + fmt("%.3g m", dam.base_thickness_m));
   else
-    row("column pipe", fmt("D %.3g m", num(dam, {"column_diameter_m"})) + fmt(", t %.3g m", num(dam, {"column_wall_thickness_m"})));
-  row("dam material", fmt("E %.3g GPa", num(dam, {"youngs_modulus_Pa"}) / 1e9) + fmt(", ν %.2f", num(dam, {"poisson_ratio"})) +
-                          fmt(", ρ %.0f kg/m³", num(dam, {"density_kg_m3"})));
-  if (b.contains("boulder")) {
-    const json& k = b["boulder"];
-    row("boulder", fmt("%.4g kg", num(k, {"mass_kg"})) + fmt(" (sphere of %.3g m)", num(k, {"diameter_m"})) + fmt(" at %.3g m/s", num(k, {"speed_m_s"})) +
-                       fmt(", centre %.3g m above the base at impact", num(k, {"impact_height_m"})));
-    row("rock", fmt("E %.3g GPa", num(k, {"youngs_modulus_Pa"}) / 1e9) + fmt(", ν %.2f", num(k, {"poisson_ratio"})) +
-                    fmt(", ρ %.0f kg/m³", num(k, {"density_kg_m3"})));
-    row("impact energy", fmt("%.4g kJ", 0.5 * num(k, {"mass_kg"}) * std::pow(num(k, {"speed_m_s"}), 2) / 1e3));
+    row("column pipe", fmt("D %.3g m", dam.column_diameter_m) + fmt(", t %.3g m", dam.column_wall_thickness_m));
+  row("dam material", fmt("E %.3g GPa", dam.youngs_modulus_Pa / 1e9) + fmt(", ν %.2f", dam.poisson_ratio) + fmt(", ρ %.0f kg/m³", dam.density_kg_m3));
+  if (const auto& k = basis->boulder) {
+    row("boulder", fmt("%.4g kg", k->mass_kg) + fmt(" (sphere of %.3g m)", k->diameter_m) + fmt(" at %.3g m/s", k->speed_m_s) +
+                       fmt(", centre %.3g m above the base at impact", k->impact_height_m));
+    row("rock", fmt("E %.3g GPa", k->youngs_modulus_Pa / 1e9) + fmt(", ν %.2f", k->poisson_ratio) + fmt(", ρ %.0f kg/m³", k->density_kg_m3));
+    row("impact energy", fmt("%.4g kJ", 0.5 * k->mass_kg * k->speed_m_s * k->speed_m_s / 1e3));
     const auto& n = r.results.info.numbers;
     const double cfl = n.count("cfl_used") ? n.at("cfl_used") : n.count("cfl") ? n.at("cfl") : NAN;  // cfl_used: reduced to the stable limit
-    if (const std::string t = boulder_model_text(k.value("model", ""), cfl); !t.empty()) row("boulder model", t);
+    if (const std::string t = boulder_model_text(k->model, cfl); !t.empty()) row("boulder model", t);
   }
-  if (b.contains("debris_surge") && b["debris_surge"].contains("hydrograph")) {
-    const json& k = b["debris_surge"];
-    const json& g = k["hydrograph"];
-    row("debris surge", "from a hydrograph (" + g.value("source", std::string("?")) + "): flowing " + fmt("%.3g s", num(g, {"duration_s"})) +
-                            fmt(", %.3g m³", num(g, {"volume_m3_per_m"})) + fmt(" (%.4g kg) per metre", num(g, {"mass_kg_per_m"})) +
-                            fmt(", entering %.3g m upstream of the face", num(g, {"section_distance_m"})) +
-                            fmt(", channel slope %.3g°", num(k, {"channel_slope_deg"})));
-    row("largest momentum flux", fmt("at %.3g s: ", num(g, {"peak_flux_time_s"})) + fmt("depth %.3g m", num(k, {"depth_m"})) +
-                                     fmt(", %.3g m/s", num(k, {"speed_m_s"})) + fmt(", ρ %.0f kg/m³", num(k, {"density_kg_m3"})) +
-                                     " (the estimates' surge; its passage T is the flowing time)");
+  if (const auto& k = basis->debris; k && k->hydrograph) {
+    const HydrographBasis& g = *k->hydrograph;
+    row("debris surge", "from a hydrograph (" + g.source + "): flowing " + fmt("%.3g s", g.duration_s) + fmt(", %.3g m³", g.volume_m3_per_m) +
+                            fmt(" (%.4g kg) per metre", g.mass_kg_per_m) + fmt(", entering %.3g m upstream of the face", g.section_distance_m) +
+                            fmt(", channel slope %.3g°", k->channel_slope_deg));
+    row("largest momentum flux", fmt("at %.3g s: ", g.peak_flux_time_s) + fmt("depth %.3g m", k->depth_m) + fmt(", %.3g m/s", k->speed_m_s) +
+                                     fmt(", ρ %.0f kg/m³", k->density_kg_m3) + " (the estimates' surge; its passage T is the flowing time)");
     if (const Series* m = r.results.find("inflows/debris/mass"); m && !m->data.empty()) {
-      const double want = num(g, {"mass_kg_per_m"}) * num(dam, {"width_m"});
+      const double want = g.mass_kg_per_m * dam.width_m;
       row("debris entered", fmt("%.5g kg", m->data.back()) + fmt(" of the hydrograph's %.5g kg", want) + fmt(" (%.2f %%)", 100 * m->data.back() / want));
     }
-  } else if (b.contains("debris_surge")) {
-    const json& k = b["debris_surge"];
-    row("debris surge", fmt("depth %.3g m", num(k, {"depth_m"})) + fmt(", length %.3g m", num(k, {"length_m"})) + fmt(", front speed %.3g m/s", num(k, {"speed_m_s"})) +
-                            fmt(", ρ %.0f kg/m³", num(k, {"density_kg_m3"})) + fmt(", channel slope %.3g°", num(k, {"channel_slope_deg"})));
+  } else if (k) {
+    row("debris surge", fmt("depth %.3g m", k->depth_m) + fmt(", length %.3g m", k->length_m) + fmt(", front speed %.3g m/s", k->speed_m_s) +
+                            fmt(", ρ %.0f kg/m³", k->density_kg_m3) + fmt(", channel slope %.3g°", k->channel_slope_deg));
   }
-  if (b.contains("tyre_buffer")) {
-    const json& k = b["tyre_buffer"];
-    row("tyre buffer", k.value("type", "") + fmt(", %.3g m thick", num(k, {"thickness_m"})) + fmt(", from %.3g m", num(k, {"bottom_m"})) +
-                           fmt(" to %.3g m", num(k, {"top_m"})) + fmt(", effective E %.3g MPa", num(k, {"youngs_modulus_Pa"}) / 1e6));
-  }
+  if (const auto& k = basis->buffer)
+    row("tyre buffer", k->type + fmt(", %.3g m thick", k->thickness_m) + fmt(", from %.3g m", k->bottom_m) + fmt(" to %.3g m", k->top_m) +
+                           fmt(", effective E %.3g MPa", k->youngs_modulus_Pa / 1e6));
   return rows;
 }
 

@@ -3,9 +3,11 @@
 // declared to the parser (engine/scenario/parse.cpp), which also generates docs/scenario.md.
 #pragma once
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/design_basis.hpp"
 #include "engine/scenario/hydrograph.hpp"
 
 namespace dmi {
@@ -250,7 +252,7 @@ struct Scenario {
   std::string source_text;   // the JSON as given, stored in results.h5
   std::string expanded_text; // the low-level scenario the presets expanded into ("" without presets)
   std::string variant;       // "" or with_buffer / without_buffer (compare)
-  std::string design_basis_text;  // the design_basis object ("" when absent), for design/'s estimates
+  std::optional<DesignBasis> design_basis;  // what the design checks and estimates need (the presets write it)
   // The file for messages about the scene as built: a preset scenario's paths are those of its expansion, said so.
   std::string message_source() const { return expanded_text.empty() ? source_file : source_file + " (expanded presets; see --dry-run --expand)"; }
 };

@@ -11,6 +11,7 @@
 #include "engine/common/error.hpp"
 #include "engine/common/json_input.hpp"
 #include "engine/common/memory.hpp"
+#include "engine/scenario/design_basis_json.hpp"
 #include "engine/scenario/hydrograph_io.hpp"
 #include "engine/scenario/presets.hpp"
 #include "engine/scenario/scenario.hpp"
@@ -623,12 +624,9 @@ void read_scenario(Obj& o, Scenario& s) {
   read_output(o.object("output", "what is recorded"), s.output);
   read_solid_check(o.object("solid_check", "a linear solid-FE check of a concrete dam body (Lin, Cheng & Tuan, Table 1): static load cases, "
                                            "given or taken from this run's contact loads; absent: none"), s.solid_check);
-  // Free-form here: design/ validates it where it reads it (docs/design-json.md).
-  if (const json* b = o.raw("design_basis", Spec{.doc = "inputs of the closed-form impact estimates of the design checks (dam, boulder, "
-                                                        "debris_surge, tyre_buffer; docs/design-json.md); the presets write it"}, "object", "")) {
-    if (!b->is_object()) o.fail("design_basis", b, "an object (docs/design-json.md)");
-    s.design_basis_text = b->dump();
-  }
+  if (const json* b = o.raw("design_basis", Spec{.doc = "what the design checks and closed-form estimates need (dam, boulder, "
+                                                        "debris_surge, tyre_buffer; docs/design-json.md); the presets write it"}, "object", ""))
+    s.design_basis = design_basis_from_json(*b, o.context().file, "/design_basis");
   o.finish();
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/common/error.hpp"
+#include "engine/scenario/design_basis_json.hpp"
 #include "engine/scenario/hydrograph_io.hpp"
 #include "engine/scenario/preset_types.hpp"
 
@@ -111,7 +112,8 @@ class Builder {
   // the buffer (a fixed-point pass, since the bed height at the front depends on where the front is).
   double front_foot(double height, double gap) const;
   void add_grid_walls_and_time();
-  json design_basis() const;
+  DesignBasis design_basis() const;
+  DebrisBasis debris_basis() const;
   double buffer_damping_frequency(double E, double thickness) const;
   [[noreturn]] void fail(const std::string& path, const json& value, const std::string& expected) const {
     throw InputError(file_, path, value.is_null() ? "" : value.dump(), expected);
@@ -218,65 +220,68 @@ json Builder::build() {
   if (p_.debris) out_["mpm"] = json{{"stress_update", "musl"}};
   if (members_) out_["member_contact"] = json{{"mode", "separable"}, {"bonded", bonded_}};
   out_["output"]["probes"] = probes_;
-  out_["design_basis"] = design_basis();
+  out_["design_basis"] = design_basis_to_json(design_basis());
   return out_;
 }
 
-// What the closed-form estimates of design/ need (docs/design-json.md, "design basis"): the real
+// What the design checks and closed-form estimates of design/ need (docs/design-json.md, "design basis"): the real
 // (spherical) boulder, the surge, the dam and the buffer as the engineer described them.
-json Builder::design_basis() const {
-  json dam{{"type", d_.type}, {"height_m", d_.height}, {"width_m", d_.width}};
-  const json& m = d_.type == "concrete_gravity" ? d_.concrete : d_.steel;
-  dam["youngs_modulus_Pa"] = m.value("youngs_modulus", 0.0);
-  dam["poisson_ratio"] = m.value("poisson_ratio", 0.0);
-  dam["density_kg_m3"] = m.value("density", 0.0);
-  if (d_.type == "concrete_gravity") {
-    dam["crest_thickness_m"] = d_.crest;
-    dam["base_thickness_m"] = d_.base_thickness;
+DesignBasis Builder::design_basis() const {
+  DesignBasis out;
+  DamBasis& dam = out.dam;
+  const bool concrete = d_.type == "concrete_gravity";
+  dam.type = concrete ? DamKind::concrete_gravity : DamKind::steel_open;
+  dam.height_m = d_.height, dam.width_m = d_.width;
+  const json& m = concrete ? d_.concrete : d_.steel;
+  dam.youngs_modulus_Pa = m.value("youngs_modulus", 0.0);
+  dam.poisson_ratio = m.value("poisson_ratio", 0.0);
+  dam.density_kg_m3 = m.value("density", 0.0);
+  if (concrete) {
+    dam.crest_thickness_m = d_.crest, dam.base_thickness_m = d_.base_thickness;
+    dam.heel_x_m = xu(0), dam.toe_x_m = xd(0), dam.crest_upstream_x_m = xu(d_.height), dam.crest_downstream_x_m = xd(d_.height);
   } else {
-    dam["column_diameter_m"] = d_.column_d;
-    dam["column_wall_thickness_m"] = d_.column_t;
+    dam.column_diameter_m = d_.column_d, dam.column_wall_thickness_m = d_.column_t;
   }
-  json out{{"dam", dam}};
   if (p_.boulder) {
     const BoulderPreset& b = *p_.boulder;
-    out["boulder"] = json{{"mass_kg", boulder_m_}, {"diameter_m", std::cbrt(6 * boulder_m_ / (b.density * kPi))}, {"density_kg_m3", b.density},
-                          {"youngs_modulus_Pa", b.youngs_modulus}, {"poisson_ratio", b.poisson_ratio}, {"speed_m_s", boulder_speed_},
-                          {"impact_height_m", impact_y_},
-                          {"model", rigid_boulder_ ? "rigid" : free_boulder_ ? "elastic_when_touching" : "elastic"}};
+    BoulderBasis k;
+    k.mass_kg = boulder_m_, k.diameter_m = std::cbrt(6 * boulder_m_ / (b.density * kPi)), k.density_kg_m3 = b.density;
+    k.youngs_modulus_Pa = b.youngs_modulus, k.poisson_ratio = b.poisson_ratio, k.speed_m_s = boulder_speed_, k.impact_height_m = impact_y_;
+    k.model = rigid_boulder_ ? BoulderModel::rigid : free_boulder_ ? BoulderModel::elastic_when_touching : BoulderModel::elastic;
+    out.boulder = k;
   }
-  if (p_.debris) {
-    const DebrisPreset& f = *p_.debris;
-    out["debris_surge"] = json{{"density_kg_m3", f.material.value("density", 2000.0)}, {"depth_m", f.depth}, {"length_m", f.length},
-                               {"speed_m_s", f.velocity}, {"channel_slope_deg", f.slope}, {"front_length_m", front_length()}};
-    if (const Hydrograph& g = f.hydrograph; !g.empty()) {
-      // The estimates take the row of the largest momentum flux at the section; the phases' passage L / v is the
-      // hydrograph's flowing time; the snout is what passes the section while the depth rises to its deepest.
-      const double rho = f.material.value("density", 2000.0);
-      const std::size_t k = g.peak_flux_row(rho);
-      const double v = g.velocity[k];
-      json& s = out["debris_surge"];
-      s["density_kg_m3"] = g.density.empty() ? rho : g.density[k];
-      s["depth_m"] = g.depth[k];
-      s["speed_m_s"] = v;
-      s["length_m"] = v * flow_duration();
-      s["front_length_m"] = v * rise_time();
-      s["hydrograph"] = json{{"source", g.source}, {"duration_s", flow_duration()}, {"volume_m3_per_m", g.volume_per_width()},
-                             {"mass_kg_per_m", g.mass_per_width(rho)}, {"peak_flux_time_s", g.time[k]}, {"section_distance_m", section_distance()}};
-    }
-    if (const std::string model = f.material.value("model", std::string("drucker_prager")); model == "drucker_prager" || model == "mu_i")
-      out["debris_surge"].update(json{{"youngs_modulus_Pa", f.material.value("youngs_modulus", 0.0)}, {"poisson_ratio", f.material.value("poisson_ratio", 0.0)}});
-    else
-      out["debris_surge"]["bulk_modulus_Pa"] = f.material.value("bulk_modulus", 0.0);
-  }
+  if (p_.debris) out.debris = debris_basis();
   if (p_.buffer) {
     const BufferPreset& b = *p_.buffer;
     const bool homog = b.type == "homogenised";
-    out["tyre_buffer"] = json{{"type", b.type}, {"youngs_modulus_Pa", b.material.value("youngs_modulus", 0.0)},
-                              {"poisson_ratio", b.material.value("poisson_ratio", 0.0)},
-                              {"thickness_m", homog ? b.thickness : b.tyre_diameter}, {"bottom_m", b.bottom}, {"top_m", b.top}};
+    BufferBasis t;
+    t.type = b.type, t.youngs_modulus_Pa = b.material.value("youngs_modulus", 0.0), t.poisson_ratio = b.material.value("poisson_ratio", 0.0);
+    t.thickness_m = homog ? b.thickness : b.tyre_diameter, t.bottom_m = b.bottom, t.top_m = b.top;
+    out.buffer = t;
   }
   return out;
+}
+
+DebrisBasis Builder::debris_basis() const {
+  const DebrisPreset& f = *p_.debris;
+  const double rho = f.material.value("density", 2000.0);
+  DebrisBasis s;
+  s.density_kg_m3 = rho, s.depth_m = f.depth, s.length_m = f.length, s.speed_m_s = f.velocity, s.channel_slope_deg = f.slope;
+  s.front_length_m = front_length();
+  if (const Hydrograph& g = f.hydrograph; !g.empty()) {
+    // The estimates take the row of the largest momentum flux at the section; the phases' passage L / v is the
+    // hydrograph's flowing time; the snout is what passes the section while the depth rises to its deepest.
+    const std::size_t k = g.peak_flux_row(rho);
+    const double v = g.velocity[k];
+    s.density_kg_m3 = g.density.empty() ? rho : g.density[k];
+    s.depth_m = g.depth[k], s.speed_m_s = v, s.length_m = v * flow_duration(), s.front_length_m = v * rise_time();
+    s.hydrograph = HydrographBasis{g.source, flow_duration(), g.volume_per_width(), g.mass_per_width(rho), g.time[k], section_distance()};
+  }
+  if (const std::string model = f.material.value("model", std::string("drucker_prager")); model == "drucker_prager" || model == "mu_i")
+    s.youngs_modulus_Pa = f.material.value("youngs_modulus", 0.0), s.poisson_ratio = f.material.value("poisson_ratio", 0.0);
+  else
+    s.bulk_modulus_Pa = f.material.value("bulk_modulus", 0.0);
+  return s;
 }
 
 void Builder::add_dam() {

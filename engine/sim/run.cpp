@@ -1,5 +1,6 @@
 #include "engine/sim/run.hpp"
 
+#include "engine/scenario/design_basis_json.hpp"
 #include "engine/sim/solid_check.hpp"
 
 #include <omp.h>
@@ -113,7 +114,7 @@ RunInfo make_info(const Scenario& s, const RunOptions& o) {
   info.strings["stress_update"] = s.mpm.update == StressUpdate::usl ? "usl" : "musl";
   info.strings["plane"] = s.analysis.dimension == 3 ? "none" : s.analysis.plane == Plane::strain ? "strain" : "stress";
   info.strings["contact"] = s.contact.method == ContactMethod::multi_field ? "multi_field" : "single_field";
-  if (!s.design_basis_text.empty()) info.documents["design_basis"] = s.design_basis_text;
+  if (s.design_basis) info.documents["design_basis"] = design_basis_to_json(*s.design_basis).dump();
   return info;
 }
 

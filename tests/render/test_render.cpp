@@ -211,10 +211,10 @@ TEST(RenderBasics, MemberDampingStatesTheRatioAcrossFrequencies) {
 
 // The rigid boulder's row states the step the run took (its CFL number read from the results), not a number of its own.
 TEST(RenderBasics, RigidBoulderRowStatesTheRunsCfl) {
-  EXPECT_NE(dmi::render::boulder_model_text("rigid", 0.25).find("the step is the buffer's, at CFL 0.25"), std::string::npos);
-  EXPECT_NE(dmi::render::boulder_model_text("rigid", 0.125).find("at CFL 0.125"), std::string::npos);
-  EXPECT_EQ(dmi::render::boulder_model_text("rigid", NAN).find("CFL"), std::string::npos);
-  EXPECT_EQ(dmi::render::boulder_model_text("unknown", 0.25), "");
+  EXPECT_NE(dmi::render::boulder_model_text(dmi::BoulderModel::rigid, 0.25).find("the step is the buffer's, at CFL 0.25"), std::string::npos);
+  EXPECT_NE(dmi::render::boulder_model_text(dmi::BoulderModel::rigid, 0.125).find("at CFL 0.125"), std::string::npos);
+  EXPECT_EQ(dmi::render::boulder_model_text(dmi::BoulderModel::rigid, NAN).find("CFL"), std::string::npos);
+  EXPECT_NE(dmi::render::boulder_model_text(dmi::BoulderModel::elastic, 0.25).find("elastic"), std::string::npos);
 }
 
 TEST_F(Render, ReportHoldsEveryCheckAndItsPdfPagesRender) {
