@@ -11,6 +11,7 @@
 #include "design/estimates.hpp"
 #include "engine/scenario/design_basis_json.hpp"
 #include "design/phases.hpp"
+#include "design/stability_checks.hpp"
 #include "design/loads.hpp"
 #include "design/members.hpp"
 
@@ -230,8 +231,9 @@ json design_run(const Results& r, const Limits& L, const std::string& where) {
   run["supports"] = json::array();
   run["base_total"] = nullptr;
   double base_shear = 0;
+  std::optional<FrameInfo> frame;
   if (!structure.is_null()) {
-    const FrameInfo f = parse_structure(structure.dump(), where, L);
+    const FrameInfo& f = frame.emplace(parse_structure(structure.dump(), where, L));
     members = member_envelopes(r, f, L, where);
     for (const auto& m : members) {
       run["members"].push_back(member_json(m));
@@ -255,6 +257,7 @@ json design_run(const Results& r, const Limits& L, const std::string& where) {
     for (const auto& e : estimates(*basis, base_shear, c.present ? c.peak_N : 0.0)) est.push_back(e.to_json());
   run["estimates"] = est;
   run["debris_phases"] = basis ? debris_phases(r, *basis) : json(nullptr);
+  run["stability"] = basis && frame ? stability(r, *frame, *basis, L.foundation, checks, where) : json(nullptr);
   run["checks"] = json::array();
   for (const auto& k : checks) run["checks"].push_back(k.to_json());
   run["verdict"] = verdict(checks);

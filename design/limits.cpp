@@ -33,6 +33,10 @@ json Limits::to_json() const {
     c["punching_patch_m"] = nullptr;
   return json{{"concrete", c},
               {"steel", {{"yield_strength_Pa", steel.yield_strength}, {"gamma_M0", steel.gamma_M0}}},
+              {"foundation", {{"friction", foundation.friction}, {"cohesion_Pa", foundation.cohesion},
+                              {"bearing_capacity_Pa", foundation.bearing_capacity}, {"sliding_factor_usual", foundation.sliding_factor_usual},
+                              {"sliding_displacement_limit_m", foundation.sliding_displacement_limit},
+                              {"rocking_safety_factor", foundation.rocking_safety_factor}}},
               {"members", member_material}, {"grid_study", {{"judge_on", grid_judge_on}}}};
 }
 
@@ -69,7 +73,25 @@ struct Reader {
 Limits parse_limits(const json& j, const std::string& file) {
   Reader r{file};
   Limits L;
-  r.keys(j, "", {"concrete", "steel", "members", "grid_study"});
+  r.keys(j, "", {"concrete", "steel", "members", "grid_study", "foundation"});
+  if (j.contains("foundation")) {
+    const json& f = j["foundation"];
+    const std::string p = "/foundation";
+    r.keys(f, p, {"friction", "cohesion_Pa", "bearing_capacity_Pa", "sliding_factor_usual", "sliding_displacement_limit_m", "rocking_safety_factor"});
+    FoundationLimits& k = L.foundation;
+    r.number(f, p, "friction", k.friction);
+    if (f.contains("cohesion_Pa")) {  // may be 0
+      const json& v = f["cohesion_Pa"];
+      if (!v.is_number() || !(v.get<double>() >= 0) || !std::isfinite(v.get<double>())) r.fail(p + "/cohesion_Pa", &v, "a number >= 0");
+      k.cohesion = v.get<double>();
+    }
+    r.number(f, p, "bearing_capacity_Pa", k.bearing_capacity);
+    r.number(f, p, "sliding_factor_usual", k.sliding_factor_usual);
+    r.number(f, p, "sliding_displacement_limit_m", k.sliding_displacement_limit);
+    r.number(f, p, "rocking_safety_factor", k.rocking_safety_factor);
+    if (k.friction > 2) r.fail(p + "/friction", &f["friction"], "a friction coefficient tan(phi) <= 2 (phi <= 63 deg)");
+    if (k.bearing_capacity < 1e4) r.fail(p + "/bearing_capacity_Pa", &f["bearing_capacity_Pa"], "a pressure in Pa >= 1e4 (10 kPa; kPa given?)");
+  }
   if (j.contains("grid_study")) {
     const json& g = j["grid_study"];
     r.keys(g, "/grid_study", {"judge_on"});

@@ -37,9 +37,24 @@ struct SteelLimits {
   double design_strength() const { return yield_strength / gamma_M0; }
 };
 
+// The dam on its foundation joint (docs/design-checks.md, "Stability"). The defaults are stated assumptions: set
+// them from the site investigation.
+struct FoundationLimits {
+  double friction = 0.6;             // tan(phi) of the base joint (concrete on gravel or rock; EM 1110-2-2100 eq. 3-1)
+  double cohesion = 0.0;             // c of the base joint (Pa), none by default
+  double bearing_capacity = 600e3;   // allowable bearing pressure (Pa): a dense gravel; set it from the site
+  // Sliding factor of the persistent situation (the usual load condition): EM 1110-2-2100 Table 3-3, normal structures,
+  // ordinary site information.
+  double sliding_factor_usual = 1.5;
+  // The impact: how far the dam may slide (Newmark 1965), and the margin on rocking about the toe (Housner 1963).
+  double sliding_displacement_limit = 0.05;  // m, a permissible displacement of gravity walls (Richards & Elms 1979)
+  double rocking_safety_factor = 1.5;        // critical angle / peak rotation
+};
+
 struct Limits {
   ConcreteLimits concrete;
   SteelLimits steel;
+  FoundationLimits foundation;
   // With `run --grid-study`: judge the design on the finest grid's utilisation ("finest") or on its conservative
   // bound u (1 + GCI) ("conservative_bound"; Roache 1998: the GCI as an error band).
   std::string grid_judge_on = "finest";

@@ -28,7 +28,8 @@ std::string fmt(const char* f, double v) {
   return b;
 }
 
-// Engineering units: Pa -> MPa, N -> kN, N m -> kN m, N s -> kN s, s -> ms.
+// Engineering units: Pa -> MPa, N -> kN, N m -> kN m, N s -> kN s, s -> ms, m below 0.1 m -> mm; other units as
+// given ("-" and "" dimensionless).
 std::string eng(double v, const std::string& unit) {
   if (unit == "Pa") return fmt("%.3g MPa", v / 1e6);
   auto kilo = [](double x, const char* u) { return fmt(std::abs(x) < 1e4 ? "%.4g" : "%.0f", x) + " " + u; };  // 21216 kN, not 2.122e+04 kN
@@ -36,7 +37,9 @@ std::string eng(double v, const std::string& unit) {
   if (unit == "N m") return kilo(v / 1e3, "kN m");
   if (unit == "N s") return kilo(v / 1e3, "kN s");
   if (unit == "s") return fmt("%.4g ms", v * 1e3);
-  return fmt("%.3g", v);
+  if (unit == "m") return std::abs(v) < 0.1 ? fmt("%.3g mm", v * 1e3) : fmt("%.3g m", v);
+  if (unit.empty() || unit == "-") return fmt("%.3g", v);
+  return fmt("%.3g", v) + " " + unit;
 }
 
 double num(const json& j, std::initializer_list<const char*> path, double fallback = NAN) {
@@ -172,6 +175,51 @@ json per_run_rows(const std::vector<RunData>& runs, const std::vector<std::pair<
     out.push_back({{"key", k}, {"values", v}});
   }
   return out;
+}
+
+// The dam on its foundation (design.json runs[].stability), a column per run; empty when no run has it.
+json stability_rows(const std::vector<RunData>& runs) {
+  bool any = false;
+  for (const auto& r : runs) any = any || (r.design.contains("stability") && r.design["stability"].is_object());
+  if (!any) return json::array();
+  auto get = [](const RunData& r, std::initializer_list<const char*> path) -> const json* {
+    if (!r.design.contains("stability") || !r.design["stability"].is_object()) return nullptr;
+    const json* j = &r.design["stability"];
+    for (const char* k : path) {
+      if (!j->is_object() || !j->contains(k)) return nullptr;
+      j = &(*j)[k];
+    }
+    return j;
+  };
+  auto num = [&](std::initializer_list<const char*> path, const char* unit, double scale = 1.0, const char* infinite = "∞") {
+    return [=](const RunData& r) {
+      const json* v = get(r, path);
+      if (!v) return std::string("—");
+      return v->is_number() ? eng(v->get<double>() * scale, unit) : std::string(infinite);
+    };
+  };
+  return per_run_rows(runs, {
+      {"dam weight (width represented)", num({"dam", "weight_N"}, "N")},
+      {"at rest: eccentricity of the resultant (B/6 limit)", [=](const RunData& r) {
+         const json *e = get(r, {"persistent", "eccentricity_m"}), *b = get(r, {"dam", "base_m"});
+         return e && b && e->is_number() ? eng(e->get<double>(), "m") + " (" + eng(b->get<double>() / 6, "m") + ")" : std::string("—");
+       }},
+      {"at rest: toe / heel pressure", [=](const RunData& r) {
+         return num({"persistent", "toe_pressure_Pa"}, "Pa")(r) + " / " + num({"persistent", "heel_pressure_Pa"}, "Pa")(r);
+       }},
+      {"impact: least sliding factor (instant)", [=](const RunData& r) {
+         const json* t = get(r, {"impact", "least_sliding_factor", "time_s"});
+         return num({"impact", "least_sliding_factor", "sliding_factor"}, "")(r) + (t ? " (" + eng(t->get<double>(), "s") + ")" : "");
+       }},
+      {"impact: time the resultant is outside the middle third / the base", [=](const RunData& r) {
+         return num({"impact", "time_outside_middle_third_s"}, "s")(r) + " / " + num({"impact", "time_outside_base_s"}, "s")(r);
+       }},
+      {"impact: sliding displacement (Newmark)", num({"impact", "sliding_displacement_m"}, "m", 1.0, "does not stop")},
+      {"impact: peak rocking rotation about the toe (critical angle)", [=](const RunData& r) {
+         const json* a = get(r, {"dam", "critical_angle_rad"});
+         return num({"impact", "peak_rocking_rotation_rad"}, "rad", 1.0, "topples")(r) + (a ? " (" + fmt("%.3g rad", a->get<double>()) + ")" : "");
+       }},
+  });
 }
 
 double series_max(const Results& r, const char* path, bool absolute) {
@@ -318,6 +366,8 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
       if (seen.insert(c["id"].get<std::string>() + c["title"].get<std::string>()).second)
         formulas.push_back({{"title", c["title"]}, {"formula", c["formula"]}, {"source", c["source"]}});
   d["formulas"] = formulas;
+  d["stability_rows"] = stability_rows(runs);
+  d["has_stability"] = !d["stability_rows"].empty();
   d["model_rows"] = per_run_rows(runs, {
       {"cell size", [](const RunData& r) { return fmt("%.3g m", r.results.info.numbers.count("cell_size") ? r.results.info.numbers.at("cell_size") : NAN); }},
       {"particles", [](const RunData& r) { return fmt("%.0f", r.results.info.numbers.count("particles") ? r.results.info.numbers.at("particles") : NAN); }},

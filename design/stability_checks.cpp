@@ -1,0 +1,130 @@
+#include "design/stability_checks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "design/loads.hpp"
+#include "design/stability.hpp"
+
+namespace dmi::design {
+
+using nlohmann::json;
+
+namespace {
+
+constexpr const char* kWho = "dam on its foundation";
+
+// The joint loads at one sample from the base totals the supports exert on the dam (Fx, Fy, M about x0): the
+// foundation's force acts where Fy (x_p - x0) = M; the weight's moment about the toe Mr is the stabilising one, and
+// the rest overturns: Mo = Mr - Fy (x_toe - x_p) = Mr - Fy (x_toe - x0) + M. Round-off of the static state (a shear or
+// an overturning moment below 1e-9 of the weight's) is zero.
+BaseJointLoads joint_loads(double Fx, double Fy, double M, double x0, double x_toe, double Mr) {
+  BaseJointLoads l;
+  l.N = Fy, l.H = -Fx, l.Mr = Mr;
+  l.Mo = Mr - Fy * (x_toe - x0) + M;
+  if (std::abs(l.H) < 1e-9 * std::abs(Fy)) l.H = 0;
+  if (std::abs(l.Mo) < 1e-9 * Mr) l.Mo = 0;
+  return l;
+}
+
+struct Sample {
+  BaseJointLoads l;
+  ResultantLocation at;
+  double sliding = 0;  // factor of safety
+};
+
+Sample sample(const BaseJointLoads& l, const RigidSection& s, double W, const FoundationLimits& L) {
+  Sample out{l, resultant_location(l, s.base_m, W), 0};
+  out.sliding = sliding_factor(l, L.friction, L.cohesion, out.at.compressed_fraction * s.base_m * W);
+  return out;
+}
+
+json sample_json(const Sample& s, double t) {
+  auto num = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+  return json{{"time_s", t}, {"N_N", s.l.N}, {"H_N", s.l.H}, {"sliding_factor", num(s.sliding)}, {"overturning_factor", num(overturning_factor(s.l))},
+              {"resultant_from_toe_m", num(s.at.x_r)}, {"eccentricity_m", num(s.at.eccentricity)},
+              {"compressed_fraction", s.at.compressed_fraction}, {"toe_pressure_Pa", num(s.at.toe_pressure)},
+              {"heel_pressure_Pa", num(s.at.heel_pressure)}};
+}
+
+Check stability_check(const char* id, const char* title, double demand, double capacity, const char* unit, double t, const std::string& formula,
+                      const char* source) {
+  Check c;
+  c.id = id, c.title = title, c.member = kWho, c.material = "foundation";
+  c.demand = demand, c.capacity = capacity, c.unit = unit, c.time_s = t, c.formula = formula, c.source = source;
+  c.finish();
+  return c;
+}
+
+void persistent_checks(const Sample& s, const RigidSection& sec, const FoundationLimits& L, std::vector<Check>& checks) {
+  const double resist = L.friction * std::max(0.0, s.l.N) + L.cohesion * s.at.compressed_fraction * sec.base_m;
+  checks.push_back(stability_check("stability_sliding_persistent", "sliding, persistent situation (self-weight at rest)",
+                                   L.sliding_factor_usual * std::abs(s.l.H), resist, "N", 0.0, "FS_req |H| <= N tan(phi) + c A'",
+                                   "EM 1110-2-2100 (2005) eq. 3-1, Table 3-3 (usual)"));
+  checks.push_back(stability_check("stability_resultant_persistent", "resultant in the middle third, persistent situation", std::abs(s.at.eccentricity),
+                                   sec.base_m / 6, "m", 0.0, "|e| <= B/6 (base fully in compression)", "EM 1110-2-2100 (2005) 3-9 (usual)"));
+  checks.push_back(stability_check("stability_bearing_persistent", "bearing pressure, persistent situation",
+                                   std::max(s.at.toe_pressure, s.at.heel_pressure), L.bearing_capacity, "Pa", 0.0,
+                                   "q = N / (B W) (1 +- 6 e / B) <= q_allowable", "EM 1110-2-2100 (2005) 3-10"));
+}
+
+}  // namespace
+
+bool stability_applies(const FrameInfo& f, const DesignBasis& b) {
+  const DamBasis& d = b.dam;
+  return f.dim == 2 && !f.supports.empty() && d.type == DamKind::concrete_gravity && is_set(d.heel_x_m) && is_set(d.toe_x_m) &&
+         is_set(d.crest_upstream_x_m) && is_set(d.crest_downstream_x_m);
+}
+
+json stability(const Results& r, const FrameInfo& f, const DesignBasis& b, const FoundationLimits& L, std::vector<Check>& checks,
+               const std::string& where) {
+  if (!stability_applies(f, b) || r.time.empty()) return nullptr;
+  const DamBasis& d = b.dam;
+  const RigidSection sec = rigid_section(d.heel_x_m, d.toe_x_m, d.crest_upstream_x_m, d.crest_downstream_x_m, d.height_m, d.width_m, d.density_kg_m3);
+  const double Mr = sec.weight_N * sec.centroid_from_toe_m;
+  const BaseHistory h = base_history(r, f, where);
+  const std::vector<double>&Fx = h.at("Fx_N"), &Fy = h.at("Fy_N"), &M = h.at("M_Nm");
+  std::vector<Sample> s;
+  std::vector<double> H(r.time.size()), R(r.time.size()), Mo(r.time.size()), Mres(r.time.size(), Mr);
+  for (std::size_t k = 0; k < r.time.size(); ++k) {
+    s.push_back(sample(joint_loads(Fx[k], Fy[k], M[k], h.about[0], d.toe_x_m, Mr), sec, d.width_m, L));
+    H[k] = s[k].l.H, Mo[k] = s[k].l.Mo;
+    R[k] = L.friction * std::max(0.0, s[k].l.N) + L.cohesion * s[k].at.compressed_fraction * sec.base_m * d.width_m;
+  }
+  persistent_checks(s[0], sec, L, checks);
+  // The impact: the worst instants, the time the joint opens, and the rigid-body measures of the ultimate level.
+  std::size_t slide = 0, open = 0;
+  double outside_third = 0, outside_base = 0;
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    if (s[k].sliding < s[slide].sliding) slide = k;
+    if (s[k].at.compressed_fraction < s[open].at.compressed_fraction) open = k;
+    const double dt = k > 0 ? r.time[k] - r.time[k - 1] : 0.0;
+    if (s[k].at.compressed_fraction < 1) outside_third += dt;
+    if (!s[k].at.within_base) outside_base += dt;
+  }
+  const double displacement = newmark_sliding_displacement(r.time, H, R, sec.mass_kg);
+  const double rotation = newmark_sliding_displacement(r.time, Mo, Mres, sec.inertia_about_toe_kg_m2);
+  const double alpha = sec.critical_angle_rad();
+  checks.push_back(stability_check("stability_sliding_displacement", "sliding under the impact (rigid block, Newmark)", displacement,
+                                   L.sliding_displacement_limit, "m", r.time.back(), "d = double integral of (H - mu N - c A') / m while sliding",
+                                   "Newmark (1965); limit: Richards & Elms (1979)"));
+  checks.push_back(stability_check("stability_rocking", "rocking about the toe under the impact (rigid block)", L.rocking_safety_factor * rotation, alpha,
+                                   "rad", r.time.back(), "SF theta_max <= alpha_c = atan(x_G / y_G), I_toe theta'' = M_o - W x_G",
+                                   "Housner (1963), small rotations"));
+  return json{{"model", "rigid dam on its base joint under the simulated base reactions (decoupled: the fixed-base run's reactions drive it)"},
+              {"dam", {{"mass_kg", sec.mass_kg}, {"weight_N", sec.weight_N}, {"base_m", sec.base_m}, {"width_m", d.width_m},
+                       {"weight_lever_from_toe_m", sec.centroid_from_toe_m}, {"centroid_height_m", sec.centroid_height_m},
+                       {"inertia_about_toe_kg_m2", sec.inertia_about_toe_kg_m2}, {"critical_angle_rad", alpha}}},
+              {"foundation", {{"friction", L.friction}, {"cohesion_Pa", L.cohesion}, {"bearing_capacity_Pa", L.bearing_capacity}}},
+              {"persistent", sample_json(s[0], r.time[0])},
+              {"impact",
+               {{"least_sliding_factor", sample_json(s[slide], r.time[slide])},
+                {"least_compressed_base", sample_json(s[open], r.time[open])},
+                {"time_outside_middle_third_s", outside_third},
+                {"time_outside_base_s", outside_base},
+                {"sliding_displacement_m", displacement},
+                {"peak_rocking_rotation_rad", rotation}}}};
+}
+
+}  // namespace dmi::design
