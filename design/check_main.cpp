@@ -27,6 +27,8 @@ std::string eng(double v, const std::string& unit) {
   else if (unit == "N m") std::snprintf(b, sizeof b, "%.4g kN m", v / 1e3);
   else if (unit == "N s") std::snprintf(b, sizeof b, "%.4g kN s", v / 1e3);
   else if (unit == "s") std::snprintf(b, sizeof b, "%.4g ms", v * 1e3);
+  else if (unit == "m" && std::abs(v) < 0.1) std::snprintf(b, sizeof b, "%.3g mm", v * 1e3);
+  else if (!unit.empty() && unit != "-") std::snprintf(b, sizeof b, "%.3g %s", v, unit.c_str());
   else std::snprintf(b, sizeof b, "%.3g", v);
   return b;
 }
@@ -37,7 +39,7 @@ std::string where_when(const json& c) {
   else if (c["member"].get<std::string>().empty() || c["member"].get<std::string>().rfind("solid", 0) == 0)
     o << "(" << eng(c["location_m"][0].get<double>(), "") << ", " << eng(c["location_m"][1].get<double>(), "")
       << (c["location_m"].size() > 2 ? ", " + eng(c["location_m"][2].get<double>(), "") : std::string()) << ") m";
-  if (c["time_s"].is_number()) o << ", t = " << eng(c["time_s"].get<double>(), "s");
+  if (c["time_s"].is_number()) o << (o.tellp() > 0 ? ", " : "") << "t = " << eng(c["time_s"].get<double>(), "s");
   return o.str();
 }
 
@@ -71,7 +73,8 @@ void run_summary(std::ostringstream& o, const json& r) {
     o << "  no checks (no members and no solid check in this run)\n";
     return;
   }
-  std::snprintf(line, sizeof line, "  %-50s %-12s %13s %13s %6s %-5s %s\n", "check", "member", "demand", "capacity", "util", "", "where / when");
+  std::snprintf(line, sizeof line, "  %-50s %-12s %-5s %13s %13s %6s %-5s %s\n", "check", "member", "level", "demand", "capacity", "util", "",
+                "where / when");
   o << line;
   for (const auto& c : r["checks"]) {
     const std::string u = c["unit"];
@@ -82,14 +85,39 @@ void run_summary(std::ostringstream& o, const json& r) {
       title += " [" + load + "]", member = "solid FE";
     }
     if (title.size() > 50) title = title.substr(0, 47) + "...";
-    std::snprintf(line, sizeof line, "  %-50s %-12s %13s %13s %6.2f %-5s %s\n", title.c_str(), member.c_str(),
-                  eng(c["demand"], u).c_str(), eng(c["capacity"], u).c_str(), c["utilisation"].get<double>(), c["passed"] ? "ok" : "FAIL",
-                  where_when(c).c_str());
+    if (member.size() > 12) member = member.substr(0, 11) + ".";
+    const std::string level = c.value("level", "serviceability");
+    const bool info = level == "information";
+    std::snprintf(line, sizeof line, "  %-50s %-12s %-5s %13s %13s %6.2f %-5s %s\n", title.c_str(), member.c_str(),
+                  level == "ultimate" ? "ULS" : level == "serviceability" ? "SLS" : "info", eng(c["demand"], u).c_str(), eng(c["capacity"], u).c_str(),
+                  c["utilisation"].get<double>(), info ? "" : c["passed"] ? "ok" : "FAIL", where_when(c).c_str());
     o << line;
   }
 }
 
 }  // namespace
+
+// The verdict lines: the runs judged, pass or fail, the governing check, each level's verdict (also under -q).
+std::string verdict_text(const json& d) {
+  std::ostringstream o;
+  const json& v = d["verdict"];
+  o << "verdict (" << v["runs_judged"].get<std::string>() << "): ";
+  if (v["status"] == "no_checks") o << "NO CHECKS (nothing to check in these results)\n";
+  else {
+    o << (v["passed"] ? "PASS" : "FAIL") << ", " << v["failed"].get<int>() << " of " << v["checks"].get<int>() << " checks failed";
+    const json& g = v["governing"];
+    o << "; governing: " << g["title"].get<std::string>() << (g["member"].get<std::string>().empty() ? "" : ", " + g["member"].get<std::string>())
+      << ", utilisation " << eng(g["utilisation"], "") << " (" << where_when(g) << ")\n";
+  }
+  for (const char* level : {"serviceability", "ultimate"})
+    if (v.contains("levels") && v["levels"].contains(level) && v["levels"][level]["checks"].get<int>() > 0) {
+      const json& l = v["levels"][level];
+      o << "  " << level << ": " << (l["passed"] ? "pass" : "fail") << ", " << l["failed"].get<int>() << " of " << l["checks"].get<int>()
+        << " failed, largest utilisation " << eng(l["max_utilisation"], "") << " (" << l["governing"]["title"].get<std::string>() << ")\n";
+    }
+  if (v.contains("judged_levels")) o << "  the verdict judges: " << v["judged_levels"].get<std::string>() << " (limits file: verdict.level)\n";
+  return o.str();
+}
 
 std::string summary_text(const json& d) {
   std::ostringstream o;
@@ -108,15 +136,7 @@ std::string summary_text(const json& d) {
       o << line;
     }
   }
-  const json& v = d["verdict"];
-  o << "\nverdict (" << v["runs_judged"].get<std::string>() << "): ";
-  if (v["status"] == "no_checks") o << "NO CHECKS (nothing to check in these results)\n";
-  else {
-    o << (v["passed"] ? "PASS" : "FAIL") << ", " << v["failed"].get<int>() << " of " << v["checks"].get<int>() << " checks failed";
-    const json& g = v["governing"];
-    o << "; governing: " << g["title"].get<std::string>() << (g["member"].get<std::string>().empty() ? "" : ", " + g["member"].get<std::string>())
-      << ", utilisation " << eng(g["utilisation"], "") << " (" << where_when(g) << ")\n";
-  }
+  o << "\n" << verdict_text(d);
   return o.str();
 }
 
@@ -186,6 +206,7 @@ int check_main(const std::vector<std::string>& paths, const std::string& limits_
   write_design_json(target.string(), doc);
   if (print_json) std::cout << doc.dump(1) << "\n";
   else if (!quiet) std::cout << summary_text(doc) << "wrote " << target.string() << "\n";
+  else std::cout << verdict_text(doc);
   return doc["verdict"]["passed"] ? 0 : 1;
 }
 

@@ -23,6 +23,10 @@ struct Check {
   bool space = false;       // a 3D location: location_m has z
   double time_s = -1;    // instant of the governing demand (-1: not time-dependent)
   std::string formula, source;
+  // What the check says about the design (docs/design-checks.md, "Two levels"): serviceability (elastic stresses within
+  // strengths, no joint opening at rest), ultimate (stability, local damage short of perforation, sliding and rocking
+  // under the impact), or information (reported, never judged: e.g. a linear stress under a point load).
+  std::string level = "serviceability";
   void finish() { utilisation = capacity > 0 ? demand / capacity : (demand > 0 ? 1e300 : 0.0); passed = utilisation <= 1.0; }
   nlohmann::json to_json() const;
 };

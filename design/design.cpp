@@ -5,12 +5,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <stdexcept>
 
 #include "design/estimates.hpp"
 #include "engine/scenario/design_basis_json.hpp"
 #include "design/phases.hpp"
+#include "design/local_damage_checks.hpp"
 #include "design/stability_checks.hpp"
 #include "design/loads.hpp"
 #include "design/members.hpp"
@@ -126,6 +128,7 @@ json solid_part(const json& doc, const Limits& L, std::vector<Check>& checks, co
       auto add = [&](const char* id, const char* title, double demand, double cap, const json& loc, const char* formula, const char* src) {
         Check k;
         k.id = id, k.title = title, k.member = "solid: " + c.at("name").get<std::string>(), k.material = "concrete", k.unit = "Pa";
+        k.level = "information";  // a linear stress under the contact patch: singular under a point load, local
         k.demand = demand, k.capacity = cap, k.formula = formula, k.source = src;
         k.x_m = loc.at(0), k.y_m = loc.size() > 2 ? loc.at(2).get<double>() : loc.at(1).get<double>();
         if (c.contains("time_s")) k.time_s = c["time_s"];
@@ -175,6 +178,7 @@ void punching(const json& pc, const std::vector<MemberEnvelope>& members, const 
     const double h = st[k].depth + w * (st[k + 1].depth - st[k].depth);
     Check p;
     p.id = "concrete_punching", p.title = "punching shear at the contact patch", p.member = m->name, p.material = "concrete", p.unit = "N";
+    p.level = "ultimate";
     p.demand = norm(pc.at("total_force"));
     p.capacity = concrete_punching_capacity(L.concrete.compressive_strength, L.concrete.lambda, *L.concrete.punching_patch_width,
                                             *L.concrete.punching_patch_height, h, L.concrete.phi_shear);
@@ -190,15 +194,26 @@ void punching(const json& pc, const std::vector<MemberEnvelope>& members, const 
   }
 }
 
-json verdict(const std::vector<Check>& checks) {
+// The verdict of one run: each level's own (checks, failed, passed, governing), and over the levels the limits judge
+// (serviceability and ultimate by default; information never) the run's verdict and exit code.
+json level_verdict(const std::vector<Check>& checks, const std::function<bool(const Check&)>& counts) {
   const Check* gov = nullptr;
-  int failed = 0;
+  int n = 0, failed = 0;
   for (const auto& c : checks) {
-    failed += !c.passed;
+    if (!counts(c)) continue;
+    ++n, failed += !c.passed;
     if (!gov || c.utilisation > gov->utilisation) gov = &c;
   }
-  return json{{"checks", checks.size()}, {"failed", failed}, {"passed", failed == 0}, {"max_utilisation", gov ? json(gov->utilisation) : json(nullptr)},
+  return json{{"checks", n}, {"failed", failed}, {"passed", failed == 0}, {"max_utilisation", gov ? json(gov->utilisation) : json(nullptr)},
               {"governing", gov ? gov->to_json() : json(nullptr)}};
+}
+
+json verdict(const std::vector<Check>& checks, const std::string& judged) {
+  json v = level_verdict(checks, [&](const Check& c) { return c.level != "information" && (judged == "both" || c.level == judged); });
+  v["judged_levels"] = judged;
+  for (const char* level : {"serviceability", "ultimate", "information"})
+    v["levels"][level] = level_verdict(checks, [&](const Check& c) { return c.level == level; });
+  return v;
 }
 
 // The documents the run's own scenario promises: a file whose scenario has members (or a solid check) but not their
@@ -258,9 +273,10 @@ json design_run(const Results& r, const Limits& L, const std::string& where) {
   run["estimates"] = est;
   run["debris_phases"] = basis ? debris_phases(r, *basis) : json(nullptr);
   run["stability"] = basis && frame ? stability(r, *frame, *basis, L.foundation, checks, where) : json(nullptr);
+  run["local_damage"] = basis ? local_damage_checks(*basis, L.concrete, checks) : json(nullptr);
   run["checks"] = json::array();
   for (const auto& k : checks) run["checks"].push_back(k.to_json());
-  run["verdict"] = verdict(checks);
+  run["verdict"] = verdict(checks, L.verdict_level);
   return run;
 }
 

@@ -35,6 +35,8 @@ void write_design_json(const std::string& path, const nlohmann::json& doc);
 
 // The readable summary `damimpact check` prints.
 std::string summary_text(const nlohmann::json& design);
+// Its verdict lines alone (what `check -q` prints).
+std::string verdict_text(const nlohmann::json& design);
 
 // `damimpact check PATH... [--limits FILE] [--json] [-o design.json]`: PATH a results.h5 or a run folder (holding
 // results.h5, or with_buffer/ and without_buffer/). Writes design.json (atomically) beside the results, or to

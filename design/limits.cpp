@@ -37,7 +37,7 @@ json Limits::to_json() const {
                               {"bearing_capacity_Pa", foundation.bearing_capacity}, {"sliding_factor_usual", foundation.sliding_factor_usual},
                               {"sliding_displacement_limit_m", foundation.sliding_displacement_limit},
                               {"rocking_safety_factor", foundation.rocking_safety_factor}}},
-              {"members", member_material}, {"grid_study", {{"judge_on", grid_judge_on}}}};
+              {"members", member_material}, {"grid_study", {{"judge_on", grid_judge_on}}}, {"verdict", {{"level", verdict_level}}}};
 }
 
 namespace {
@@ -73,7 +73,17 @@ struct Reader {
 Limits parse_limits(const json& j, const std::string& file) {
   Reader r{file};
   Limits L;
-  r.keys(j, "", {"concrete", "steel", "members", "grid_study", "foundation"});
+  r.keys(j, "", {"concrete", "steel", "members", "grid_study", "foundation", "verdict"});
+  if (j.contains("verdict")) {
+    const json& v = j["verdict"];
+    r.keys(v, "/verdict", {"level"});
+    if (v.contains("level")) {
+      const json& l = v["level"];
+      if (!l.is_string() || (l != "both" && l != "ultimate" && l != "serviceability"))
+        r.fail("/verdict/level", &l, "\"both\", \"ultimate\" or \"serviceability\"");
+      L.verdict_level = l.get<std::string>();
+    }
+  }
   if (j.contains("foundation")) {
     const json& f = j["foundation"];
     const std::string p = "/foundation";

@@ -58,6 +58,9 @@ struct Limits {
   // With `run --grid-study`: judge the design on the finest grid's utilisation ("finest") or on its conservative
   // bound u (1 + GCI) ("conservative_bound"; Roache 1998: the GCI as an error band).
   std::string grid_judge_on = "finest";
+  // The levels whose checks set a run's verdict and the exit code: "both" (serviceability and ultimate), "ultimate" or
+  // "serviceability" (docs/design-checks.md, "Two levels").
+  std::string verdict_level = "both";
   std::map<std::string, std::string> member_material;  // member name -> concrete | steel (overrides the guess)
   nlohmann::json to_json() const;
 };

@@ -13,7 +13,7 @@ using nlohmann::json;
 
 namespace {
 
-constexpr const char* kWho = "dam on its foundation";
+constexpr const char* kWho = "base joint";
 
 // The joint loads at one sample from the base totals the supports exert on the dam (Fx, Fy, M about x0): the
 // foundation's force acts where Fy (x_p - x0) = M; the weight's moment about the toe Mr is the stabilising one, and
@@ -48,9 +48,10 @@ json sample_json(const Sample& s, double t) {
               {"heel_pressure_Pa", num(s.at.heel_pressure)}};
 }
 
-Check stability_check(const char* id, const char* title, double demand, double capacity, const char* unit, double t, const std::string& formula,
-                      const char* source) {
+Check stability_check(const char* level, const char* id, const char* title, double demand, double capacity, const char* unit, double t,
+                      const std::string& formula, const char* source) {
   Check c;
+  c.level = level;
   c.id = id, c.title = title, c.member = kWho, c.material = "foundation";
   c.demand = demand, c.capacity = capacity, c.unit = unit, c.time_s = t, c.formula = formula, c.source = source;
   c.finish();
@@ -59,12 +60,12 @@ Check stability_check(const char* id, const char* title, double demand, double c
 
 void persistent_checks(const Sample& s, const RigidSection& sec, const FoundationLimits& L, std::vector<Check>& checks) {
   const double resist = L.friction * std::max(0.0, s.l.N) + L.cohesion * s.at.compressed_fraction * sec.base_m;
-  checks.push_back(stability_check("stability_sliding_persistent", "sliding, persistent situation (self-weight at rest)",
+  checks.push_back(stability_check("ultimate", "stability_sliding_persistent", "sliding, persistent situation (self-weight at rest)",
                                    L.sliding_factor_usual * std::abs(s.l.H), resist, "N", 0.0, "FS_req |H| <= N tan(phi) + c A'",
                                    "EM 1110-2-2100 (2005) eq. 3-1, Table 3-3 (usual)"));
-  checks.push_back(stability_check("stability_resultant_persistent", "resultant in the middle third, persistent situation", std::abs(s.at.eccentricity),
+  checks.push_back(stability_check("serviceability", "stability_resultant_persistent", "resultant in the middle third, persistent situation", std::abs(s.at.eccentricity),
                                    sec.base_m / 6, "m", 0.0, "|e| <= B/6 (base fully in compression)", "EM 1110-2-2100 (2005) 3-9 (usual)"));
-  checks.push_back(stability_check("stability_bearing_persistent", "bearing pressure, persistent situation",
+  checks.push_back(stability_check("ultimate", "stability_bearing_persistent", "bearing pressure, persistent situation",
                                    std::max(s.at.toe_pressure, s.at.heel_pressure), L.bearing_capacity, "Pa", 0.0,
                                    "q = N / (B W) (1 +- 6 e / B) <= q_allowable", "EM 1110-2-2100 (2005) 3-10"));
 }
@@ -106,10 +107,10 @@ json stability(const Results& r, const FrameInfo& f, const DesignBasis& b, const
   const double displacement = newmark_sliding_displacement(r.time, H, R, sec.mass_kg);
   const double rotation = newmark_sliding_displacement(r.time, Mo, Mres, sec.inertia_about_toe_kg_m2);
   const double alpha = sec.critical_angle_rad();
-  checks.push_back(stability_check("stability_sliding_displacement", "sliding under the impact (rigid block, Newmark)", displacement,
+  checks.push_back(stability_check("ultimate", "stability_sliding_displacement", "sliding under the impact (rigid block, Newmark)", displacement,
                                    L.sliding_displacement_limit, "m", r.time.back(), "d = double integral of (H - mu N - c A') / m while sliding",
                                    "Newmark (1965); limit: Richards & Elms (1979)"));
-  checks.push_back(stability_check("stability_rocking", "rocking about the toe under the impact (rigid block)", L.rocking_safety_factor * rotation, alpha,
+  checks.push_back(stability_check("ultimate", "stability_rocking", "rocking about the toe under the impact (rigid block)", L.rocking_safety_factor * rotation, alpha,
                                    "rad", r.time.back(), "SF theta_max <= alpha_c = atan(x_G / y_G), I_toe theta'' = M_o - W x_G",
                                    "Housner (1963), small rotations"));
   return json{{"model", "rigid dam on its base joint under the simulated base reactions (decoupled: the fixed-base run's reactions drive it)"},

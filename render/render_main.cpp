@@ -110,10 +110,18 @@ std::string ms(double t) {
 
 std::string nice_variant(const std::string& v) { return v == "with_buffer" ? "with buffer" : v == "without_buffer" ? "without buffer" : ""; }
 
-// The governing instant: the governing check's time, else the contact peak, else the end.
+const json* plotted_check(const json& run);
+
+// The governing instant of the stress field: the governing check's time when it is a check of the members' or the
+// solid's stresses, else the most utilised member check's (a check of the dam on its foundation or of the struck face
+// has no field to show), else the contact peak, else the end.
 double governing_time(const RunData& r) {
   const double end = r.results.time.empty() ? 0.0 : r.results.time.back();
-  return num(r.design, {"verdict", "governing", "time_s"}, num(r.design, {"contact", "peak_time_s"}, end));
+  const double peak = num(r.design, {"contact", "peak_time_s"}, end);
+  const json& g = r.design["verdict"]["governing"];
+  if (g.is_object() && g["material"] != "foundation" && g["id"].get<std::string>().rfind("local_", 0) != 0) return num(g, {"time_s"}, peak);
+  const json* c = plotted_check(r.design);
+  return c ? num(*c, {"time_s"}, peak) : peak;
 }
 
 // The instant of a run's largest member fibre stress |sigma| (design.json envelopes), where the members carry the most;
@@ -177,7 +185,7 @@ const json* plotted_check(const json& run) {
   const json* best = nullptr;
   for (const auto& c : run["checks"]) {
     const std::string id = c["id"];
-    if (id.rfind("solid", 0) == 0 || id == "steel_section_class" || id == "concrete_punching") continue;
+    if (id.rfind("solid", 0) == 0 || id == "steel_section_class" || id == "concrete_punching" || !c["position"].is_number()) continue;
     if (!best || c["utilisation"].get<double>() > (*best)["utilisation"].get<double>()) best = &c;
   }
   return best;

@@ -284,6 +284,15 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
           ", utilisation " + fmt("%.2f", g["utilisation"].get<double>()) + " (" + eng(g["demand"], g["unit"]) + " against " + eng(g["capacity"], g["unit"]) +
           "; " + where(g) + ").";
   }
+  if (v.contains("levels"))
+    for (const char* level : {"serviceability", "ultimate"}) {
+      const json& l = v["levels"][level];
+      if (l["checks"].get<int>() == 0) continue;
+      vt += std::string(" ") + (std::string(level) == "ultimate" ? "Ultimate" : "Serviceability") + " level: " + (l["passed"] ? "pass" : "FAIL") +
+            ", largest utilisation " + fmt("%.2f", l["max_utilisation"].get<double>()) + " (" + l["governing"]["title"].get<std::string>() + ").";
+    }
+  if (v.contains("judged_levels") && v["judged_levels"] != "both")
+    vt += " The verdict judges the " + v["judged_levels"].get<std::string>() + " level only (limits file).";
   // Grid uncertainty: the governing numbers with their GCI, or a plain statement that it is unknown.
   auto grid_word = [](const std::string& b) -> std::string {
     if (b == "converged") return "converged";
@@ -341,10 +350,14 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
     json checks = json::array();
     for (const auto& c : r.design["checks"]) {
       const double u = c["utilisation"];
+      const std::string level = c.value("level", "serviceability");
+      const bool info = level == "information";
       checks.push_back({{"id", c["id"]}, {"title", c["title"]}, {"member", c["member"].get<std::string>().rfind("solid: ", 0) == 0 ? "solid FE, " + c["member"].get<std::string>().substr(7) : c["member"].get<std::string>()},
                         {"demand", eng(c["demand"], c["unit"])}, {"capacity", eng(c["capacity"], c["unit"])}, {"util", fmt("%.2f", u)},
                         {"bar_pct", fmt("%.0f", std::min(100.0, 100 * u))}, {"bar_class", u > 1 ? "over" : u > 0.8 ? "high" : "ok"},
-                        {"status", c["passed"].get<bool>() ? "pass" : "FAIL"}, {"status_class", c["passed"].get<bool>() ? "pass" : "fail"}, {"where", where(c)}});
+                        {"status", info ? "info" : c["passed"].get<bool>() ? "pass" : "FAIL"},
+                        {"status_class", info ? "info" : c["passed"].get<bool>() ? "pass" : "fail"}, {"where", where(c)},
+                        {"level", level == "ultimate" ? "ULS" : level == "serviceability" ? "SLS" : "info"}});
     }
     std::string gov;
     if (r.design["verdict"]["governing"].is_object()) {
@@ -358,7 +371,9 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
   d["runs"] = rl;
   d["checks_intro"] =
       "Each check compares the largest demand over the whole run and along every member (or in the solid-FE model) with its factored "
-      "capacity; utilisation = demand / capacity. The bar turns orange above 0.8 and red above 1.";
+      "capacity; utilisation = demand / capacity. The bar turns orange above 0.8 and red above 1. Level: SLS serviceability (the dam stays "
+      "elastic and undamaged), ULS ultimate (it stands and is not holed), info reported and never judged (a linear stress under the "
+      "contact patch is singular under a concentrated load).";
   std::set<std::string> seen;
   json formulas = json::array();
   for (const auto& r : runs)

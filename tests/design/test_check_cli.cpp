@@ -111,6 +111,25 @@ TEST_F(CheckCli, ExitOneWhenACheckFailsUnderOtherLimitsWithoutResimulating) {
   EXPECT_EQ(d["verdict"]["governing"]["id"], "concrete_flexural_tension");
 }
 
+// The same failing serviceability check under a limits file that judges the ultimate level only: the run has no
+// ultimate-level check (a cantilever, no design basis), so it passes and exits 0; the serviceability level still fails
+// in design.json and the -q output keeps the verdict lines.
+TEST_F(CheckCli, TheLimitsFileChoosesTheLevelThatSetsTheExitCode) {
+  const fs::path limits = write("low_ult.json", R"({"concrete": {"tensile_strength_Pa": 1e6}, "verdict": {"level": "ultimate"}})");
+  const Cli c = cli("check " + (dir / "results.h5").string() + " --limits " + limits.string() + " -q -o " + (dir / "ult_design.json").string());
+  EXPECT_EQ(c.status, 0) << c.err;
+  EXPECT_NE(c.out.find("serviceability: fail"), std::string::npos) << c.out;
+  EXPECT_NE(c.out.find("the verdict judges: ultimate"), std::string::npos) << c.out;
+  const json d = json::parse(slurp(dir / "ult_design.json"));
+  EXPECT_TRUE(d["verdict"]["passed"].get<bool>());
+  EXPECT_FALSE(d["verdict"]["levels"]["serviceability"]["passed"].get<bool>());
+  EXPECT_EQ(d["runs"][0]["checks"][0]["level"], "serviceability");
+  const fs::path bad = write("bad_level.json", R"({"verdict": {"level": "all"}})");
+  const Cli b = cli("check " + (dir / "results.h5").string() + " --limits " + bad.string());
+  EXPECT_EQ(b.status, 2);
+  EXPECT_NE(b.err.find("/verdict/level = \"all\": expected \"both\", \"ultimate\" or \"serviceability\""), std::string::npos) << b.err;
+}
+
 TEST_F(CheckCli, BadInputExitsTwoWithOneClearMessage) {
   Cli c = cli("check " + (dir / "nothing.h5").string());
   EXPECT_EQ(c.status, 2);

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "design/local_damage.hpp"
+#include "design/local_damage_checks.hpp"
 
 using namespace dmi::design;
 
@@ -139,4 +140,32 @@ TEST(LocalDamage, RejectsBadInput) {
   EXPECT_THROW(local_damage(1000, 0.9, 5, std::numeric_limits<double>::infinity()), std::invalid_argument);
   EXPECT_THROW(local_damage(1000, 0.9, 5, 28e6, 1.5), std::invalid_argument);
   EXPECT_NO_THROW(local_damage(1000, 0.9, 5, 28e6, kNoseFlat));
+}
+
+// The checks on a dam: the demo's section (heel 0, toe 1.6, crest from 0 to 1, 4 m high) is 1.6 - 0.6 y / 4 thick:
+// 1.06 m at 3.6 m. A 1 t, 0.894 m boulder at 5 m/s on 28 MPa: perforation and scabbing against that, times 1.2 and 1.1;
+// none with a buffer.
+TEST(LocalDamage, ChecksAgainstTheSectionThicknessAtTheImpactHeight) {
+  dmi::DesignBasis b;
+  b.dam.height_m = 4, b.dam.heel_x_m = 0, b.dam.toe_x_m = 1.6, b.dam.crest_upstream_x_m = 0, b.dam.crest_downstream_x_m = 1.0;
+  EXPECT_NEAR(section_thickness_at(b.dam, 3.6), 1.06, 1e-12);
+  EXPECT_NEAR(section_thickness_at(b.dam, 0.0), 1.6, 1e-12);
+  dmi::BoulderBasis k;
+  k.mass_kg = 1000, k.diameter_m = 0.894, k.speed_m_s = 5, k.impact_height_m = 3.6;
+  b.boulder = k;
+  ConcreteLimits C;
+  std::vector<Check> checks;
+  const nlohmann::json j = local_damage_checks(b, C, checks);
+  ASSERT_EQ(checks.size(), 2u);
+  const DesignThickness t = design_thickness(local_damage(1000, 0.894, 5, 28e6, kNoseSpherical), 1.1, 1.2);
+  EXPECT_EQ(checks[0].id, "local_perforation");
+  EXPECT_EQ(checks[0].level, "ultimate");
+  EXPECT_NEAR(checks[0].utilisation, t.perforation_design_m / 1.06, 1e-12);
+  EXPECT_EQ(checks[1].level, "serviceability");
+  EXPECT_NEAR(checks[1].demand, t.scabbing_design_m, 1e-12);
+  EXPECT_NEAR(j["thickness_m"].get<double>(), 1.06, 1e-12);
+  b.buffer = dmi::BufferBasis{};
+  checks.clear();
+  EXPECT_TRUE(local_damage_checks(b, C, checks).is_null());
+  EXPECT_TRUE(checks.empty());
 }
