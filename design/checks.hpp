@@ -27,6 +27,11 @@ struct Check {
   // strengths, no joint opening at rest), ultimate (stability, local damage short of perforation, sliding and rocking
   // under the impact), or information (reported, never judged: e.g. a linear stress under a point load).
   std::string level = "serviceability";
+  // Strain-rate effects on the capacity (design/strain_rate_checks): the factor applied and the strain rate it was
+  // taken at (1/s; 0: a static strength).
+  double dynamic_factor = 1, strain_rate = 0;
+  // The demand at the first history sample where the check governs: the static state the run starts from (members).
+  double static_demand = 0;
   void finish() { utilisation = capacity > 0 ? demand / capacity : (demand > 0 ? 1e300 : 0.0); passed = utilisation <= 1.0; }
   nlohmann::json to_json() const;
 };

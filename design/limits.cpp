@@ -26,7 +26,8 @@ json Limits::to_json() const {
   json c{{"compressive_strength_Pa", concrete.compressive_strength}, {"tensile_strength_Pa", concrete.tensile_value()},
          {"tensile_rule", concrete.tensile_rule}, {"lambda", concrete.lambda}, {"compression_coefficient", concrete.compression_coefficient},
          {"phi_flexure", concrete.phi_flexure}, {"phi_compression", concrete.phi_compression}, {"phi_shear", concrete.phi_shear},
-         {"shear_strength_Pa", concrete.shear_strength ? json(*concrete.shear_strength) : json(nullptr)}};
+         {"shear_strength_Pa", concrete.shear_strength ? json(*concrete.shear_strength) : json(nullptr)},
+         {"strain_rate_effects", concrete.strain_rate_effects}};
   if (concrete.punching_patch_width)
     c["punching_patch_m"] = {*concrete.punching_patch_width, *concrete.punching_patch_height};
   else
@@ -115,8 +116,12 @@ Limits parse_limits(const json& j, const std::string& file) {
     const json& c = j["concrete"];
     const std::string p = "/concrete";
     r.keys(c, p, {"compressive_strength_Pa", "tensile_strength_Pa", "tensile_rule", "lambda", "compression_coefficient", "phi_flexure",
-                  "phi_compression", "phi_shear", "shear_strength_Pa", "punching_patch_m"});
+                  "phi_compression", "phi_shear", "shear_strength_Pa", "punching_patch_m", "strain_rate_effects"});
     ConcreteLimits& k = L.concrete;
+    if (c.contains("strain_rate_effects")) {
+      if (!c["strain_rate_effects"].is_boolean()) r.fail(p + "/strain_rate_effects", &c["strain_rate_effects"], "true or false");
+      k.strain_rate_effects = c["strain_rate_effects"].get<bool>();
+    }
     r.number(c, p, "compressive_strength_Pa", k.compressive_strength);
     r.number(c, p, "tensile_strength_Pa", k.tensile_strength);
     if (c.contains("tensile_rule")) {

@@ -25,6 +25,8 @@ struct ConcreteLimits {
   std::optional<double> shear_strength;
   // Punching shear around the contact patch (ACI 318-19 Table 14.5.5.1, two-way): off unless a patch is given.
   std::optional<double> punching_patch_width, punching_patch_height;  // m, across the face and up the face
+  // Strain-rate effects on the tensile and compressive strengths of the member checks (fib Model Code 2010 5.1.11.1).
+  bool strain_rate_effects = true;
 
   double tensile_capacity() const;      // phi_flexure * f_t (Pa)
   double compressive_capacity() const;  // phi_compression * alpha * f'c (Pa)

@@ -116,11 +116,15 @@ std::vector<Demand> space_demands(const Section& sec, double s, const SpaceSecti
 
 namespace {
 
-// Tracks the governing instance (largest utilisation) of each check of a member.
+// Tracks the governing instance (largest utilisation) of each check of a member, and each check's demand at the first
+// history sample at every station (the static state the run starts from), kept as static_demand where it governs.
 struct CheckTracker {
   std::map<std::string, Check> by_id;
   std::vector<std::string> order;
+  std::map<std::pair<std::string, const Station*>, double> first;
+  std::map<std::string, const Station*> at;
   void consider(const Check& proto, double demand, double capacity, const Station& st, double t) {
+    first.emplace(std::make_pair(proto.id, &st), demand);
     auto it = by_id.find(proto.id);
     const double u = capacity > 0 ? demand / capacity : (demand > 0 ? 1e300 : 0.0);  // as Check::finish
     if (it == by_id.end()) {
@@ -132,11 +136,13 @@ struct CheckTracker {
     if (u <= c.utilisation) return;
     c.demand = demand, c.capacity = capacity, c.utilisation = u;
     c.position = st.position, c.s_m = st.s_m, c.x_m = st.x, c.y_m = st.y, c.z_m = st.z, c.time_s = t;
+    at[proto.id] = &st;
   }
   std::vector<Check> result() {
     std::vector<Check> v;
     for (const auto& id : order) {
       Check c = by_id.at(id);
+      c.static_demand = first.at({id, at.at(id)});
       c.finish();
       v.push_back(c);
     }
