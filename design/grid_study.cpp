@@ -87,9 +87,9 @@ json grid_study_section(const std::array<json, 3>& designs, const std::array<dou
         const json* c = find_check(*runs[g], id, member);
         if (!c) throw std::runtime_error("grid study: " + folders[g] + "/design.json has no check '" + id + "' on '" + member + "' (run '" + variant + "')");
         demand[g] = std::abs(number_at(*c, json::json_pointer("/demand"), "demand of " + id, folders[g]));
-        double umax = 0;  // the governing utilisation of each grid: the largest of its checks, whichever governs
-        for (const auto& cc : (*runs[g])["checks"]) umax = std::max(umax, number_at(cc, json::json_pointer("/utilisation"), "utilisation", folders[g]));
-        util[g] = umax;
+        // The governing utilisation of each grid: its verdict's, whichever check governs there (information checks and
+        // levels the limits do not judge left out).
+        util[g] = number_at(*runs[g], json::json_pointer("/verdict/max_utilisation"), "governing utilisation", folders[g]);
       }
       qs.push_back(quantity(variant, "governing_demand", gov.value("title", id) + " (" + member + ")", gov.value("unit", ""), h, demand));
       qs.push_back(quantity(variant, "governing_utilisation", "governing utilisation", "-", h, util));

@@ -18,8 +18,10 @@ TEST(GridStudy, SectionReadsTheThreeDesignsAndRefusesAMissingQuantity) {
   using nlohmann::json;
   auto doc = [](double shear, double util) {
     json check = {{"id", "shear"}, {"member", "dam"}, {"demand", shear}, {"utilisation", util}, {"title", "one-way shear"}, {"unit", "N"}};
+    // An information check (never judged) with a larger utilisation: the governing utilisation is the verdict's.
+    json info = {{"id", "solid_principal_tension"}, {"member", "solid: x"}, {"demand", 1}, {"utilisation", 3 * util}, {"level", "information"}};
     json run = {{"variant", ""}, {"base_total", {{"Fx_N", {{"abs_max", {{"value", shear}}}}}, {"M_Nm", {{"abs_max", {{"value", 2 * shear}}}}}}},
-                {"contact", nullptr}, {"checks", {check}}, {"verdict", {{"governing", check}}}};
+                {"contact", nullptr}, {"checks", {check, info}}, {"verdict", {{"governing", check}, {"max_utilisation", util}}}};
     return json{{"runs", {run}}};
   };
   const std::array<double, 3> h{0.01, 0.02, 0.04};
@@ -28,6 +30,8 @@ TEST(GridStudy, SectionReadsTheThreeDesignsAndRefusesAMissingQuantity) {
   EXPECT_EQ(s["quantities"][0]["id"], "base_shear");
   EXPECT_NEAR(s["quantities"][0]["observed_order"].get<double>(), 2.0, 1e-9);
   EXPECT_NEAR(s["quantities"][0]["extrapolated"].get<double>(), 100.0, 1e-9);
+  EXPECT_EQ(s["quantities"][3]["id"], "governing_utilisation");
+  EXPECT_NEAR(s["quantities"][3]["values"][0].get<double>(), 0.5, 1e-12);
   json bad = doc(104, 0.52);
   bad["runs"][0]["base_total"]["Fx_N"]["abs_max"]["value"] = "n/a";
   EXPECT_THROW(grid_study_section({doc(101, 0.5), bad, doc(116, 0.6)}, h, {"a", "b", "c"}), std::runtime_error);
