@@ -24,6 +24,10 @@ struct DamBasis {
   // y = 0): heel and toe where the base meets the foundation, the crest's upstream and downstream edges.
   double crest_thickness_m = kUnset, base_thickness_m = kUnset;
   double heel_x_m = kUnset, toe_x_m = kUnset, crest_upstream_x_m = kUnset, crest_downstream_x_m = kUnset;
+  // What stands behind it when the impact arrives (unset: nothing): a deposit and water, permanent pressures on the
+  // upstream face in the run, and the water's uplift on the base joint in the stability checks.
+  double deposit_height_m = kUnset, deposit_unit_weight_N_m3 = kUnset, deposit_coefficient = kUnset;
+  double water_height_m = kUnset, water_unit_weight_N_m3 = kUnset;
   // Steel open: the column pipes.
   double column_diameter_m = kUnset, column_wall_thickness_m = kUnset;
 };

@@ -131,8 +131,12 @@ std::string summary_text(const json& d) {
       const std::string u = q["unit"];
       std::string title = q["title"];
       if (title.size() > 60) title = title.substr(0, 57) + "...";
-      std::snprintf(line, sizeof line, "  %-60s %14s %14s %9.0f %%\n", title.c_str(), eng(q["with_buffer"], u).c_str(),
-                    eng(q["without_buffer"], u).c_str(), q["reduction_percent"].is_number() ? q["reduction_percent"].get<double>() : 0.0);
+      const double red = q["reduction_percent"].is_number() ? q["reduction_percent"].get<double>() : 0.0;
+      char reduction[32];  // more than doubled (the buffer lengthens the pulse): the factor, not a percentage of thousands
+      if (red < -100) std::snprintf(reduction, sizeof reduction, "x%.3g larger", 1 - red / 100);
+      else std::snprintf(reduction, sizeof reduction, "%9.0f %%", red);
+      std::snprintf(line, sizeof line, "  %-60s %14s %14s %11s\n", title.c_str(), eng(q["with_buffer"], u).c_str(), eng(q["without_buffer"], u).c_str(),
+                    reduction);
       o << line;
     }
   }

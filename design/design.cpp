@@ -9,6 +9,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "design/damping_share.hpp"
 #include "design/estimates.hpp"
 #include "engine/scenario/design_basis_json.hpp"
 #include "design/phases.hpp"
@@ -271,7 +272,7 @@ json design_run(const Results& r, const Limits& L, const std::string& where) {
   json est = json::array();
   const std::optional<DesignBasis> basis = read_design_basis(r, where);
   if (basis)
-    for (const auto& e : estimates(*basis, base_shear, c.present ? c.peak_N : 0.0)) est.push_back(e.to_json());
+    for (const auto& e : estimates(*basis, base_shear, c.present ? c.peak_N : 0.0, r.info.dimension)) est.push_back(e.to_json());
   run["estimates"] = est;
   run["debris_phases"] = basis ? debris_phases(r, *basis) : json(nullptr);
   run["stability"] = basis && frame ? stability(r, *frame, *basis, L.foundation, checks, where) : json(nullptr);
@@ -279,6 +280,11 @@ json design_run(const Results& r, const Limits& L, const std::string& where) {
   run["checks"] = json::array();
   for (const auto& k : checks) run["checks"].push_back(k.to_json());
   run["verdict"] = verdict(checks, L.verdict_level);
+  // The damping's share by the instant of the most utilised member check (else the contact peak).
+  double t_member = c.present ? c.peak_time_s : r.time.empty() ? 0.0 : r.time.back(), u_member = -1;
+  for (const auto& k : checks)
+    if (k.s_m >= 0 && k.time_s >= 0 && k.utilisation > u_member) u_member = k.utilisation, t_member = k.time_s;
+  run["damping"] = basis ? damping_share(r, *basis, t_member) : json(nullptr);
   return run;
 }
 

@@ -43,7 +43,7 @@ struct Table {
 constexpr double kG = 9.81;
 constexpr double kAssumedFrictionDeg = 30;  // ASTRA's cushion friction angle when the basis gives none
 
-void boulder_rows(const DesignBasis& basis, Table& t) {
+void boulder_rows(const DesignBasis& basis, int dimension, Table& t) {
   const DamBasis& dam = basis.dam;
   const BoulderBasis& rock = *basis.boulder;
   const bool buffer = basis.buffer.has_value();
@@ -94,7 +94,8 @@ void boulder_rows(const DesignBasis& basis, Table& t) {
     const auto hz = sdof::hertz_sphere_impact(m, v, r, Er, nur, E, nu);
     t.add("hertz", "Hertz sphere on an elastic half-space", hz_formula, "Johnson (1985) Contact Mechanics ch. 11", "peak_contact_force",
           mv + fmt(", R = %.3g m, E* = %.3g Pa", r, hz.effective_modulus_Pa), hz.peak_force_N)
-        .note = fmt("contact %.3g ms; the 2D model strikes with an equal-mass cylinder", hz.contact_duration_s * 1e3);
+        .note = fmt("contact %.3g ms", hz.contact_duration_s * 1e3) +
+                (dimension == 2 ? "; the 2D model strikes with an equal-mass cylinder as long as the width represented" : "; the 3D model strikes with the sphere");
     t.add("geo_hertz", "GEO Report 270 reduced Hertz", geo_formula, "Kwan (2012) GEO Report 270", "peak_contact_force",
           fmt("v = %.3g m/s, r = %.3g m, K_c = 0.1", v, r), sdof::geo_hertz_impact_force_N(v, r));
   } else {
@@ -113,6 +114,10 @@ void boulder_rows(const DesignBasis& basis, Table& t) {
   } else if (!(nu_c > 0)) {
     t.not_applicable("japanese_rockfall", "Japanese rock-fall formula", jp_formula, jp_source, "peak_contact_force",
                      "Lamé's λ = E ν / ((1 + ν)(1 − 2ν)) is not positive for ν ≤ 0");
+  } else if (!buffer && dam.type == DamKind::steel_open) {
+    t.not_applicable("japanese_rockfall", "Japanese rock-fall formula", jp_formula, jp_source, "peak_contact_force",
+                     "written for a rock on a cushion or a soil or concrete half-space; a steel pipe is neither (λ of steel would give "
+                     "ten times the simulated force)");
   } else {
     const double lam = sdof::lame_first_parameter(buffer ? Eb : E, nu_c);
     t.add("japanese_rockfall", "Japanese rock-fall formula", jp_formula, jp_source, "peak_contact_force",
@@ -191,10 +196,10 @@ void debris_rows(const DesignBasis& basis, Table& t) {
 
 }  // namespace
 
-std::vector<Estimate> estimates(const DesignBasis& basis, double shear, double contact) {
+std::vector<Estimate> estimates(const DesignBasis& basis, double shear, double contact, int dimension) {
   std::vector<Estimate> out;
   Table t{out, shear, contact};
-  if (basis.boulder) boulder_rows(basis, t);
+  if (basis.boulder) boulder_rows(basis, dimension, t);
   if (basis.debris) debris_rows(basis, t);
   return out;
 }

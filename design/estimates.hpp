@@ -25,7 +25,8 @@ struct Estimate {
 };
 
 // Every estimate of the scenario's kind (boulder, debris surge) for the basis, which design_basis_from_json validated.
-std::vector<Estimate> estimates(const DesignBasis& basis, double simulated_base_shear_N, double simulated_contact_N);
+// `dimension`: the model's (2 or 3), for the notes on how it represents the boulder.
+std::vector<Estimate> estimates(const DesignBasis& basis, double simulated_base_shear_N, double simulated_contact_N, int dimension = 2);
 
 // With a grid study (design["grid_study"]): each applicable estimate of a run gets the grid uncertainty of the simulated
 // peak it is compared with (simulated_gci, simulated_extrapolated_N and the ratio band ratio_low .. ratio_high for the

@@ -35,7 +35,8 @@ json Limits::to_json() const {
   return json{{"concrete", c},
               {"steel", {{"yield_strength_Pa", steel.yield_strength}, {"gamma_M0", steel.gamma_M0}}},
               {"foundation", {{"friction", foundation.friction}, {"cohesion_Pa", foundation.cohesion},
-                              {"bearing_capacity_Pa", foundation.bearing_capacity}, {"sliding_factor_usual", foundation.sliding_factor_usual},
+                              {"bearing_capacity_Pa", foundation.bearing_capacity}, {"uplift_factor", foundation.uplift_factor},
+                              {"sliding_factor_usual", foundation.sliding_factor_usual},
                               {"sliding_displacement_limit_m", foundation.sliding_displacement_limit},
                               {"rocking_safety_factor", foundation.rocking_safety_factor}}},
               {"members", member_material}, {"grid_study", {{"judge_on", grid_judge_on}}}, {"verdict", {{"level", verdict_level}}}};
@@ -88,7 +89,8 @@ Limits parse_limits(const json& j, const std::string& file) {
   if (j.contains("foundation")) {
     const json& f = j["foundation"];
     const std::string p = "/foundation";
-    r.keys(f, p, {"friction", "cohesion_Pa", "bearing_capacity_Pa", "sliding_factor_usual", "sliding_displacement_limit_m", "rocking_safety_factor"});
+    r.keys(f, p, {"friction", "cohesion_Pa", "bearing_capacity_Pa", "uplift_factor", "sliding_factor_usual", "sliding_displacement_limit_m",
+                  "rocking_safety_factor"});
     FoundationLimits& k = L.foundation;
     r.number(f, p, "friction", k.friction);
     if (f.contains("cohesion_Pa")) {  // may be 0
@@ -97,6 +99,11 @@ Limits parse_limits(const json& j, const std::string& file) {
       k.cohesion = v.get<double>();
     }
     r.number(f, p, "bearing_capacity_Pa", k.bearing_capacity);
+    if (f.contains("uplift_factor")) {  // may be 0 (fully drained)
+      const json& v = f["uplift_factor"];
+      if (!v.is_number() || !(v.get<double>() >= 0 && v.get<double>() <= 1)) r.fail(p + "/uplift_factor", &v, "a number in [0, 1]");
+      k.uplift_factor = v.get<double>();
+    }
     r.number(f, p, "sliding_factor_usual", k.sliding_factor_usual);
     r.number(f, p, "sliding_displacement_limit_m", k.sliding_displacement_limit);
     r.number(f, p, "rocking_safety_factor", k.rocking_safety_factor);

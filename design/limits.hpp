@@ -45,6 +45,9 @@ struct FoundationLimits {
   double friction = 0.6;             // tan(phi) of the base joint (concrete on gravel or rock; EM 1110-2-2100 eq. 3-1)
   double cohesion = 0.0;             // c of the base joint (Pa), none by default
   double bearing_capacity = 600e3;   // allowable bearing pressure (Pa): a dense gravel; set it from the site
+  // Uplift under water standing behind the dam: the fraction of the full linear uplift (gamma_w h_w at the heel, 0 at
+  // the toe) that acts on the base joint; drains reduce it (EM 1110-2-2100 3-3).
+  double uplift_factor = 1.0;
   // Sliding factor of the persistent situation (the usual load condition): EM 1110-2-2100 Table 3-3, normal structures,
   // ordinary site information.
   double sliding_factor_usual = 1.5;

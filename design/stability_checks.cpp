@@ -19,10 +19,12 @@ constexpr const char* kWho = "base joint";
 // foundation's force acts where Fy (x_p - x0) = M; the weight's moment about the toe Mr is the stabilising one, and
 // the rest overturns: Mo = Mr - Fy (x_toe - x_p) = Mr - Fy (x_toe - x0) + M. Round-off of the static state (a shear or
 // an overturning moment below 1e-9 of the weight's) is zero.
-BaseJointLoads joint_loads(double Fx, double Fy, double M, double x0, double x_toe, double Mr) {
+// Uplift U (full: gamma_w h_w at the heel falling to 0 at the toe, times the limits' factor) acts at 2B/3 from the toe:
+// it lightens the joint and overturns.
+BaseJointLoads joint_loads(double Fx, double Fy, double M, double x0, double x_toe, double Mr, double U, double B) {
   BaseJointLoads l;
-  l.N = Fy, l.H = -Fx, l.Mr = Mr;
-  l.Mo = Mr - Fy * (x_toe - x0) + M;
+  l.N = Fy - U, l.H = -Fx, l.Mr = Mr;
+  l.Mo = Mr - Fy * (x_toe - x0) + M + U * 2 * B / 3;
   if (std::abs(l.H) < 1e-9 * std::abs(Fy)) l.H = 0;
   if (std::abs(l.Mo) < 1e-9 * Mr) l.Mo = 0;
   return l;
@@ -60,7 +62,7 @@ Check stability_check(const char* level, const char* id, const char* title, doub
 
 void persistent_checks(const Sample& s, const RigidSection& sec, const FoundationLimits& L, std::vector<Check>& checks) {
   const double resist = L.friction * std::max(0.0, s.l.N) + L.cohesion * s.at.compressed_fraction * sec.base_m;
-  checks.push_back(stability_check("ultimate", "stability_sliding_persistent", "sliding, persistent situation (self-weight at rest)",
+  checks.push_back(stability_check("ultimate", "stability_sliding_persistent", "sliding, persistent situation (the loads at rest)",
                                    L.sliding_factor_usual * std::abs(s.l.H), resist, "N", 0.0, "FS_req |H| <= N tan(phi) + c A'",
                                    "EM 1110-2-2100 (2005) eq. 3-1, Table 3-3 (usual)"));
   checks.push_back(stability_check("serviceability", "stability_resultant_persistent", "resultant in the middle third, persistent situation", std::abs(s.at.eccentricity),
@@ -84,12 +86,13 @@ json stability(const Results& r, const FrameInfo& f, const DesignBasis& b, const
   const DamBasis& d = b.dam;
   const RigidSection sec = rigid_section(d.heel_x_m, d.toe_x_m, d.crest_upstream_x_m, d.crest_downstream_x_m, d.height_m, d.width_m, d.density_kg_m3);
   const double Mr = sec.weight_N * sec.centroid_from_toe_m;
+  const double U = is_set(d.water_height_m) ? L.uplift_factor * d.water_unit_weight_N_m3 * d.water_height_m * sec.base_m * d.width_m / 2 : 0.0;
   const BaseHistory h = base_history(r, f, where);
   const std::vector<double>&Fx = h.at("Fx_N"), &Fy = h.at("Fy_N"), &M = h.at("M_Nm");
   std::vector<Sample> s;
   std::vector<double> H(r.time.size()), R(r.time.size()), Mo(r.time.size()), Mres(r.time.size(), Mr);
   for (std::size_t k = 0; k < r.time.size(); ++k) {
-    s.push_back(sample(joint_loads(Fx[k], Fy[k], M[k], h.about[0], d.toe_x_m, Mr), sec, d.width_m, L));
+    s.push_back(sample(joint_loads(Fx[k], Fy[k], M[k], h.about[0], d.toe_x_m, Mr, U, sec.base_m), sec, d.width_m, L));
     H[k] = s[k].l.H, Mo[k] = s[k].l.Mo;
     R[k] = L.friction * std::max(0.0, s[k].l.N) + L.cohesion * s[k].at.compressed_fraction * sec.base_m * d.width_m;
   }
@@ -117,7 +120,8 @@ json stability(const Results& r, const FrameInfo& f, const DesignBasis& b, const
               {"dam", {{"mass_kg", sec.mass_kg}, {"weight_N", sec.weight_N}, {"base_m", sec.base_m}, {"width_m", d.width_m},
                        {"weight_lever_from_toe_m", sec.centroid_from_toe_m}, {"centroid_height_m", sec.centroid_height_m},
                        {"inertia_about_toe_kg_m2", sec.inertia_about_toe_kg_m2}, {"critical_angle_rad", alpha}}},
-              {"foundation", {{"friction", L.friction}, {"cohesion_Pa", L.cohesion}, {"bearing_capacity_Pa", L.bearing_capacity}}},
+              {"foundation", {{"friction", L.friction}, {"cohesion_Pa", L.cohesion}, {"bearing_capacity_Pa", L.bearing_capacity},
+                              {"uplift_factor", L.uplift_factor}, {"uplift_N", U}}},
               {"persistent", sample_json(s[0], r.time[0])},
               {"impact",
                {{"least_sliding_factor", sample_json(s[slide], r.time[slide])},

@@ -113,6 +113,13 @@ json scenario_rows(const RunData& r) {
   else
     row("column pipe", fmt("D %.3g m", dam.column_diameter_m) + fmt(", t %.3g m", dam.column_wall_thickness_m));
   row("dam material", fmt("E %.3g GPa", dam.youngs_modulus_Pa / 1e9) + fmt(", ν %.2f", dam.poisson_ratio) + fmt(", ρ %.0f kg/m³", dam.density_kg_m3));
+  if (is_set(dam.deposit_height_m))
+    row("deposit behind the dam", fmt("%.3g m", dam.deposit_height_m) + fmt(", %.3g kN/m³", dam.deposit_unit_weight_N_m3 / 1e3) +
+                                      fmt(", K %.2f: pressure on the face from t = 0 (the accidental combination's permanent part, γ = 1)",
+                                          dam.deposit_coefficient));
+  if (is_set(dam.water_height_m))
+    row("water behind the dam", fmt("%.3g m", dam.water_height_m) + fmt(", %.3g kN/m³", dam.water_unit_weight_N_m3 / 1e3) +
+                                    ": pressure on the face from t = 0, and its uplift on the base joint in the stability checks");
   if (const auto& k = basis->boulder) {
     row("boulder", fmt("%.4g kg", k->mass_kg) + fmt(" (sphere of %.3g m)", k->diameter_m) + fmt(" at %.3g m/s", k->speed_m_s) +
                        fmt(", centre %.3g m above the base at impact", k->impact_height_m));
@@ -160,7 +167,7 @@ json materials(const RunData& r) {
       other += (other.empty() ? "" : ", ") + k + " " + (it.value().is_number() ? fmt("%.4g", it.value().get<double>()) : it.value().dump());
     }
     out.push_back({{"name", m.value("name", "")}, {"model", m.value("model", "")}, {"density", fmt("%.0f", m.value("density", 0.0))},
-                   {"E", m.contains("youngs_modulus") ? fmt("%.4g", m["youngs_modulus"].get<double>() / 1e6) : "—"},
+                   {"E", m.contains("youngs_modulus") ? fmt(m["youngs_modulus"].get<double>() >= 1e10 ? "%.0f" : "%.4g", m["youngs_modulus"].get<double>() / 1e6) : "—"},
                    {"nu", m.contains("poisson_ratio") ? fmt("%.3g", m["poisson_ratio"].get<double>()) : "—"}, {"other", other}});
   }
   return out;
@@ -412,7 +419,8 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
     for (const auto& q : design_doc["comparison"]["quantities"]) {
       const double red = num(q, {"reduction_percent"});
       cmp.push_back({{"title", q["title"]}, {"with", eng(q["with_buffer"], q["unit"])}, {"without", eng(q["without_buffer"], q["unit"])},
-                     {"reduction", std::isnan(red) ? "—" : fmt("%.0f %%", red)}, {"sign_class", red >= 0 ? "reduced" : "increased"}});
+                     {"reduction", std::isnan(red) ? "—" : red < -100 ? fmt("%.3g× larger", 1 - red / 100) : fmt("%.0f %%", red)},
+                     {"sign_class", red >= 0 ? "reduced" : "increased"}});
     }
     d["comparison_note"] = design_doc["comparison"].value("note", "");
   }
@@ -505,9 +513,15 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
          const double e = series_max(r.results, "energy/balance_error", true), ref = reference_energy(r.results);
          return std::isnan(e) ? std::string("—") : fmt("%.3g J", e) + fmt(" (%.1f %%)", 100 * e / ref);
        }},
-      {"energy dissipated by frame damping", [](const RunData& r) {
+      {"energy dissipated by the members' structural damping", [](const RunData& r) {
          const Series* s = r.results.find("energy/frame_damping");
-         return s && !s->data.empty() ? fmt("%.4g J", s->data.back()) : std::string("—");
+         if (!s || s->data.empty()) return std::string("—");
+         std::string t = fmt("%.4g J", s->data.back());
+         if (const json* d = r.design.contains("damping") && r.design["damping"].is_object() ? &r.design["damping"] : nullptr)
+           t += fmt(" (%.1f %% of the impact energy; ", 100 * (*d)["share"].get<double>()) +
+                fmt("%.1f %% by the governing member demand", 100 * (*d)["share_at_governing"].get<double>()) +
+                ((*d)["flagged"].get<bool>() ? ": ABOVE 10 %, the peaks rest on the damping model)" : ")");
+         return t;
        }},
       {"largest Courant number used", [](const RunData& r) {
          const auto& n = r.results.info.numbers;

@@ -171,6 +171,14 @@ struct NodalMassConfig {
   double mass = 0, rotary_inertia = 0;               // kg, kg m^2
 };
 
+// A permanent pressure on a plane member (earth or water standing behind a dam), held from t = 0 like the self-weight:
+// at height y below the surface, gradient (surface - y) per unit height along direction (N/m per m of height).
+struct PressureLoadConfig {
+  std::string member;
+  DVec direction;
+  double surface = 0, gradient = 0;  // m (height of the free surface), N/m^2 per m (unit weight x coefficient x width)
+};
+
 struct StructureConfig {
   bool present = false;
   BeamTheoryKind theory = BeamTheoryKind::euler_bernoulli;
@@ -185,6 +193,7 @@ struct StructureConfig {
   std::vector<MemberConfig> members;
   std::vector<SupportConfig> supports;
   std::vector<NodalMassConfig> masses;
+  std::vector<PressureLoadConfig> pressure_loads;
 };
 
 // --- Members as MPM velocity boundaries (Yang 2016; Lin & Yang 2024) ---------------------------

@@ -433,6 +433,15 @@ void read_nodal_mass(Obj& o, NodalMassConfig& m) {
   o.number("rotary_inertia", m.rotary_inertia, Spec{.unit = "kg m^2", .doc = "rotary inertia added to the rotation", .min = 0});
 }
 
+void read_pressure_load(Obj& o, PressureLoadConfig& l) {
+  o.string("member", l.member, Spec{.doc = "the member loaded (plane structures)", .required = true});
+  o.vector("direction", l.direction, Spec{.doc = "direction of the pressure's force (normalised), e.g. [1, 0] downstream", .required = true});
+  o.number("surface", l.surface, Spec{.unit = "m", .doc = "height of the free surface (y); the pressure is zero above it", .required = true});
+  o.number("gradient", l.gradient, Spec{.unit = "N/m^3", .doc = "increase of the load per unit height with depth below the surface: "
+                                                                    "unit weight x pressure coefficient x loaded width", .min = 0,
+                                        .min_open = true, .required = true});
+}
+
 void read_structure(Obj o, StructureConfig& st) {
   if (!o.present()) return;
   st.present = true;
@@ -477,6 +486,10 @@ void read_structure(Obj o, StructureConfig& st) {
                         read_member);
   o.array<SupportConfig>("supports", st.supports, Spec{.doc = "supports (at least 1, at most one per node)", .required = true}, read_support);
   o.array<NodalMassConfig>("masses", st.masses, Spec{.doc = "point masses and rotary inertias added at nodes"}, read_nodal_mass);
+  o.array<PressureLoadConfig>("pressure_loads", st.pressure_loads,
+                              Spec{.doc = "permanent linearly increasing pressures on members (earth and water behind a dam), held from "
+                                          "t = 0 with the self-weight (the frame starts in equilibrium under both); plane structures"},
+                              read_pressure_load);
   o.finish();
 }
 
@@ -782,6 +795,14 @@ std::set<std::string> check_structure(const Scenario& s, const std::string& file
                                                                          "supports nothing)");
   }
   for (std::size_t i = 0; i < st.masses.size(); ++i) node_ref(st.masses[i].node, base + "/masses/" + std::to_string(i) + "/node");
+  for (std::size_t i = 0; i < st.pressure_loads.size(); ++i) {
+    const PressureLoadConfig& l = st.pressure_loads[i];
+    const std::string p = base + "/pressure_loads/" + std::to_string(i);
+    if (s.analysis.dimension != 2) throw InputError(file, p, "", "no pressure loads in 3D (plane structures only)");
+    if (!members.count(l.member)) throw InputError(file, p + "/member", quoted(l.member), "the name of a member");
+    if (l.direction.size() != 2 || !(std::hypot(l.direction[0], l.direction[1]) > 0))
+      throw InputError(file, p + "/direction", value_text(l.direction), "a non-zero direction [x, y]");
+  }
   check_frame_geometry(st, file);
   return members;
 }

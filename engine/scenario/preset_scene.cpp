@@ -239,6 +239,9 @@ DesignBasis Builder::design_basis() const {
   if (concrete) {
     dam.crest_thickness_m = d_.crest, dam.base_thickness_m = d_.base_thickness;
     dam.heel_x_m = xu(0), dam.toe_x_m = xd(0), dam.crest_upstream_x_m = xu(d_.height), dam.crest_downstream_x_m = xd(d_.height);
+    if (d_.deposit_height > 0)
+      dam.deposit_height_m = d_.deposit_height, dam.deposit_unit_weight_N_m3 = d_.deposit_unit_weight, dam.deposit_coefficient = d_.deposit_coefficient;
+    if (d_.water_height > 0) dam.water_height_m = d_.water_height, dam.water_unit_weight_N_m3 = d_.water_unit_weight;
   } else {
     dam.column_diameter_m = d_.column_d, dam.column_wall_thickness_m = d_.column_t;
   }
@@ -293,6 +296,8 @@ void Builder::add_dam() {
     // applies to the members model (Rayleigh on the frame, which Newmark integrates implicitly).
     materials_.push_back(m);
     if (members_) return add_concrete_members();
+    if (d_.deposit_height > 0 || d_.water_height > 0)
+      fail("/dam/model", json("continuum"), "the members model with a deposit or water behind the dam (their pressures load the members)");
     json poly = json::array({{xu(0), 0.0}, {xd(0), 0.0}, {xd(d_.height), d_.height}, {xu(d_.height), d_.height}});
     bodies_.push_back(json{{"name", "dam"}, {"material", "concrete"}, {"shape", {{"type", "polygon"}, {"vertices", poly}}}});
     probes_.push_back(json{{"name", "dam"}, {"type", "body"}, {"body", "dam"}, {"quantities", {"displacement", "velocity"}}});
@@ -318,6 +323,17 @@ void Builder::add_concrete_members() {
                                 {"section", {{"type", "tapered_rectangle"}, {"width", d_.width}, {"depth_start", d_.base_thickness * c},
                                              {"depth_end", d_.crest * c}}}}});
   st["supports"] = json::array({{{"node", "base"}, {"type", d_.base}}});
+  // What stands behind the dam: pressures on the upstream face (along the flow), over the face width.
+  json pl = json::array();
+  if (d_.deposit_height > 0)
+    pl.push_back({{"member", "dam"}, {"direction", at(1.0, 0.0)}, {"surface", d_.deposit_height},
+                  {"gradient", d_.deposit_coefficient * d_.deposit_unit_weight * d_.width}});
+  if (d_.water_height > 0)
+    pl.push_back({{"member", "dam"}, {"direction", at(1.0, 0.0)}, {"surface", d_.water_height}, {"gradient", d_.water_unit_weight * d_.width}});
+  if (!pl.empty()) {
+    if (dim_ == 3) fail("/dam/deposit", json(), "no deposit or water behind the dam in 3D (plane runs only)");
+    st["pressure_loads"] = pl;
+  }
   damp(st, d_.concrete, 0.5 * (d_.base_thickness + d_.crest) * c / std::sqrt(12.0));
   out_["structure"] = st;
   box_.add(xu(0), 0), box_.add(xd(0), H), box_.add(xu(H), H);

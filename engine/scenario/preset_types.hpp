@@ -19,6 +19,9 @@ struct DamPreset {
   double row_spacing = 0, column_d = 0, column_t = 0, beam_d = 0, beam_t = 0;
   bool bracing = true;
   int columns = 0;                                               // steel_open in 3D: columns per row across (0: 3)
+  // What stands behind a concrete gravity dam when the impact arrives (permanent pressures on the upstream face).
+  double deposit_height = 0, deposit_unit_weight = 18000, deposit_coefficient = 0.5;  // m, N/m^3, K
+  double water_height = 0, water_unit_weight = 9810;                                  // m, N/m^3
 };
 
 struct BoulderPreset {

@@ -19,7 +19,7 @@ using schema::Spec;
 
 namespace {
 
-const char* const kPresetKeys[] = {"dam", "boulder", "debris_surge", "tyre_buffer", "compare"};
+const char* const kPresetKeys[] = {"dam", "boulder", "debris_surge", "tyre_buffer", "compare", "accept_unusual"};
 
 using schema::nonneg;
 using schema::positive;
@@ -57,7 +57,7 @@ json material_object(Obj& o, const char* key, const json& defaults, const std::s
 // ranges are wide (any real concrete, steel, rock or tyre stack lies inside); a lab-scale or scaled model can use the
 // low-level scenario, which has no such check.
 void plausible(Obj& o, const std::string& key, const json& m, const char* what, double e_lo, double e_hi, double rho_lo, double rho_hi) {
-  if (o.documenting()) return;
+  if (o.documenting() || o.context().accept_unusual) return;
   const double E = m.value("youngs_modulus", 0.0), rho = m.value("density", 0.0);
   char buf[256];
   if (m.contains("youngs_modulus") && !(E >= e_lo && E <= e_hi)) {
@@ -68,6 +68,38 @@ void plausible(Obj& o, const std::string& key, const json& m, const char* what, 
     std::snprintf(buf, sizeof buf, "a density in kg/m^3 between %.0f and %.0f for %s", rho_lo, rho_hi, what);
     o.fail(key.empty() ? "density" : key + "/density", &m.at("density"), buf);
   }
+}
+
+// A unit weight in N/m^3 (a value in kN/m^3 is the usual slip: refused with the conversion).
+void unit_weight(Obj& o, const char* key, double& v, const char* what, double lo, double hi) {
+  o.number(key, v, Spec{.unit = "N/m^3", .doc = what});
+  if (o.documenting() || o.context().accept_unusual || (v >= lo && v <= hi)) return;
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "a unit weight in N/m^3 between %.0f and %.0f (%g kN/m^3 is %g N/m^3)", lo, hi, v, v * 1e3);
+  o.fail(key, o.given(key), buf);
+}
+
+// What stands behind the dam when the impact arrives: a deposit and water, permanent pressures on the upstream face
+// from t = 0 (the accidental combination's permanent part; docs/presets.md).
+void read_standing_loads(Obj& o, DamPreset& d) {
+  Obj dep = o.object("deposit", "sediment or debris deposited behind the dam when the impact arrives: an earth pressure K gamma (h - y) on "
+                                "the upstream face, held from t = 0 with the self-weight; absent: none");
+  if (dep.present()) {
+    dep.number("height", d.deposit_height, positive("m", "height of the deposit's surface above the base", true));
+    unit_weight(dep, "unit_weight", d.deposit_unit_weight, "unit weight gamma of the deposit (submerged: the buoyant one)", 5e3, 2.6e4);
+    dep.number("pressure_coefficient", d.deposit_coefficient,
+               Spec{.doc = "earth-pressure coefficient K (at rest 1 - sin phi = 0.5 at phi = 30 deg; active 0.33)", .min = 0, .max = 1});
+    dep.finish();
+  }
+  Obj w = o.object("water", "water standing behind the dam when the impact arrives: a hydrostatic pressure gamma_w (h - y) on the upstream "
+                            "face from t = 0, and its uplift on the base joint in the stability checks; absent: none");
+  if (w.present()) {
+    w.number("height", d.water_height, positive("m", "height of the water surface above the base", true));
+    unit_weight(w, "unit_weight", d.water_unit_weight, "unit weight (muddy water up to about 12 kN/m^3)", 9e3, 1.4e4);
+    w.finish();
+  }
+  if (!o.documenting() && d.deposit_height > d.height) o.fail("deposit/height", nullptr, "a deposit no higher than the dam (" + std::to_string(d.height) + " m)");
+  if (!o.documenting() && d.water_height > d.height) o.fail("water/height", nullptr, "water no higher than the dam crest (" + std::to_string(d.height) + " m)");
 }
 
 void read_dam(Obj o, DamPreset& d) {
@@ -107,6 +139,7 @@ void read_dam(Obj o, DamPreset& d) {
     plausible(o, "concrete", d.concrete, "concrete", 5e9, 1e11, 1500, 3500);
     if (!o.documenting() && d.base_thickness < d.crest)
       o.fail("base_thickness", nullptr, "a base thickness >= crest_thickness = " + std::to_string(d.crest) + " m");
+    read_standing_loads(o, d);
   }
   o.end_when();
   if (o.when("type", d.type, "steel_open")) {
@@ -169,6 +202,17 @@ void read_boulder(Obj o, BoulderPreset& b) {
   o.finish();
   if (o.documenting()) return;
   if ((b.diameter > 0) == (b.mass > 0)) o.fail("diameter", nullptr, "either diameter or mass (exactly one of them)");
+  if (!o.context().accept_unusual) {  // a boulder that check dams are designed for, in SI (accept_unusual: a model scale)
+    char buf[200];
+    if (b.mass > 0 && !(b.mass >= 50 && b.mass <= 5e5)) {
+      std::snprintf(buf, sizeof buf, "a boulder mass in kg between 50 and 500000 (%g t is %g kg; a weight of %g kN is a mass of %.0f kg)",
+                    b.mass, b.mass * 1e3, b.mass, b.mass * 1e3 / 9.81);
+      o.fail("mass", o.given("mass"), buf);
+    }
+    if (b.diameter > 0 && !(b.diameter >= 0.2 && b.diameter <= 10)) {
+      o.fail("diameter", o.given("diameter"), "a boulder diameter in m between 0.2 and 10 (cm or mm given?)");
+    }
+  }
   if (b.velocity.empty() == !(b.release_height > 0)) o.fail("velocity", nullptr, "either velocity or release_height (exactly one of them)");
 }
 
@@ -207,6 +251,15 @@ void read_debris(Obj o, DebrisPreset& d) {
   d.material = material_object(o, "material", json{{"model", "drucker_prager"}, {"density", 2000}, {"youngs_modulus", 20e6}, {"poisson_ratio", 0.3},
                                                    {"cohesion", 0}, {"friction_angle", 30}},
                                "debris law: drucker_prager (granular, default), mu_i (dense granular flow) or a slurry (bingham, newtonian)", "debris");
+  if (!o.documenting() && !o.context().accept_unusual && d.material.contains("density")) {
+    const double rho = d.material.value("density", 0.0);
+    if (!(rho >= 900 && rho <= 2700)) {
+      char buf[200];
+      std::snprintf(buf, sizeof buf, "a density in kg/m^3 between 900 and 2700 for debris (a unit weight of %g kN/m^3 is a density of %.0f kg/m^3)",
+                    rho, rho * 1e3 / 9.81);
+      o.fail("material/density", &d.material.at("density"), buf);
+    }
+  }
   o.finish();
 }
 
@@ -272,6 +325,9 @@ void document_presets(Obj& o) {
   std::string c;
   o.string("compare", c, Spec{.doc = "with_and_without_buffer: run the scenario with and without its tyre_buffer (OUT/with_buffer, "
                                      "OUT/without_buffer) | none"});
+  bool unusual = false;
+  o.boolean("accept_unusual", unusual, Spec{.doc = "accept preset values outside their plausible ranges (materials, boulder, debris and "
+                                                    "deposit unit weights: docs/presets.md), for scaled or laboratory models"});
 }
 
 json expand_presets(const json& j, const std::string& file, const std::string& variant) {
@@ -302,6 +358,10 @@ json expand_presets(const json& j, const std::string& file, const std::string& v
   if (p.dim == 3 && j.contains("dam") && j["dam"].is_object() && j["dam"].value("model", std::string("members")) != "members")
     throw InputError(file, "/dam/model", schema::short_dump(j["dam"]["model"]), "members with analysis.dimension 3 (the continuum dam is 2D for now)");
   schema::Context ctx{.file = file, .dim = p.dim};
+  if (j.contains("accept_unusual")) {
+    if (!j["accept_unusual"].is_boolean()) throw InputError(file, "/accept_unusual", schema::short_dump(j["accept_unusual"]), "true or false");
+    ctx.accept_unusual = j["accept_unusual"].get<bool>();
+  }
   Obj root(&j, "", ctx);
   if (!j.contains("dam")) throw InputError(file, "/dam", "", "a dam preset with the other presets (boulder, debris_surge and tyre_buffer act on it)");
   read_dam(root.object("dam", ""), p.dam);

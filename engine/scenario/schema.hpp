@@ -28,6 +28,7 @@ struct Context {
   std::string file;            // for messages
   int dim = 2;                 // vector length
   std::vector<Row>* doc = nullptr;  // document mode when set
+  bool accept_unusual = false;  // presets: values outside the plausible ranges accepted (scaled or laboratory models)
 };
 
 struct Spec {
@@ -86,6 +87,8 @@ class Obj {
   Context& context() { return ctx_; }
   bool documenting() const { return ctx_.doc != nullptr; }
   [[noreturn]] void fail(const std::string& key, const json* value, const std::string& expected) const;
+  // The value the user wrote under key (nullptr when absent): for messages that quote it as written.
+  const json* given(const char* key) const { return j_ && j_->is_object() && j_->contains(key) ? &j_->at(key) : nullptr; }
 
  private:
   const json* get(const char* key, const Spec& s, const char* type, const std::string& def, const std::string& constraint);

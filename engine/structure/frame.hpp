@@ -13,6 +13,7 @@
 #include <Eigen/Dense>
 #include <memory>
 #include <string>
+#include <array>
 #include <vector>
 
 #include "engine/common/state_io.hpp"
@@ -66,6 +67,10 @@ struct FrameModel {
   MassMatrix mass = MassMatrix::lumped;
   FrameIntegrator integrator = FrameIntegrator::explicit_euler;
   Vec2 gravity = Vec2::Zero();            // m/s^2 acting on the members' own mass (zero: no self-weight)
+  // Permanent loads held from t = 0 like the self-weight (earth and water pressure on a dam's face): per element a load
+  // varying linearly along it, in global components per metre of its initial length at its start and end (N/m);
+  // empty: none.
+  std::vector<std::array<Vec2, 2>> permanent;
   double rayleigh_mass = 0.0;             // alpha (1/s): C = alpha M + beta K
   double rayleigh_stiffness = 0.0;        // beta (s)
   double hht_alpha = 0.0;                 // Newmark integrator: HHT alpha in [-1/3, 0]; 0 = average acceleration

@@ -27,7 +27,14 @@ std::string FrameSystem::dof_name(int dof) const {
 
 void FrameSystem::fail(const std::string& what) const { dmi::fail(what); }
 
-void FrameSystem::validate() const { validate_frame_model(model_, [this](const std::string& w) { fail(w); }); }
+void FrameSystem::validate() const {
+  validate_frame_model(model_, [this](const std::string& w) { fail(w); });
+  const std::size_t ne = model_.elements.size();
+  if (!model_.permanent.empty() && model_.permanent.size() != ne)
+    fail("permanent loads: " + std::to_string(model_.permanent.size()) + " given for " + std::to_string(ne) + " elements");
+  for (std::size_t e = 0; e < model_.permanent.size(); ++e)
+    if (!model_.permanent[e][0].allFinite() || !model_.permanent[e][1].allFinite()) fail("element " + std::to_string(e) + ": non-finite permanent load");
+}
 
 void FrameSystem::assemble() {
   const int n = 3 * static_cast<int>(model_.nodes.size());
@@ -98,13 +105,18 @@ ElementLoad FrameSystem::element_load(int e, const Vec2& w_local, const Eigen::V
   ElementLoad p = elements_[e].self_weight(Vec2(g.dot(e1), e1.x() * g.y() - e1.y() * g.x()));
   p.a += w_local;
   p.b += w_local;
+  if (!model_.permanent.empty()) {
+    const auto local = [&](const Vec2& q) { return Vec2(q.dot(e1), e1.x() * q.y() - e1.y() * q.x()); };
+    p.a += local(model_.permanent[e][0]);
+    p.b += local(model_.permanent[e][1]);
+  }
   return p;
 }
 
 void FrameSystem::add_element_loads(const std::vector<Vec2>& w, const Eigen::VectorXd& d, Eigen::VectorXd& f) const {
   const bool gravity = model_.gravity.squaredNorm() > 0;
   for (int e = 0; e < nelements(); ++e) {
-    if (!gravity && w[e].squaredNorm() == 0) continue;
+    if (!gravity && w[e].squaredNorm() == 0 && model_.permanent.empty()) continue;
     const ElementLoad p = element_load(e, w[e], d);
     const Vec6 fg = global_to_local(axis(e, d)).transpose() * elements_[e].equivalent_loads(p);
     f.segment<3>(3 * model_.elements[e].i) += fg.head<3>();

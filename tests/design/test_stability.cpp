@@ -7,6 +7,7 @@
 
 #include "design/stability.hpp"
 #include "design/stability_checks.hpp"
+#include "design/damping_share.hpp"
 
 using namespace dmi;
 using namespace dmi::design;
@@ -160,4 +161,49 @@ TEST(Stability, TrialDamThroughTheDesignLayer) {
   EXPECT_NEAR(checks[1].utilisation, 0.742857, 1e-5);
   EXPECT_NEAR(checks[3].utilisation, 3.250856e-3 / 0.05, 1e-6);
   EXPECT_NEAR(checks[4].demand, 1.5 * 1.811011e-3, 1e-8);
+}
+
+// Water 3 m behind the trial dam, full uplift: U = 9 810 x 3 x 3.5 x 3 / 2 = 154 507.5 N at 2B/3 = 2.333333 m from the
+// toe: at rest N = 1 059 480 - 154 507.5 = 904 972.5 N and x_r = (2 313 198 - 154 507.5 x 2.333333) / 904 972.5
+// = 2.157730 m; half the uplift with drains (uplift_factor 0.5).
+TEST(Stability, UpliftUnderTheWaterBehindTheDam) {
+  const double W = 1059480.0, x0 = 1.75, xg = 3.5 - 2.1833333333;
+  Results r;
+  Series s{"supports/base/reaction", "N", {"Fx", "Fy", "M"}, {}};
+  for (double t : {0.0, 0.1}) r.time.push_back(t), s.data.insert(s.data.end(), {0.0, W, W * (xg - x0)});
+  r.series.push_back(s);
+  FrameInfo f;
+  f.dim = 2, f.nodes = {{x0, 0, 0}}, f.supports = {FrameInfo::Support{"base", "supports/base/reaction", 0}};
+  DesignBasis b;
+  b.dam.height_m = 6, b.dam.width_m = 3, b.dam.density_kg_m3 = 2400;
+  b.dam.heel_x_m = 0, b.dam.toe_x_m = 3.5, b.dam.crest_upstream_x_m = 0, b.dam.crest_downstream_x_m = 1.5;
+  b.dam.water_height_m = 3, b.dam.water_unit_weight_N_m3 = 9810;
+  FoundationLimits L;
+  std::vector<Check> checks;
+  nlohmann::json j = stability(r, f, b, L, checks, "r.h5");
+  EXPECT_NEAR(j["foundation"]["uplift_N"].get<double>(), 154507.5, 1e-6);
+  EXPECT_NEAR(j["persistent"]["N_N"].get<double>(), 904972.5, 1e-3);
+  EXPECT_NEAR(j["persistent"]["resultant_from_toe_m"].get<double>(), 2.157730, 1e-5);
+  L.uplift_factor = 0.5;
+  checks.clear();
+  j = stability(r, f, b, L, checks, "r.h5");
+  EXPECT_NEAR(j["persistent"]["N_N"].get<double>(), W - 77253.75, 1e-3);
+}
+
+// The damping's share of the impact energy by hand: a 1 t boulder at 5 m/s brings 12.5 kJ; 1.25 kJ of damping work by
+// the governing instant is 10 % (not above: not flagged), 2.5 kJ at the end 20 %.
+TEST(Stability, DampingShareOfTheImpactEnergy) {
+  Results r;
+  r.time = {0.0, 0.01, 0.02, 0.05};
+  r.series.push_back(Series{"energy/frame_damping", "J", {"value"}, {0.0, 500.0, 1250.0, 2500.0}});
+  DesignBasis b;
+  BoulderBasis k;
+  k.mass_kg = 1000, k.speed_m_s = 5;
+  b.boulder = k;
+  nlohmann::json j = damping_share(r, b, 0.02);
+  EXPECT_NEAR(j["impact_energy_J"].get<double>(), 12500.0, 1e-9);
+  EXPECT_NEAR(j["share_at_governing"].get<double>(), 0.1, 1e-12);
+  EXPECT_NEAR(j["share"].get<double>(), 0.2, 1e-12);
+  EXPECT_FALSE(j["flagged"].get<bool>());
+  EXPECT_TRUE(damping_share(r, b, 0.05)["flagged"].get<bool>());
 }

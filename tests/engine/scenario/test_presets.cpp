@@ -376,5 +376,42 @@ TEST(ShapeGeometry, PolygonMembershipAreaAndCrossing) {
   EXPECT_TRUE(shape_contains(ring, wall, 2));
 }
 
+// A deposit and water behind the dam: pressure loads on the dam member along the flow, K gamma w and gamma_w w per metre
+// of depth (0.5 x 18 000 x 2 = 18 000 and 9 810 x 2 = 19 620 N/m^2 per m for the 2 m face), recorded in the design
+// basis; a unit weight in kN/m^3 is refused with the conversion.
+TEST(Presets, DepositAndWaterBehindTheDamAreItsPressureLoads) {
+  json j = concrete_boulder();
+  j["dam"]["deposit"] = json{{"height", 2.5}, {"unit_weight", 18000}, {"pressure_coefficient", 0.5}};
+  j["dam"]["water"] = json{{"height", 3.0}};
+  const json low = expand_presets(j, "t.json", "with_buffer");
+  const json& pl = low["structure"]["pressure_loads"];
+  ASSERT_EQ(pl.size(), 2u);
+  EXPECT_EQ(pl[0]["member"], "dam");
+  EXPECT_DOUBLE_EQ(pl[0]["surface"].get<double>(), 2.5);
+  EXPECT_DOUBLE_EQ(pl[0]["gradient"].get<double>(), 0.5 * 18000 * j["dam"]["width"].get<double>());
+  EXPECT_DOUBLE_EQ(pl[1]["gradient"].get<double>(), 9810 * j["dam"]["width"].get<double>());
+  EXPECT_DOUBLE_EQ(low["design_basis"]["dam"]["water_height_m"].get<double>(), 3.0);
+  j["dam"]["deposit"]["unit_weight"] = 18;
+  try {
+    expand_presets(j, "t.json", "with_buffer");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/dam/deposit/unit_weight = 18: expected a unit weight in N/m^3 between 5000 and 26000 (18 kN/m^3 is 18000 N/m^3)"),
+              std::string::npos) << e.what();
+  }
+  // A boulder mass in tonnes or a weight in kN is refused; an expert's scaled model goes on with accept_unusual.
+  json m = concrete_boulder();
+  m["boulder"]["mass"] = 3;
+  try {
+    expand_presets(m, "t.json", "with_buffer");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/boulder/mass = 3: expected a boulder mass in kg between 50 and 500000 (3 t is 3000 kg"), std::string::npos)
+        << e.what();
+  }
+  m["accept_unusual"] = true;
+  EXPECT_NO_THROW(expand_presets(m, "t.json", "with_buffer"));
+}
+
 }  // namespace
 }  // namespace dmi
