@@ -69,6 +69,12 @@ void run_summary(std::ostringstream& o, const json& r) {
       std::snprintf(line, sizeof line, "  estimate %-41s %12s  (%s)\n", e["title"].get<std::string>().c_str(), "n/a", e["note"].get<std::string>().c_str());
     o << line;
   }
+  if (r.contains("volume_health"))
+    for (const auto& v : r["volume_health"])
+      if (v["flagged"].get<bool>())
+        o << "  warning: body probe '" << v["probe"].get<std::string>() << "' fills " << eng(100 * (v["largest_ratio"].get<double>() - 1), "")
+          << " % more than its particles did when created (at " << eng(v["largest_time_s"], "s")
+          << "): a non-dilatant body should keep its volume; its loads are suspect (docs/design-checks.md, numerical health)\n";
   if (r["checks"].empty()) {
     o << "  no checks (no members and no solid check in this run)\n";
     return;

@@ -11,6 +11,7 @@
 
 #include "design/damping_share.hpp"
 #include "design/estimates.hpp"
+#include "design/volume_health.hpp"
 #include "engine/scenario/design_basis_json.hpp"
 #include "design/phases.hpp"
 #include "design/local_damage_checks.hpp"
@@ -285,6 +286,7 @@ json design_run(const Results& r, const Limits& L, const std::string& where) {
   for (const auto& k : checks)
     if (k.s_m >= 0 && k.time_s >= 0 && k.utilisation > u_member) u_member = k.utilisation, t_member = k.time_s;
   run["damping"] = basis ? damping_share(r, *basis, t_member) : json(nullptr);
+  run["volume_health"] = volume_health(r);
   return run;
 }
 

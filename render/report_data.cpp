@@ -523,6 +523,14 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
                 ((*d)["flagged"].get<bool>() ? ": ABOVE 10 %, the peaks rest on the damping model)" : ")");
          return t;
        }},
+      {"bodies' volume (largest / as created; flagged above 1.05)", [](const RunData& r) {
+         std::string t;
+         if (r.design.contains("volume_health"))
+           for (const auto& v : r.design["volume_health"])
+             t += (t.empty() ? "" : "; ") + v["probe"].get<std::string>() + fmt(" %.3f", v["largest_ratio"].get<double>()) +
+                  (v["flagged"].get<bool>() ? " (GAINED VOLUME: a non-dilatant body should keep it; its loads are suspect)" : "");
+         return t.empty() ? std::string("—") : t;
+       }},
       {"largest Courant number used", [](const RunData& r) {
          const auto& n = r.results.info.numbers;
          return n.count("courant_max") ? fmt("%.3f", n.at("courant_max")) : std::string("—");

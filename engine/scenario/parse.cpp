@@ -344,7 +344,7 @@ void read_probe(Obj& o, ProbeConfig& p) {
                                         : body_probe_quantities();
   o.strings("quantities", p.quantities, allowed,
             Spec{.doc = "quantities to record (default: all); particle: displacement position velocity stress von_mises; "
-                        "body: position displacement velocity kinetic_energy; member: displacement (centre line, x y), "
+                        "body: position displacement velocity kinetic_energy volume (its particles' volumes summed, now and as created); member: displacement (centre line, x y), "
                         "top_displacement (the point on the top surface, the +e2 side, e2 = the start-to-end axis e1 turned "
                         "90 degrees counter-clockwise), rotation, section_forces (N V M), fibre_stress (sigma_top sigma_bottom "
                         "tau_max von_mises_top von_mises_bottom von_mises_max)"});
@@ -1027,7 +1027,7 @@ const std::vector<std::string>& particle_probe_quantities() {
   return q;
 }
 const std::vector<std::string>& body_probe_quantities() {
-  static const std::vector<std::string> q = {"position", "displacement", "velocity", "kinetic_energy"};
+  static const std::vector<std::string> q = {"position", "displacement", "velocity", "kinetic_energy", "volume"};
   return q;
 }
 const std::vector<std::string>& member_probe_quantities() {

@@ -616,7 +616,7 @@ void Builder::add_inflow() {
   const double dist = section_distance(), xs = x - dist * c, zone = 3 * h_;
   bodies_.push_back(json{{"name", "debris"}, {"material", "debris"},
                          {"inflow", {{"point", {clean(xs), clean(bed(xs))}}, {"direction", {clean(c), clean(-s)}}, {"hydrograph", hydrograph_json(f.hydrograph)}}}});
-  probes_.push_back(json{{"name", "debris"}, {"type", "body"}, {"body", "debris"}, {"quantities", {"velocity", "kinetic_energy", "position"}}});
+  probes_.push_back(json{{"name", "debris"}, {"type", "body"}, {"body", "debris"}, {"quantities", {"velocity", "kinetic_energy", "position", "volume"}}});
   const double xz = xs - zone * c;
   box_.add(xz, bed(xz)), box_.add(xz + f.depth * s, bed(xz) + f.depth * c), box_.add(xs + f.depth * s, bed(xs) + f.depth * c);
   end_time_ = std::max(end_time_, f.hydrograph.end() + dist / (0.5 * f.velocity) + 0.5);
@@ -638,7 +638,7 @@ void Builder::add_debris() {
   if (lf < f.length) poly.push_back({xb, bed(xb) + height});
   const double vx = f.velocity * c, vy = -f.velocity * std::sin(slope_);
   bodies_.push_back(json{{"name", "debris"}, {"material", "debris"}, {"shape", {{"type", "polygon"}, {"vertices", poly}}}, {"velocity", {vx, vy}}});
-  probes_.push_back(json{{"name", "debris"}, {"type", "body"}, {"body", "debris"}, {"quantities", {"velocity", "kinetic_energy", "position"}}});
+  probes_.push_back(json{{"name", "debris"}, {"type", "body"}, {"body", "debris"}, {"quantities", {"velocity", "kinetic_energy", "position", "volume"}}});
   box_.add(xb, bed(x)), box_.add(x, bed(xb) + height);
   // End: the whole surge has arrived, plus 0.5 s of pile-up.
   end_time_ = std::max(end_time_, (gap + f.length) / f.velocity + 0.5);

@@ -71,6 +71,7 @@ template <int D> Recorder<D>::Recorder(const Solver<D>& solver, const Scenario& 
       if (q == "stress") add(base + q, "Pa", D == 2 ? std::vector<std::string>{"xx", "yy", "zz", "xy"} : std::vector<std::string>{"xx", "yy", "zz", "xy", "yz", "xz"});
       else if (q == "von_mises") add(base + q, "Pa", {"value"});
       else if (q == "kinetic_energy") add(base + q, "J", {"value"});
+      else if (q == "volume") add(base + q, "m^3", {"current", "initial"});
       else add(base + q, q == "velocity" ? "m/s" : "m", axes<D>());
     }
     probes_.push_back(p);
@@ -145,11 +146,12 @@ template <int D> void Recorder<D>::sample(const Solver<D>& solver, double dt) {
       continue;
     }
     const Body& b = sc.bodies[p.body];
-    double m = 0, ke = 0;
+    double m = 0, ke = 0, vol = 0, vol0 = 0;
     Vec<D> mx = Vec<D>::Zero(), mu = Vec<D>::Zero(), mv = Vec<D>::Zero();
     if (!p.particle) {
       for (Index i = b.begin; i < b.end; ++i) {
         m += P.mass[i];
+        vol += P.vol[i], vol0 += P.vol0[i];
         mx += P.mass[i] * P.x[i];
         mu += P.mass[i] * (P.x[i] - P.x0[i]);
         mv += P.mass[i] * P.v[i];
@@ -165,6 +167,7 @@ template <int D> void Recorder<D>::sample(const Solver<D>& solver, double dt) {
       else if (q == "displacement") push<D>(s, p.particle ? Vec<D>(P.x[i] - P.x0[i]) : Vec<D>(mu * w));
       else if (q == "velocity") push<D>(s, p.particle ? P.v[i] : Vec<D>(mv * w));
       else if (q == "kinetic_energy") s.data.push_back(ke);
+      else if (q == "volume") s.data.push_back(vol), s.data.push_back(vol0);
       else if (q == "von_mises") s.data.push_back(von_mises(voigt_stress(P, static_cast<std::size_t>(i))));
       else if (q == "stress") {
         const Voigt6 v = voigt_stress(P, static_cast<std::size_t>(i));
