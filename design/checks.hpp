@@ -1,6 +1,7 @@
 // Capacity formulas of the design checks (docs/design-checks.md), pure functions in SI units so each
 // can be checked by hand, and the record of one check (demand, capacity, utilisation, where, when).
 #pragma once
+#include <cmath>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -32,7 +33,13 @@ struct Check {
   double dynamic_factor = 1, strain_rate = 0;
   // The demand at the first history sample where the check governs: the static state the run starts from (members).
   double static_demand = 0;
-  void finish() { utilisation = capacity > 0 ? demand / capacity : (demand > 0 ? 1e300 : 0.0); passed = utilisation <= 1.0; }
+  // An unbounded demand (a dam that does not stop sliding, a block that topples, a resultant outside the base) is held
+  // as 1e300, as is the utilisation of a demand on no capacity: results files hold no infinities (JSON would null them).
+  void finish() {
+    if (std::isinf(demand)) demand = demand > 0 ? 1e300 : -1e300;
+    utilisation = capacity > 0 ? demand / capacity : (demand > 0 ? 1e300 : 0.0);
+    passed = utilisation <= 1.0;
+  }
   nlohmann::json to_json() const;
 };
 

@@ -155,6 +155,8 @@ Check proto(const std::string& id, const std::string& title, const MemberEnvelop
   Check c;
   c.id = id, c.title = title, c.member = m.name, c.material = m.cls, c.unit = unit, c.formula = formula, c.source = source;
   c.space = m.dim == 3;
+  // Elastic stresses within strengths are the serviceability level; the members' resistances are the ultimate one.
+  if (id == "concrete_shear" || id == "steel_interaction" || id == "steel_shear" || id == "steel_torsion") c.level = "ultimate";
   return c;
 }
 

@@ -14,7 +14,7 @@ struct BaseJointLoads {
   double N = 0, H = 0, Mr = 0, Mo = 0;
 };
 
-// Sliding factor of safety by limit equilibrium on the joint, EM 1110-2-2100 eq. (5-1) with phi and c:
+// Sliding factor of safety by limit equilibrium on the joint, EM 1110-2-2100 eq. (3-1) with phi and c:
 // FS = (N tan(phi) + c A') / |H|, A' the base area in compression (Pa, m^2); infinite when H = 0. N < 0 (the joint
 // lifts) gives 0.
 double sliding_factor(const BaseJointLoads& l, double friction_coefficient, double cohesion_Pa, double compressed_area_m2);

@@ -60,15 +60,16 @@ Check stability_check(const char* level, const char* id, const char* title, doub
   return c;
 }
 
-void persistent_checks(const Sample& s, const RigidSection& sec, const FoundationLimits& L, std::vector<Check>& checks) {
-  const double resist = L.friction * std::max(0.0, s.l.N) + L.cohesion * s.at.compressed_fraction * sec.base_m;
+void persistent_checks(const Sample& s, double t0, const RigidSection& sec, double width, const FoundationLimits& L, std::vector<Check>& checks) {
+  const double resist = L.friction * std::max(0.0, s.l.N) + L.cohesion * s.at.compressed_fraction * sec.base_m * width;
   checks.push_back(stability_check("ultimate", "stability_sliding_persistent", "sliding, persistent situation (the loads at rest)",
-                                   L.sliding_factor_usual * std::abs(s.l.H), resist, "N", 0.0, "FS_req |H| <= N tan(phi) + c A'",
+                                   L.sliding_factor_usual * std::abs(s.l.H), resist, "N", t0, "FS_req |H| <= N tan(phi) + c A'",
                                    "EM 1110-2-2100 (2005) eq. 3-1, Table 3-3 (usual)"));
-  checks.push_back(stability_check("serviceability", "stability_resultant_persistent", "resultant in the middle third, persistent situation", std::abs(s.at.eccentricity),
-                                   sec.base_m / 6, "m", 0.0, "|e| <= B/6 (base fully in compression)", "EM 1110-2-2100 (2005) 3-9 (usual)"));
+  const double e = s.l.N > 0 ? std::abs(s.at.eccentricity) : std::numeric_limits<double>::infinity();  // the joint lifts
+  checks.push_back(stability_check("serviceability", "stability_resultant_persistent", "resultant in the middle third, persistent situation", e,
+                                   sec.base_m / 6, "m", t0, "|e| <= B/6 (base fully in compression)", "EM 1110-2-2100 (2005) 3-9 (usual)"));
   checks.push_back(stability_check("ultimate", "stability_bearing_persistent", "bearing pressure, persistent situation",
-                                   std::max(s.at.toe_pressure, s.at.heel_pressure), L.bearing_capacity, "Pa", 0.0,
+                                   std::max(s.at.toe_pressure, s.at.heel_pressure), L.bearing_capacity, "Pa", t0,
                                    "q = N / (B W) (1 +- 6 e / B) <= q_allowable", "EM 1110-2-2100 (2005) 3-10"));
 }
 
@@ -89,6 +90,11 @@ json stability(const Results& r, const FrameInfo& f, const DesignBasis& b, const
   const double U = is_set(d.water_height_m) ? L.uplift_factor * d.water_unit_weight_N_m3 * d.water_height_m * sec.base_m * d.width_m / 2 : 0.0;
   const BaseHistory h = base_history(r, f, where);
   const std::vector<double>&Fx = h.at("Fx_N"), &Fy = h.at("Fy_N"), &M = h.at("M_Nm");
+  // The rigid dam's weight is the section's; the frame must carry it at rest (self-weight on, the same section), else
+  // its reactions do not describe this dam.
+  if (!(std::abs(Fy[0] - sec.weight_N) <= 0.1 * sec.weight_N))
+    return json{{"not_assessed", "the frame's vertical reaction at rest (" + std::to_string(Fy[0]) + " N) is not the dam section's weight (" +
+                                     std::to_string(sec.weight_N) + " N) within 10 %: self-weight off, or a frame that is not this dam"}};
   std::vector<Sample> s;
   std::vector<double> H(r.time.size()), R(r.time.size()), Mo(r.time.size()), Mres(r.time.size(), Mr);
   for (std::size_t k = 0; k < r.time.size(); ++k) {
@@ -96,7 +102,7 @@ json stability(const Results& r, const FrameInfo& f, const DesignBasis& b, const
     H[k] = s[k].l.H, Mo[k] = s[k].l.Mo;
     R[k] = L.friction * std::max(0.0, s[k].l.N) + L.cohesion * s[k].at.compressed_fraction * sec.base_m * d.width_m;
   }
-  persistent_checks(s[0], sec, L, checks);
+  persistent_checks(s[0], r.time[0], sec, d.width_m, L, checks);
   // The impact: the worst instants, the time the joint opens, and the rigid-body measures of the ultimate level.
   std::size_t slide = 0, open = 0;
   double outside_third = 0, outside_base = 0;

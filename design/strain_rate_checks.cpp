@@ -23,7 +23,7 @@ void apply_strain_rate(std::vector<MemberEnvelope>& members, const FrameInfo& f,
       c.dynamic_factor = tension ? dif_tension(c.strain_rate) : dif_compression(c.strain_rate);
       c.capacity *= c.dynamic_factor;
       char b[160];
-      std::snprintf(b, sizeof b, "; x DIF %.3f at %.3g 1/s (fib MC2010 5.1.11.1, eps_dot = sigma / (E t_r))", c.dynamic_factor, c.strain_rate);
+      std::snprintf(b, sizeof b, "; x DIF %.3f at %.3g 1/s (fib MC2010 5.1.11.1, eps_dot = (sigma - sigma_0) / (E t_r))", c.dynamic_factor, c.strain_rate);
       c.formula += b;
       c.finish();
     }

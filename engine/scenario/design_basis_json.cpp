@@ -85,6 +85,17 @@ DamBasis read_dam(const Object& o) {
   d.deposit_height_m = o.positive("deposit_height_m", false), d.deposit_unit_weight_N_m3 = o.positive("deposit_unit_weight_N_m3", false);
   d.deposit_coefficient = o.positive("deposit_coefficient", false, true);
   d.water_height_m = o.positive("water_height_m", false), d.water_unit_weight_N_m3 = o.positive("water_unit_weight_N_m3", false);
+  // Groups that mean something only together.
+  auto together = [&](std::initializer_list<std::pair<const char*, double>> group) {
+    int set = 0;
+    for (const auto& [k, v] : group) set += is_set(v);
+    if (set == 0 || set == static_cast<int>(group.size())) return;
+    for (const auto& [k, v] : group)
+      if (!is_set(v)) o.fail(o.path() + "/" + k, json(), "a number (missing; it goes with the others of its group)");
+  };
+  together({{"heel_x_m", d.heel_x_m}, {"toe_x_m", d.toe_x_m}, {"crest_upstream_x_m", d.crest_upstream_x_m}, {"crest_downstream_x_m", d.crest_downstream_x_m}});
+  together({{"deposit_height_m", d.deposit_height_m}, {"deposit_unit_weight_N_m3", d.deposit_unit_weight_N_m3}, {"deposit_coefficient", d.deposit_coefficient}});
+  together({{"water_height_m", d.water_height_m}, {"water_unit_weight_N_m3", d.water_unit_weight_N_m3}});
   d.column_diameter_m = o.positive("column_diameter_m", !concrete), d.column_wall_thickness_m = o.positive("column_wall_thickness_m", !concrete);
   return d;
 }

@@ -294,9 +294,8 @@ void read_wall(Obj& o, WallConfig& w) {
                           Spec{.doc = "stick: v = 0; roller: no normal velocity (bilateral); slip: frictionless contact, separable; friction: Coulomb contact, separable"});
   o.number("friction", w.friction, Spec{.doc = "Coulomb coefficient (condition = friction)", .min = 0});
   o.choice<DetectionKind>("detection", w.detection, {{"surface", DetectionKind::surface}, {"node", DetectionKind::node}},
-                          Spec{.doc = "contact detection (sharp decay): surface (default) = a grid node is taken only where the particles whose "
-                                        "domains touch the member carry at least half the node's mass (unilateral contact holds it while "
-                                        "touched, stick while it stays in its band); node = every node on or behind the wall with mass is held, "
+                          Spec{.doc = "contact detection of a unilateral boundary: surface (default) = a grid node is held only where the particles whose "
+                                        "domains touch it carry at least half the node's mass; node = every node on or behind the wall with mass is held, "
                                         "which engages the stencil's reach (1.5 h) ahead of the body and makes a hard impact's peak "
                                         "cell-dependent (docs/verification.md, hard impact)"});
 }
@@ -437,7 +436,7 @@ void read_pressure_load(Obj& o, PressureLoadConfig& l) {
   o.string("member", l.member, Spec{.doc = "the member loaded (plane structures)", .required = true});
   o.vector("direction", l.direction, Spec{.doc = "direction of the pressure's force (normalised), e.g. [1, 0] downstream", .required = true});
   o.number("surface", l.surface, Spec{.unit = "m", .doc = "height of the free surface (y); the pressure is zero above it", .required = true});
-  o.number("gradient", l.gradient, Spec{.unit = "N/m^3", .doc = "increase of the load per unit height with depth below the surface: "
+  o.number("gradient", l.gradient, Spec{.unit = "N/m^2", .doc = "increase of the load per unit height (N/m) with depth below the surface: "
                                                                     "unit weight x pressure coefficient x loaded width", .min = 0,
                                         .min_open = true, .required = true});
 }

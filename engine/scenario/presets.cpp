@@ -75,7 +75,8 @@ void unit_weight(Obj& o, const char* key, double& v, const char* what, double lo
   o.number(key, v, Spec{.unit = "N/m^3", .doc = what});
   if (o.documenting() || o.context().accept_unusual || (v >= lo && v <= hi)) return;
   char buf[200];
-  std::snprintf(buf, sizeof buf, "a unit weight in N/m^3 between %.0f and %.0f (%g kN/m^3 is %g N/m^3)", lo, hi, v, v * 1e3);
+  if (v < lo) std::snprintf(buf, sizeof buf, "a unit weight in N/m^3 between %.0f and %.0f (%g kN/m^3 is %g N/m^3)", lo, hi, v, v * 1e3);
+  else std::snprintf(buf, sizeof buf, "a unit weight in N/m^3 between %.0f and %.0f", lo, hi);
   o.fail(key, o.given(key), buf);
 }
 
@@ -88,7 +89,8 @@ void read_standing_loads(Obj& o, DamPreset& d) {
     dep.number("height", d.deposit_height, positive("m", "height of the deposit's surface above the base", true));
     unit_weight(dep, "unit_weight", d.deposit_unit_weight, "unit weight gamma of the deposit (submerged: the buoyant one)", 5e3, 2.6e4);
     dep.number("pressure_coefficient", d.deposit_coefficient,
-               Spec{.doc = "earth-pressure coefficient K (at rest 1 - sin phi = 0.5 at phi = 30 deg; active 0.33)", .min = 0, .max = 1});
+               Spec{.doc = "earth-pressure coefficient K (at rest 1 - sin phi = 0.5 at phi = 30 deg; active 0.33)", .min = 0, .max = 1,
+                  .min_open = true});
     dep.finish();
   }
   Obj w = o.object("water", "water standing behind the dam when the impact arrives: a hydrostatic pressure gamma_w (h - y) on the upstream "
@@ -205,8 +207,11 @@ void read_boulder(Obj o, BoulderPreset& b) {
   if (!o.context().accept_unusual) {  // a boulder that check dams are designed for, in SI (accept_unusual: a model scale)
     char buf[200];
     if (b.mass > 0 && !(b.mass >= 50 && b.mass <= 5e5)) {
-      std::snprintf(buf, sizeof buf, "a boulder mass in kg between 50 and 500000 (%g t is %g kg; a weight of %g kN is a mass of %.0f kg)",
-                    b.mass, b.mass * 1e3, b.mass, b.mass * 1e3 / 9.81);
+      if (b.mass < 50)
+        std::snprintf(buf, sizeof buf, "a boulder mass in kg between 50 and 500000 (%g t is %g kg; a weight of %g kN is a mass of %.0f kg)",
+                      b.mass, b.mass * 1e3, b.mass, b.mass * 1e3 / 9.81);
+      else
+        std::snprintf(buf, sizeof buf, "a boulder mass in kg between 50 and 500000");
       o.fail("mass", o.given("mass"), buf);
     }
     if (b.diameter > 0 && !(b.diameter >= 0.2 && b.diameter <= 10)) {

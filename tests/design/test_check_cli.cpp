@@ -111,9 +111,9 @@ TEST_F(CheckCli, ExitOneWhenACheckFailsUnderOtherLimitsWithoutResimulating) {
   EXPECT_EQ(d["verdict"]["governing"]["id"], "concrete_flexural_tension");
 }
 
-// The same failing serviceability check under a limits file that judges the ultimate level only: the run has no
-// ultimate-level check (a cantilever, no design basis), so it passes and exits 0; the serviceability level still fails
-// in design.json and the -q output keeps the verdict lines.
+// The same failing serviceability check (flexural tension) under a limits file that judges the ultimate level only:
+// the cantilever's ultimate checks (its one-way shear resistance) pass, so it exits 0; the serviceability level still
+// fails in design.json and the -q output keeps the verdict lines.
 TEST_F(CheckCli, TheLimitsFileChoosesTheLevelThatSetsTheExitCode) {
   const fs::path limits = write("low_ult.json", R"({"concrete": {"tensile_strength_Pa": 1e6}, "verdict": {"level": "ultimate"}})");
   const Cli c = cli("check " + (dir / "results.h5").string() + " --limits " + limits.string() + " -q -o " + (dir / "ult_design.json").string());
@@ -124,6 +124,7 @@ TEST_F(CheckCli, TheLimitsFileChoosesTheLevelThatSetsTheExitCode) {
   EXPECT_TRUE(d["verdict"]["passed"].get<bool>());
   EXPECT_FALSE(d["verdict"]["levels"]["serviceability"]["passed"].get<bool>());
   EXPECT_EQ(d["runs"][0]["checks"][0]["level"], "serviceability");
+  EXPECT_GT(d["verdict"]["levels"]["ultimate"]["checks"].get<int>(), 0);
   const fs::path bad = write("bad_level.json", R"({"verdict": {"level": "all"}})");
   const Cli b = cli("check " + (dir / "results.h5").string() + " --limits " + bad.string());
   EXPECT_EQ(b.status, 2);

@@ -122,6 +122,16 @@ TEST(DesignEstimates, MissingBasisNumberNamesTheKey) {
     EXPECT_NE(std::string(e.what()).find("r.h5: /documents/design_basis/boulder/speed_m_s: expected a number > 0 (missing)"), std::string::npos)
         << e.what();
   }
+  // Numbers that go together: water's height without its unit weight names the missing one.
+  json w = basis(false);
+  w["dam"]["water_height_m"] = 3.0;
+  try {
+    est(w, 1, 1);
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("r.h5: /documents/design_basis/dam/water_unit_weight_N_m3: expected a number (missing; it goes with"),
+              std::string::npos) << e.what();
+  }
 }
 
 // A grid study of 10 % on the contact force puts the ratio of 2.0 between 2.0 / 1.1 and 2.0 / 0.9.

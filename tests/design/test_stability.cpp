@@ -207,3 +207,41 @@ TEST(Stability, DampingShareOfTheImpactEnergy) {
   EXPECT_FALSE(j["flagged"].get<bool>());
   EXPECT_TRUE(damping_share(r, b, 0.05)["flagged"].get<bool>());
 }
+
+// Cohesion over the compressed base area w B (3 m x 3.5 m at rest, base fully compressed): 100 kPa adds 1 050 kN to
+// the persistent resistance. A static shear the friction cannot hold (H 700 kN against 0.6 x 1 059 kN = 636 kN): the
+// dam slides without end under the loads at rest; the displacement is held as 1e300 (finite in design.json), failing.
+TEST(Stability, CohesionAndAnUnboundedSlide) {
+  const double W = 1059480.0, x0 = 1.75, xg = 3.5 - 2.1833333333;
+  auto results = [&](double H) {
+    Results r;
+    Series s{"supports/base/reaction", "N", {"Fx", "Fy", "M"}, {}};
+    for (double t : {0.0, 0.1}) r.time.push_back(t), s.data.insert(s.data.end(), {-H, W, W * (xg - x0) + H * 2.0});
+    r.series.push_back(s);
+    return r;
+  };
+  FrameInfo f;
+  f.dim = 2, f.nodes = {{x0, 0, 0}}, f.supports = {FrameInfo::Support{"base", "supports/base/reaction", 0}};
+  DesignBasis b;
+  b.dam.height_m = 6, b.dam.width_m = 3, b.dam.density_kg_m3 = 2400;
+  b.dam.heel_x_m = 0, b.dam.toe_x_m = 3.5, b.dam.crest_upstream_x_m = 0, b.dam.crest_downstream_x_m = 1.5;
+  FoundationLimits L;
+  L.cohesion = 1e5;
+  std::vector<Check> checks;
+  stability(results(2e5), f, b, L, checks, "r.h5");
+  ASSERT_EQ(checks[0].id, "stability_sliding_persistent");
+  EXPECT_NEAR(checks[0].capacity, 0.6 * W + 1e5 * 3.5 * 3.0, 1e-6);
+  L.cohesion = 0;
+  checks.clear();
+  const nlohmann::json j = stability(results(7e5), f, b, L, checks, "r.h5");
+  EXPECT_EQ(checks[3].id, "stability_sliding_displacement");
+  EXPECT_EQ(checks[3].demand, 1e300);
+  EXPECT_FALSE(checks[3].passed);
+  EXPECT_TRUE(std::isfinite(checks[3].utilisation));
+  // A frame whose vertical reaction at rest is not the section's weight (self-weight off) is not assessed.
+  checks.clear();
+  Results off = results(0);
+  off.series[0].data[1] = off.series[0].data[4] = 0.0;
+  EXPECT_TRUE(stability(off, f, b, L, checks, "r.h5").contains("not_assessed"));
+  EXPECT_TRUE(checks.empty());
+}
