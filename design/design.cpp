@@ -16,7 +16,6 @@
 #include "design/phases.hpp"
 #include "design/local_damage_checks.hpp"
 #include "design/stability_checks.hpp"
-#include "design/strain_rate_checks.hpp"
 #include "design/loads.hpp"
 #include "design/members.hpp"
 
@@ -253,7 +252,6 @@ json design_run(const Results& r, const Limits& L, const std::string& where) {
   if (!structure.is_null()) {
     const FrameInfo& f = frame.emplace(parse_structure(structure.dump(), where, L));
     members = member_envelopes(r, f, L, where);
-    if (c.present) apply_strain_rate(members, f, c.pulse_start_s, L.concrete);
     for (const auto& m : members) {
       run["members"].push_back(member_json(m));
       checks.insert(checks.end(), m.checks.begin(), m.checks.end());

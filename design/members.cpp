@@ -1,5 +1,11 @@
 #include "design/members.hpp"
 
+#include <cstdio>
+#include <limits>
+
+#include "design/loads.hpp"
+#include "design/strain_rate_checks.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -119,12 +125,16 @@ namespace {
 // Tracks the governing instance (largest utilisation) of each check of a member, and each check's demand at the first
 // history sample at every station (the static state the run starts from), kept as static_demand where it governs.
 struct CheckTracker {
+  StrainRate rate;  // strain-rate effects on the concrete strengths (design/strain_rate_checks)
   std::map<std::string, Check> by_id;
   std::vector<std::string> order;
   std::map<std::pair<std::string, const Station*>, double> first;
   std::map<std::string, const Station*> at;
   void consider(const Check& proto, double demand, double capacity, const Station& st, double t) {
-    first.emplace(std::make_pair(proto.id, &st), demand);
+    const double static_demand = first.emplace(std::make_pair(proto.id, &st), demand).first->second;
+    double eps_dot = 0;
+    const double dif = strain_rate_factor(proto.id, demand, static_demand, t, rate, &eps_dot);
+    capacity *= dif;
     auto it = by_id.find(proto.id);
     const double u = capacity > 0 ? demand / capacity : (demand > 0 ? 1e300 : 0.0);  // as Check::finish
     if (it == by_id.end()) {
@@ -136,6 +146,7 @@ struct CheckTracker {
     if (u <= c.utilisation) return;
     c.demand = demand, c.capacity = capacity, c.utilisation = u;
     c.position = st.position, c.s_m = st.s_m, c.x_m = st.x, c.y_m = st.y, c.z_m = st.z, c.time_s = t;
+    c.dynamic_factor = dif, c.strain_rate = eps_dot;
     at[proto.id] = &st;
   }
   std::vector<Check> result() {
@@ -143,6 +154,12 @@ struct CheckTracker {
     for (const auto& id : order) {
       Check c = by_id.at(id);
       c.static_demand = first.at({id, at.at(id)});
+      if (c.dynamic_factor != 1) {
+        char b[160];
+        std::snprintf(b, sizeof b, "; x DIF %.3f at %.3g 1/s (fib MC2010 5.1.11.1, eps_dot = (sigma - sigma_0) / (E t_r))", c.dynamic_factor,
+                      c.strain_rate);
+        c.formula += b;
+      }
       c.finish();
       v.push_back(c);
     }
@@ -172,7 +189,8 @@ Check section_class(const MemberEnvelope& env, double D, double t_w, const Steel
 
 // A space member (docs/design-checks.md, "Space frames"): resultant shear and moment, torque, stresses around the
 // perimeter (space_fibre_stresses, the frame's own function) under biaxial bending, torsion and shear.
-void space_member(const Results& r, const Series& ef, const FrameInfo& f, const FrameInfo::Member& m, const Limits& L, MemberEnvelope& env) {
+void space_member(const Results& r, const Series& ef, const FrameInfo& f, const FrameInfo::Member& m, const Limits& L, const StrainRate& rate,
+                  MemberEnvelope& env) {
   const bool steel = m.cls == "steel";
   const bool pipe = f.elements[m.first].section.kind() == SectionKind::pipe;
   const double D = f.elements[m.first].section.depth(0), t_w = f.elements[m.first].section.wall_thickness();
@@ -205,6 +223,7 @@ void space_member(const Results& r, const Series& ef, const FrameInfo& f, const 
                                                    {elastic.id, &elastic}, {mises.id, &mises}, {inter.id, &inter}, {shear_s.id, &shear_s},
                                                    {torsion.id, &torsion}};
   CheckTracker tracker;
+  tracker.rate = rate;
   const std::size_t nc = ef.components.size();
   for (std::size_t k = 0; k < r.time.size(); ++k) {
     const double t = r.time[k];
@@ -233,6 +252,9 @@ void space_member(const Results& r, const Series& ef, const FrameInfo& f, const 
 }  // namespace
 
 std::vector<MemberEnvelope> member_envelopes(const Results& r, const FrameInfo& f, const Limits& L, const std::string& where) {
+  // The strain-rate factors count the rise from the start of the contact pulse (none without contact).
+  const Contact contact_pulse = contact(r);
+  const double load_start = contact_pulse.present ? contact_pulse.pulse_start_s : std::numeric_limits<double>::infinity();
   std::vector<MemberEnvelope> out;
   if (f.members.empty()) return out;
   const Series* ef = r.find("frame/end_forces");
@@ -255,7 +277,7 @@ std::vector<MemberEnvelope> member_envelopes(const Results& r, const FrameInfo& 
       env.stations.push_back(st);
     }
     if (f.dim == 3) {
-      space_member(r, *ef, f, m, L, env);
+      space_member(r, *ef, f, m, L, StrainRate{L.concrete.strain_rate_effects && m.cls == "concrete", load_start, f.elements[m.first].E}, env);
       out.push_back(std::move(env));
       continue;
     }
@@ -278,6 +300,7 @@ std::vector<MemberEnvelope> member_envelopes(const Results& r, const FrameInfo& 
     const Check shear_s = proto("steel_shear", "shear resistance", env, "N", "V <= A_v f_y / (sqrt 3 gamma_M0), A_v = 2A/pi (CHS)",
                                 "EN 1993-1-1 6.2.6 eq. 6.18, 6.2.6(3)(g)");
     CheckTracker tracker;
+    tracker.rate = StrainRate{L.concrete.strain_rate_effects && m.cls == "concrete", load_start, f.elements[m.first].E};
     for (std::size_t k = 0; k < r.time.size(); ++k) {
       const double t = r.time[k];
       for (int e = 0; e < m.count; ++e) {
