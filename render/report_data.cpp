@@ -554,6 +554,19 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
                   {"value", fmt("%.2f", c["phi_flexure"].get<double>()) + " / " + fmt("%.2f", c["phi_compression"].get<double>()) + " / " +
                                 fmt("%.2f", c["phi_shear"].get<double>()) + ", " + fmt("%.2f", c["compression_coefficient"].get<double>())}});
     lr.push_back({{"key", "steel f_y, γ_M0"}, {"value", eng(s["yield_strength_Pa"], "Pa") + ", " + fmt("%.2f", s["gamma_M0"].get<double>())}});
+    lr.push_back({{"key", "concrete strengths under the impact"},
+                  {"value", c.value("strain_rate_effects", true) ? "raised by the strain rate (fib MC2010 5.1.11.1)" : "static"}});
+    if (design_doc["limits"].contains("foundation")) {
+      const json& f = design_doc["limits"]["foundation"];
+      lr.push_back({{"key", "foundation joint: tan φ, c, allowable bearing, uplift"},
+                    {"value", fmt("%.2f", f["friction"].get<double>()) + ", " + eng(f["cohesion_Pa"], "Pa") + ", " + eng(f["bearing_capacity_Pa"], "Pa") +
+                                  fmt(", %.2f of full (assumptions unless the limits file sets them)", f["uplift_factor"].get<double>())}});
+      lr.push_back({{"key", "stability: sliding factor at rest, sliding limit, rocking factor"},
+                    {"value", fmt("%.2f", f["sliding_factor_usual"].get<double>()) + ", " + eng(f["sliding_displacement_limit_m"], "m") +
+                                  fmt(", %.2f", f["rocking_safety_factor"].get<double>())}});
+    }
+    if (design_doc["limits"].contains("verdict"))
+      lr.push_back({{"key", "levels judged"}, {"value", design_doc["limits"]["verdict"].value("level", std::string("both"))}});
   }
   d["limit_rows"] = lr;
   return d;
