@@ -58,6 +58,10 @@ struct Reader {
         fail(path + "/" + it.key(), &it.value(), "a known key (one of: " + list + ")");
       }
   }
+  // A value already read that must lie in [lo, hi] (a unit slip otherwise), named as the user wrote it.
+  void range(const json& o, const std::string& path, const char* key, double v, double lo, double hi, const std::string& expected) const {
+    if (o.contains(key) && !(v >= lo && v <= hi)) fail(path + "/" + key, &o[key], expected);
+  }
   // A number > 0 (or in (0, 1] when factor).
   void number(const json& o, const std::string& path, const char* key, double& out, bool factor = false) const {
     if (!o.contains(key)) return;
@@ -131,6 +135,9 @@ Limits parse_limits(const json& j, const std::string& file) {
     }
     r.number(c, p, "compressive_strength_Pa", k.compressive_strength);
     r.number(c, p, "tensile_strength_Pa", k.tensile_strength);
+    // Strengths in Pa: a value in MPa (28 for 28 MPa) is the usual slip.
+    r.range(c, p, "compressive_strength_Pa", k.compressive_strength, 5e6, 2e8, "a concrete f'c in Pa between 5e6 and 2e8 (28 MPa is 28e6 Pa)");
+    r.range(c, p, "tensile_strength_Pa", k.tensile_strength, 5e5, 2e7, "a concrete tensile strength in Pa between 5e5 and 2e7 (3.28 MPa is 3.28e6 Pa)");
     if (c.contains("tensile_rule")) {
       const json& v = c["tensile_rule"];
       if (!v.is_string() || (v != "given" && v != "aci_rupture" && v != "aci_plain"))
@@ -159,6 +166,7 @@ Limits parse_limits(const json& j, const std::string& file) {
     const json& s = j["steel"];
     r.keys(s, "/steel", {"yield_strength_Pa", "gamma_M0"});
     r.number(s, "/steel", "yield_strength_Pa", L.steel.yield_strength);
+    r.range(s, "/steel", "yield_strength_Pa", L.steel.yield_strength, 1e8, 2e9, "a steel yield strength in Pa between 1e8 and 2e9 (235 MPa is 235e6 Pa)");
     if (s.contains("gamma_M0")) {
       const json& v = s["gamma_M0"];
       if (!v.is_number() || !(v.get<double>() >= 1.0) || !std::isfinite(v.get<double>())) r.fail("/steel/gamma_M0", &v, "a partial factor >= 1");

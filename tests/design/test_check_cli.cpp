@@ -125,6 +125,12 @@ TEST_F(CheckCli, TheLimitsFileChoosesTheLevelThatSetsTheExitCode) {
   EXPECT_FALSE(d["verdict"]["levels"]["serviceability"]["passed"].get<bool>());
   EXPECT_EQ(d["runs"][0]["checks"][0]["level"], "serviceability");
   EXPECT_GT(d["verdict"]["levels"]["ultimate"]["checks"].get<int>(), 0);
+  // Strengths in MPa instead of Pa are refused with the conversion.
+  const fs::path mpa = write("mpa.json", R"({"concrete": {"compressive_strength_Pa": 28}})");
+  const Cli m = cli("check " + (dir / "results.h5").string() + " --limits " + mpa.string());
+  EXPECT_EQ(m.status, 2);
+  EXPECT_NE(m.err.find("/concrete/compressive_strength_Pa = 28: expected a concrete f'c in Pa between 5e6 and 2e8 (28 MPa is 28e6 Pa)"),
+            std::string::npos) << m.err;
   const fs::path bad = write("bad_level.json", R"({"verdict": {"level": "all"}})");
   const Cli b = cli("check " + (dir / "results.h5").string() + " --limits " + bad.string());
   EXPECT_EQ(b.status, 2);
