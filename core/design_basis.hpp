@@ -19,6 +19,7 @@ struct DamBasis {
   DamKind type = DamKind::concrete_gravity;
   double height_m = kUnset;
   double width_m = kUnset;  // across the channel: the width a 2D model stands for, or the 3D crest length
+  std::string width_rule;    // how a 2D model's width was chosen ("given", or the rule; "" unknown)
   double youngs_modulus_Pa = kUnset, poisson_ratio = kUnset, density_kg_m3 = kUnset;
   // Concrete gravity: the section, and its corners along the flow (model x, the flow runs towards +x; the base at
   // y = 0): heel and toe where the base meets the foundation, the crest's upstream and downstream edges.

@@ -107,7 +107,8 @@ json scenario_rows(const RunData& r) {
   row("height", fmt("%.3g m", dam.height_m));
   const bool space = r.frame && r.frame->dim == 3;
   row(space ? (concrete ? "crest length (across the channel)" : "column spacing across the channel") : "width represented (out of plane)",
-      fmt("%.3g m", dam.width_m));
+      fmt("%.3g m", dam.width_m) + (space || dam.width_rule.empty() ? std::string() : ": " + dam.width_rule) +
+          (space ? std::string() : "; the plane model strikes this width with the boulder as a cylinder of its mass, a line load (a 3D run is the check)"));
   if (concrete)
     row("crest / base thickness", fmt("%.3g m", dam.crest_thickness_m) + " / " + fmt("%.3g m", dam.base_thickness_m));
   else

@@ -76,6 +76,7 @@ DamBasis read_dam(const Object& o) {
   DamBasis d;
   d.type = o.text("type", {"concrete_gravity", "steel_open"}) == "steel_open" ? DamKind::steel_open : DamKind::concrete_gravity;
   d.height_m = o.positive("height_m"), d.width_m = o.positive("width_m");
+  if (o.has("width_rule")) d.width_rule = o.text("width_rule", {});
   d.youngs_modulus_Pa = o.positive("youngs_modulus_Pa"), d.poisson_ratio = o.poisson("poisson_ratio");
   d.density_kg_m3 = o.positive("density_kg_m3");
   const bool concrete = d.type == DamKind::concrete_gravity;
@@ -145,6 +146,7 @@ BufferBasis read_buffer(const Object& o) {
 json design_basis_to_json(const DesignBasis& b) {
   const DamBasis& d = b.dam;
   json dam{{"type", dam_type_name(d.type)}};
+  if (!d.width_rule.empty() && d.width_rule != "given") dam["width_rule"] = d.width_rule;
   put(dam, "height_m", d.height_m), put(dam, "width_m", d.width_m), put(dam, "youngs_modulus_Pa", d.youngs_modulus_Pa);
   put(dam, "poisson_ratio", d.poisson_ratio), put(dam, "density_kg_m3", d.density_kg_m3);
   put(dam, "crest_thickness_m", d.crest_thickness_m), put(dam, "base_thickness_m", d.base_thickness_m);
@@ -189,7 +191,7 @@ DesignBasis design_basis_from_json(const json& j, const std::string& file, const
   if (!top.has("dam")) top.fail(prefix + "/dam", json(), "an object (missing)");
   DesignBasis b;
   b.dam = read_dam(Object(j["dam"], file, prefix + "/dam",
-                          {"type", "height_m", "width_m", "youngs_modulus_Pa", "poisson_ratio", "density_kg_m3", "crest_thickness_m",
+                          {"type", "height_m", "width_m", "width_rule", "youngs_modulus_Pa", "poisson_ratio", "density_kg_m3", "crest_thickness_m",
                            "base_thickness_m", "heel_x_m", "toe_x_m", "crest_upstream_x_m", "crest_downstream_x_m", "deposit_height_m", "deposit_unit_weight_N_m3", "deposit_coefficient",
                            "water_height_m", "water_unit_weight_N_m3", "column_diameter_m", "column_wall_thickness_m"}));
   if (top.has("boulder"))

@@ -124,6 +124,7 @@ class Builder {
   bool rigid_boulder_ = false, free_boulder_ = false;  // rigid throughout; rigid_when_free (elastic while it can touch)
   std::string file_;
   double h_ = 0, slope_ = 0, end_time_ = 0, boulder_r_ = 0, boulder_m_ = 0, impact_y_ = 0, boulder_speed_ = 0;
+  std::string width_rule_ = "given";  // how the 2D width was set
   json out_ = json::object(), materials_ = json::array(), bodies_ = json::array(), probes_ = json::array(), bonded_ = json::array();
   Box box_;
   bool members_ = true;
@@ -199,6 +200,15 @@ json Builder::build() {
     f.length = f.velocity * flow_duration();
   }
   if (p_.debris) slope_ = p_.debris->slope * kPi / 180;
+  if (p_.boulder && dim_ == 2 && !d_.width_given && d_.type == "concrete_gravity") {
+    // A point impact on a plane model: the width over which the boulder's load spreads through the struck section at
+    // 45 degrees, its diameter plus the section's thickness at the impact height.
+    const BoulderPreset& b = *p_.boulder;
+    const double m = b.mass > 0 ? b.mass : b.density * kPi * std::pow(b.diameter, 3) / 6, D = std::cbrt(6 * m / (b.density * kPi));
+    const double y = std::min(b.impact_height > 0 ? b.impact_height : 0.9 * d_.height, d_.height);
+    p_.dam.width = clean(D + xd(y) - xu(y));
+    width_rule_ = "the boulder's diameter plus the section's thickness at the impact height (a 45 degree spread)";
+  }
   if (p_.boulder) {
     const BoulderPreset& b = *p_.boulder;
     // The 2D model is a cylinder as long as the out-of-plane width with the boulder's mass:
@@ -231,7 +241,7 @@ DesignBasis Builder::design_basis() const {
   DamBasis& dam = out.dam;
   const bool concrete = d_.type == "concrete_gravity";
   dam.type = concrete ? DamKind::concrete_gravity : DamKind::steel_open;
-  dam.height_m = d_.height, dam.width_m = d_.width;
+  dam.height_m = d_.height, dam.width_m = d_.width, dam.width_rule = width_rule_;
   const json& m = concrete ? d_.concrete : d_.steel;
   dam.youngs_modulus_Pa = m.value("youngs_modulus", 0.0);
   dam.poisson_ratio = m.value("poisson_ratio", 0.0);

@@ -12,6 +12,7 @@ namespace dmi {
 struct DamPreset {
   std::string type, base = "fixed", sloped_face = "downstream", model = "members", damping_model = "rayleigh";
   double height = 0, width = 1.0, damping_ratio = 0.05;
+  bool width_given = true;  // false: 2D with a boulder takes the effective width of the impact (preset_scene.cpp)
   int elements = 8;
   double crest = 0, base_thickness = 0;                          // concrete_gravity, m
   nlohmann::json concrete, steel;                                // material objects

@@ -111,7 +111,10 @@ void read_dam(Obj o, DamPreset& d) {
     o.fail("type", nullptr, "concrete_gravity or steel_open (got '" + d.type + "')");
   o.number("height", d.height, positive("m", "height above the ground at the upstream face", true));
   o.number("width", d.width, positive("m", "out-of-plane width the 2D model stands for (analysis.thickness): the face width of a concrete dam, "
+                                           "(absent, a boulder on a concrete dam in 2D: the impact's effective width, the boulder's diameter plus "
+                                           "the section's thickness at the impact height, a 45 degree spread through the struck section; else 1 m) "
                                            "the column spacing across the channel of a steel dam"));
+  d.width_given = o.documenting() || o.given("width") != nullptr;
   o.choice<std::string>("base", d.base, {{"fixed", "fixed"}, {"pinned", "pinned"}}, Spec{.doc = "support at the foundation"});
   o.number("damping_ratio", d.damping_ratio, Spec{.doc = "structural damping ratio (Rayleigh, fitted to the first two cantilever modes "
                                                          "of the dam estimated as a uniform cantilever, Lin, Cheng & Tuan; concrete 5-10 %)",

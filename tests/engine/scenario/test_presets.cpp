@@ -413,5 +413,19 @@ TEST(Presets, DepositAndWaterBehindTheDamAreItsPressureLoads) {
   EXPECT_NO_THROW(expand_presets(m, "t.json", "with_buffer"));
 }
 
+// No width given (a boulder on a concrete dam in 2D): the impact's effective width, the boulder's diameter plus the
+// section's thickness at the impact height: D = (6 x 1000 / (2650 pi))^(1/3) = 0.896504 m, t(3.6 m) = 1.6 - 0.6 x 3.6 / 4
+// = 1.06 m: 1.956504 m, stated in the design basis.
+TEST(Presets, WithoutAWidthA2DBoulderTakesTheImpactsEffectiveWidth) {
+  json j = concrete_boulder();
+  j["dam"].erase("width");
+  const json low = expand_presets(j, "t.json", "with_buffer");
+  const double D = std::cbrt(6 * 1000 / (2650 * M_PI));
+  EXPECT_NEAR(low["design_basis"]["dam"]["width_m"].get<double>(), D + 1.06, 1e-9);
+  EXPECT_NEAR(low["analysis"]["thickness"].get<double>(), D + 1.06, 1e-9);
+  EXPECT_NE(low["design_basis"]["dam"]["width_rule"].get<std::string>().find("diameter plus the section's thickness"), std::string::npos);
+  EXPECT_FALSE(expand_presets(concrete_boulder(), "t.json", "with_buffer")["design_basis"]["dam"].contains("width_rule"));  // given
+}
+
 }  // namespace
 }  // namespace dmi
