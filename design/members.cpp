@@ -1,19 +1,17 @@
 #include "design/members.hpp"
 
-#include <cstdio>
-#include <limits>
-
-#include "design/loads.hpp"
-#include "design/strain_rate_checks.hpp"
-
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <map>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
+#include "design/loads.hpp"
+#include "design/strain_rate_checks.hpp"
 #include "engine/structure/fibre.hpp"
 
 namespace dmi::design {
@@ -276,8 +274,9 @@ std::vector<MemberEnvelope> member_envelopes(const Results& r, const FrameInfo& 
       st.depth = el.section.depth(k < m.count ? el.s0 : el.s1);
       env.stations.push_back(st);
     }
+    const StrainRate rate{L.concrete.strain_rate_effects && m.cls == "concrete", load_start, f.elements[m.first].E};
     if (f.dim == 3) {
-      space_member(r, *ef, f, m, L, StrainRate{L.concrete.strain_rate_effects && m.cls == "concrete", load_start, f.elements[m.first].E}, env);
+      space_member(r, *ef, f, m, L, rate, env);
       out.push_back(std::move(env));
       continue;
     }
@@ -300,7 +299,7 @@ std::vector<MemberEnvelope> member_envelopes(const Results& r, const FrameInfo& 
     const Check shear_s = proto("steel_shear", "shear resistance", env, "N", "V <= A_v f_y / (sqrt 3 gamma_M0), A_v = 2A/pi (CHS)",
                                 "EN 1993-1-1 6.2.6 eq. 6.18, 6.2.6(3)(g)");
     CheckTracker tracker;
-    tracker.rate = StrainRate{L.concrete.strain_rate_effects && m.cls == "concrete", load_start, f.elements[m.first].E};
+    tracker.rate = rate;
     for (std::size_t k = 0; k < r.time.size(); ++k) {
       const double t = r.time[k];
       for (int e = 0; e < m.count; ++e) {

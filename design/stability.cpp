@@ -6,10 +6,14 @@
 
 namespace dmi::design {
 
+double sliding_resistance(const BaseJointLoads& l, double mu, double c, double area) {
+  if (!(mu >= 0) || !(c >= 0) || !(area >= 0)) throw std::invalid_argument("sliding_resistance: friction, cohesion and area must be >= 0");
+  return l.N > 0 ? mu * l.N + c * area : 0.0;
+}
+
 double sliding_factor(const BaseJointLoads& l, double mu, double c, double area) {
-  if (!(mu >= 0) || !(c >= 0) || !(area >= 0)) throw std::invalid_argument("sliding_factor: friction, cohesion and area must be >= 0");
+  const double resistance = sliding_resistance(l, mu, c, area);
   if (l.N <= 0) return 0.0;
-  const double resistance = mu * l.N + c * area;
   return l.H == 0 ? std::numeric_limits<double>::infinity() : resistance / std::abs(l.H);
 }
 

@@ -18,6 +18,8 @@ struct BaseJointLoads {
 // FS = (N tan(phi) + c A') / |H|, A' the base area in compression (Pa, m^2); infinite when H = 0. N < 0 (the joint
 // lifts) gives 0.
 double sliding_factor(const BaseJointLoads& l, double friction_coefficient, double cohesion_Pa, double compressed_area_m2);
+// Its numerator, the joint's resistance N tan(phi) + c A' (N), 0 when the joint lifts (N <= 0).
+double sliding_resistance(const BaseJointLoads& l, double friction_coefficient, double cohesion_Pa, double compressed_area_m2);
 
 // Overturning factor Mr / Mo (infinite when Mo <= 0).
 double overturning_factor(const BaseJointLoads& l);

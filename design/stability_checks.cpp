@@ -33,12 +33,15 @@ BaseJointLoads joint_loads(double Fx, double Fy, double M, double x0, double x_t
 struct Sample {
   BaseJointLoads l;
   ResultantLocation at;
-  double sliding = 0;  // factor of safety
+  double resistance = 0;  // N tan(phi) + c A' (N)
+  double sliding = 0;     // factor of safety
 };
 
 Sample sample(const BaseJointLoads& l, const RigidSection& s, double W, const FoundationLimits& L) {
-  Sample out{l, resultant_location(l, s.base_m, W), 0};
-  out.sliding = sliding_factor(l, L.friction, L.cohesion, out.at.compressed_fraction * s.base_m * W);
+  Sample out{l, resultant_location(l, s.base_m, W), 0, 0};
+  const double area = out.at.compressed_fraction * s.base_m * W;  // A', the base in compression
+  out.resistance = sliding_resistance(l, L.friction, L.cohesion, area);
+  out.sliding = sliding_factor(l, L.friction, L.cohesion, area);
   return out;
 }
 
@@ -60,10 +63,9 @@ Check stability_check(const char* level, const char* id, const char* title, doub
   return c;
 }
 
-void persistent_checks(const Sample& s, double t0, const RigidSection& sec, double width, const FoundationLimits& L, std::vector<Check>& checks) {
-  const double resist = L.friction * std::max(0.0, s.l.N) + L.cohesion * s.at.compressed_fraction * sec.base_m * width;
+void persistent_checks(const Sample& s, double t0, const RigidSection& sec, const FoundationLimits& L, std::vector<Check>& checks) {
   checks.push_back(stability_check("ultimate", "stability_sliding_persistent", "sliding, persistent situation (the loads at rest)",
-                                   L.sliding_factor_usual * std::abs(s.l.H), resist, "N", t0, "FS_req |H| <= N tan(phi) + c A'",
+                                   L.sliding_factor_usual * std::abs(s.l.H), s.resistance, "N", t0, "FS_req |H| <= N tan(phi) + c A'",
                                    "EM 1110-2-2100 (2005) eq. 3-1, Table 3-3 (usual)"));
   const double e = s.l.N > 0 ? std::abs(s.at.eccentricity) : std::numeric_limits<double>::infinity();  // the joint lifts
   checks.push_back(stability_check("serviceability", "stability_resultant_persistent", "resultant in the middle third, persistent situation", e,
@@ -99,10 +101,9 @@ json stability(const Results& r, const FrameInfo& f, const DesignBasis& b, const
   std::vector<double> H(r.time.size()), R(r.time.size()), Mo(r.time.size()), Mres(r.time.size(), Mr);
   for (std::size_t k = 0; k < r.time.size(); ++k) {
     s.push_back(sample(joint_loads(Fx[k], Fy[k], M[k], h.about[0], d.toe_x_m, Mr, U, sec.base_m), sec, d.width_m, L));
-    H[k] = s[k].l.H, Mo[k] = s[k].l.Mo;
-    R[k] = L.friction * std::max(0.0, s[k].l.N) + L.cohesion * s[k].at.compressed_fraction * sec.base_m * d.width_m;
+    H[k] = s[k].l.H, Mo[k] = s[k].l.Mo, R[k] = s[k].resistance;
   }
-  persistent_checks(s[0], r.time[0], sec, d.width_m, L, checks);
+  persistent_checks(s[0], r.time[0], sec, L, checks);
   // The impact: the worst instants, the time the joint opens, and the rigid-body measures of the ultimate level.
   std::size_t slide = 0, open = 0;
   double outside_third = 0, outside_base = 0;

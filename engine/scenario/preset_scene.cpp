@@ -113,6 +113,8 @@ class Builder {
   double front_foot(double height, double gap) const;
   void add_grid_walls_and_time();
   DesignBasis design_basis() const;
+  // The diameter of the sphere of the boulder's mass (m).
+  double boulder_diameter() const { return std::cbrt(6 * boulder_m_ / (p_.boulder->density * kPi)); }
   DebrisBasis debris_basis() const;
   double buffer_damping_frequency(double E, double thickness) const;
   [[noreturn]] void fail(const std::string& path, const json& value, const std::string& expected) const {
@@ -200,20 +202,18 @@ json Builder::build() {
     f.length = f.velocity * flow_duration();
   }
   if (p_.debris) slope_ = p_.debris->slope * kPi / 180;
-  if (p_.boulder && dim_ == 2 && !d_.width_given && d_.type == "concrete_gravity") {
-    // A point impact on a plane model: the width over which the boulder's load spreads through the struck section at
-    // 45 degrees, its diameter plus the section's thickness at the impact height.
-    const BoulderPreset& b = *p_.boulder;
-    const double m = b.mass > 0 ? b.mass : b.density * kPi * std::pow(b.diameter, 3) / 6, D = std::cbrt(6 * m / (b.density * kPi));
-    const double y = std::min(b.impact_height > 0 ? b.impact_height : 0.9 * d_.height, d_.height);
-    p_.dam.width = clean(D + xd(y) - xu(y));
-    width_rule_ = "the boulder's diameter plus the section's thickness at the impact height (a 45 degree spread)";
-  }
   if (p_.boulder) {
     const BoulderPreset& b = *p_.boulder;
+    boulder_m_ = b.mass > 0 ? b.mass : b.density * kPi * std::pow(b.diameter, 3) / 6;  // m = rho pi D^3 / 6 (a sphere)
+    if (dim_ == 2 && !d_.width_given && d_.type == "concrete_gravity") {
+      // A point impact on a plane model: the width over which the boulder's load spreads through the struck section at
+      // 45 degrees, its diameter plus the section's thickness at the impact height.
+      const double y = std::min(b.impact_height > 0 ? b.impact_height : 0.9 * d_.height, d_.height);
+      p_.dam.width = clean(boulder_diameter() + xd(y) - xu(y));
+      width_rule_ = "the boulder's diameter plus the section's thickness at the impact height (a 45 degree spread)";
+    }
     // The 2D model is a cylinder as long as the out-of-plane width with the boulder's mass:
-    // m = rho pi D^3 / 6 (a sphere) = rho pi r^2 W  ->  r = sqrt(m / (rho pi W)).
-    boulder_m_ = b.mass > 0 ? b.mass : b.density * kPi * std::pow(b.diameter, 3) / 6;
+    // m = rho pi r^2 W  ->  r = sqrt(m / (rho pi W)).
     boulder_r_ = dim_ == 3 ? std::cbrt(3 * boulder_m_ / (4 * kPi * b.density)) : std::sqrt(boulder_m_ / (b.density * kPi * d_.width));
   }
   h_ = choose_cell_size();
@@ -258,7 +258,7 @@ DesignBasis Builder::design_basis() const {
   if (p_.boulder) {
     const BoulderPreset& b = *p_.boulder;
     BoulderBasis k;
-    k.mass_kg = boulder_m_, k.diameter_m = std::cbrt(6 * boulder_m_ / (b.density * kPi)), k.density_kg_m3 = b.density;
+    k.mass_kg = boulder_m_, k.diameter_m = boulder_diameter(), k.density_kg_m3 = b.density;
     k.youngs_modulus_Pa = b.youngs_modulus, k.poisson_ratio = b.poisson_ratio, k.speed_m_s = boulder_speed_, k.impact_height_m = impact_y_;
     k.model = rigid_boulder_ ? BoulderModel::rigid : free_boulder_ ? BoulderModel::elastic_when_touching : BoulderModel::elastic;
     out.boulder = k;
