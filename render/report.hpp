@@ -35,7 +35,8 @@ nlohmann::json report_data(const std::vector<RunData>& runs, const nlohmann::jso
 
 // Mustache rendering of the compiled-in template with `data` (CSS inserted as "css").
 std::string render_report_html(const nlohmann::json& data);
-// The members' damping as the report states it: Rayleigh C = alpha M + beta K (scenario structure.rayleigh_damping)
+// The members' damping as the report states it: modal (scenario structure.modal_damping: its ratio and band), or
+// Rayleigh C = alpha M + beta K (structure.rayleigh_damping)
 // damps a mode at f by zeta(f) = alpha / (4 pi f) + pi f beta (Chopra 2012, eq. 11.4.3): the ratio at 10 Hz, 100 Hz,
 // 1 kHz and 10 kHz, since it grows with frequency and a bare hard impact excites kHz modes; "none" without damping.
 std::string member_damping_text(const nlohmann::json& scenario);

@@ -70,6 +70,13 @@ std::string member_damping_text(const json& scenario) {
   const json* st = scenario.contains("structure") && scenario["structure"].is_object() ? &scenario["structure"] : nullptr;
   const json* rd = st && st->contains("rayleigh_damping") && (*st)["rayleigh_damping"].is_object() ? &(*st)["rayleigh_damping"] : nullptr;
   const double a = rd ? rd->value("mass", 0.0) : 0.0, b = rd ? rd->value("stiffness", 0.0) : 0.0;
+  const json* md = st && st->contains("modal_damping") && (*st)["modal_damping"].is_object() ? &(*st)["modal_damping"] : nullptr;
+  if (md) {
+    const std::string top = md->contains("max_frequency") ? "up to " + eng((*md)["max_frequency"].get<double>(), "Hz") : "every mode";
+    return "modal: ζ " + fmt("%.3g", 100 * md->value("ratio", 0.0)) + " % in " + top +
+           " of the assembled frame (computed modes), so the kHz modes of a hard impact are damped as lightly as the first" +
+           (a > 0 || b > 0 ? "; plus Rayleigh α " + fmt("%.3g", a) + " 1/s, β " + fmt("%.3g", b) + " s" : std::string());
+  }
   if (!(a > 0) && !(b > 0)) return "none";
   std::string z;
   for (double f : {10.0, 100.0, 1e3, 1e4}) z += (z.empty() ? "" : " / ") + fmt("%.3g", 100 * (a / (4 * std::numbers::pi * f) + std::numbers::pi * f * b));
@@ -395,6 +402,13 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
       {"cell size", [](const RunData& r) { return fmt("%.3g m", r.results.info.numbers.count("cell_size") ? r.results.info.numbers.at("cell_size") : NAN); }},
       {"particles", [](const RunData& r) { return fmt("%.0f", r.results.info.numbers.count("particles") ? r.results.info.numbers.at("particles") : NAN); }},
       {"members / elements", [](const RunData& r) { return r.frame ? std::to_string(r.frame->members.size()) + " / " + std::to_string(r.frame->elements.size()) : std::string("—"); }},
+      {"members' lowest natural periods", [](const RunData& r) {
+         std::string t;
+         for (int k = 1; k <= 3; ++k)
+           if (auto it = r.results.info.numbers.find("frame_period_" + std::to_string(k)); it != r.results.info.numbers.end())
+             t += (t.empty() ? "" : ", ") + eng(it->second, "s");
+         return t.empty() ? std::string("—") : t;
+       }},
       {"member damping", [](const RunData& r) {
          const std::string& t = r.results.info.scenario_expanded_json.empty() ? r.results.info.scenario_json : r.results.info.scenario_expanded_json;
          const json s = json::parse(t, nullptr, false);

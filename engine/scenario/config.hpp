@@ -188,6 +188,8 @@ struct StructureConfig {
   bool self_weight = true;                           // gravity on the members' own mass
   FrameInitialState initial_state = FrameInitialState::static_equilibrium;  // with self_weight
   double rayleigh_mass = 0, rayleigh_stiffness = 0;  // C = alpha M + beta K: alpha (1/s), beta (s)
+  double modal_damping_ratio = 0;                    // modal damping: zeta of every mode up to the frequency below
+  double modal_damping_max_frequency = std::numeric_limits<double>::infinity();  // Hz
   double hht_alpha = -0.1;                           // newmark: HHT alpha in [-1/3, 0]
   std::vector<FrameNodeConfig> nodes;
   std::vector<MemberConfig> members;

@@ -480,6 +480,17 @@ void read_structure(Obj o, StructureConfig& st) {
     r.fail("stiffness", nullptr, "0 with transformation corotational (beta K0 damps rigid-body rotation of the members; "
                                  "use the mass-proportional term or HHT damping)");
   r.finish();
+  Obj md = o.object("modal_damping", "modal damping of the frame: every mode computed from the frame up to max_frequency damped at one "
+                                     "ratio (C = sum 2 zeta omega_i M phi_i phi_i^T M), the ratio a hard impact's kHz modes see too; "
+                                     "absent: none");
+  md.number("ratio", st.modal_damping_ratio, Spec{.doc = "damping ratio zeta of each mode", .min = 0, .max = 1, .max_open = true,
+                                                  .required = md.present()});
+  md.number("max_frequency", st.modal_damping_max_frequency, Spec{.unit = "Hz", .doc = "modes above it are left undamped; absent: every mode",
+                                                                  .min = 0, .min_open = true});
+  if (!o.documenting() && st.modal_damping_ratio > 0 && st.transformation == FrameTransformKind::corotational)
+    md.fail("ratio", nullptr, "no modal damping with transformation corotational (the modes of the initial stiffness damp rigid-body "
+                              "rotation of the members; use the mass-proportional Rayleigh term or HHT damping)");
+  md.finish();
   o.array<FrameNodeConfig>("nodes", st.nodes, Spec{.doc = "frame nodes (at least 2), inside the grid", .required = true}, read_frame_node);
   o.array<MemberConfig>("members", st.members, Spec{.doc = "members (at least 1), each a straight beam-column between two nodes", .required = true},
                         read_member);

@@ -90,8 +90,9 @@ class Builder {
   void add_concrete_members();
   void add_steel_frame();
   void add_space_steel_frame();
-  // The members' damping (dam.damping_ratio, dam.damping_model) at the first two cantilever modes of a uniform
-  // cantilever with radius of gyration r (m) of `material`, into st; sets period_, which the 3D end time uses.
+  // The members' damping (dam.damping_ratio, dam.damping_model) into st: modal, or Rayleigh at the first two modes
+  // of a uniform cantilever with radius of gyration r (m) of `material`; sets period_ (that cantilever's first
+  // period), which the 3D end time uses.
   void damp(json& st, const json& material, double r);
   // A position in the elevation (x along the flow, y up) and across the channel as the scene's coordinates:
   // 2D [x, y]; 3D [x, across, y] (z up).
@@ -327,6 +328,7 @@ void Builder::add_concrete_members() {
   const double c = H / std::hypot(H, x1 - x0);
   json st;
   st["integrator"] = "newmark";
+  st["theory"] = d_.beam_theory;
   st["self_weight"] = true;
   st["nodes"] = json::array({{{"name", "base"}, {"position", at(x0, 0.0)}}, {{"name", "crest"}, {"position", at(x1, H)}}});
   st["members"] = json::array({{{"name", "dam"}, {"start", "base"}, {"end", "crest"}, {"material", "concrete"}, {"elements", d_.elements},
@@ -378,7 +380,7 @@ void Builder::add_steel_frame() {
                            {"elements", secondary}, {"section", pipe(bd, bt)}});
     }
   }
-  json st{{"integrator", "newmark"}, {"self_weight", true}, {"nodes", nodes}, {"members", members}, {"supports", supports}};
+  json st{{"integrator", "newmark"}, {"theory", d_.beam_theory}, {"self_weight", true}, {"nodes", nodes}, {"members", members}, {"supports", supports}};
   damp(st, d_.steel, std::sqrt(D * D + std::pow(D - 2 * d_.column_t, 2)) / 4);  // pipe: r^2 = (D^2 + d^2) / 16
   out_["structure"] = st;
   box_.add(0, 0), box_.add(xd(0), H + 0.5 * D);
@@ -418,7 +420,7 @@ void Builder::add_space_steel_frame() {
         }
         if (j + 1 < nc) member("tie_" + tag, node(i, j, k), node(i, j + 1, k), secondary, bd, bt);
       }
-  json st{{"integrator", "newmark"}, {"self_weight", true}, {"nodes", nodes}, {"members", members}, {"supports", supports}};
+  json st{{"integrator", "newmark"}, {"theory", d_.beam_theory}, {"self_weight", true}, {"nodes", nodes}, {"members", members}, {"supports", supports}};
   damp(st, d_.steel, std::sqrt(D * D + std::pow(D - 2 * d_.column_t, 2)) / 4);  // pipe: r^2 = (D^2 + d^2) / 16
   out_["structure"] = st;
   box_.add(0, 0), box_.add(xd(0), H + 0.5 * D);
@@ -428,7 +430,9 @@ void Builder::add_space_steel_frame() {
 void Builder::damp(json& st, const json& material, double r) {
   const auto modes = cantilever_modes(material["youngs_modulus"], material["density"], r, d_.height);
   period_ = 2 * kPi / modes.first;
-  if (d_.damping_ratio > 0) st["rayleigh_damping"] = rayleigh(d_.damping_ratio, modes, d_.damping_model);
+  if (!(d_.damping_ratio > 0)) return;
+  if (d_.damping_model == "modal") st["modal_damping"] = json{{"ratio", d_.damping_ratio}};
+  else st["rayleigh_damping"] = rayleigh(d_.damping_ratio, modes, d_.damping_model);
 }
 
 double Builder::buffer_damping_frequency(double E, double thickness) const {

@@ -10,7 +10,8 @@
 namespace dmi {
 
 struct DamPreset {
-  std::string type, base = "fixed", sloped_face = "downstream", model = "members", damping_model = "rayleigh";
+  std::string type, base = "fixed", sloped_face = "downstream", model = "members", damping_model = "modal";
+  std::string beam_theory;  // the members' beam theory (scenario structure.theory); empty before parsing
   double height = 0, width = 1.0, damping_ratio = 0.05;
   bool width_given = true;  // false: 2D with a boulder takes the effective width of the impact (preset_scene.cpp)
   int elements = 8;

@@ -116,21 +116,24 @@ void read_dam(Obj o, DamPreset& d) {
                                            "the column spacing across the channel of a steel dam"));
   d.width_given = o.documenting() || o.given("width") != nullptr;
   o.choice<std::string>("base", d.base, {{"fixed", "fixed"}, {"pinned", "pinned"}}, Spec{.doc = "support at the foundation"});
-  o.number("damping_ratio", d.damping_ratio, Spec{.doc = "structural damping ratio (Rayleigh, fitted to the first two cantilever modes "
-                                                         "of the dam estimated as a uniform cantilever, Lin, Cheng & Tuan; concrete 5-10 %)",
+  o.number("damping_ratio", d.damping_ratio, Spec{.doc = "structural damping ratio of the members (concrete 5-10 %, steel 2-5 %)",
                                                   .min = 0, .max = 0.5});
-  o.choice<std::string>("damping_model", d.damping_model, {{"rayleigh", "rayleigh"}, {"mass", "mass"}},
-                        Spec{.doc = "how damping_ratio damps the members: rayleigh = C = alpha M + beta K fitted at the first two "
-                                    "cantilever modes (zeta grows with frequency above the second: 16 % at 1 kHz for the demo's dam, "
-                                    "which halves a bare hard impact's base shear); mass = C = alpha M with zeta at the first mode "
-                                    "(zeta falls above it: the bound that does not damp what a hard impact excites)"});
-  // A short hard impact excites the dam's higher modes: its peak base shear with 2 / 4 / 8 / 16 / 32 elements was
-  // 4.17 / 7.13 / 8.07 / 8.87 / 8.88 MN (bare preset, h = 0.04 m), so 16 for the concrete wall; the steel frame's
-  // reactions moved by 1 % from 8 to 16.
+  o.choice<std::string>("damping_model", d.damping_model, {{"modal", "modal"}, {"rayleigh", "rayleigh"}, {"mass", "mass"}},
+                        Spec{.doc = "how damping_ratio damps the members: modal = every mode of the assembled frame at damping_ratio "
+                                    "(computed modes; the kHz modes a hard impact excites get the same ratio as the first); "
+                                    "rayleigh = C = alpha M + beta K fitted at the first two modes of the dam as a uniform "
+                                    "cantilever (zeta grows with frequency above the second and damps a hard impact's kHz modes "
+                                    "heavily); mass = C = alpha M with zeta at the first mode (zeta falls above it)"});
+  // A short hard impact excites the dam's higher modes, which the members must resolve (docs/verification.md).
   if (d.type == "concrete_gravity") d.elements = 16;
   o.integer("elements", d.elements, Spec{.doc = "beam-column elements per member (members model); default 16 for concrete_gravity "
                                                 "(peak base shear within 0.2 % of 32 elements, 8 gave -9 %), 8 for steel_open",
                                          .min = 1, .max = 1000});
+  d.beam_theory = d.type == "concrete_gravity" ? "timoshenko" : "euler_bernoulli";
+  o.choice<std::string>("beam_theory", d.beam_theory, {{"timoshenko", "timoshenko"}, {"euler_bernoulli", "euler_bernoulli"}},
+                        Spec{.doc = "the members' beam theory: timoshenko (shear deformation and rotary inertia; the default for "
+                                    "concrete_gravity, whose section is a sizeable fraction of its height) or euler_bernoulli (the "
+                                    "default for steel_open's slender pipes)"});
   if (o.when("type", d.type, "concrete_gravity")) {
     o.number("crest_thickness", d.crest, positive("m", "thickness at the crest, along the flow", true));
     o.number("base_thickness", d.base_thickness, positive("m", "thickness at the base, >= crest_thickness", true));

@@ -137,6 +137,7 @@ template <int D> typename FrameTypes<D>::Model build_model(const Scenario& s) {
     for (int d = 0; d < D; ++d) fm.gravity[d] = s.analysis.gravity[d];
   fm.rayleigh_mass = st.rayleigh_mass;
   fm.rayleigh_stiffness = st.rayleigh_stiffness;
+  fm.modal_damping = ModalDamping{st.modal_damping_ratio, st.modal_damping_max_frequency};
   fm.hht_alpha = st.hht_alpha;
   return fm;
 }

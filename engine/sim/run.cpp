@@ -8,6 +8,7 @@
 #include <cctype>
 #include <algorithm>
 #include <chrono>
+#include <numbers>
 #include <csignal>
 #include <cmath>
 #include <cstdio>
@@ -23,6 +24,7 @@
 #include "engine/io/vtu.hpp"
 #include "engine/mpm/solver.hpp"
 #include "engine/sim/build_frame.hpp"
+#include "engine/structure/assembled_system.hpp"
 #include "engine/sim/build_scene.hpp"
 #include "engine/sim/checkpoint.hpp"
 #include "engine/sim/recorder.hpp"
@@ -150,6 +152,20 @@ template <int D> RunEstimate step_budget(const Solver<D>& solver, const Scenario
   throw InputError(s.message_source(), "/analysis/end_time", end.str(), os.str());
 }
 
+// The members' three lowest natural periods (s) as frame_period_1..3 (fewer for a frame with fewer free DOFs; none
+// above the dense eigen solve's size).
+template <class F> void record_periods(const F& f, RunInfo& info) {
+  if (f.ndof() > AssembledSystem::kModalDenseMax) return;
+  std::vector<double> w;
+  for (int n = std::min(3, f.ndof()); n > 0 && w.empty(); --n) {
+    try {
+      w = f.natural_frequencies(n);
+    } catch (const std::invalid_argument&) {  // fewer free DOFs than asked for
+    }
+  }
+  for (std::size_t k = 0; k < w.size(); ++k) info.numbers["frame_period_" + std::to_string(k + 1)] = 2 * std::numbers::pi / w[k];
+}
+
 template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   namespace fs = std::filesystem;
   const auto t0 = std::chrono::steady_clock::now();
@@ -157,6 +173,7 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   Recorder<D> rec(solver, s);
   RunInfo info = make_info(s, o);
   info.numbers["particles"] = static_cast<double>(solver.scene().particles.size());
+  if (const auto* f = solver.scene().frame.get()) record_periods(*f, info);
   // A CFL factor above the scheme's measured stability limit is reduced to it, with a message (docs/reliability.md).
   if (const double lim = stable_cfl_limit(s.mpm.shape, s.mpm.transfer); s.analysis.cfl > lim && !s.mpm.allow_unstable_cfl) {
     solver.scene().options.cfl = lim;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 
 namespace dmi {
@@ -14,11 +15,46 @@ SpMat from_triplets(int n, const Triplets& t) {
   return A;
 }
 
-void AssembledSystem::finish(bool lumped, double rayleigh_mass, double rayleigh_stiffness) {
+void AssembledSystem::finish(bool lumped, double rayleigh_mass, double rayleigh_stiffness, const ModalDamping& modal) {
   alpha_ = rayleigh_mass;
   beta_ = rayleigh_stiffness;
   check_mechanism();
   factorise_mass(lumped);
+  build_modal_damping(modal);
+}
+
+std::vector<int> AssembledSystem::free_dofs() const {
+  std::vector<int> idx;
+  for (int i = 0; i < ndof(); ++i)
+    if (free_(i) > 0) idx.push_back(i);
+  return idx;
+}
+
+// U = M Phi_r (mass-normalised modes up to max_frequency) and rates 2 zeta omega_i.
+void AssembledSystem::build_modal_damping(const ModalDamping& modal) {
+  if (!(modal.ratio > 0)) return;
+  if (!(modal.ratio < 1) || !(modal.max_frequency > 0)) fail("modal damping needs 0 < ratio < 1 and a maximum frequency > 0");
+  const std::vector<int> idx = free_dofs();
+  const int nf = static_cast<int>(idx.size());
+  if (nf > kModalDenseMax)
+    fail("modal damping computes every mode and takes at most " + std::to_string(kModalDenseMax) + " free DOFs (the frame has " +
+         std::to_string(nf) + "); use Rayleigh damping");
+  const Eigen::MatrixXd K(K0_), M(M_);
+  const Eigen::MatrixXd Kf = K(idx, idx), Mf = M(idx, idx);
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(Kf, Mf);  // Phi^T Mf Phi = I
+  if (es.info() != Eigen::Success) throw std::runtime_error("Frame: generalised eigen solve for modal damping failed");
+  const double wmax = 2 * std::numbers::pi * modal.max_frequency;
+  int r = 0;
+  while (r < nf && std::sqrt(std::max(es.eigenvalues()(r), 0.0)) <= wmax) ++r;
+  modal_ratio_ = modal.ratio;
+  modal_U_ = Eigen::MatrixXd::Zero(ndof(), r);
+  modal_U_(idx, Eigen::all) = Mf * es.eigenvectors().leftCols(r);
+  modal_rates_.resize(r);
+  for (int i = 0; i < r; ++i) modal_rates_(i) = 2 * modal.ratio * std::sqrt(std::max(es.eigenvalues()(i), 0.0));
+}
+
+double AssembledSystem::damping_rate_bound(double omega_max) const {
+  return alpha_ + beta_ * omega_max * omega_max + 2 * modal_ratio_ * omega_max;
 }
 
 double AssembledSystem::max_eigenvalue() const {
@@ -111,6 +147,7 @@ SpMat AssembledSystem::constrained(const SpMat& A) const {
 void AssembledSystem::damping_force(const Eigen::VectorXd& v, Eigen::VectorXd& out) const {
   out.noalias() = alpha_ * (M_ * v);
   if (beta_ > 0) out.noalias() += beta_ * (K0_ * v);
+  if (modal_rates_.size() > 0) out.noalias() += modal_U_ * modal_rates_.cwiseProduct(modal_U_.transpose() * v);
 }
 
 void AssembledSystem::solve_mass(Eigen::VectorXd& r, Eigen::VectorXd& a) const {
@@ -126,9 +163,7 @@ void AssembledSystem::solve_mass(Eigen::VectorXd& r, Eigen::VectorXd& a) const {
 }
 
 Eigen::VectorXd AssembledSystem::eigenvalues() const {
-  std::vector<int> idx;
-  for (int i = 0; i < ndof(); ++i)
-    if (free_(i) > 0) idx.push_back(i);
+  const std::vector<int> idx = free_dofs();
   const int nf = static_cast<int>(idx.size());
   const Eigen::MatrixXd K(K0_), M(M_);
   Eigen::MatrixXd Kf(nf, nf), Mf(nf, nf);

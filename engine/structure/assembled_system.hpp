@@ -1,7 +1,7 @@
 // The assembled operators a time integrator sees (integrator.hpp), shared by the plane frame (frame_system.hpp,
 // 3 DOFs per node) and the space frame (space_frame_system.hpp, 6 DOFs per node): the mass matrix M (lumped or
-// consistent, plus nodal masses), the initial (linear) stiffness K0 with support springs, Rayleigh damping
-// C = alpha M + beta K0, the restrained DOFs, and the internal force and tangent of the coordinate transformation.
+// consistent, plus nodal masses), the initial (linear) stiffness K0 with support springs, the damping
+// C = alpha M + beta K0 + C_modal (Rayleigh and modal terms, ModalDamping), the restrained DOFs, and the internal force and tangent of the coordinate transformation.
 // Vectors are full size; restrained DOFs are masked: free() is 1 on free and 0 on restrained DOFs, solves use
 // constrained() matrices (identity on restrained rows/columns), so a restrained DOF keeps a zero displacement,
 // velocity and acceleration. The unmasked rows of mass() and stiffness() give the support reactions.
@@ -13,6 +13,8 @@
 #include <algorithm>
 #include <string>
 #include <vector>
+
+#include "engine/structure/damping.hpp"
 
 namespace dmi {
 
@@ -28,6 +30,7 @@ template <int N, class Matrix> void scatter_element(Triplets& t, int i, int j, c
 }
 
 SpMat from_triplets(int n, const Triplets& t);
+
 
 class AssembledSystem {
  public:
@@ -49,9 +52,15 @@ class AssembledSystem {
   virtual void internal_force(const Eigen::VectorXd& d, Eigen::VectorXd& out) const = 0;
   // Tangent stiffness at d (K0 for the linear transformation), unconstrained.
   virtual SpMat tangent(const Eigen::VectorXd& d) const = 0;
-  // out = C v = alpha M v + beta K0 v.
+  // out = C v = alpha M v + beta K0 v + U diag(rates) U^T v.
   void damping_force(const Eigen::VectorXd& v, Eigen::VectorXd& out) const;
-  bool damped() const { return alpha_ > 0 || beta_ > 0; }
+  bool damped() const { return alpha_ > 0 || beta_ > 0 || modal_rates_.size() > 0; }
+  // The modal term as C_modal = U diag(rates) U^T: U's columns M phi_i (zero on restrained DOFs), rates 2 zeta omega_i;
+  // empty without modal damping. The implicit integrator adds it to its sparse matrix as a low-rank update.
+  const Eigen::MatrixXd& modal_basis() const { return modal_U_; }
+  const Eigen::VectorXd& modal_rates() const { return modal_rates_; }
+  // The largest c = v^T C v / v^T M v over the modes: alpha + beta omega_max^2 + 2 zeta omega_max (explicit step).
+  double damping_rate_bound(double omega_max) const;
   // The largest step that resolves, with omega dt <= 1/2, every mode the Rayleigh damping leaves underdamped:
   // zeta(omega) = alpha / (2 omega) + beta omega / 2 < 1 below omega_u = (1 + sqrt(1 - alpha beta)) / beta, and that
   // the mesh carries (omega_max, max_eigenvalue): 1 / (2 min(omega_u, omega_max)). Newmark's period error there is
@@ -71,6 +80,7 @@ class AssembledSystem {
   // omega_max^2: exact up to kDenseEigenMax free DOFs, else the element (Irons) bound plus springs.
   double max_eigenvalue() const;
   static constexpr int kDenseEigenMax = 600;
+  static constexpr int kModalDenseMax = 2500;  // free DOFs for modal damping (dense eigenvectors: ~1.4 s at 1 400)
 
  protected:
   explicit AssembledSystem(int node_dofs) : node_dofs_(node_dofs) {}
@@ -101,7 +111,7 @@ class AssembledSystem {
   }
   // After a derived class has filled M_, K0_, free_, springs_ and element_bound_: refuses a mechanism (naming the
   // DOF) and prepares the mass solve.
-  void finish(bool lumped, double rayleigh_mass, double rayleigh_stiffness);
+  void finish(bool lumped, double rayleigh_mass, double rayleigh_stiffness, const ModalDamping& modal);
   virtual std::string dof_name(int dof) const = 0;
   [[noreturn]] virtual void fail(const std::string& what) const = 0;
 
@@ -113,9 +123,13 @@ class AssembledSystem {
  private:
   void check_mechanism() const;
   void factorise_mass(bool lumped);
+  void build_modal_damping(const ModalDamping& modal);
+  std::vector<int> free_dofs() const;
 
   int node_dofs_ = 3;
-  double alpha_ = 0, beta_ = 0;
+  double alpha_ = 0, beta_ = 0, modal_ratio_ = 0;
+  Eigen::MatrixXd modal_U_;
+  Eigen::VectorXd modal_rates_;
   bool lumped_ = true;
   std::vector<Eigen::MatrixXd> inv_blocks_;   // lumped: each node's free block, inverted
   std::vector<std::vector<int>> block_dofs_;  // and the DOFs it covers

@@ -52,14 +52,26 @@ BeamShape beam_shape(double xi, double L) {
           {(6 * x2 - 6 * xi) / L, 1 - 4 * xi + 3 * x2, (6 * xi - 6 * x2) / L, 3 * x2 - 2 * xi}};
 }
 
+BeamShape timoshenko_shape(double xi, double L, double phi) {
+  const double x2 = xi * xi, x3 = x2 * xi, c = 1 / (1 + phi);
+  return {{1 - xi, xi},
+          {c * (2 * x3 - 3 * x2 - phi * xi + 1 + phi), c * L * (x3 - (2 + phi / 2) * x2 + (1 + phi / 2) * xi),
+           -c * (2 * x3 - 3 * x2 - phi * xi), c * L * (x3 - (1 - phi / 2) * x2 - phi / 2 * xi)},
+          {6 * c / L * (x2 - xi), c * (3 * x2 - (4 + phi) * xi + 1 + phi), -6 * c / L * (x2 - xi), c * (3 * x2 - (2 - phi) * xi)}};
+}
+
 PlaneBasic plane_basic(const FrameElementDef& def, double L, BeamTheory theory, const std::function<double(double)>& inertia) {
   PlaneBasic r;
   const bool shear = theory == BeamTheory::timoshenko;
   const double G = def.E / (2 * (1 + def.nu)), kappa = def.section.shear_coefficient();
   const auto at = [&](double xi) { return def.s0 + xi * (def.s1 - def.s0); };
 
+  // Timoshenko: the shear-to-bending flexibility ratio phi = 12 E I / (kappa G A L^2) at the element's middle shapes
+  // its mass (timoshenko_shape).
+  const double phi = shear ? 12 * def.E * inertia(at(0.5)) / (kappa * G * def.section.area(at(0.5)) * L * L) : 0.0;
   r.fb.setZero();
   r.mc.setZero();
+  r.mr.setZero();
   Eigen::Matrix<double, 3, 4> v0 = Eigen::Matrix<double, 3, 4>::Zero();  // basic deformations per unit load
   for (const GaussPoint& g : gauss_legendre()) {
     const double s = at(g.xi), A = def.section.area(s), dx = g.w * L;
@@ -75,15 +87,25 @@ PlaneBasic plane_basic(const FrameElementDef& def, double L, BeamTheory theory, 
       v0.row(1) += dx * fv * sp.row(1);
       v0.row(2) += dx * fv * sp.row(1);
     }
-    // Consistent mass: axial [u_i, u_j] linear, transverse [w_i, t_i, w_j, t_j] Hermite.
-    const BeamShape sh = beam_shape(g.xi, L);
+    // Consistent mass: axial [u_i, u_j] linear, transverse [w_i, t_i, w_j, t_j] Hermite (Timoshenko: the
+    // interdependent shapes, with the section rotation's for the rotary inertia).
+    const BeamShape sh = shear ? timoshenko_shape(g.xi, L, phi) : beam_shape(g.xi, L);
     Vec6 nu, nw;
     nu << sh.axial[0], 0, 0, sh.axial[1], 0, 0;
     nw << 0, sh.hermite[0], sh.hermite[1], 0, sh.hermite[2], sh.hermite[3];
     const double rho_a = def.rho * A;
     r.mc += dx * rho_a * (nu * nu.transpose() + nw * nw.transpose());
     r.m += dx * rho_a;
+    if (shear) {
+      Vec6 nt;
+      nt << 0, sh.slope[0], sh.slope[1], 0, sh.slope[2], sh.slope[3];
+      const double rho_i = def.rho * inertia(s);
+      r.mr += dx * rho_i * nt * nt.transpose();
+      r.jr += dx * rho_i;
+    }
   }
+
+  r.mc += r.mr;
 
   // Stiffness: inverse flexibility on the kept set (axial always; moments unless released).
   r.kb.setZero();
@@ -125,8 +147,8 @@ BeamElement::BeamElement(const FrameElementDef& def, double L, BeamTheory theory
   fb_ = p.fb, kb_ = p.kb, mc_ = p.mc, m_ = p.m, q0_ = p.q0, feq_ = p.feq;
   // HRZ lumping: node translational share of the (axial + transverse) diagonal, rotary scaled as transverse.
   const double ti = mc_(0, 0) + mc_(1, 1), tj = mc_(3, 3) + mc_(4, 4), rot = m_ / (mc_(1, 1) + mc_(4, 4));
-  ml_ << m_ * ti / (ti + tj), m_ * ti / (ti + tj), rot * mc_(2, 2), m_ * tj / (ti + tj), m_ * tj / (ti + tj),
-      rot * mc_(5, 5);
+  ml_ << m_ * ti / (ti + tj), m_ * ti / (ti + tj), p.lumped_rotation(0, rot), m_ * tj / (ti + tj), m_ * tj / (ti + tj),
+      p.lumped_rotation(1, rot);
 }
 
 double BeamElement::strain_energy(const Vec3& v) const {

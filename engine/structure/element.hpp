@@ -13,7 +13,9 @@
 // nodal loads are -(a^T q0 + p0) (p0: simply supported reactions). For a prismatic Euler-Bernoulli element
 // they equal the Hermite-consistent loads (p L/2, p L^2/12).
 // Mass from the displacement interpolation (axial linear, transverse cubic Hermite; frame.hpp ElementCurve),
-// rho A(x) integrated numerically; lumped = HRZ diagonal scaling (Hinton, Rock & Zienkiewicz 1976).
+// rho A(x) integrated numerically; Timoshenko: the interdependent shapes (timoshenko_shape) and the section's rotary
+// inertia rho I(x) on its rotation (Friedman & Kosmatka 1993); lumped = HRZ diagonal scaling (Hinton, Rock &
+// Zienkiewicz 1976).
 // Local DOF order [u_i, w_i, t_i, u_j, w_j, t_j] along (e1, e2).
 #pragma once
 #include <Eigen/Dense>
@@ -37,6 +39,10 @@ struct BeamShape {
   double slope[4];
 };
 BeamShape beam_shape(double xi, double L);
+// The Timoshenko element's interdependent interpolation (Friedman & Kosmatka 1993): transverse
+// displacement (`hermite`) and section rotation (`slope`) on [w_i, t_i, w_j, t_j] that satisfy the homogeneous
+// Timoshenko equations for phi = 12 E I / (kappa G A L^2); phi = 0 gives beam_shape.
+BeamShape timoshenko_shape(double xi, double L, double phi);
 
 // Distributed load intensity varying linearly along the element, per metre of initial length (N/m),
 // components along (e1, e2), at xi = 0 (a) and xi = 1 (b).
@@ -61,8 +67,17 @@ struct PlaneBasic {
   Mat3 fb, kb;
   Mat34 q0;
   Mat64 feq;
-  Mat6 mc;
-  double m = 0;
+  Mat6 mc;          // consistent mass, rotary inertia included (Timoshenko)
+  Mat6 mr;          // its rotary-inertia part, int rho I(x) n_t n_t^T dx, n_t the slopes of the Hermite shapes; 0 for EB
+  double m = 0;     // element mass
+  double jr = 0;    // rotary inertia int rho I(x) dx (Timoshenko; 0 for EB)
+  // HRZ lumped rotational mass at end i (k = 0) or j (k = 1): the transverse part scaled like the translations
+  // (scale = element mass / transverse diagonal sum), plus the share of jr by the rotary part's diagonal.
+  double lumped_rotation(int k, double scale) const {
+    const int d = k == 0 ? 2 : 5;
+    const double share = jr > 0 ? jr * mr(d, d) / (mr(2, 2) + mr(5, 5)) : 0.0;
+    return scale * (mc(d, d) - mr(d, d)) + share;
+  }
 };
 PlaneBasic plane_basic(const FrameElementDef& def, double L, BeamTheory theory, const std::function<double(double)>& inertia);
 // [N, V, M] at xi of a plane with basic stiffness kb and fixed-end forces q0 under basic deformations v and load

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "engine/common/state_io.hpp"
+#include "engine/structure/damping.hpp"
 #include "engine/structure/fibre.hpp"
 #include "engine/structure/section.hpp"
 
@@ -74,6 +75,7 @@ struct FrameModel {
   double rayleigh_mass = 0.0;             // alpha (1/s): C = alpha M + beta K
   double rayleigh_stiffness = 0.0;        // beta (s)
   double hht_alpha = 0.0;                 // Newmark integrator: HHT alpha in [-1/3, 0]; 0 = average acceleration
+  ModalDamping modal_damping;             // modal damping from the computed modes (none by default)
 };
 
 // Deformed centre-line of one element, xi in [0, 1]:

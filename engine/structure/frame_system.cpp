@@ -17,7 +17,7 @@ namespace {
 FrameSystem::FrameSystem(FrameModel model) : AssembledSystem(3), model_(std::move(model)) {
   validate();
   assemble();
-  finish(model_.mass == MassMatrix::lumped, model_.rayleigh_mass, model_.rayleigh_stiffness);
+  finish(model_.mass == MassMatrix::lumped, model_.rayleigh_mass, model_.rayleigh_stiffness, model_.modal_damping);
 }
 
 std::string FrameSystem::dof_name(int dof) const {

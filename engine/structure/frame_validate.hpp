@@ -66,6 +66,9 @@ template <class Model, class Fail> void validate_frame_model(const Model& model_
   if (!(model_.rayleigh_mass >= 0 && model_.rayleigh_stiffness >= 0) ||
       !std::isfinite(model_.rayleigh_mass + model_.rayleigh_stiffness))
     fail("Rayleigh coefficients must be finite and >= 0");
+  if (!(model_.modal_damping.ratio >= 0 && model_.modal_damping.ratio < 1)) fail("modal damping ratio must lie in [0, 1)");
+  if (model_.modal_damping.ratio > 0 && model_.transform == FrameTransform::corotational)
+    fail("modal damping is built on the initial stiffness and would damp rigid rotation of corotational members");
   if (!model_.gravity.allFinite()) fail("gravity must be finite");
 }
 

@@ -13,7 +13,7 @@ ExplicitEuler::ExplicitEuler(const AssembledSystem& sys) : sys_(sys) {
   if (!std::isfinite(w2) || !(w2 > 0))
     throw std::invalid_argument("Frame: (K, M) eigenvalues are not finite and positive; no stable time step");
   const double w = std::sqrt(w2);
-  const double c = sys.rayleigh_mass() + sys.rayleigh_stiffness() * w * w;
+  const double c = sys.damping_rate_bound(w);
   dt_stable_ = 4 / (std::sqrt(4 * w * w + c * c) + c);
   const int n = sys.ndof();
   fint_.setZero(n);
@@ -87,7 +87,7 @@ void Newmark::kinematics(const FrameState& n, const Eigen::VectorXd& D, double d
 // Numeric LDLT of A; the symbolic analysis (AMD ordering, elimination tree) is redone only when A's sparsity pattern
 // differs from the last one analysed. Under stick contact the matrix changes every step but its pattern does not,
 // and the ordering was the largest single cost of a small frame's step (perf, Lin & Yang verification 1: 16 elements, Newmark).
-bool Newmark::factorize(const SpMat& A, bool throw_on_failure) {
+bool Newmark::factorize(const SpMat& A, double c_modal, bool throw_on_failure) {
   const auto n = static_cast<std::size_t>(A.outerSize()) + 1;
   const bool same = pattern_outer_.size() == n && std::equal(pattern_outer_.begin(), pattern_outer_.end(), A.outerIndexPtr()) &&
                     pattern_inner_.size() == static_cast<std::size_t>(A.nonZeros()) &&
@@ -98,14 +98,28 @@ bool Newmark::factorize(const SpMat& A, bool throw_on_failure) {
     pattern_inner_.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
   }
   solver_.factorize(A);
-  if (solver_.info() == Eigen::Success) return true;
+  if (solver_.info() == Eigen::Success && sys_.modal_rates().size() > 0) {
+    const Eigen::MatrixXd& U = sys_.modal_basis();
+    modal_Y_ = solver_.solve(U);
+    Eigen::MatrixXd S = U.transpose() * modal_Y_;
+    S.diagonal() += (c_modal * sys_.modal_rates()).cwiseInverse();
+    capacitance_.compute(S);
+    if (capacitance_.info() == Eigen::Success) return true;
+  } else if (solver_.info() == Eigen::Success) {
+    return true;
+  }
   if (throw_on_failure) throw std::runtime_error("Frame: Newmark effective matrix factorisation failed");
   return false;
 }
 
+void Newmark::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  x = solver_.solve(b);
+  if (sys_.modal_rates().size() > 0) x.noalias() -= modal_Y_ * capacitance_.solve(sys_.modal_basis().transpose() * x);
+}
+
 void Newmark::step_linear(FrameState& s, const Eigen::VectorXd& f, double dt, const SpMat* Ma) {
   const double c0 = 1 / (beta_ * dt * dt), c1 = gamma_ / (beta_ * dt);
-  const double ar = sys_.rayleigh_mass(), br = sys_.rayleigh_stiffness();
+  const double ar = sys_.rayleigh_mass(), br = sys_.rayleigh_stiffness(), cmodal = (1 + alpha_) * c1;
   if (dt != dt_factored_) {  // c0 M + (1 + alpha)(K0 + c1 C), C = ar M + br K0: rebuilt when dt changes (CFL steps)
     const double ck = (1 + alpha_) * (1 + c1 * br), cm = c0 + (1 + alpha_) * c1 * ar;
     if (kc_.nonZeros() == 0) {  // K0 and M constrained on one common pattern, so keff_ is a sum of value arrays
@@ -120,7 +134,7 @@ void Newmark::step_linear(FrameState& s, const Eigen::VectorXd& f, double dt, co
     double* v = keff_.valuePtr();
     for (Eigen::Index q = 0; q < keff_.nonZeros(); ++q) v[q] = ck * k[q] + cm * m[q];
     dt_factored_ = dt;
-    if (!Ma) factorize(keff_);
+    if (!Ma) factorize(keff_, cmodal);
     factored_with_mass_ = false;
   }
   if (Ma) {  // + c0 Ma on the free DOFs, written into a copy of the cached matrix (same pattern: node blocks)
@@ -130,10 +144,10 @@ void Newmark::step_linear(FrameState& s, const Eigen::VectorXd& f, double dt, co
       for (SpMat::InnerIterator it(*Ma, c); it; ++it)
         if (free(it.row()) > 0 && free(it.col()) > 0) keff_ma_.coeffRef(it.row(), it.col()) += c0 * it.value();
     keff_ma_.makeCompressed();
-    factorize(keff_ma_);
+    factorize(keff_ma_, cmodal);
     factored_with_mass_ = true;
   } else if (factored_with_mass_) {
-    factorize(keff_);
+    factorize(keff_, cmodal);
     factored_with_mass_ = false;
   }
   // rhs = f - K0 d_n + (M + Ma)(c0 dt v_n + (1/(2 beta) - 1) a_n)
@@ -148,7 +162,7 @@ void Newmark::step_linear(FrameState& s, const Eigen::VectorXd& f, double dt, co
     rhs_ -= fint_;
   }
   rhs_.array() *= sys_.free().array();
-  dd_ = solver_.solve(rhs_);
+  solve(rhs_, dd_);
   kinematics(s, dd_, dt, s);
 }
 
@@ -181,8 +195,8 @@ void Newmark::step_newton(FrameState& s, const Eigen::VectorXd& f, double dt, co
     if (it == kMaxIterations) break;
     SpMat J = (1 + alpha_) * (sys_.tangent(s.d) + c1 * br * sys_.stiffness()) + (c0 + (1 + alpha_) * c1 * ar) * sys_.mass();
     if (Ma) J += c0 * *Ma;
-    if (!factorize(sys_.constrained(J), false)) break;
-    delta = solver_.solve(rhs_);
+    if (!factorize(sys_.constrained(J), (1 + alpha_) * c1, false)) break;
+    solve(rhs_, delta);
     D += delta;
   }
   s = n;  // leave the state at t_n

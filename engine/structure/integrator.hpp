@@ -63,7 +63,9 @@ class ExplicitEuler final : public FrameTimeIntegrator {
 // need it, since stick contact feeds the undamped high modes that ring at omega dt >> 1 back into
 // the material (a debris block on a steel pipe gained 4e6 J with alpha = 0 at dt = 1e-4 s).
 // Linear: the effective matrix c0 (M + Ma) + (1 + alpha)(K0 + c1 C) is factorised when dt changes
-// (and in steps with attached mass); corotational: Newton-Raphson with K_t in place of K0.
+// (and in steps with attached mass); corotational: Newton-Raphson with K_t in place of K0. The modal damping term
+// U diag(rates) U^T joins the sparse factorisation as a low-rank update (Woodbury identity, Golub & Van Loan
+// 2013, sec. 2.1.4): (A + U D U^T)^-1 b = A^-1 b - Y (D^-1 + U^T Y)^-1 U^T A^-1 b, Y = A^-1 U.
 class Newmark final : public FrameTimeIntegrator {
  public:
   Newmark(const AssembledSystem& sys, double hht_alpha);
@@ -81,7 +83,11 @@ class Newmark final : public FrameTimeIntegrator {
   void kinematics(const FrameState& n, const Eigen::VectorXd& D, double dt, FrameState& s);
   void step_linear(FrameState& s, const Eigen::VectorXd& f, double dt, const SpMat* Ma);
   void step_newton(FrameState& s, const Eigen::VectorXd& f, double dt, const SpMat* Ma);
-  bool factorize(const SpMat& A, bool throw_on_failure = true);
+  // Factorises A (the sparse part of the effective matrix) and, with modal damping weighted by c_modal in the
+  // effective matrix, the Woodbury capacitance matrix.
+  bool factorize(const SpMat& A, double c_modal, bool throw_on_failure = true);
+  // x = (A + c_modal U diag(rates) U^T)^-1 b for the last factorisation.
+  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
 
   const AssembledSystem& sys_;
   double alpha_ = 0, beta_ = 0.25, gamma_ = 0.5;
@@ -91,6 +97,8 @@ class Newmark final : public FrameTimeIntegrator {
   SpMat keff_, keff_ma_;     // constrained effective matrix for dt_factored_, and with the attached mass
   std::vector<int> pattern_outer_, pattern_inner_;  // the sparsity pattern solver_ last analysed
   Eigen::SimplicialLDLT<SpMat> solver_;
+  Eigen::MatrixXd modal_Y_;                 // A^-1 U
+  Eigen::LLT<Eigen::MatrixXd> capacitance_; // (c_modal diag(rates))^-1 + U^T A^-1 U
   Eigen::VectorXd fint_, fint0_, tmp_, rhs_, dd_;
 };
 

@@ -65,8 +65,8 @@ SpaceBeamElement::SpaceBeamElement(const SpaceElementDef& def, double L, BeamThe
   const double ti = m1(0, 0) + m1(1, 1), tj = m1(3, 3) + m1(4, 4);
   const double rot1 = m_ / (m1(1, 1) + m1(4, 4)), rot2 = m_ / (m2(1, 1) + m2(4, 4)), torsion = t11 + 2 * t12 + t22;
   Vec12 d;
-  d << Vec3::Constant(m_ * ti / (ti + tj)), torsion * t11 / (t11 + t22), rot2 * m2(2, 2), rot1 * m1(2, 2),
-      Vec3::Constant(m_ * tj / (ti + tj)), torsion * t22 / (t11 + t22), rot2 * m2(5, 5), rot1 * m1(5, 5);
+  d << Vec3::Constant(m_ * ti / (ti + tj)), torsion * t11 / (t11 + t22), p2_.lumped_rotation(0, rot2), p1_.lumped_rotation(0, rot1),
+      Vec3::Constant(m_ * tj / (ti + tj)), torsion * t22 / (t11 + t22), p2_.lumped_rotation(1, rot2), p1_.lumped_rotation(1, rot1);
   ml_ = d.asDiagonal();
 }
 

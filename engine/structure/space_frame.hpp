@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "engine/common/state_io.hpp"
+#include "engine/structure/damping.hpp"
 #include "engine/structure/fibre.hpp"
 #include "engine/structure/frame.hpp"
 #include "engine/structure/section.hpp"
@@ -67,6 +68,7 @@ struct SpaceFrameModel {
   double rayleigh_mass = 0.0;             // alpha (1/s): C = alpha M + beta K
   double rayleigh_stiffness = 0.0;        // beta (s)
   double hht_alpha = 0.0;                 // Newmark: HHT alpha in [-1/3, 0]
+  ModalDamping modal_damping;             // modal damping from the computed modes (none by default)
 };
 
 // Deformed centre-line of one space element, xi in [0, 1] (the plane ElementCurve with two transverse directions):

@@ -11,7 +11,7 @@ namespace dmi {
 SpaceFrameSystem::SpaceFrameSystem(SpaceFrameModel model) : AssembledSystem(6), model_(std::move(model)) {
   validate();
   assemble();
-  finish(model_.mass == MassMatrix::lumped, model_.rayleigh_mass, model_.rayleigh_stiffness);
+  finish(model_.mass == MassMatrix::lumped, model_.rayleigh_mass, model_.rayleigh_stiffness, model_.modal_damping);
 }
 
 std::string SpaceFrameSystem::dof_name(int dof) const {

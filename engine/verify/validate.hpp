@@ -50,6 +50,7 @@ std::vector<CaseResult> stamp(std::vector<CaseResult> r, double wall);
 const std::vector<ValidationCase>& validation_cases();
 std::vector<ValidationCase> member_validation_cases();  // cases_members.cpp (Lin & Yang 2024)
 std::vector<ValidationCase> debris_validation_cases();  // cases_debris.cpp (granular collapse)
+std::vector<ValidationCase> dam_validation_cases();     // cases_dam.cpp (the dam members against a solid model)
 
 // Bar vibration at one resolution (used by the case, tests and benchmarks).
 struct BarResult {
