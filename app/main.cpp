@@ -530,6 +530,8 @@ int main(int argc, char** argv) {
       } else {
         std::vector<std::string> written;
         simulate(file, out, threads, quiet, progress, false, false, restart, &written);
+        std::error_code ec;  // a grid study left in the folder belonged to the results just replaced
+        std::filesystem::remove_all(std::filesystem::path(out) / "grid_study", ec);
         const std::string design = (std::filesystem::path(out) / "design.json").string();
         verdict = dmi::design::check_main(written, limits_file, false, design, quiet, DMI_VERSION);
       }
@@ -551,7 +553,7 @@ int main(int argc, char** argv) {
       return 0;
     }
 #endif
-    if (*chk) return dmi::design::check_main(check_paths, limits_file, json, design_out, quiet, DMI_VERSION);
+    if (*chk) return dmi::design::check_main(check_paths, limits_file, json, design_out, quiet, DMI_VERSION, true);
 #ifdef DMI_LEAN
     if (*bch) return dmi::bench_main(bench_cases, json, quick, bo);
 #else

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "design/design.hpp"
+#include "design/grid_study.hpp"
 #include "engine/common/error.hpp"
 #include "engine/io/results_writer.hpp"
 
@@ -185,7 +186,7 @@ void write_design_json(const std::string& path, const json& doc) {
 }
 
 int check_main(const std::vector<std::string>& paths, const std::string& limits_file, bool print_json, const std::string& out, bool quiet,
-               const std::string& version) {
+               const std::string& version, bool with_grid_study) {
   const Limits limits = limits_file.empty() ? Limits{} : read_limits(limits_file);
   std::vector<std::string> files;
   for (const auto& p : paths)
@@ -206,13 +207,15 @@ int check_main(const std::vector<std::string>& paths, const std::string& limits_
       throw InputError(f + ": " + e.what());
     }
   }
-  const json doc = design_document(runs, limits, version);
+  json doc = design_document(runs, limits, version);
   // Beside the results (a comparison folder: in the folder), atomically.
   fs::path target = out;
   if (target.empty()) {
     std::error_code ec;
     target = fs::is_directory(paths.front(), ec) ? fs::path(paths.front()) / "design.json" : fs::path(paths.front()).parent_path() / "design.json";
   }
+  // A grid study's folder keeps its study: the coarser levels are judged again with the same limits.
+  if (with_grid_study) restudy_grid(doc, target.parent_path().string(), limits_file, version);
   write_design_json(target.string(), doc);
   if (print_json) std::cout << doc.dump(1) << "\n";
   else if (!quiet) std::cout << summary_text(doc) << "wrote " << target.string() << "\n";

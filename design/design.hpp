@@ -40,8 +40,10 @@ std::string verdict_text(const nlohmann::json& design);
 
 // `damimpact check PATH... [--limits FILE] [--json] [-o design.json]`: PATH a results.h5 or a run folder (holding
 // results.h5, or with_buffer/ and without_buffer/). Writes design.json (atomically) beside the results, or to
-// `out`. Returns 0 when every check of the design passes, 1 when one fails; bad input throws (exit 2).
+// `out`. With with_grid_study, a grid study in the folder (out/grid_study/, from `run --grid-study`) is judged again
+// with the same limits (restudy_grid). Returns 0 when every check of the design passes, 1 when one fails; bad input
+// throws (exit 2).
 int check_main(const std::vector<std::string>& paths, const std::string& limits_file, bool print_json, const std::string& out,
-               bool quiet, const std::string& software_version);
+               bool quiet, const std::string& software_version, bool with_grid_study = false);
 
 }  // namespace dmi::design

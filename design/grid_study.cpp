@@ -194,12 +194,43 @@ GridStudyOutcome run_grid_study(const std::string& file, const nlohmann::json& s
       }
   }
   r.design = designs[0];
-  r.design["grid_study"] = grid_study_section(designs, r.h, folders);
-  add_grid_uncertainty(r.design);
-  const Limits limits = limits_file.empty() ? Limits{} : read_limits(limits_file);
-  r.passed = judge_grid_study(r.design, limits.grid_judge_on);
+  r.passed = attach_grid_study(r.design, designs, r.h, folders, limits_file);
   write_design_json((fs::path(out) / "design.json").string(), r.design);
   return r;
+}
+
+bool attach_grid_study(nlohmann::json& design, const std::array<nlohmann::json, 3>& designs, const std::array<double, 3>& h,
+                       const std::array<std::string, 3>& folders, const std::string& limits_file) {
+  design["grid_study"] = grid_study_section(designs, h, folders);
+  add_grid_uncertainty(design);
+  const Limits limits = limits_file.empty() ? Limits{} : read_limits(limits_file);
+  return judge_grid_study(design, limits.grid_judge_on);
+}
+
+bool restudy_grid(nlohmann::json& design, const std::string& out, const std::string& limits_file, const std::string& software_version) {
+  namespace fs = std::filesystem;
+  const fs::path root = fs::path(out) / "grid_study";
+  std::error_code ec;
+  if (!fs::is_directory(root, ec)) return false;
+  std::vector<std::pair<double, std::string>> levels;  // (h, folder) of the coarser levels
+  for (const auto& e : fs::directory_iterator(root, ec)) {
+    const std::string name = e.path().filename().string();
+    char* end = nullptr;
+    const double h = name.rfind("h_", 0) == 0 ? std::strtod(name.c_str() + 2, &end) : 0.0;
+    if (e.is_directory() && h > 0 && end && *end == '\0') levels.emplace_back(h, e.path().string());
+  }
+  if (levels.size() != 2) return false;
+  std::sort(levels.begin(), levels.end());
+  std::array<nlohmann::json, 3> designs{design, {}, {}};
+  std::array<std::string, 3> folders{out, levels[0].second, levels[1].second};
+  const std::array<double, 3> h{levels[0].first * levels[0].first / levels[1].first, levels[0].first, levels[1].first};
+  for (int g = 1; g <= 2; ++g) {
+    const std::string file = (fs::path(folders[g]) / "design.json").string();
+    check_main({folders[g]}, limits_file, false, file, true, software_version);
+    std::ifstream d(file);
+    designs[g] = nlohmann::json::parse(d);
+  }
+  return attach_grid_study(design, designs, h, folders, limits_file);
 }
 
 }  // namespace dmi::design

@@ -42,6 +42,16 @@ struct GridStudyOutcome {
 // overlap, the two coarser levels run in two more threads at the lowest CPU priority (nice 19) while the finest runs
 // in this one: they take the cores the finest level leaves idle (its variants end at different times) and little
 // else; simulate and on_level must then be safe to call from two threads at once.
+// Adds the grid_study section of the three documents to `design` (the finest), the grid uncertainty of its
+// governing numbers and the judged verdict (limits file grid_study.judge_on); returns whether the design passes.
+bool attach_grid_study(nlohmann::json& design, const std::array<nlohmann::json, 3>& designs, const std::array<double, 3>& h,
+                       const std::array<std::string, 3>& folders, const std::string& limits_file);
+
+// `damimpact check` of a finished grid study: when out/grid_study/ holds the two coarser levels (h_<cell>/), each is
+// checked again with the limits file and the study rebuilt on `design` (the finest level's new document; the finest
+// cell is h1^2 / h2 of the two). Returns false, leaving design as it is, when out holds no such study.
+bool restudy_grid(nlohmann::json& design, const std::string& out, const std::string& limits_file, const std::string& software_version);
+
 GridStudyOutcome run_grid_study(const std::string& file, const nlohmann::json& source, double h, double ratio, const std::string& out,
                                 const std::string& limits_file, const LevelSimulator& simulate, bool quiet,
                                 const std::string& software_version,

@@ -79,7 +79,7 @@ void persistent_checks(const Sample& s, double t0, const RigidSection& sec, cons
 
 bool stability_applies(const FrameInfo& f, const DesignBasis& b) {
   const DamBasis& d = b.dam;
-  return f.dim == 2 && !f.supports.empty() && d.type == DamKind::concrete_gravity && is_set(d.heel_x_m) && is_set(d.toe_x_m) &&
+  return !f.supports.empty() && d.type == DamKind::concrete_gravity && is_set(d.heel_x_m) && is_set(d.toe_x_m) &&
          is_set(d.crest_upstream_x_m) && is_set(d.crest_downstream_x_m);
 }
 
@@ -91,7 +91,13 @@ json stability(const Results& r, const FrameInfo& f, const DesignBasis& b, const
   const double Mr = sec.weight_N * sec.centroid_from_toe_m;
   const double U = is_set(d.water_height_m) ? L.uplift_factor * d.water_unit_weight_N_m3 * d.water_height_m * sec.base_m * d.width_m / 2 : 0.0;
   const BaseHistory h = base_history(r, f, where);
-  const std::vector<double>&Fx = h.at("Fx_N"), &Fy = h.at("Fy_N"), &M = h.at("M_Nm");
+  // The elevation's base forces: 2D (Fx, Fy, Mz); 3D (x along the flow, z up) Fx, Fz and -My (a moment about +y turns
+  // z towards x, the elevation's clockwise).
+  const bool space = f.dim == 3;
+  const std::vector<double>&Fx = h.at("Fx_N"), &Fy = h.at(space ? "Fz_N" : "Fy_N");
+  std::vector<double> M = h.at(space ? "My_Nm" : "M_Nm");
+  if (space)
+    for (double& m : M) m = -m;
   // The rigid dam's weight is the section's; the frame must carry it at rest (self-weight on, the same section), else
   // its reactions do not describe this dam.
   if (!(std::abs(Fy[0] - sec.weight_N) <= 0.1 * sec.weight_N))

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <fstream>
 #include <filesystem>
 #include <stdexcept>
 #include <thread>
@@ -91,5 +92,32 @@ TEST(GridStudy, SideBySideLevelsReportTheirErrors) {
   }
   EXPECT_TRUE(fs::exists(out / "results.h5"));     // the finest level ran ...
   EXPECT_FALSE(fs::exists(out / "design.json"));  // ... but its checks alone are not the study: removed
+  fs::remove_all(out);
+}
+
+// `damimpact check` on a grid study's folder keeps the study: the coarser levels are judged again and the section
+// rebuilt, with the same numbers for the same limits.
+TEST(GridStudy, CheckOfAStudyFolderKeepsItsStudy) {
+  namespace fs = std::filesystem;
+  const fs::path out = fs::temp_directory_path() / ("dmi_gs_check_" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  const std::string file = std::string(DMI_SOURCE_DIR) + "/tests/data/design/cantilever_self_weight.json";
+  std::ifstream in(file);
+  const nlohmann::json source = nlohmann::json::parse(in);
+  const LevelSimulator simulate = [&](const std::string& scen, const std::string& dir, int) -> std::vector<std::string> {
+    const std::string cmd = std::string(DMI_BINARY) + " simulate " + scen + " -o " + dir + " -q";
+    if (std::system(cmd.c_str()) != 0) throw std::logic_error("simulation failed: " + cmd);
+    return {dir + "/results.h5"};
+  };
+  const double h = source["grid"]["cell_size"].get<double>();
+  const GridStudyOutcome study = run_grid_study(file, source, h, 2.0, out.string(), "", simulate, true, "test");
+  ASSERT_TRUE(study.design.contains("grid_study"));
+  const std::string cmd = std::string(DMI_BINARY) + " check " + out.string() + " -q > /dev/null";
+  ASSERT_LE(std::system(cmd.c_str()) >> 8, 1);
+  std::ifstream d(out / "design.json");
+  const nlohmann::json checked = nlohmann::json::parse(d);
+  ASSERT_TRUE(checked.contains("grid_study"));
+  EXPECT_EQ(checked["grid_study"]["quantities"], study.design["grid_study"]["quantities"]);
+  EXPECT_NEAR(checked["grid_study"]["cell_sizes_m"][0].get<double>(), h, 1e-12 * h);
   fs::remove_all(out);
 }

@@ -163,6 +163,32 @@ TEST(Stability, TrialDamThroughTheDesignLayer) {
   EXPECT_NEAR(checks[4].demand, 1.5 * 1.811011e-3, 1e-8);
 }
 
+// The same dam and pulse as a space frame (x along the flow, y across, z up): the reaction series carries
+// Fx, Fy, Fz, Mx, My, Mz, and the elevation's moment is -My (a moment about +y turns z towards x). The same numbers.
+TEST(Stability, TrialDamInThreeDimensions) {
+  const double W = 1059480.0, H = 1.421e6, x0 = 1.75, xg = 3.5 - 2.1833333333;
+  Results r;
+  Series s{"supports/base/reaction", "N", {"Fx", "Fy", "Fz", "Mx", "My", "Mz"}, {}};
+  const double ts[6] = {0.0, 0.01, 0.01 + 1e-12, 0.03, 0.03 + 1e-12, 0.2}, hs[6] = {0, 0, H, H, 0, 0};
+  for (int k = 0; k < 6; ++k) {
+    r.time.push_back(ts[k]);
+    s.data.insert(s.data.end(), {-hs[k], 0.0, W, 0.0, -(W * (xg - x0) + hs[k] * 5.0), 0.0});
+  }
+  r.series.push_back(s);
+  FrameInfo f;
+  f.dim = 3, f.nodes = {{x0, 0, 0}}, f.supports = {FrameInfo::Support{"base", "supports/base/reaction", 0}};
+  DesignBasis b;
+  b.dam.height_m = 6, b.dam.width_m = 3, b.dam.density_kg_m3 = 2400;
+  b.dam.heel_x_m = 0, b.dam.toe_x_m = 3.5, b.dam.crest_upstream_x_m = 0, b.dam.crest_downstream_x_m = 1.5;
+  FoundationLimits L;
+  std::vector<Check> checks;
+  const nlohmann::json j = stability(r, f, b, L, checks, "r.h5");
+  EXPECT_NEAR(j["persistent"]["eccentricity_m"].get<double>(), -0.4333333, 1e-6);
+  EXPECT_NEAR(j["impact"]["least_sliding_factor"]["sliding_factor"].get<double>(), 0.6 * W / H, 1e-9);
+  EXPECT_NEAR(j["impact"]["sliding_displacement_m"].get<double>(), 3.250856e-3, 1e-8);
+  EXPECT_NEAR(j["impact"]["peak_rocking_rotation_rad"].get<double>(), 1.811011e-3, 1e-8);
+}
+
 // Water 3 m behind the trial dam, full uplift: U = 9 810 x 3 x 3.5 x 3 / 2 = 154 507.5 N at 2B/3 = 2.333333 m from the
 // toe: at rest N = 1 059 480 - 154 507.5 = 904 972.5 N and x_r = (2 313 198 - 154 507.5 x 2.333333) / 904 972.5
 // = 2.157730 m; half the uplift with drains (uplift_factor 0.5).
