@@ -433,9 +433,10 @@ void read_nodal_mass(Obj& o, NodalMassConfig& m) {
 }
 
 void read_pressure_load(Obj& o, PressureLoadConfig& l) {
-  o.string("member", l.member, Spec{.doc = "the member loaded (plane structures)", .required = true});
-  o.vector("direction", l.direction, Spec{.doc = "direction of the pressure's force (normalised), e.g. [1, 0] downstream", .required = true});
-  o.number("surface", l.surface, Spec{.unit = "m", .doc = "height of the free surface (y); the pressure is zero above it", .required = true});
+  o.string("member", l.member, Spec{.doc = "the member loaded", .required = true});
+  o.vector("direction", l.direction, Spec{.doc = "direction of the pressure's force (normalised), e.g. [1, 0] (3D [1, 0, 0]) downstream",
+                                          .required = true});
+  o.number("surface", l.surface, Spec{.unit = "m", .doc = "height of the free surface (y; 3D z); the pressure is zero above it", .required = true});
   o.number("gradient", l.gradient, Spec{.unit = "N/m^2", .doc = "increase of the load per unit height (N/m) with depth below the surface: "
                                                                     "unit weight x pressure coefficient x loaded width", .min = 0,
                                         .min_open = true, .required = true});
@@ -498,7 +499,7 @@ void read_structure(Obj o, StructureConfig& st) {
   o.array<NodalMassConfig>("masses", st.masses, Spec{.doc = "point masses and rotary inertias added at nodes"}, read_nodal_mass);
   o.array<PressureLoadConfig>("pressure_loads", st.pressure_loads,
                               Spec{.doc = "permanent linearly increasing pressures on members (earth and water behind a dam), held from "
-                                          "t = 0 with the self-weight (the frame starts in equilibrium under both); plane structures"},
+                                          "t = 0 with the self-weight (the frame starts in equilibrium under both)"},
                               read_pressure_load);
   o.finish();
 }
@@ -808,10 +809,12 @@ std::set<std::string> check_structure(const Scenario& s, const std::string& file
   for (std::size_t i = 0; i < st.pressure_loads.size(); ++i) {
     const PressureLoadConfig& l = st.pressure_loads[i];
     const std::string p = base + "/pressure_loads/" + std::to_string(i);
-    if (s.analysis.dimension != 2) throw InputError(file, p, "", "no pressure loads in 3D (plane structures only)");
     if (!members.count(l.member)) throw InputError(file, p + "/member", quoted(l.member), "the name of a member");
-    if (l.direction.size() != 2 || !(std::hypot(l.direction[0], l.direction[1]) > 0))
-      throw InputError(file, p + "/direction", value_text(l.direction), "a non-zero direction [x, y]");
+    const std::size_t dim = static_cast<std::size_t>(s.analysis.dimension);
+    double norm = 0;
+    for (double c : l.direction) norm += c * c;
+    if (l.direction.size() != dim || !(norm > 0))
+      throw InputError(file, p + "/direction", value_text(l.direction), dim == 3 ? "a non-zero direction [x, y, z]" : "a non-zero direction [x, y]");
   }
   check_frame_geometry(st, file);
   return members;

@@ -342,10 +342,7 @@ void Builder::add_concrete_members() {
                   {"gradient", d_.deposit_coefficient * d_.deposit_unit_weight * d_.width}});
   if (d_.water_height > 0)
     pl.push_back({{"member", "dam"}, {"direction", at(1.0, 0.0)}, {"surface", d_.water_height}, {"gradient", d_.water_unit_weight * d_.width}});
-  if (!pl.empty()) {
-    if (dim_ == 3) fail("/dam/deposit", json(), "no deposit or water behind the dam in 3D (plane runs only)");
-    st["pressure_loads"] = pl;
-  }
+  if (!pl.empty()) st["pressure_loads"] = pl;
   damp(st, d_.concrete, 0.5 * (d_.base_thickness + d_.crest) * c / std::sqrt(12.0));
   out_["structure"] = st;
   box_.add(xu(0), 0), box_.add(xd(0), H), box_.add(xu(H), H);

@@ -38,20 +38,24 @@ template <> struct FrameTypes<3> {
 // moment M = integral q s ds about the element's start (a = (4F - 6M/L)/L, b = (6M/L - 2F)/L): the reactions of a
 // statically determinate frame are exact, the surface anywhere. The integrals split at the surface; each piece is
 // integrated exactly by two-point Gauss (q linear).
-void add_pressure_loads(const StructureConfig& st, FrameModel& fm) {
+template <class Model> void add_pressure_loads(const StructureConfig& st, Model& fm) {
   if (st.pressure_loads.empty()) return;
-  fm.permanent.assign(fm.elements.size(), {Vec2::Zero(), Vec2::Zero()});
+  using V = std::decay_t<decltype(fm.nodes[0])>;
+  constexpr int up = V::RowsAtCompileTime - 1;  // the vertical axis: y in 2D, z in 3D
+  fm.permanent.assign(fm.elements.size(), {V::Zero(), V::Zero()});
   for (const PressureLoadConfig& l : st.pressure_loads) {
-    const Vec2 dir = Vec2(l.direction[0], l.direction[1]).normalized();
+    V dir;
+    for (int c = 0; c < dir.size(); ++c) dir[c] = l.direction[c];
+    dir.normalize();
     for (const FrameMemberDef& m : fm.members) {
       if (m.name != l.member) continue;
       for (int e = m.first_element; e < m.first_element + m.elements; ++e) {
-        const Vec2 A = fm.nodes[fm.elements[e].i], B = fm.nodes[fm.elements[e].j];
-        const double L = (B - A).norm(), dy = B.y() - A.y();
-        const auto q = [&](double s) { return l.gradient * std::max(0.0, l.surface - (A.y() + dy * s / L)) * std::abs(dy) / L; };
+        const V A = fm.nodes[fm.elements[e].i], B = fm.nodes[fm.elements[e].j];
+        const double L = (B - A).norm(), dy = B[up] - A[up];
+        const auto q = [&](double s) { return l.gradient * std::max(0.0, l.surface - (A[up] + dy * s / L)) * std::abs(dy) / L; };
         std::vector<double> cuts = {0.0, L};
         if (dy != 0) {
-          const double s0 = (l.surface - A.y()) * L / dy;
+          const double s0 = (l.surface - A[up]) * L / dy;
           if (s0 > 0 && s0 < L) cuts.insert(cuts.begin() + 1, s0);
         }
         double F = 0, M = 0;
@@ -112,7 +116,7 @@ template <int D> typename FrameTypes<D>::Model build_model(const Scenario& s) {
     }
     fm.members.push_back(md);
   }
-  if constexpr (D == 2) add_pressure_loads(st, fm);
+  add_pressure_loads(st, fm);
   constexpr int n_dof = D == 2 ? 3 : 6, n_tr = D;
   for (const auto& sc : st.supports) {
     typename T::Support d;

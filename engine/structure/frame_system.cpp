@@ -29,11 +29,6 @@ void FrameSystem::fail(const std::string& what) const { dmi::fail(what); }
 
 void FrameSystem::validate() const {
   validate_frame_model(model_, [this](const std::string& w) { fail(w); });
-  const std::size_t ne = model_.elements.size();
-  if (!model_.permanent.empty() && model_.permanent.size() != ne)
-    fail("permanent loads: " + std::to_string(model_.permanent.size()) + " given for " + std::to_string(ne) + " elements");
-  for (std::size_t e = 0; e < model_.permanent.size(); ++e)
-    if (!model_.permanent[e][0].allFinite() || !model_.permanent[e][1].allFinite()) fail("element " + std::to_string(e) + ": non-finite permanent load");
 }
 
 void FrameSystem::assemble() {

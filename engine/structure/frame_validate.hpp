@@ -70,6 +70,10 @@ template <class Model, class Fail> void validate_frame_model(const Model& model_
   if (model_.modal_damping.ratio > 0 && model_.transform == FrameTransform::corotational)
     fail("modal damping is built on the initial stiffness and would damp rigid rotation of corotational members");
   if (!model_.gravity.allFinite()) fail("gravity must be finite");
+  if (!model_.permanent.empty() && model_.permanent.size() != model_.elements.size())
+    fail("permanent loads: " + std::to_string(model_.permanent.size()) + " given for " + std::to_string(ne) + " elements");
+  for (std::size_t e = 0; e < model_.permanent.size(); ++e)
+    if (!model_.permanent[e][0].allFinite() || !model_.permanent[e][1].allFinite()) fail("element " + std::to_string(e) + ": non-finite permanent load");
 }
 
 }  // namespace dmi

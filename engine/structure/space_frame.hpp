@@ -16,6 +16,7 @@
 // frame's M; its V is -Vy.
 #pragma once
 #include <Eigen/Dense>
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -65,6 +66,9 @@ struct SpaceFrameModel {
   MassMatrix mass = MassMatrix::lumped;
   FrameIntegrator integrator = FrameIntegrator::explicit_euler;
   Vec3 gravity = Vec3::Zero();            // m/s^2 on the members' own mass
+  // Permanent loads held from t = 0 like the self-weight: per element a load varying linearly along it, in global
+  // components per metre of its initial length at its start and end (N/m); empty: none.
+  std::vector<std::array<Vec3, 2>> permanent;
   double rayleigh_mass = 0.0;             // alpha (1/s): C = alpha M + beta K
   double rayleigh_stiffness = 0.0;        // beta (s)
   double hht_alpha = 0.0;                 // Newmark: HHT alpha in [-1/3, 0]

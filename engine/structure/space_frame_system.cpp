@@ -97,13 +97,17 @@ SpaceElementLoad SpaceFrameSystem::element_load(int e, const Vec3& w_local, cons
   SpaceElementLoad p = elements_[e].self_weight(R * model_.gravity);
   p.a += w_local;
   p.b += w_local;
+  if (!model_.permanent.empty()) {
+    p.a += R * model_.permanent[e][0];
+    p.b += R * model_.permanent[e][1];
+  }
   return p;
 }
 
 void SpaceFrameSystem::add_element_loads(const std::vector<Vec3>& w, const Eigen::VectorXd& d, Eigen::VectorXd& f) const {
   const bool gravity = model_.gravity.squaredNorm() > 0;
   for (int e = 0; e < nelements(); ++e) {
-    if (!gravity && w[e].squaredNorm() == 0) continue;
+    if (!gravity && w[e].squaredNorm() == 0 && model_.permanent.empty()) continue;
     const Eigen::Matrix3d R = linear() ? chords_[e].R : element_state(e, d).R;
     const Vec12 fg = rotation12(R).transpose() * elements_[e].equivalent_loads(element_load(e, w[e], d));
     f.segment<6>(6 * model_.elements[e].i) += fg.head<6>();

@@ -54,6 +54,27 @@ TEST(PressureLoads, TheSurfaceInsideAnElementKeepsTheResultants) {
   EXPECT_NEAR(r->data[2], 20e3 * 3.2 * 3.2 * 3.2 / 6, 1e-6 * 109.2e3);
 }
 
+// The same cantilever as a space frame (z up, the pressure along x): the same reactions, Fx -90 kN and a moment about
+// +y of -90 kN m (the support turns the wall back upstream: about +y, z towards x is positive).
+TEST(PressureLoads, ASpaceFrameCarriesTheSamePressure) {
+  J j = cantilever(3.0);
+  j["analysis"] = J{{"dimension", 3}, {"end_time", 0.02}, {"gravity", {0, 0, -9.81}}};
+  j["grid"] = J{{"origin", {-2.0, -1.0, -0.5}}, {"size", {6.0, 2.0, 5.5}}, {"cell_size", 0.25}};
+  j["bodies"][0]["shape"] = J{{"type", "box"}, {"min", {2.5, -0.125, 0.0}}, {"max", {2.75, 0.125, 0.25}}};
+  j["walls"][0]["point"] = {0, 0, 0};
+  j["walls"][0]["normal"] = {0, 0, 1};
+  j["structure"]["nodes"] = J::parse(R"([{"name": "A", "position": [0, 0, 0]}, {"name": "B", "position": [0, 0, 4]}])");
+  j["structure"]["pressure_loads"][0]["direction"] = {1, 0, 0};
+  const RunOutput out = run_quiet(parse_scenario(j.dump(), "test"));
+  const Series* r = out.results.find("supports/A/reaction");
+  ASSERT_NE(r, nullptr);
+  for (std::size_t k = 0; k < out.results.time.size(); ++k) {
+    EXPECT_NEAR(r->data[6 * k], -90e3, 1e-6 * 90e3) << k;
+    EXPECT_NEAR(r->data[6 * k + 2], 2400 * 9.81 * 0.8 * 4.0, 1e-6 * 75e3) << k;
+    EXPECT_NEAR(r->data[6 * k + 4], -90e3, 1e-6 * 90e3) << k;
+  }
+}
+
 TEST(PressureLoads, ErrorsNameTheKey) {
   J j = cantilever(3.0);
   j["structure"]["pressure_loads"][0]["member"] = "dam";
