@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <unistd.h>
 
+#include "core/variants.hpp"
 #include "design/design.hpp"
 #include "design/grid_study.hpp"
 #include "engine/common/error.hpp"
@@ -157,9 +158,9 @@ std::vector<std::string> resolve(const std::string& p) {
   std::error_code ec;
   if (fs::is_directory(p, ec)) {
     const fs::path d(p);
-    if (fs::exists(d / "results.h5")) return {(d / "results.h5").string()};
-    if (fs::exists(d / "with_buffer" / "results.h5") && fs::exists(d / "without_buffer" / "results.h5"))
-      return {(d / "with_buffer" / "results.h5").string(), (d / "without_buffer" / "results.h5").string()};
+    std::vector<std::string> files;
+    for (const auto& [variant, f] : variant_results(d)) files.push_back(f.string());
+    if (!files.empty()) return files;
     if (fs::exists(d / "results.h5.partial")) throw InputError(p + ": holds only results.h5.partial: the run did not finish; nothing to check");
     throw InputError(p + ": no results.h5 in this folder (nor with_buffer/ and without_buffer/ holding one)");
   }

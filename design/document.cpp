@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <functional>
 
+#include "core/variants.hpp"
 #include "design/design.hpp"
 #include "design/loads.hpp"
 
@@ -33,7 +34,51 @@ double member_max(const json& run, const char* peak, double sign) {
   return best;
 }
 
+// The output folder a run's variant sits in: OUT/results.h5 for the variant "", OUT/<variant>/results.h5 otherwise.
+std::string root_folder(const json& r) {
+  const fs::path p = fs::path(r["results_file"].get<std::string>()).parent_path();
+  return (r["variant"].get<std::string>().empty() ? p : p.parent_path()).string();
+}
+
+// The plane model's governing numbers beside its 3D model's (compare_3d), one pair of runs.
+json plane_and_space(const json& plane, const json& space) {
+  struct Q { const char* id; const char* title; const char* unit; std::function<double(const json&)> get; };
+  auto level = [](const char* l) { return [l](const json& r) { return num(r, {"verdict", "levels", l, "max_utilisation"}); }; };
+  const std::vector<Q> qs = {
+      {"base_shear", "peak base shear", "N", [](const json& r) { return num(r, {"base_total", shear_key(r.value("dimension", 2)), "abs_max", "value"}); }},
+      {"base_moment", "peak base moment", "N m", [](const json& r) { return num(r, {"base_total", moment_key(r.value("dimension", 2)), "abs_max", "value"}); }},
+      {"contact_force", "peak contact force", "N", [](const json& r) { return num(r, {"contact", "peak_force_N"}); }},
+      {"contact_impulse", "contact impulse", "N s", [](const json& r) { return num(r, {"contact", "impulse_magnitude_N_s"}); }},
+      {"serviceability", "governing utilisation, serviceability", "-", level("serviceability")},
+      {"ultimate", "governing utilisation, ultimate", "-", level("ultimate")},
+      {"sliding", "sliding under the impact", "m", [](const json& r) { return num(r, {"stability", "impact", "sliding_displacement_m"}); }},
+      {"rocking", "rocking about the toe", "rad", [](const json& r) { return num(r, {"stability", "impact", "peak_rocking_rotation_rad"}); }},
+  };
+  json rows = json::array();
+  for (const Q& q : qs) {
+    const double a = q.get(plane), b = q.get(space);
+    if (std::isnan(a) || std::isnan(b)) continue;
+    rows.push_back({{"id", q.id}, {"title", q.title}, {"unit", q.unit}, {"plane", a}, {"space", b}, {"ratio", b != 0 ? json(a / b) : json(nullptr)}});
+  }
+  return json{{"variant", plane["variant"]}, {"plane_passed", plane["verdict"]["passed"]}, {"space_passed", space["verdict"]["passed"]},
+              {"quantities", rows}};
+}
+
 }  // namespace
+
+json plane_and_space_section(const std::vector<json>& runs) {
+  json pairs = json::array();
+  for (const json& s : runs) {
+    const std::string v = s["variant"].get<std::string>();
+    if (!is_space_variant(v)) continue;
+    for (const json& p : runs)
+      if (p["variant"] == plane_variant(v) && root_folder(p) == root_folder(s)) pairs.push_back(plane_and_space(p, s));
+  }
+  if (pairs.empty()) return nullptr;
+  return json{{"pairs", pairs},
+              {"note", "ratio = plane / 3D. The plane model strikes a width of the dam with a cylinder of the boulder's mass; the 3D "
+                       "model strikes the whole crest with the sphere. Both are judged: the verdict is the worse of the two."}};
+}
 
 json compare_runs(const json& with, const json& without) {
   struct Q { const char* id; const char* title; const char* unit; std::function<double(const json&)> get; };
@@ -81,16 +126,19 @@ json design_document(const std::vector<json>& runs, const Limits& limits, const 
            {"limits", limits.to_json()}, {"runs", runs}, {"comparison", nullptr}};
   // Pair the variants of one comparison folder (OUT/with_buffer, OUT/without_buffer): the bare run of a pair is the
   // reference; every other run is judged.
-  auto folder = [](const json& r) { return fs::path(r["results_file"].get<std::string>()).parent_path().parent_path().string(); };
+  // Pairs within one model (plane, or the 3D one of compare_3d).
   std::vector<bool> reference(runs.size(), false);
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    if (runs[i]["variant"] != "without_buffer") continue;
+    const std::string v = runs[i]["variant"].get<std::string>();
+    if (plane_variant(v) != "without_buffer") continue;
+    const std::string with = is_space_variant(v) ? space_variant("with_buffer") : "with_buffer";
     for (std::size_t j = 0; j < runs.size(); ++j)
-      if (runs[j]["variant"] == "with_buffer" && folder(runs[j]) == folder(runs[i])) {
+      if (runs[j]["variant"] == with && root_folder(runs[j]) == root_folder(runs[i])) {
         reference[i] = true;
-        if (doc["comparison"].is_null()) doc["comparison"] = compare_runs(runs[j], runs[i]);
+        if (doc["comparison"].is_null() && !is_space_variant(v)) doc["comparison"] = compare_runs(runs[j], runs[i]);
       }
   }
+  doc["plane_and_space"] = plane_and_space_section(runs);
   json gov = nullptr;
   int checks = 0, failed = 0;
   std::string basis;

@@ -24,6 +24,8 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include "core/variants.hpp"
+
 namespace dmi::render {
 
 using nlohmann::json;
@@ -32,11 +34,8 @@ namespace fs = std::filesystem;
 std::vector<RunData> load_runs(const std::string& out_dir, json& design_doc) {
   std::error_code ec;
   const fs::path d = fs::is_directory(out_dir, ec) ? fs::path(out_dir) : fs::path(out_dir).parent_path();
-  std::vector<std::pair<std::string, fs::path>> files;
-  if (fs::exists(d / "results.h5")) files.push_back({"", d / "results.h5"});
-  else if (fs::exists(d / "with_buffer" / "results.h5") && fs::exists(d / "without_buffer" / "results.h5"))
-    files = {{"with_buffer", d / "with_buffer" / "results.h5"}, {"without_buffer", d / "without_buffer" / "results.h5"}};
-  else throw InputError(out_dir + ": no results.h5 (nor with_buffer/ and without_buffer/ holding one); run damimpact simulate or run first");
+  const std::vector<std::pair<std::string, fs::path>> files = variant_results(d);
+  if (files.empty()) throw InputError(out_dir + ": no results.h5 (nor with_buffer/ and without_buffer/ holding one); run damimpact simulate or run first");
   std::vector<RunData> runs;
   for (const auto& [variant, f] : files) {
     RunData r;
@@ -472,10 +471,17 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
   return out;
 }
 
+std::vector<RunData> pictured_runs(const std::vector<RunData>& runs) {
+  std::vector<RunData> plane;
+  for (const RunData& r : runs)
+    if (!is_space_variant(r.variant)) plane.push_back(r);
+  return plane.empty() ? runs : plane;
+}
+
 json render_main(const std::string& out_dir, const RenderOptions& o) {
   PictureHelper helper(out_dir, o.quantity, o.helper_of > 0 ? 1 : o.processes);
   json design_doc;
-  const std::vector<RunData> runs = load_runs(out_dir, design_doc);
+  const std::vector<RunData> runs = pictured_runs(load_runs(out_dir, design_doc));
   std::error_code ec;
   const fs::path d = fs::is_directory(out_dir, ec) ? fs::path(out_dir) : fs::path(out_dir).parent_path();
   return render_runs(runs, design_doc, (d / "images").string(), o, &helper);

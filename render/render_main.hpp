@@ -23,6 +23,9 @@ struct RunData {
 // The runs of OUT (OUT/results.h5, or OUT/with_buffer and OUT/without_buffer) and design.json (OUT/design.json when
 // present, else computed with the default limits). Throws dmi::InputError naming the path.
 std::vector<RunData> load_runs(const std::string& out_dir, nlohmann::json& design_doc);
+// The runs the pictures show: the plane runs when compare_3d put 3D models beside them (the report's tables set the
+// two side by side), else all.
+std::vector<RunData> pictured_runs(const std::vector<RunData>& runs);
 
 struct RenderOptions {
   std::string quantity = "von_mises";

@@ -211,7 +211,7 @@ ReportFiles report_main(const std::string& out_dir, const ReportOptions& o) {
   auto t0 = clock::now();
   json manifest;
   try {
-    manifest = render_runs(runs, design_doc, images.string(), RenderOptions{o.quantity, o.quiet, 1, 0, ""}, &helper);
+    manifest = render_runs(pictured_runs(runs), design_doc, images.string(), RenderOptions{o.quantity, o.quiet, 1, 0, ""}, &helper);
   } catch (const std::exception& e) {  // no pictures is not a reason to have no report
     std::fprintf(stderr, "damimpact: warning: pictures not rendered (%s); the report has no figures\n", e.what());
     manifest = json{{"images", json::array()}, {"error", e.what()}};

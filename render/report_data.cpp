@@ -13,6 +13,8 @@
 
 #include "design/design.hpp"
 #include "render/report.hpp"
+
+#include "core/variants.hpp"
 #include "render/sha256.hpp"
 
 namespace dmi::render {
@@ -52,7 +54,9 @@ double num(const json& j, std::initializer_list<const char*> path, double fallba
 }
 
 std::string label(const RunData& r) {
-  return r.variant == "with_buffer" ? "with buffer" : r.variant == "without_buffer" ? "without buffer" : "simulation";
+  const std::string v = plane_variant(r.variant);
+  const std::string plane = v == "with_buffer" ? "with buffer" : v == "without_buffer" ? "without buffer" : "simulation";
+  return is_space_variant(r.variant) ? plane + " (3D)" : plane;
 }
 
 std::string where(const json& c) {
@@ -65,6 +69,31 @@ std::string where(const json& c) {
 }
 
 }  // namespace
+
+static void plane_and_space_data(const json& design_doc, json& d) {
+  const json& ps = design_doc.contains("plane_and_space") ? design_doc["plane_and_space"] : json();
+  d["has_plane_and_space"] = ps.is_object();
+  json cases = json::array();
+  if (!ps.is_object()) {
+    d["plane_and_space"] = cases;
+    return;
+  }
+  for (const auto& pair : ps["pairs"]) {
+    const std::string v = pair["variant"].get<std::string>();
+    json rows = json::array();
+    for (const auto& q : pair["quantities"]) {
+      const double r = num(q, {"ratio"});
+      // The plane model on the safe side: a larger demand (every quantity here is a demand).
+      rows.push_back({{"title", q["title"]}, {"plane", eng(q["plane"], q["unit"])}, {"space", eng(q["space"], q["unit"])},
+                      {"ratio", std::isnan(r) ? "—" : fmt("%.2f", r)}, {"side_class", std::isnan(r) || r >= 1 ? "reduced" : "increased"}});
+    }
+    auto verdict = [](const json& p) { return p.is_boolean() ? (p.get<bool>() ? "PASS" : "FAIL") : "—"; };
+    cases.push_back({{"case", v.empty() ? "the scenario" : v == "with_buffer" ? "with buffer" : "without buffer"}, {"rows", rows},
+                     {"plane_verdict", verdict(pair["plane_passed"])}, {"space_verdict", verdict(pair["space_passed"])}});
+  }
+  d["plane_and_space"] = cases;
+  d["plane_and_space_note"] = ps.value("note", "") + " A ratio below 1 (red) is a quantity the plane model puts below the 3D one.";
+}
 
 std::string member_damping_text(const json& scenario) {
   const json* st = scenario.contains("structure") && scenario["structure"].is_object() ? &scenario["structure"] : nullptr;
@@ -182,12 +211,17 @@ json materials(const RunData& r) {
 }
 
 // Rows of a per-run table: key, then one value per run.
+// A row per quantity, a value per run; a value every run shares is written once across the runs' columns (`same`,
+// `span`), so that a long text does not repeat in narrow columns.
 json per_run_rows(const std::vector<RunData>& runs, const std::vector<std::pair<std::string, std::function<std::string(const RunData&)>>>& rows) {
   json out = json::array();
   for (const auto& [k, f] : rows) {
     json v = json::array();
     for (const auto& r : runs) v.push_back(f(r));
-    out.push_back({{"key", k}, {"values", v}});
+    const bool shared = v.size() > 1 && std::all_of(v.begin(), v.end(), [&](const json& x) { return x == v.front(); });
+    json row{{"key", k}, {"values", v}, {"shared", shared}, {"span", v.size()}};
+    if (shared) row["same"] = v.front();
+    out.push_back(row);
   }
   return out;
 }
@@ -356,12 +390,18 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
                   "members, coupled to the particles by Lin & Yang's two-stage contact with Yang's equivalent force field (Lin & Yang 2024, eqs. 15–29); ") +
       (space ? "three dimensions (z up): space beam-columns with biaxial bending and torsion, checked around their sections. "
              : "plane strain, the out-of-plane width as given. ") +
+      (std::any_of(runs.begin(), runs.end(), [](const RunData& r) { return is_space_variant(r.variant); })
+           ? "The runs marked (3D) are the same scenario in three dimensions (compare_3d): the sphere of the boulder's mass on the "
+             "dam's crest, the dam a space beam-column whose section is the crest length wide. "
+           : "") +
       "Checks and estimates: docs/design-checks.md.";
   json rl = json::array();
   for (const auto& r : runs) {
     bool reference = false;
-    if (r.variant == "without_buffer")
-      for (const auto& o : runs) reference = reference || o.variant == "with_buffer";
+    if (plane_variant(r.variant) == "without_buffer") {
+      const std::string with = is_space_variant(r.variant) ? space_variant("with_buffer") : "with_buffer";
+      for (const auto& o : runs) reference = reference || o.variant == with;
+    }
     json checks = json::array();
     for (const auto& c : r.design["checks"]) {
       const double u = c["utilisation"];
@@ -441,6 +481,8 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
   }
   d["comparison"] = cmp;
   int section = d["has_comparison"].get<bool>() ? 5 : 4;
+  plane_and_space_data(design_doc, d);
+  if (d["has_plane_and_space"].get<bool>()) d["plane_and_space_number"] = std::to_string(section++);
   d["figures_number"] = std::to_string(section++);
   d["estimates_number"] = std::to_string(section++);
   d["health_number"] = std::to_string(section++);

@@ -1159,6 +1159,9 @@ std::vector<ScenarioVariant> parse_scenario_variants(const std::string& text, co
 std::vector<ScenarioVariant> load_scenario_variants(const std::string& path) { return parse_scenario_variants(read_file_text(path), path); }
 
 double common_cell_size(const std::vector<ScenarioVariant>& variants, const std::string& file) {
+  for (const auto& v : variants)
+    if (is_space_variant(v.label))
+      throw InputError(file, "/compare_3d", "true", "false for a grid study (it refines the plane model; run the 3D comparison on its own)");
   const double h = variants.front().scenario.grid.cell_size;
   for (const auto& v : variants)
     if (std::abs(v.scenario.grid.cell_size - h) > 1e-12 * h)

@@ -19,7 +19,7 @@ using schema::Spec;
 
 namespace {
 
-const char* const kPresetKeys[] = {"dam", "boulder", "debris_surge", "tyre_buffer", "compare", "accept_unusual"};
+const char* const kPresetKeys[] = {"dam", "boulder", "debris_surge", "tyre_buffer", "compare", "compare_3d", "accept_unusual"};
 
 using schema::nonneg;
 using schema::positive;
@@ -313,8 +313,11 @@ bool has_presets(const json& j) {
   return false;
 }
 
-std::vector<std::string> preset_variants(const json& j, const std::string& file) {
-  if (!j.is_object() || !j.contains("compare")) return {""};
+namespace {
+
+// The variants of the compare key alone: {""} or the buffer pair.
+std::vector<std::string> buffer_variants(const json& j, const std::string& file) {
+  if (!j.contains("compare")) return {""};
   const json& c = j["compare"];
   if (c != "with_and_without_buffer" && c != "none")
     throw InputError(file, "/compare", schema::short_dump(c), "with_and_without_buffer or none");
@@ -322,6 +325,36 @@ std::vector<std::string> preset_variants(const json& j, const std::string& file)
   if (!j.contains("tyre_buffer"))
     throw InputError(file, "/compare", schema::short_dump(c), "a tyre_buffer to compare with (there is none)");
   return {"with_buffer", "without_buffer"};
+}
+
+// compare_3d: true asks for the 3D model of a plane boulder scenario beside it.
+bool wants_3d(const json& j, const std::string& file) {
+  if (!j.contains("compare_3d")) return false;
+  const json& c = j["compare_3d"];
+  if (!c.is_boolean()) throw InputError(file, "/compare_3d", schema::short_dump(c), "true or false");
+  if (!c.get<bool>()) return false;
+  if (j.contains("analysis") && j["analysis"].is_object() && j["analysis"].value("dimension", 2) == 3)
+    throw InputError(file, "/compare_3d", "true", "a plane scenario (analysis.dimension 2) to set beside its 3D model");
+  if (!j.contains("boulder") || j.contains("debris_surge"))
+    throw InputError(file, "/compare_3d", "true", "a boulder on the dam (the 3D presets build no debris surge)");
+  if (!j.contains("dam") || !j["dam"].is_object() || !j["dam"].contains("width"))
+    throw InputError(file, "/dam/width", "", "the dam's width (a concrete dam's crest length, a steel dam's column spacing) for the 3D "
+                                             "model of compare_3d");
+  if (j.contains("grid") && j["grid"].is_object() && (j["grid"].contains("origin") || j["grid"].contains("size")))
+    throw InputError(file, "/grid", "", "only grid.cell_size with compare_3d (the 3D model builds its own grid)");
+  return true;
+}
+
+}  // namespace
+
+std::vector<std::string> preset_variants(const json& j, const std::string& file) {
+  if (!j.is_object()) return {""};
+  std::vector<std::string> v = buffer_variants(j, file);
+  if (wants_3d(j, file)) {
+    const std::size_t n = v.size();
+    for (std::size_t k = 0; k < n; ++k) v.push_back(space_variant(v[k]));
+  }
+  return v;
 }
 
 void document_presets(Obj& o) {
@@ -336,12 +369,40 @@ void document_presets(Obj& o) {
   std::string c;
   o.string("compare", c, Spec{.doc = "with_and_without_buffer: run the scenario with and without its tyre_buffer (OUT/with_buffer, "
                                      "OUT/without_buffer) | none"});
+  bool space = false;
+  o.boolean("compare_3d", space, Spec{.doc = "also run the 3D model of this plane boulder scenario (OUT/3d, or OUT/with_buffer_3d and "
+                                             "OUT/without_buffer_3d): the boulder a sphere, the dam's crest length its width, and the "
+                                             "report sets the plane model's governing numbers beside the 3D ones (both are judged)"});
   bool unusual = false;
   o.boolean("accept_unusual", unusual, Spec{.doc = "accept preset values outside their plausible ranges (materials, boulder, debris and "
                                                     "deposit unit weights: docs/presets.md), for scaled or laboratory models"});
 }
 
-json expand_presets(const json& j, const std::string& file, const std::string& variant) {
+namespace {
+
+// The plane preset keys as the 3D model reads them: vectors [x, y] become [x, 0, y] (the elevation is the plane
+// y = 0, z up), analysis.dimension 3; the solid check (a plane-run feature) is left to the plane variant.
+json space_presets(const json& j) {
+  json s = j;
+  auto lift = [](json& v) {
+    if (v.is_array() && v.size() == 2) v = json::array({v[0], 0.0, v[1]});
+  };
+  s["analysis"]["dimension"] = 3;
+  if (s["analysis"].contains("gravity")) lift(s["analysis"]["gravity"]);
+  if (s.contains("boulder") && s["boulder"].is_object())
+    for (const char* k : {"velocity", "position"})
+      if (s["boulder"].contains(k)) lift(s["boulder"][k]);
+  s.erase("solid_check");
+  s.erase("compare_3d");
+  return s;
+}
+
+}  // namespace
+
+json expand_presets(const json& j0, const std::string& file, const std::string& variant0) {
+  const bool space = is_space_variant(variant0);
+  const json j = space ? space_presets(j0) : j0;
+  const std::string variant = plane_variant(variant0);
   PresetScene p;
   if (j.contains("analysis") && j["analysis"].is_object() && j["analysis"].contains("dimension")) {
     const json& d = j["analysis"]["dimension"];
@@ -402,6 +463,7 @@ json expand_presets(const json& j, const std::string& file, const std::string& v
     merge_json(low[it.key()], it.value());
   }
   if (!variant.empty()) low["name"] = low.value("name", std::string()) + (variant == "with_buffer" ? " (with buffer)" : " (without buffer)");
+  if (space) low["name"] = low.value("name", std::string()) + " (3D)";
   return low;
 }
 

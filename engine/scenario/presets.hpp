@@ -15,6 +15,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/variants.hpp"
+
 #include "engine/scenario/schema.hpp"
 
 namespace dmi {
@@ -23,7 +25,7 @@ namespace dmi {
 bool has_presets(const nlohmann::json& j);
 
 // The variants a scenario asks for: {""} normally; {"with_buffer", "without_buffer"} with
-// compare = with_and_without_buffer.
+// compare = with_and_without_buffer; with compare_3d each followed by its 3D model's variant.
 std::vector<std::string> preset_variants(const nlohmann::json& j, const std::string& file);
 
 // The low-level scenario of one variant ("" or a name from preset_variants). Throws InputError

@@ -203,6 +203,35 @@ TEST(DesignEnvelope, DesignRunJsonCarriesPeaksChecksAndVerdict) {
   EXPECT_THROW(design_run(partial, Limits{}, "hand.h5"), std::runtime_error);
 }
 
+// compare_3d: the plane and 3D runs of one folder side by side (ratio plane / 3D), both buffered runs judged, the bare
+// 3D run the reference of its own buffered one.
+TEST(DesignEnvelope, PlaneAndSpaceRunsSideBySide) {
+  const dmi::Results r = results(structure(kRect, "concrete"));
+  json with = design_run(r, Limits{}, "out/with_buffer/results.h5");
+  with["results_file"] = "out/with_buffer/results.h5";
+  json without = with, with3 = with, without3 = with;
+  with["variant"] = "with_buffer", without["variant"] = "without_buffer";
+  with3["variant"] = "with_buffer_3d", without3["variant"] = "without_buffer_3d";
+  without["results_file"] = "out/without_buffer/results.h5";
+  with3["results_file"] = "out/with_buffer_3d/results.h5";
+  without3["results_file"] = "out/without_buffer_3d/results.h5";
+  with["contact"]["peak_force_N"] = 300e3, with3["contact"]["peak_force_N"] = 200e3;
+  const json doc = design_document({with, without, with3, without3}, Limits{}, "test");
+  ASSERT_TRUE(doc["plane_and_space"].is_object());
+  ASSERT_EQ(doc["plane_and_space"]["pairs"].size(), 2u);
+  const json& pair = doc["plane_and_space"]["pairs"][0];
+  EXPECT_EQ(pair["variant"], "with_buffer");
+  bool found = false;
+  for (const auto& q : pair["quantities"])
+    if (q["id"] == "contact_force") {
+      found = true;
+      EXPECT_NEAR(q["ratio"].get<double>(), 1.5, 1e-12);
+    }
+  EXPECT_TRUE(found);
+  EXPECT_EQ(doc["verdict"]["runs_judged"], "with_buffer, with_buffer_3d");
+  EXPECT_TRUE(design_document({with, without}, Limits{}, "test")["plane_and_space"].is_null());
+}
+
 TEST(DesignEnvelope, ComparisonReductionsInPercent) {
   const dmi::Results r = results(structure(kRect, "concrete"));
   json with = design_run(r, Limits{}, "a.h5"), without = with;

@@ -63,6 +63,33 @@ int sh(const std::string& cmd) {
   return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
 }
 
+// Every word of every cell of the HTML's per-run tables (table.per-run) is in the PDF's text: a table that runs off the
+// page loses its right-hand columns. Returns the number of words checked.
+std::size_t per_run_words_in_pdf(const std::string& html, const std::string& pdf) {
+  const std::string txt = pdf + ".txt";
+  if (sh("pdftotext " + pdf + " " + txt) != 0) {
+    ADD_FAILURE() << "pdftotext failed on " << pdf;
+    return 0;
+  }
+  std::ifstream tin(txt);
+  const std::string pdf_text((std::istreambuf_iterator<char>(tin)), std::istreambuf_iterator<char>());
+  std::size_t words = 0;
+  const std::string open = "<table class=\"grid per-run\">";
+  for (std::size_t t = html.find(open); t != std::string::npos; t = html.find(open, t + 1)) {
+    const std::size_t end = html.find("</table>", t);
+    for (std::size_t c = html.find("<td", t); c < end; c = html.find("<td", c + 1)) {
+      const std::size_t a = html.find('>', c) + 1, b = html.find("</td>", a);
+      std::istringstream cell(html.substr(a, b - a));
+      for (std::string w; cell >> w;)
+        if (w.size() >= 2 && w.find('<') == std::string::npos && w.find('&') == std::string::npos) {
+          ++words;
+          EXPECT_NE(pdf_text.find(w), std::string::npos) << "'" << w << "' of the HTML's per-run tables is not in the PDF";
+        }
+    }
+  }
+  return words;
+}
+
 class Render : public ::testing::Test {
  protected:
   static fs::path dir;
@@ -240,6 +267,32 @@ TEST_F(Render, ReportHoldsEveryCheckAndItsPdfPagesRender) {
   for (const auto& e : fs::directory_iterator(pages)) n += e.path().extension() == ".png";
   EXPECT_GE(n, 4u);
   EXPECT_LE(n, 20u);
+  // The per-run tables fit the page (per_run_words).
+  EXPECT_GT(per_run_words_in_pdf(html, files.pdf), 20u);
+}
+
+// Four runs side by side (a comparison with its 3D models) and a long shared text (the modal damping row): the per-run
+// tables still fit the page.
+TEST_F(Render, FourRunsFitThePage) {
+  const fs::path four = dir.string() + "_four";
+  fs::remove_all(four);
+  std::ifstream in(std::string(DMI_SOURCE_DIR) + "/tests/data/design/cantilever_self_weight.json");
+  json j = json::parse(in);
+  j["structure"]["integrator"] = "newmark";
+  j["structure"]["modal_damping"] = {{"ratio", 0.05}};
+  fs::create_directories(four);
+  const std::string scen = (four / "s.json").string();
+  std::ofstream(scen) << j.dump();
+  for (const char* v : {"with_buffer", "without_buffer", "with_buffer_3d", "without_buffer_3d"})
+    ASSERT_EQ(sh(std::string(DMI_BINARY) + " simulate " + scen + " -o " + (four / v).string() + " -q"), 0);
+  ASSERT_LE(sh(std::string(DMI_BINARY) + " check " + four.string() + " -q > /dev/null"), 1);
+  const auto files = dmi::render::report_main(four.string(), {"von_mises", true, true, "test"});
+  std::ifstream h(files.html);
+  const std::string html((std::istreambuf_iterator<char>(h)), std::istreambuf_iterator<char>());
+  EXPECT_NE(html.find("with buffer (3D)"), std::string::npos);
+  if (files.pdf.empty()) GTEST_SKIP() << files.pdf_note;
+  EXPECT_GT(per_run_words_in_pdf(html, files.pdf), 40u);
+  fs::remove_all(four);
 }
 
 // Every picture, drawn by this process alone, by the second picture process alone (render --helper-of PID --claims

@@ -99,6 +99,45 @@ TEST(Presets, CompareGivesTwoVariantsDifferingOnlyInTheBuffer) {
   EXPECT_FALSE(v[0].scenario.expanded_text.empty());
 }
 
+// compare_3d: each plane variant followed by its 3D model, the boulder's [vx, vy] as [vx, 0, vy], the dam's width its
+// crest length; refused without a width, with a surge, and in a grid study.
+TEST(Presets, Compare3dAddsTheSpaceModelOfEachVariant) {
+  json j = concrete_boulder();
+  j["compare_3d"] = true;
+  const std::vector<ScenarioVariant> v = parse_scenario_variants(j.dump(), "t.json");
+  ASSERT_EQ(v.size(), 4u);
+  EXPECT_EQ(v[2].label, "with_buffer_3d");
+  EXPECT_EQ(v[3].label, "without_buffer_3d");
+  EXPECT_EQ(v[0].scenario.analysis.dimension, 2);
+  EXPECT_EQ(v[3].scenario.analysis.dimension, 3);
+  EXPECT_EQ(v[3].scenario.variant, "without_buffer_3d");
+  EXPECT_EQ(v[3].scenario.bodies.size(), 1u);  // the bare 3D model has no buffer
+  const auto& ball = v[3].scenario.bodies[0];
+  EXPECT_EQ(ball.shape.type, "ball");
+  EXPECT_DOUBLE_EQ(ball.velocity[0], 5.0);
+  EXPECT_DOUBLE_EQ(ball.velocity[2], 0.0);
+  EXPECT_NE(v[3].scenario.name.find("(3D)"), std::string::npos);
+  EXPECT_EQ(plane_variant("with_buffer_3d"), "with_buffer");
+  EXPECT_EQ(plane_variant("3d"), "");
+  EXPECT_TRUE(is_space_variant("3d"));
+  EXPECT_FALSE(is_space_variant("with_buffer"));
+  EXPECT_THROW(common_cell_size(v, "t.json"), InputError);
+  json no_width = j;
+  no_width["dam"].erase("width");
+  try {
+    parse_scenario_variants(no_width.dump(), "t.json");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/dam/width"), std::string::npos) << e.what();
+  }
+  json alone = j;
+  alone.erase("tyre_buffer"), alone.erase("compare");
+  const std::vector<ScenarioVariant> a = parse_scenario_variants(alone.dump(), "t.json");
+  ASSERT_EQ(a.size(), 2u);
+  EXPECT_EQ(a[0].label, "");
+  EXPECT_EQ(a[1].label, "3d");
+}
+
 TEST(Presets, UserLowLevelKeysMergeIntoTheExpansion) {
   json j = concrete_boulder();
   j.erase("compare");
