@@ -5,6 +5,8 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <utility>
+#include <vector>
 #include <stdexcept>
 #include <unistd.h>
 
@@ -117,11 +119,13 @@ std::string verdict_text(const json& d) {
     o << "; governing: " << g["title"].get<std::string>() << (g["member"].get<std::string>().empty() ? "" : ", " + g["member"].get<std::string>())
       << ", utilisation " << eng(g["utilisation"], "") << " (" << where_when(g) << ")\n";
   }
-  for (const char* level : {"serviceability", "ultimate"})
-    if (v.contains("levels") && v["levels"].contains(level) && v["levels"][level]["checks"].get<int>() > 0) {
-      const json& l = v["levels"][level];
-      o << "  " << level << ": " << (l["passed"] ? "pass" : "fail") << ", " << l["failed"].get<int>() << " of " << l["checks"].get<int>()
-        << " failed, largest utilisation " << eng(l["max_utilisation"], "") << " (" << l["governing"]["title"].get<std::string>() << ")\n";
+  for (const auto& [group, name] : std::vector<std::pair<const char*, const char*>>{
+           {"levels", "serviceability"}, {"levels", "ultimate"}, {"situations", "persistent"}, {"situations", "accidental"}})
+    if (v.contains(group) && v[group].contains(name) && v[group][name]["checks"].get<int>() > 0) {
+      const json& l = v[group][name];
+      o << "  " << name << (std::string(group) == "situations" ? " situation" : "") << ": " << (l["passed"] ? "pass" : "fail") << ", "
+        << l["failed"].get<int>() << " of " << l["checks"].get<int>() << " failed, largest utilisation " << eng(l["max_utilisation"], "") << " ("
+        << l["governing"]["title"].get<std::string>() << ")\n";
     }
   if (v.contains("judged_levels")) o << "  the verdict judges: " << v["judged_levels"].get<std::string>() << " (limits file: verdict.level)\n";
   return o.str();

@@ -9,7 +9,7 @@ namespace dmi::design {
 nlohmann::json Check::to_json() const {
   nlohmann::json j{{"id", id}, {"title", title}, {"member", member}, {"material", material}, {"demand", demand}, {"capacity", capacity},
                    {"unit", unit}, {"utilisation", utilisation}, {"passed", passed}, {"formula", formula}, {"source", source},
-                   {"level", level}, {"dynamic_increase_factor", dynamic_factor}, {"strain_rate_per_s", strain_rate}};
+                   {"level", level}, {"situation", situation}, {"dynamic_increase_factor", dynamic_factor}, {"strain_rate_per_s", strain_rate}};
   j["position"] = position >= 0 ? nlohmann::json(position) : nlohmann::json(nullptr);
   j["s_m"] = s_m >= 0 ? nlohmann::json(s_m) : nlohmann::json(nullptr);
   j["location_m"] = space ? nlohmann::json{x_m, y_m, z_m} : nlohmann::json{x_m, y_m};

@@ -28,6 +28,9 @@ struct Check {
   // strengths, no joint opening at rest), ultimate (stability, local damage short of perforation, sliding and rocking
   // under the impact), or information (reported, never judged: e.g. a linear stress under a point load).
   std::string level = "serviceability";
+  // The design situation (EN 1990 3.2): persistent (the loads at rest: self-weight, deposit, water, with their partial
+  // factors) or accidental (the impact, EN 1990 6.4.3.3: the actions unfactored).
+  std::string situation = "accidental";
   // Strain-rate effects on the capacity (design/strain_rate_checks): the factor applied and the strain rate it was
   // taken at (1/s; 0: a static strength).
   double dynamic_factor = 1, strain_rate = 0;

@@ -211,10 +211,14 @@ json level_verdict(const std::vector<Check>& checks, const std::function<bool(co
 }
 
 json verdict(const std::vector<Check>& checks, const std::string& judged) {
-  json v = level_verdict(checks, [&](const Check& c) { return c.level != "information" && (judged == "both" || c.level == judged); });
+  const auto counts = [&](const Check& c) { return c.level != "information" && (judged == "both" || c.level == judged); };
+  json v = level_verdict(checks, counts);
   v["judged_levels"] = judged;
   for (const char* level : {"serviceability", "ultimate", "information"})
     v["levels"][level] = level_verdict(checks, [&](const Check& c) { return c.level == level; });
+  // Each design situation's own verdict over the judged levels (EN 1990 3.2).
+  for (const char* situation : {"persistent", "accidental"})
+    v["situations"][situation] = level_verdict(checks, [&](const Check& c) { return counts(c) && c.situation == situation; });
   return v;
 }
 
@@ -282,7 +286,7 @@ json design_run(const Results& r, const Limits& L, const std::string& where) {
   // The damping's share by the instant of the most utilised member check (else the contact peak).
   double t_member = c.present ? c.peak_time_s : r.time.empty() ? 0.0 : r.time.back(), u_member = -1;
   for (const auto& k : checks)
-    if (k.s_m >= 0 && k.time_s >= 0 && k.utilisation > u_member) u_member = k.utilisation, t_member = k.time_s;
+    if (k.s_m >= 0 && k.time_s >= 0 && k.situation == "accidental" && k.utilisation > u_member) u_member = k.utilisation, t_member = k.time_s;
   run["damping"] = basis ? damping_share(r, *basis, t_member) : json(nullptr);
   run["volume_health"] = volume_health(r);
   return run;

@@ -156,18 +156,19 @@ json design_document(const std::vector<json>& runs, const Limits& limits, const 
   }
   doc["verdict"] = {{"passed", failed == 0}, {"checks", checks}, {"failed", failed}, {"governing", gov}, {"runs_judged", basis},
                     {"status", checks == 0 ? "no_checks" : failed == 0 ? "pass" : "fail"}, {"judged_levels", limits.verdict_level}};
-  // Each level over the judged runs: its checks, failures and governing check.
-  for (const char* level : {"serviceability", "ultimate"}) {
+  // Each level, and each design situation, over the judged runs: its checks, failures and governing check.
+  for (const auto& [group, name] : std::vector<std::pair<const char*, const char*>>{
+           {"levels", "serviceability"}, {"levels", "ultimate"}, {"situations", "persistent"}, {"situations", "accidental"}}) {
     json l{{"checks", 0}, {"failed", 0}, {"passed", true}, {"max_utilisation", nullptr}, {"governing", nullptr}};
     for (std::size_t i = 0; i < runs.size(); ++i) {
-      if (reference[i] || !runs[i]["verdict"].contains("levels")) continue;
-      const json& v = runs[i]["verdict"]["levels"][level];
+      if (reference[i] || !runs[i]["verdict"].contains(group)) continue;
+      const json& v = runs[i]["verdict"][group][name];
       l["checks"] = l["checks"].get<int>() + v["checks"].get<int>(), l["failed"] = l["failed"].get<int>() + v["failed"].get<int>();
       l["passed"] = l["failed"].get<int>() == 0;
       if (!v["governing"].is_null() && (l["governing"].is_null() || v["governing"]["utilisation"] > l["governing"]["utilisation"]))
         l["governing"] = v["governing"], l["max_utilisation"] = v["max_utilisation"];
     }
-    doc["verdict"]["levels"][level] = l;
+    doc["verdict"][group][name] = l;
   }
   return doc;
 }

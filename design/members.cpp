@@ -118,7 +118,49 @@ std::vector<Demand> space_demands(const Section& sec, double s, const SpaceSecti
   return out;
 }
 
+std::vector<Demand> plane_demands(const Section& sec, double s, const SectionForces& sf, const FibreStresses& fs, bool steel, const Limits& L) {
+  const ConcreteLimits& C = L.concrete;
+  const SteelLimits& S = L.steel;
+  std::vector<Demand> out;
+  if (!steel) {
+    out.push_back({"concrete_flexural_tension", std::max(0.0, std::max(fs.sigma_top, fs.sigma_bottom)), C.tensile_capacity()});
+    out.push_back({"concrete_compression", std::max(0.0, -std::min(fs.sigma_top, fs.sigma_bottom)), C.compressive_capacity()});
+    if (C.shear_strength) out.push_back({"concrete_shear", fs.tau_max, C.phi_shear * *C.shear_strength});
+    else out.push_back({"concrete_shear", std::abs(sf.V), concrete_one_way_shear_capacity(C.compressive_strength, C.lambda, sec.width(s), sec.depth(s), C.phi_shear)});
+    return out;
+  }
+  out.push_back({"steel_elastic_stress", std::max(std::abs(fs.sigma_top), std::abs(fs.sigma_bottom)), S.design_strength()});
+  out.push_back({"steel_von_mises", fs.von_mises_max, S.design_strength()});
+  if (sec.kind() == SectionKind::pipe) {
+    const double D = sec.depth(s), t = sec.wall_thickness();
+    out.push_back({"steel_interaction", chs_interaction(sf.N, sf.M, D, t, S.yield_strength, S.gamma_M0), 1.0});
+    out.push_back({"steel_shear", std::abs(sf.V), chs_shear_resistance(D, t, S.yield_strength, S.gamma_M0)});
+  }
+  return out;
+}
+
 namespace {
+
+// The persistent design situation of a concrete member (EN 1990 6.4.3.2 eq. 6.10 with Table A1.2(B)): the section
+// forces at rest (self-weight, deposit and water, not split by source) with gamma_G,sup = 1.35 where unfavourable and
+// gamma_G,inf = 1.0 where favourable: the axial compression of the weight relieves tension, so for the tension checks
+// a compressive N keeps 1.0 while shears, moments and torques take 1.35; every other check takes 1.35 throughout.
+constexpr double kGammaSup = 1.35, kGammaInf = 1.0;
+bool relieved_by_compression(const std::string& id) { return id == "concrete_flexural_tension" || id == "concrete_principal_tension"; }
+SectionForces persistent_forces(const SectionForces& f, bool relieving) {
+  return {f.N * (relieving && f.N < 0 ? kGammaInf : kGammaSup), kGammaSup * f.V, kGammaSup * f.M};
+}
+SpaceSectionForces persistent_forces(const SpaceSectionForces& f, bool relieving) {
+  const double g = kGammaSup;
+  return {f.N * (relieving && f.N < 0 ? kGammaInf : g), g * f.Vy, g * f.Vz, g * f.T, g * f.My, g * f.Mz};
+}
+Check persistent_proto(const Check& accidental) {
+  Check c = accidental;
+  c.id += "_persistent", c.title += ", persistent situation (the loads at rest)", c.situation = "persistent";
+  c.formula = "gamma_G 1.35 x the forces at rest (a compressive N relieving tension at 1.0); " + c.formula;
+  c.source = "EN 1990 6.4.3.2 eq. 6.10, Table A1.2(B); " + c.source;
+  return c;
+}
 
 // Tracks the governing instance (largest utilisation) of each check of a member, and each check's demand at the first
 // history sample at every station (the static state the run starts from), kept as static_demand where it governs.
@@ -220,7 +262,7 @@ void space_member(const Results& r, const Series& ef, const FrameInfo& f, const 
   const std::map<std::string, const Check*> protos{{tension.id, &tension}, {compr.id, &compr}, {principal.id, &principal}, {shear_c.id, &shear_c},
                                                    {elastic.id, &elastic}, {mises.id, &mises}, {inter.id, &inter}, {shear_s.id, &shear_s},
                                                    {torsion.id, &torsion}};
-  CheckTracker tracker;
+  CheckTracker tracker, at_rest;  // at_rest: the persistent situation (no strain-rate effects)
   tracker.rate = rate;
   const std::size_t nc = ef.components.size();
   for (std::size_t k = 0; k < r.time.size(); ++k) {
@@ -240,10 +282,15 @@ void space_member(const Results& r, const Series& ef, const FrameInfo& f, const 
         st.sigma_tension.max(fs.sigma_max, t), st.sigma_compression.min(fs.sigma_min, t);
         st.tau.max(fs.tau_max, t), st.von_mises.max(fs.von_mises_max, t), st.principal.max(fs.principal_max, t);
         for (const Demand& d : space_demands(el.section, s, sf, fs, steel, L)) tracker.consider(*protos.at(d.id), d.demand, d.capacity, st, t);
+        if (k > 0 || steel) continue;
+        for (bool relieving : {true, false})
+          for (const Demand& d : space_demands(el.section, s, persistent_forces(sf, relieving), steel, L))
+            if (relieved_by_compression(d.id) == relieving) at_rest.consider(persistent_proto(*protos.at(d.id)), d.demand, d.capacity, st, t);
       }
     }
   }
   env.checks = tracker.result();
+  for (const Check& c : at_rest.result()) env.checks.push_back(c);
   if (steel && pipe) env.checks.push_back(section_class(env, D, t_w, S));
 }
 
@@ -298,7 +345,9 @@ std::vector<MemberEnvelope> member_envelopes(const Results& r, const FrameInfo& 
                               "EN 1993-1-1 6.2.1(7) eq. 6.2, 6.2.5 eqs. 6.13-6.14");
     const Check shear_s = proto("steel_shear", "shear resistance", env, "N", "V <= A_v f_y / (sqrt 3 gamma_M0), A_v = 2A/pi (CHS)",
                                 "EN 1993-1-1 6.2.6 eq. 6.18, 6.2.6(3)(g)");
-    CheckTracker tracker;
+    const std::map<std::string, const Check*> protos{{tension.id, &tension}, {compr.id, &compr}, {shear_c.id, &shear_c}, {elastic.id, &elastic},
+                                                     {mises.id, &mises}, {inter.id, &inter}, {shear_s.id, &shear_s}};
+    CheckTracker tracker, at_rest;
     tracker.rate = rate;
     for (std::size_t k = 0; k < r.time.size(); ++k) {
       const double t = r.time[k];
@@ -315,26 +364,18 @@ std::vector<MemberEnvelope> member_envelopes(const Results& r, const FrameInfo& 
           st.sigma_tension.max(std::max(fs.sigma_top, fs.sigma_bottom), t);
           st.sigma_compression.min(std::min(fs.sigma_top, fs.sigma_bottom), t);
           st.tau.max(fs.tau_max, t), st.von_mises.max(fs.von_mises_max, t);
-          if (!steel) {
-            tracker.consider(tension, std::max(0.0, std::max(fs.sigma_top, fs.sigma_bottom)), C.tensile_capacity(), st, t);
-            tracker.consider(compr, std::max(0.0, -std::min(fs.sigma_top, fs.sigma_bottom)), C.compressive_capacity(), st, t);
-            if (C.shear_strength)
-              tracker.consider(shear_c, fs.tau_max, C.phi_shear * *C.shear_strength, st, t);
-            else
-              tracker.consider(shear_c, std::abs(sf.V), concrete_one_way_shear_capacity(C.compressive_strength, C.lambda, el.section.width(s),
-                                                                                         el.section.depth(s), C.phi_shear), st, t);
-          } else {
-            tracker.consider(elastic, std::max(std::abs(fs.sigma_top), std::abs(fs.sigma_bottom)), S.design_strength(), st, t);
-            tracker.consider(mises, fs.von_mises_max, S.design_strength(), st, t);
-            if (pipe) {
-              tracker.consider(inter, chs_interaction(sf.N, sf.M, D, t_w, S.yield_strength, S.gamma_M0), 1.0, st, t);
-              tracker.consider(shear_s, std::abs(sf.V), chs_shear_resistance(D, t_w, S.yield_strength, S.gamma_M0), st, t);
-            }
+          for (const Demand& d : plane_demands(el.section, s, sf, fs, steel, L)) tracker.consider(*protos.at(d.id), d.demand, d.capacity, st, t);
+          if (k > 0 || steel) continue;
+          for (bool relieving : {true, false}) {
+            const SectionForces pf = persistent_forces(sf, relieving);
+            for (const Demand& d : plane_demands(el.section, s, pf, fibre_stresses(el.section, s, pf), steel, L))
+              if (relieved_by_compression(d.id) == relieving) at_rest.consider(persistent_proto(*protos.at(d.id)), d.demand, d.capacity, st, t);
           }
         }
       }
     }
     env.checks = tracker.result();
+    for (const Check& c : at_rest.result()) env.checks.push_back(c);
     if (steel && pipe) env.checks.push_back(section_class(env, D, t_w, S));
     out.push_back(std::move(env));
   }

@@ -83,6 +83,10 @@ std::vector<Demand> space_demands(const Section& section, double s, const SpaceS
 std::vector<Demand> space_demands(const Section& section, double s, const SpaceSectionForces& f, const SpaceFibreStresses& fs, bool steel,
                                   const Limits& limits);
 
+// The member checks of a plane member at one section under forces sf (fibre stresses fs): concrete flexural tension,
+// compression and shear; steel extreme-fibre and von Mises stresses, and a CHS's interaction and shear.
+std::vector<Demand> plane_demands(const Section& section, double s, const SectionForces& sf, const FibreStresses& fs, bool steel, const Limits& limits);
+
 std::vector<MemberEnvelope> member_envelopes(const Results& r, const FrameInfo& f, const Limits& limits, const std::string& where);
 
 }  // namespace dmi::design

@@ -59,6 +59,7 @@ Check stability_check(const char* level, const char* id, const char* title, doub
   c.level = level;
   c.id = id, c.title = title, c.member = kWho, c.material = "foundation";
   c.demand = demand, c.capacity = capacity, c.unit = unit, c.time_s = t, c.formula = formula, c.source = source;
+  if (std::string(id).find("_persistent") != std::string::npos) c.situation = "persistent";
   c.finish();
   return c;
 }

@@ -340,6 +340,13 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
       vt += std::string(" ") + (std::string(level) == "ultimate" ? "Ultimate" : "Serviceability") + " level: " + (l["passed"] ? "pass" : "FAIL") +
             ", largest utilisation " + fmt("%.2f", l["max_utilisation"].get<double>()) + " (" + l["governing"]["title"].get<std::string>() + ").";
     }
+  if (v.contains("situations"))
+    for (const char* situation : {"persistent", "accidental"}) {
+      const json& l = v["situations"][situation];
+      if (l["checks"].get<int>() == 0) continue;
+      vt += std::string(" ") + (std::string(situation) == "persistent" ? "Persistent situation (the loads at rest, factored)" : "Accidental situation (the impact)") +
+            ": " + (l["passed"] ? "pass" : "FAIL") + ", largest utilisation " + fmt("%.2f", l["max_utilisation"].get<double>()) + ".";
+    }
   if (v.contains("judged_levels") && v["judged_levels"] != "both")
     vt += " The verdict judges the " + v["judged_levels"].get<std::string>() + " level only (limits file).";
   // Grid uncertainty: the governing numbers with their GCI, or a plain statement that it is unknown.

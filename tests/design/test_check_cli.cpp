@@ -101,14 +101,16 @@ TEST_F(CheckCli, StaticCantileverReactionsBalanceTheSelfWeightAndPeaksMatchTheHi
 }
 
 TEST_F(CheckCli, ExitOneWhenACheckFailsUnderOtherLimitsWithoutResimulating) {
-  // f_t = 1 MPa, phi 0.6: 981 kPa / 600 kPa = 1.635 -> fail.
+  // f_t = 1 MPa, phi 0.6: 981 kPa / 600 kPa = 1.635 -> fail; at rest with the persistent factor 1.35 (the self-weight is
+  // the whole load; no axial force): 2.207, which governs.
   const fs::path limits = write("low.json", R"({"concrete": {"tensile_strength_Pa": 1e6}})");
   const Cli c = cli("check " + (dir / "results.h5").string() + " --limits " + limits.string() + " -o " + (dir / "low_design.json").string());
   EXPECT_EQ(c.status, 1) << c.err;
   EXPECT_NE(c.out.find("FAIL"), std::string::npos) << c.out;
   const json d = json::parse(slurp(dir / "low_design.json"));
-  EXPECT_NEAR(d["verdict"]["governing"]["utilisation"].get<double>(), 2943 * 0.15 / 4.5e-4 / 0.6e6, 1e-5);
-  EXPECT_EQ(d["verdict"]["governing"]["id"], "concrete_flexural_tension");
+  EXPECT_NEAR(d["verdict"]["governing"]["utilisation"].get<double>(), 1.35 * 2943 * 0.15 / 4.5e-4 / 0.6e6, 1e-5);
+  EXPECT_EQ(d["verdict"]["governing"]["id"], "concrete_flexural_tension_persistent");
+  EXPECT_NEAR(d["verdict"]["situations"]["accidental"]["max_utilisation"].get<double>(), 2943 * 0.15 / 4.5e-4 / 0.6e6, 1e-5);
 }
 
 // The same failing serviceability check (flexural tension) under a limits file that judges the ultimate level only:

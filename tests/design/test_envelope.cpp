@@ -177,7 +177,12 @@ TEST(DesignEnvelope, DesignRunJsonCarriesPeaksChecksAndVerdict) {
   EXPECT_NEAR(m["peaks"]["sigma_tension_max"]["value"].get<double>(), 8e5, 1e-6);
   EXPECT_DOUBLE_EQ(m["peaks"]["sigma_tension_max"]["s_m"].get<double>(), 0.0);
   EXPECT_NEAR(m["peaks"]["V_abs_max"]["value"].get<double>(), 500e3, 1e-6);
-  EXPECT_EQ(run["checks"].size(), 3u);
+  // Tension, compression and shear through the run (accidental) and at rest with the persistent factors.
+  ASSERT_EQ(run["checks"].size(), 6u);
+  int persistent = 0;
+  for (const auto& c : run["checks"]) persistent += c["situation"] == "persistent";
+  EXPECT_EQ(persistent, 3);
+  EXPECT_EQ(run["verdict"]["situations"]["persistent"]["checks"].get<int>(), 3);
   EXPECT_TRUE(run["verdict"]["passed"].get<bool>());
   EXPECT_EQ(run["verdict"]["governing"]["id"], "concrete_shear");
   // Punching around a 0.4 x 0.4 m patch when asked for (the peak contact load on the member, at mid-height).

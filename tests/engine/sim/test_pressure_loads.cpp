@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "design/design.hpp"
 #include "engine/common/error.hpp"
 #include "engine/scenario/scenario.hpp"
 #include "engine/verify/validate.hpp"
@@ -73,6 +74,28 @@ TEST(PressureLoads, ASpaceFrameCarriesTheSamePressure) {
     EXPECT_NEAR(r->data[6 * k + 2], 2400 * 9.81 * 0.8 * 4.0, 1e-6 * 75e3) << k;
     EXPECT_NEAR(r->data[6 * k + 4], -90e3, 1e-6 * 90e3) << k;
   }
+}
+
+// The persistent design situation by hand (EN 1990 eq. 6.10, gamma_G 1.35, a relieving compression at 1.0) at the
+// base of the cantilever: N = -rho g A L = -2400 x 9.81 x 0.8 x 4 = -75 340.8 N (N/A = -94 176 Pa), M = 90 kN m
+// (M c / I = 90e3 x 0.4 / 0.0426667 = 843 750 Pa), V = 90 kN: tension -94 176 + 1.35 x 843 750 = 1 044 886 Pa,
+// compression 1.35 x (94 176 + 843 750) = 1 266 200 Pa, shear 1.35 x 90 kN = 121.5 kN; each in the persistent verdict.
+TEST(PressureLoads, PersistentSituationChecksByHand) {
+  const RunOutput out = run_quiet(parse_scenario(cantilever(3.0).dump(), "test"));
+  const nlohmann::json run = design::design_run(out.results, design::Limits{}, "w.h5");
+  auto check = [&](const std::string& id) -> nlohmann::json {
+    for (const auto& c : run["checks"])
+      if (c["id"] == id) return c;
+    ADD_FAILURE() << "no check " << id;
+    return nlohmann::json::object();
+  };
+  const double NA = -2400 * 9.81 * 0.8 * 4.0 / 0.8, Mc = 90e3 * 0.4 / (0.8 * 0.8 * 0.8 / 12);
+  EXPECT_NEAR(check("concrete_flexural_tension_persistent")["demand"].get<double>(), NA + 1.35 * Mc, 1e-6 * Mc);
+  EXPECT_NEAR(check("concrete_compression_persistent")["demand"].get<double>(), 1.35 * (-NA + Mc), 1e-6 * Mc);
+  EXPECT_NEAR(check("concrete_shear_persistent")["demand"].get<double>(), 1.35 * 90e3, 1e-6 * 90e3);
+  EXPECT_EQ(check("concrete_shear_persistent")["situation"], "persistent");
+  EXPECT_EQ(check("concrete_shear")["situation"], "accidental");
+  EXPECT_EQ(run["verdict"]["situations"]["persistent"]["checks"].get<int>(), 3);
 }
 
 TEST(PressureLoads, ErrorsNameTheKey) {
