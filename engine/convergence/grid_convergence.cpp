@@ -52,7 +52,7 @@ GridConvergence grid_convergence(const std::array<double, 3>& h, const std::arra
     c.gci = 0;
     return c;
   }
-  if (e21 == 0 || e32 / e21 < 0) {  // oscillatory (or the fine pair equal): the spread bounds the error
+  if (e21 == 0 || e32 / e21 < 0) {  // oscillatory (or the fine pair equal): the largest change from the finest value bounds the error
     c.behaviour = GridBehaviour::oscillatory;
     c.gci = c.safety_factor * std::max(std::abs(e21), std::abs(f[2] - f[0])) / f1;
     return c;
@@ -113,7 +113,7 @@ std::string describe(const GridConvergence& c) {
                       c.order, std::clamp(c.order, 0.5, kFormalOrder));
       return b;
     case GridBehaviour::oscillatory:
-      return "NOT CONVERGED: oscillates under refinement; the uncertainty is 1.25 times the spread of the three values";
+      return "NOT CONVERGED: oscillates under refinement; the uncertainty is 1.25 times the largest difference from the finest grid's value";
     case GridBehaviour::diverging:
       return "NOT CONVERGED: the change grows as the cell shrinks; index with Fs = 3 and order 0.5, a rough bound only";
   }
