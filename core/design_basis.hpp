@@ -28,6 +28,7 @@ struct DamBasis {
   // What stands behind it when the impact arrives (unset: nothing): a deposit and water, permanent pressures on the
   // upstream face in the run, and the water's uplift on the base joint in the stability checks.
   double deposit_height_m = kUnset, deposit_unit_weight_N_m3 = kUnset, deposit_coefficient = kUnset;
+  bool deposit_submerged = false;  // below the water surface at its buoyant unit weight (deposit_unit_weight the saturated one)
   double water_height_m = kUnset, water_unit_weight_N_m3 = kUnset;
   // Steel open: the column pipes.
   double column_diameter_m = kUnset, column_wall_thickness_m = kUnset;

@@ -152,7 +152,9 @@ json scenario_rows(const RunData& r) {
   row("dam material", fmt("E %.3g GPa", dam.youngs_modulus_Pa / 1e9) + fmt(", ν %.2f", dam.poisson_ratio) + fmt(", ρ %.0f kg/m³", dam.density_kg_m3));
   if (is_set(dam.deposit_height_m))
     row("deposit behind the dam", fmt("%.3g m", dam.deposit_height_m) + fmt(", %.3g kN/m³", dam.deposit_unit_weight_N_m3 / 1e3) +
-                                      fmt(", K %.2f: pressure on the face from t = 0 (the accidental combination's permanent part, γ = 1)",
+                                      (dam.deposit_submerged ? " (saturated; buoyant below the water surface)" : "") +
+                                      fmt(", K %.2f: pressure on the face from t = 0 (the accidental situation's permanent part, γ = 1; "
+                                          "the persistent situation's with γ_G 1.35)",
                                           dam.deposit_coefficient));
   if (is_set(dam.water_height_m))
     row("water behind the dam", fmt("%.3g m", dam.water_height_m) + fmt(", %.3g kN/m³", dam.water_unit_weight_N_m3 / 1e3) +

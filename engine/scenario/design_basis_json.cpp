@@ -85,6 +85,7 @@ DamBasis read_dam(const Object& o) {
   d.crest_upstream_x_m = o.number("crest_upstream_x_m"), d.crest_downstream_x_m = o.number("crest_downstream_x_m");
   d.deposit_height_m = o.positive("deposit_height_m", false), d.deposit_unit_weight_N_m3 = o.positive("deposit_unit_weight_N_m3", false);
   d.deposit_coefficient = o.positive("deposit_coefficient", false, true);
+  if (o.has("deposit_submerged")) d.deposit_submerged = o.text("deposit_submerged", {"yes", "no"}) == "yes";
   d.water_height_m = o.positive("water_height_m", false), d.water_unit_weight_N_m3 = o.positive("water_unit_weight_N_m3", false);
   // Groups that mean something only together.
   auto together = [&](std::initializer_list<std::pair<const char*, double>> group) {
@@ -154,6 +155,7 @@ json design_basis_to_json(const DesignBasis& b) {
   put(dam, "crest_upstream_x_m", d.crest_upstream_x_m), put(dam, "crest_downstream_x_m", d.crest_downstream_x_m);
   put(dam, "deposit_height_m", d.deposit_height_m), put(dam, "deposit_unit_weight_N_m3", d.deposit_unit_weight_N_m3);
   put(dam, "deposit_coefficient", d.deposit_coefficient);
+  if (d.deposit_submerged) dam["deposit_submerged"] = "yes";
   put(dam, "water_height_m", d.water_height_m), put(dam, "water_unit_weight_N_m3", d.water_unit_weight_N_m3);
   put(dam, "column_diameter_m", d.column_diameter_m), put(dam, "column_wall_thickness_m", d.column_wall_thickness_m);
   json out{{"dam", dam}};
@@ -193,7 +195,7 @@ DesignBasis design_basis_from_json(const json& j, const std::string& file, const
   b.dam = read_dam(Object(j["dam"], file, prefix + "/dam",
                           {"type", "height_m", "width_m", "width_rule", "youngs_modulus_Pa", "poisson_ratio", "density_kg_m3", "crest_thickness_m",
                            "base_thickness_m", "heel_x_m", "toe_x_m", "crest_upstream_x_m", "crest_downstream_x_m", "deposit_height_m", "deposit_unit_weight_N_m3", "deposit_coefficient",
-                           "water_height_m", "water_unit_weight_N_m3", "column_diameter_m", "column_wall_thickness_m"}));
+                           "deposit_submerged", "water_height_m", "water_unit_weight_N_m3", "column_diameter_m", "column_wall_thickness_m"}));
   if (top.has("boulder"))
     b.boulder = read_boulder(Object(j["boulder"], file, prefix + "/boulder",
                                     {"mass_kg", "diameter_m", "density_kg_m3", "youngs_modulus_Pa", "poisson_ratio", "speed_m_s",

@@ -251,7 +251,8 @@ DesignBasis Builder::design_basis() const {
     dam.crest_thickness_m = d_.crest, dam.base_thickness_m = d_.base_thickness;
     dam.heel_x_m = xu(0), dam.toe_x_m = xd(0), dam.crest_upstream_x_m = xu(d_.height), dam.crest_downstream_x_m = xd(d_.height);
     if (d_.deposit_height > 0)
-      dam.deposit_height_m = d_.deposit_height, dam.deposit_unit_weight_N_m3 = d_.deposit_unit_weight, dam.deposit_coefficient = d_.deposit_coefficient;
+      dam.deposit_height_m = d_.deposit_height, dam.deposit_unit_weight_N_m3 = d_.deposit_unit_weight, dam.deposit_coefficient = d_.deposit_coefficient,
+      dam.deposit_submerged = d_.deposit_submerged;
     if (d_.water_height > 0) dam.water_height_m = d_.water_height, dam.water_unit_weight_N_m3 = d_.water_unit_weight;
   } else {
     dam.column_diameter_m = d_.column_d, dam.column_wall_thickness_m = d_.column_t;
@@ -340,6 +341,9 @@ void Builder::add_concrete_members() {
   if (d_.deposit_height > 0)
     pl.push_back({{"member", "dam"}, {"direction", at(1.0, 0.0)}, {"surface", d_.deposit_height},
                   {"gradient", d_.deposit_coefficient * d_.deposit_unit_weight * d_.width}});
+  if (d_.deposit_height > 0 && d_.deposit_submerged)  // the buoyancy of the submerged part: K gamma_w (min(h, h_w) - y) upstream
+    pl.push_back({{"member", "dam"}, {"direction", at(-1.0, 0.0)}, {"surface", std::min(d_.deposit_height, d_.water_height)},
+                  {"gradient", d_.deposit_coefficient * d_.water_unit_weight * d_.width}});
   if (d_.water_height > 0)
     pl.push_back({{"member", "dam"}, {"direction", at(1.0, 0.0)}, {"surface", d_.water_height}, {"gradient", d_.water_unit_weight * d_.width}});
   if (!pl.empty()) st["pressure_loads"] = pl;

@@ -23,6 +23,7 @@ struct DamPreset {
   int columns = 0;                                               // steel_open in 3D: columns per row across (0: 3)
   // What stands behind a concrete gravity dam when the impact arrives (permanent pressures on the upstream face).
   double deposit_height = 0, deposit_unit_weight = 18000, deposit_coefficient = 0.5;  // m, N/m^3, K
+  bool deposit_submerged = false;  // below the water surface: the buoyant unit weight
   double water_height = 0, water_unit_weight = 9810;                                  // m, N/m^3
 };
 

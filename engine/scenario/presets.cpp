@@ -87,10 +87,13 @@ void read_standing_loads(Obj& o, DamPreset& d) {
                                 "the upstream face, held from t = 0 with the self-weight; absent: none");
   if (dep.present()) {
     dep.number("height", d.deposit_height, positive("m", "height of the deposit's surface above the base", true));
-    unit_weight(dep, "unit_weight", d.deposit_unit_weight, "unit weight gamma of the deposit (submerged: the buoyant one)", 5e3, 2.6e4);
+    unit_weight(dep, "unit_weight", d.deposit_unit_weight, "unit weight gamma of the deposit (saturated, when submerged)", 5e3, 2.6e4);
     dep.number("pressure_coefficient", d.deposit_coefficient,
                Spec{.doc = "earth-pressure coefficient K (at rest 1 - sin phi = 0.5 at phi = 30 deg; active 0.33)", .min = 0, .max = 1,
                   .min_open = true});
+    dep.boolean("submerged", d.deposit_submerged,
+                Spec{.doc = "true: below the water surface (dam.water, required) the deposit weighs its buoyant unit weight gamma - gamma_w, "
+                            "the water's own pressure acting besides: K (gamma (h - y) - gamma_w (min(h, h_w) - y)) below min(h, h_w)"});
     dep.finish();
   }
   Obj w = o.object("water", "water standing behind the dam when the impact arrives: a hydrostatic pressure gamma_w (h - y) on the upstream "
@@ -101,6 +104,10 @@ void read_standing_loads(Obj& o, DamPreset& d) {
     w.finish();
   }
   if (!o.documenting() && d.deposit_height > d.height) o.fail("deposit/height", nullptr, "a deposit no higher than the dam (" + std::to_string(d.height) + " m)");
+  if (!o.documenting() && d.deposit_submerged && !(d.water_height > 0))
+    o.fail("deposit/submerged", nullptr, "false without water behind the dam (dam.water gives the water surface the deposit is submerged below)");
+  if (!o.documenting() && d.deposit_submerged && !(d.deposit_unit_weight > d.water_unit_weight))
+    o.fail("deposit/unit_weight", nullptr, "a saturated unit weight above the water's (" + std::to_string(d.water_unit_weight) + " N/m^3) for a submerged deposit");
   if (!o.documenting() && d.water_height > d.height) o.fail("water/height", nullptr, "water no higher than the dam crest (" + std::to_string(d.height) + " m)");
 }
 

@@ -452,6 +452,28 @@ TEST(Presets, DepositAndWaterBehindTheDamAreItsPressureLoads) {
   EXPECT_NO_THROW(expand_presets(m, "t.json", "with_buffer"));
 }
 
+// A submerged deposit (saturated 20 kN/m^3, 2.5 m, K 0.5) under 3 m of water: its effective pressure K (gamma - gamma_w)
+// (h - y), written as K gamma (2.5 - y) downstream and K gamma_w (2.5 - y) upstream, beside the water's; the resultant
+// K (gamma - gamma_w) h^2 / 2 = 0.5 x 10 190 x 3.125 = 15 921.9 N/m. Refused without water.
+TEST(Presets, SubmergedDepositWeighsItsBuoyantUnitWeight) {
+  json j = concrete_boulder();
+  j["dam"]["deposit"] = json{{"height", 2.5}, {"unit_weight", 20000}, {"pressure_coefficient", 0.5}, {"submerged", true}};
+  j["dam"]["water"] = json{{"height", 3.0}};
+  const json low = expand_presets(j, "t.json", "with_buffer");
+  const json& pl = low["structure"]["pressure_loads"];
+  ASSERT_EQ(pl.size(), 3u);
+  const double w = j["dam"]["width"].get<double>();
+  double resultant = 0;  // per metre of width, along the flow, of the two deposit loads
+  for (int k = 0; k < 2; ++k) {
+    const double s = pl[k]["surface"].get<double>(), g = pl[k]["gradient"].get<double>() / w;
+    resultant += pl[k]["direction"][0].get<double>() * g * s * s / 2;
+  }
+  EXPECT_NEAR(resultant, 0.5 * (20000 - 9810) * 2.5 * 2.5 / 2, 1e-9);
+  EXPECT_EQ(low["design_basis"]["dam"]["deposit_submerged"], "yes");
+  j["dam"].erase("water");
+  EXPECT_THROW(expand_presets(j, "t.json", "with_buffer"), InputError);
+}
+
 // No width given (a boulder on a concrete dam in 2D): the impact's effective width, the boulder's diameter plus the
 // section's thickness at the impact height: D = (6 x 1000 / (2650 pi))^(1/3) = 0.896504 m, t(3.6 m) = 1.6 - 0.6 x 3.6 / 4
 // = 1.06 m: 1.956504 m, stated in the design basis.
