@@ -562,6 +562,13 @@ void read_solid_load(Obj& o, SolidLoadConfig& l) {
     o.fail("type", nullptr, "point, patch or simulation (got '" + l.type + "')");
   if (when_any(o, "type", l.type, {"point", "patch"})) {
     o.number("force", l.force, positive("N", "horizontal force towards downstream (Lin, Cheng & Tuan: 980 kN)", true));
+    // An impact force on a check dam: 10 kN to 1 GN in N (a value in kN is the usual slip).
+    if (!o.documenting() && !o.context().accept_unusual && l.force > 0 && (l.force < 1e4 || l.force > 1e9))
+    {
+      char b[200];
+      std::snprintf(b, sizeof b, "a force in N between 1e4 and 1e9 (%g kN is %g N; \"accept_unusual\": true for a laboratory model)", l.force, l.force * 1e3);
+      o.fail("force", o.given("force"), b);
+    }
     o.number("height", l.height, positive("m", "height of the load (patch centre) above the base", true));
     o.number("across", l.across, Spec{.unit = "m", .doc = "position across the face width from its side edge (hex8); default mid-width"});
   }
@@ -1054,7 +1061,13 @@ Scenario parse_low_level(const json& j, const std::string& file) {
   Scenario s;
   schema::Context ctx{.file = file};
   if (!j.is_object()) throw InputError(file, "/", schema::short_dump(j), "a JSON object (a scenario)");
+  if (j.contains("accept_unusual")) {
+    if (!j["accept_unusual"].is_boolean()) throw InputError(file, "/accept_unusual", schema::short_dump(j["accept_unusual"]), "true or false");
+    ctx.accept_unusual = j["accept_unusual"].get<bool>();
+  }
   Obj o(&j, "", ctx);
+  bool unusual = false;
+  o.boolean("accept_unusual", unusual, Spec{.doc = "accept values outside their plausible ranges (a laboratory model)"});
   if (j.contains("solid_check") && !j.contains("bodies") && !j.contains("structure")) {
     // A solid-FE check on its own (e.g. Lin, Cheng & Tuan's Table 1): no grid, bodies or time stepping.
     read_header(o, s);

@@ -316,7 +316,7 @@ void read_buffer(Obj o, BufferPreset& b) {
 bool has_presets(const json& j) {
   if (!j.is_object()) return false;
   for (const char* k : kPresetKeys)
-    if (j.contains(k)) return true;
+    if (j.contains(k) && std::string(k) != "accept_unusual") return true;  // accept_unusual alone: a low-level scenario's
   return false;
 }
 
@@ -471,6 +471,7 @@ json expand_presets(const json& j0, const std::string& file, const std::string& 
   }
   if (!variant.empty()) low["name"] = low.value("name", std::string()) + (variant == "with_buffer" ? " (with buffer)" : " (without buffer)");
   if (space) low["name"] = low.value("name", std::string()) + " (3D)";
+  if (ctx.accept_unusual) low["accept_unusual"] = true;  // the low-level keys' own ranges (e.g. a solid check's force)
   return low;
 }
 

@@ -931,5 +931,19 @@ TEST(ScenarioMaterials, FluidErrors) {
   expect_error(ps, "/bodies/0/material", {"a material other than bingham in plane stress", "plane strain or 3D"});
 }
 
+// A solid check's force in kN (980 meant as Lin, Cheng & Tuan's 980 kN) is refused naming the conversion; a laboratory
+// model says accept_unusual.
+TEST(ScenarioErrors, SolidCheckForceInKilonewtonsIsRefused) {
+  const json j = json::parse(R"({"schema_version": 1, "name": "slip", "solid_check": {"height": 4, "crest_thickness": 1, "base_thickness": 1.6,
+    "width": 2, "youngs_modulus": 25e9, "poisson_ratio": 0.2, "loads": [{"name": "p", "type": "point", "force": 980, "height": 3.6}]}})");
+  expect_error(j, "/solid_check/loads/0/force", {"a force in N between 1e4 and 1e9", "980 kN is 980000 N"});
+  json lab = j;
+  lab["accept_unusual"] = true;
+  EXPECT_NO_THROW(parse_scenario(lab.dump(), "lab.json"));
+  json right = j;
+  right["solid_check"]["loads"][0]["force"] = 980e3;
+  EXPECT_NO_THROW(parse_scenario(right.dump(), "ok.json"));
+}
+
 }  // namespace
 }  // namespace dmi
