@@ -190,8 +190,7 @@ void write_design_json(const std::string& path, const json& doc) {
   fs::rename(tmp, target);
 }
 
-int check_main(const std::vector<std::string>& paths, const std::string& limits_file, bool print_json, const std::string& out, bool quiet,
-               const std::string& version, bool with_grid_study) {
+json check_document(const std::vector<std::string>& paths, const std::string& limits_file, const std::string& version) {
   const Limits limits = limits_file.empty() ? Limits{} : read_limits(limits_file);
   std::vector<std::string> files;
   for (const auto& p : paths)
@@ -212,7 +211,12 @@ int check_main(const std::vector<std::string>& paths, const std::string& limits_
       throw InputError(f + ": " + e.what());
     }
   }
-  json doc = design_document(runs, limits, version);
+  return design_document(runs, limits, version);
+}
+
+int check_main(const std::vector<std::string>& paths, const std::string& limits_file, bool print_json, const std::string& out, bool quiet,
+               const std::string& version, bool with_grid_study) {
+  json doc = check_document(paths, limits_file, version);
   // Beside the results (a comparison folder: in the folder), atomically.
   fs::path target = out;
   if (target.empty()) {

@@ -251,7 +251,7 @@ json design_run(const Results& r, const Limits& L, const std::string& where) {
   run["members"] = json::array();
   run["supports"] = json::array();
   run["base_total"] = nullptr;
-  double base_shear = 0;
+  double base_shear = 0, base_shear_time = -1;
   std::optional<FrameInfo> frame;
   if (!structure.is_null()) {
     const FrameInfo& f = frame.emplace(parse_structure(structure.dump(), where, L));
@@ -266,6 +266,7 @@ json design_run(const Results& r, const Limits& L, const std::string& where) {
       run["base_total"] = reaction_json(re.total);
       run["base_total"]["about_m"] = f.dim == 3 ? json{re.about[0], re.about[1], re.about[2]} : json{re.about[0], re.about[1]};
       base_shear = re.total.at(shear_key(f.dim)).abs.value;
+      base_shear_time = re.total.at(shear_key(f.dim)).abs.time;
     }
     run["dimension"] = f.dim;
   }
@@ -287,7 +288,7 @@ json design_run(const Results& r, const Limits& L, const std::string& where) {
   double t_member = c.present ? c.peak_time_s : r.time.empty() ? 0.0 : r.time.back(), u_member = -1;
   for (const auto& k : checks)
     if (k.s_m >= 0 && k.time_s >= 0 && k.situation == "accidental" && k.utilisation > u_member) u_member = k.utilisation, t_member = k.time_s;
-  run["damping"] = basis ? damping_share(r, *basis, t_member) : json(nullptr);
+  run["damping"] = basis ? damping_share(r, *basis, t_member, base_shear_time) : json(nullptr);
   run["volume_health"] = volume_health(r);
   return run;
 }

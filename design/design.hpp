@@ -46,6 +46,9 @@ std::string verdict_text(const nlohmann::json& design);
 // `out`. With with_grid_study, a grid study in the folder (out/grid_study/, from `run --grid-study`) is judged again
 // with the same limits (restudy_grid). Returns 0 when every check of the design passes, 1 when one fails; bad input
 // throws (exit 2).
+// The design document of the runs at `paths` (results files or run folders) under the limits file ("" the defaults),
+// without writing or printing it.
+nlohmann::json check_document(const std::vector<std::string>& paths, const std::string& limits_file, const std::string& software_version);
 int check_main(const std::vector<std::string>& paths, const std::string& limits_file, bool print_json, const std::string& out,
                bool quiet, const std::string& software_version, bool with_grid_study = false);
 

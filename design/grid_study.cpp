@@ -153,10 +153,15 @@ GridStudyOutcome run_grid_study(const std::string& file, const nlohmann::json& s
     }
     const std::vector<std::string> written = simulate(scen, dir, g);
     const std::string design = (fs::path(dir) / "design.json").string();
-    check_main(written, limits_file, false, design, quiet || g > 0, software_version);
+    if (g == 0) {  // the finest level prints its checks (the coarser ones only feed the study)
+      check_main(written, limits_file, false, design, quiet, software_version);
+      std::ifstream d(design);
+      designs[g] = nlohmann::json::parse(d);
+    } else {
+      designs[g] = check_document(written, limits_file, software_version);
+      write_design_json(design, designs[g]);
+    }
     folders[g] = dir;
-    std::ifstream d(design);
-    designs[g] = nlohmann::json::parse(d);
     r.wall[g] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (on_level) on_level(g, r.h[g], r.wall[g]);
   };
@@ -225,10 +230,8 @@ bool restudy_grid(nlohmann::json& design, const std::string& out, const std::str
   std::array<std::string, 3> folders{out, levels[0].second, levels[1].second};
   const std::array<double, 3> h{levels[0].first * levels[0].first / levels[1].first, levels[0].first, levels[1].first};
   for (int g = 1; g <= 2; ++g) {
-    const std::string file = (fs::path(folders[g]) / "design.json").string();
-    check_main({folders[g]}, limits_file, false, file, true, software_version);
-    std::ifstream d(file);
-    designs[g] = nlohmann::json::parse(d);
+    designs[g] = check_document({folders[g]}, limits_file, software_version);
+    write_design_json((fs::path(folders[g]) / "design.json").string(), designs[g]);
   }
   return attach_grid_study(design, designs, h, folders, limits_file);
 }

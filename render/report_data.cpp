@@ -584,9 +584,12 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
          if (!s || s->data.empty()) return std::string("—");
          std::string t = fmt("%.4g J", s->data.back());
          if (const json* d = r.design.contains("damping") && r.design["damping"].is_object() ? &r.design["damping"] : nullptr)
-           t += fmt(" (%.1f %% of the impact energy; ", 100 * (*d)["share"].get<double>()) +
-                fmt("%.1f %% by the governing member demand", 100 * (*d)["share_at_governing"].get<double>()) +
-                ((*d)["flagged"].get<bool>() ? ": ABOVE 10 %, the peaks rest on the damping model)" : ")");
+           t += fmt(" (%.1f %% of the impact energy; by the governing member demand ", 100 * (*d)["share"].get<double>()) +
+                fmt("%.1f %% of it", 100 * (*d)["share_at_governing"].get<double>()) +
+                fmt(" and %.1f %% of the energy the members had received", 100 * num(*d, {"share_of_received_at_governing"}, 0.0)) +
+                ((*d)["base_shear_peak"].is_object() ? fmt("; by the peak base shear %.1f %% of it", 100 * (*d)["base_shear_peak"]["share_of_received"].get<double>())
+                                                     : std::string()) +
+                ((*d)["flagged"].get<bool>() ? ": ABOVE 10 %, the peaks rest on the damping ratio)" : ")");
          return t;
        }},
       {"bodies' volume (largest / as created; flagged above 1.05)", [](const RunData& r) {

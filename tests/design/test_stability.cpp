@@ -232,6 +232,15 @@ TEST(Stability, DampingShareOfTheImpactEnergy) {
   EXPECT_NEAR(j["share"].get<double>(), 0.2, 1e-12);
   EXPECT_FALSE(j["flagged"].get<bool>());
   EXPECT_TRUE(damping_share(r, b, 0.05)["flagged"].get<bool>());
+  // Against the energy the members received (the contact's work on them): 1.25 kJ of 10 kJ by 0.02 s is 12.5 %, flagged
+  // though the impact-energy share is 10 %; by a base shear peak at 0.01 s 500 J of 8 kJ, 6.25 %.
+  r.series.push_back(Series{"energy/contact_work", "J", {"value"}, {0.0, 8000.0, 10000.0, 10000.0}});
+  j = damping_share(r, b, 0.02, 0.01);
+  EXPECT_NEAR(j["share_of_received_at_governing"].get<double>(), 0.125, 1e-12);
+  EXPECT_NEAR(j["base_shear_peak"]["share_of_received"].get<double>(), 0.0625, 1e-12);
+  EXPECT_TRUE(j["flagged"].get<bool>());
+  j = damping_share(r, b, 0.01, 0.01);
+  EXPECT_FALSE(j["flagged"].get<bool>());
 }
 
 // Cohesion over the compressed base area w B (3 m x 3.5 m at rest, base fully compressed): 100 kPa adds 1 050 kN to
