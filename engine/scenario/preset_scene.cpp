@@ -156,9 +156,9 @@ double Builder::front(double y) const {
 
 std::vector<Builder::Feature> Builder::features() const {
   std::vector<Feature> f;
-  // A homogenised layer: 15 cells through it in 2D, where the buffered dam's base shear converges at order 2 from 15
-  // cells on and reads 19 % low at 7.5 (docs/verification.md, "The buffered demo dam converges"); 5 in 3D, whose
-  // cost grows with h^-4 (the 3D loads are not converged at 8.5 cells either: the report's grid study says so).
+  // A homogenised layer: 15 cells through it in 2D, from where the buffered dam's base shear converges monotonically
+  // (docs/verification.md, "The buffered demo dam converges"); 5 in 3D, whose cost grows with h^-4 (the 3D loads are
+  // not converged there: the report's grid study says so).
   // The bare variant of a comparison takes its buffer's default cell, without a minimum (it builds no buffer).
   const std::optional<BufferPreset>& buf = p_.buffer ? p_.buffer : p_.compared_buffer;
   const bool built = p_.buffer.has_value();
@@ -683,8 +683,8 @@ void Builder::add_grid_walls_and_time() {
     out_["analysis"] = json{{"dimension", 2}, {"plane", "strain"}, {"thickness", d_.width}, {"end_time", clean(end_time_)}};
   }
   // A rigid boulder leaves the step to the buffer's rubber. The step's error on the buffered dam's peaks is first
-  // order and grows as h falls at a fixed cfl; at 0.25 the base shear reads -0.1 % (h 0.02 m) and -2.4 % (0.01 m) of
-  // the small-step limit, the contact -1.5 / -1.7 % (docs/verification.md, "Rigid boulder").
+  // order and grows as h falls at a fixed cfl; at 0.25 it stays within a few per cent of the small-step limit
+  // (docs/verification.md, "Rigid boulder").
   if (rigid_boulder_) out_["analysis"]["cfl"] = 0.25;
   out_["output"] = json{{"history_interval", clean(std::min(1e-4, end_time_ / 2000))}, {"snapshot_interval", clean(end_time_ / 50)}};
   json walls = json::array();

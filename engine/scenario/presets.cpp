@@ -134,7 +134,7 @@ void read_dam(Obj o, DamPreset& d) {
   // A short hard impact excites the dam's higher modes, which the members must resolve (docs/verification.md).
   if (d.type == "concrete_gravity") d.elements = 16;
   o.integer("elements", d.elements, Spec{.doc = "beam-column elements per member (members model); default 16 for concrete_gravity "
-                                                "(peak base shear within 0.2 % of 32 elements, 8 gave -9 %), 8 for steel_open",
+                                                "(a bare impact's peak base shear as with 32; docs/verification.md), 8 for steel_open",
                                          .min = 1, .max = 1000});
   d.beam_theory = d.type == "concrete_gravity" ? "timoshenko" : "euler_bernoulli";
   o.choice<std::string>("beam_theory", d.beam_theory, {{"timoshenko", "timoshenko"}, {"euler_bernoulli", "euler_bernoulli"}},
