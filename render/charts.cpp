@@ -80,6 +80,20 @@ void font(vtkTextProperty* p, int size, bool bold = false) {
 }
 }  // namespace
 
+std::vector<Curve> small_magnitude_curves(const std::vector<Curve>& curves) {
+  auto peak = [](const Curve& c) {
+    double p = 0;
+    for (double v : c.y) p = std::max(p, std::abs(v));
+    return p;
+  };
+  double top = 0;
+  for (const Curve& c : curves) top = std::max(top, peak(c));
+  std::vector<Curve> small;
+  for (const Curve& c : curves)
+    if (const double p = peak(c); p > 0 && p < 0.1 * top) small.push_back(c);
+  return small;
+}
+
 Curve limit_line(const std::string& label, double value, double a, double b, bool vertical) {
   Curve c;
   c.label = label;

@@ -29,6 +29,10 @@ struct ChartSpec {
 // Writes the chart as PNG (and as SVG with spec.svg_path); throws std::runtime_error when no curve has two points.
 void render_chart(const ChartSpec& spec, const std::string& path);
 
+// The curves whose peak |y| is below a tenth of the largest curve's: on a common linear axis they lie flat, so a chart
+// draws them again on their own scale.
+std::vector<Curve> small_magnitude_curves(const std::vector<Curve>& curves);
+
 // A horizontal (or, with vertical = true, vertical) limit line across [a, b] as a dashed curve.
 Curve limit_line(const std::string& label, double value, double a, double b, bool vertical = false);
 

@@ -261,8 +261,11 @@ Range particle_range(const std::vector<Panel>& panels, const std::string& q) {
     std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
     return v[k];
   };
-  Range r{q == "von_mises" ? *std::min_element(v.begin(), v.end()) : rank(0.01), rank(0.99)};
-  if (r.hi <= r.lo) r.hi = r.lo + 1.0;  // a uniform field still gets a scale
+  return at_least_round_off({q == "von_mises" ? *std::min_element(v.begin(), v.end()) : rank(0.01), rank(0.99)});
+}
+
+Range at_least_round_off(Range r) {
+  if (!(r.hi - r.lo >= kStressScaleFloor)) r.hi = r.lo + kStressScaleFloor;
   return r;
 }
 
@@ -300,7 +303,8 @@ Range member_range(const std::vector<Panel>& panels) {
     const FrameState fs = panel_frame(p);
     for (const auto& e : fs.elements) m = std::max({m, std::abs(e.top_i), std::abs(e.bottom_i), std::abs(e.top_j), std::abs(e.bottom_j)});
   }
-  return m > 0 ? Range{-m, m} : Range{-1.0, 1.0};
+  m = std::max(m, 0.5 * kStressScaleFloor);
+  return Range{-m, m};
 }
 
 FieldImage render_field(const std::vector<Panel>& panels, const FieldSpec& spec, const std::string& path) {

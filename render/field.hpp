@@ -71,6 +71,10 @@ FieldImage render_field(const std::vector<Panel>& panels, const FieldSpec& spec,
 // states the maximum and where it is); and of the members' fibre stresses (symmetric about zero, as the member colour
 // map is diverging; a panel with member_envelope contributes its envelope).
 Range particle_range(const std::vector<Panel>& panels, const std::string& quantity);
+// Stresses below 1 kPa are round-off for an impact (a dam's self-weight alone gives tens of kPa): a colour scale spans
+// at least kStressScaleFloor, so that a field at rest, or before the contact, is not drawn in the top colour.
+inline constexpr double kStressScaleFloor = 1e3;  // Pa
+Range at_least_round_off(Range r);
 Range member_range(const std::vector<Panel>& panels);
 
 }  // namespace dmi::render

@@ -373,13 +373,23 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
       for (std::size_t k = 0; k < y.size(); ++k) cv.x.push_back(runs[i].results.time[k] * 1e3), cv.y.push_back(y[k] * scale);
       c.curves.push_back(cv);
     }
+    // Runs of unlike magnitude (a bare impact's 25 MN beside a buffered 0.3 MN) get a panel of their own as well.
+    ChartSpec small = c;
+    small.curves = small_magnitude_curves(c.curves);
     for (auto& e : extra) c.curves.push_back(e);
     if (c.curves.empty()) return;
-    c.svg_path = (fs::path(image_dir) / fs::path(file).replace_extension(".svg")).string();
-    c.draw = mine();
-    render_chart(c, (fs::path(image_dir) / file).string());
-    add(file, "chart", "", title, c.width, c.height, nullptr);
-    manifest.back()["vector_file"] = fs::path(c.svg_path).filename().string();
+    auto draw = [&](ChartSpec& spec, const std::string& name, const std::string& caption) {
+      spec.svg_path = (fs::path(image_dir) / fs::path(name).replace_extension(".svg")).string();
+      spec.draw = mine();
+      render_chart(spec, (fs::path(image_dir) / name).string());
+      add(name, "chart", "", caption, spec.width, spec.height, nullptr);
+      manifest.back()["vector_file"] = fs::path(spec.svg_path).filename().string();
+    };
+    draw(c, file, title);
+    if (!small.curves.empty()) {
+      small.title = title + ", the runs below a tenth of the largest peak";
+      draw(small, fs::path(file).stem().string() + "_small.png", small.title);
+    }
   };
   const bool frames = std::all_of(runs.begin(), runs.end(), [](const RunData& r) { return r.frame && !r.frame->supports.empty(); });
   if (frames) {

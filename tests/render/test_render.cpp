@@ -227,6 +227,29 @@ TEST_F(Render, ChartIsDrawnAtItsSize) {
   EXPECT_THROW(dmi::render::render_chart({"empty", "x", "y", {}, 400, 300}, (dir / "empty.png").string()), std::runtime_error);
 }
 
+// A field of round-off (6.3e-13 Pa, a member before the contact) gets a 1 kPa colour scale, not one that ends at its own
+// round-off; a real field keeps its range.
+TEST(RenderBasics, ColourScalesIgnoreRoundOff) {
+  const dmi::render::Range r = dmi::render::at_least_round_off({0.0, 6.3e-13});
+  EXPECT_DOUBLE_EQ(r.lo, 0.0);
+  EXPECT_DOUBLE_EQ(r.hi, dmi::render::kStressScaleFloor);
+  const dmi::render::Range real = dmi::render::at_least_round_off({-2e6, 17.7e6});
+  EXPECT_DOUBLE_EQ(real.hi, 17.7e6);
+  EXPECT_DOUBLE_EQ(dmi::render::at_least_round_off({5.0, 5.0}).hi, 5.0 + dmi::render::kStressScaleFloor);
+}
+
+// Curves of unlike magnitude: a run peaking at 0.3 against one at 25 lies flat on their common axis and is drawn again
+// on its own; one at a third of the largest is not; an all-zero curve never.
+TEST(RenderBasics, SmallMagnitudeCurvesGetTheirOwnPanel) {
+  dmi::render::Curve bare, buffered, mid, zero;
+  bare.y = {0, 25, -3}, buffered.y = {0, 0.3, 0.1}, mid.y = {0, -8.5}, zero.y = {0, 0};
+  bare.label = "bare", buffered.label = "buffered";
+  const auto small = dmi::render::small_magnitude_curves({bare, buffered, mid, zero});
+  ASSERT_EQ(small.size(), 1u);
+  EXPECT_EQ(small[0].label, "buffered");
+  EXPECT_TRUE(dmi::render::small_magnitude_curves({bare, mid}).empty());
+}
+
 // The damping row: zeta(f) = alpha / (4 pi f) + pi f beta by hand for the demo dam's preset coefficients.
 TEST(RenderBasics, MemberDampingStatesTheRatioAcrossFrequencies) {
   const json s{{"structure", {{"rayleigh_damping", {{"mass", 22.95}, {"stiffness", 5.17e-5}}}}}};
