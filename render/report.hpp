@@ -40,6 +40,9 @@ std::string render_report_html(const nlohmann::json& data);
 // damps a mode at f by zeta(f) = alpha / (4 pi f) + pi f beta (Chopra 2012, eq. 11.4.3): the ratio at 10 Hz, 100 Hz,
 // 1 kHz and 10 kHz, since it grows with frequency and a bare hard impact excites kHz modes; "none" without damping.
 std::string member_damping_text(const nlohmann::json& scenario);
+// An estimate's note in the report: marked when the estimate lies more than a factor of 2 from the simulated peak
+// (ratio = estimate / simulated outside [0.5, 2]); a NaN ratio (not applicable) leaves the note as it is.
+std::string estimate_note(double ratio, const std::string& note);
 // The report's row on the boulder's model (design basis boulder.model), with the run's CFL number for a rigid one (NaN:
 // not recorded); empty for a model it does not know.
 std::string boulder_model_text(BoulderModel model, double cfl);

@@ -95,6 +95,12 @@ static void plane_and_space_data(const json& design_doc, json& d) {
   d["plane_and_space_note"] = ps.value("note", "") + " A ratio below 1 (red) is a quantity the plane model puts below the 3D one.";
 }
 
+std::string estimate_note(double ratio, const std::string& note) {
+  if (!(ratio < 0.5 || ratio > 2)) return note;
+  return "MORE THAN A FACTOR OF 2 FROM THE SIMULATION: outside the conditions the formula was written for, or a reason to "
+         "look again at the model" + (note.empty() ? "" : "; " + note);
+}
+
 std::string member_damping_text(const json& scenario) {
   const json* st = scenario.contains("structure") && scenario["structure"].is_object() ? &scenario["structure"] : nullptr;
   const json* rd = st && st->contains("rayleigh_damping") && (*st)["rayleigh_damping"].is_object() ? &(*st)["rayleigh_damping"] : nullptr;
@@ -526,9 +532,12 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
         sim_note += fmt(", GCI %.0f %%", 100 * e["simulated_gci"].get<double>());
         band = fmt("%.2f", e["ratio_low"].get<double>()) + "–" + (e["ratio_high"].is_number() ? fmt("%.2f", e["ratio_high"].get<double>()) : std::string("∞"));
       }
+      const double q = ok ? e["ratio"].get<double>() : NAN;
+      const bool far = ok && (q < 0.5 || q > 2);
+      const std::string note = estimate_note(q, e.value("note", ""));
       est.push_back({{"run", label(r)}, {"title", e["title"]}, {"formula", e["formula"]}, {"parameters", e.value("parameters", "")},
                      {"value", ok ? eng(e["value_N"], "N") : std::string("n/a")}, {"simulated", sim}, {"simulated_note", sim_note}, {"ratio", ratio}, {"ratio_band", band}, {"source", e["source"]},
-                     {"note", e.value("note", "")}, {"row_class", ok ? "" : "muted"}});
+                     {"note", note}, {"row_class", ok ? (far ? "far" : "") : "muted"}});
     }
   d["estimates"] = est;
   // The debris load in its three phases, against the momentum flux of the surge.

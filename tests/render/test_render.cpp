@@ -227,6 +227,15 @@ TEST_F(Render, ChartIsDrawnAtItsSize) {
   EXPECT_THROW(dmi::render::render_chart({"empty", "x", "y", {}, 400, 300}, (dir / "empty.png").string()), std::runtime_error);
 }
 
+// An estimate more than a factor of 2 from the simulation (the SDOF's 235 kN against 1 421 kN) is marked; within the
+// factor, or not applicable, its note stays as it is.
+TEST(RenderBasics, EstimatesFarFromTheSimulationAreMarked) {
+  EXPECT_EQ(dmi::render::estimate_note(235.0 / 1421.0, "pulse 1.3 ms").rfind("MORE THAN A FACTOR OF 2", 0), 0u);
+  EXPECT_NE(dmi::render::estimate_note(2.5, "").find("FACTOR OF 2"), std::string::npos);
+  EXPECT_EQ(dmi::render::estimate_note(0.8, "pulse 1.3 ms"), "pulse 1.3 ms");
+  EXPECT_EQ(dmi::render::estimate_note(NAN, "n/a"), "n/a");
+}
+
 // A field of round-off (6.3e-13 Pa, a member before the contact) gets a 1 kPa colour scale, not one that ends at its own
 // round-off; a real field keeps its range.
 TEST(RenderBasics, ColourScalesIgnoreRoundOff) {
