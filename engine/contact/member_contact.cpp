@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "engine/common/coulomb.hpp"
 #include "engine/contact/projection.hpp"
 #include "engine/structure/space_frame.hpp"
 
@@ -393,12 +394,7 @@ template <int D> void MemberContact<D>::boundary_forces(Scene<D>& s, double dt) 
         const double fn = fv.dot(n);
         if (fn <= 0) continue;  // separating: no force, eq. (21)
         Vec<D> ft = fv - fn * n;
-        if (mode == MemberContactMode::friction) {
-          const double lim = opt.friction * fn, t = ft.norm();
-          if (t > lim) ft *= lim / t;
-        } else {
-          ft.setZero();
-        }
+        ft = mode == MemberContactMode::friction ? coulomb_projection(ft, opt.friction * fn) : Vec<D>(Vec<D>::Zero());
         fv = fn * n + ft;
       }
       const Vec<D> fbc = q * fv;  // eq. (19)
@@ -430,11 +426,7 @@ template <int D> void MemberContact<D>::constrain_remap(const Scene<D>& s, std::
     const double vn = rel.dot(l.n);
     if (vn >= 0) continue;  // separating
     Vec<D> dv = -l.q * vn * l.n;
-    if (l.mode == MemberContactMode::friction) {
-      const Vec<D> vt = rel - vn * l.n;
-      const double t = vt.norm(), cut = std::min(t, opt.friction * l.q * -vn);
-      if (t > 0) dv -= cut / t * vt;
-    }
+    if (l.mode == MemberContactMode::friction) dv -= coulomb_projection(Vec<D>(rel - vn * l.n), opt.friction * l.q * -vn);
     v += dv;
   }
 }

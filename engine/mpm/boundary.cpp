@@ -1,3 +1,4 @@
+#include "engine/common/coulomb.hpp"
 #include "engine/common/parallel.hpp"
 #include "engine/mpm/boundary.hpp"
 #include "engine/mpm/rigid.hpp"
@@ -36,9 +37,8 @@ template <int D> Vec<D> constrain(const Vec<D>& v, const Vec<D>& n, WallConditio
     case WallCondition::slip: return vn < 0 ? Vec<D>(v - vn * n) : v;
     case WallCondition::friction: {
       if (vn >= 0) return v;
-      const Vec<D> vt = v - vn * n;
-      const double t = vt.norm(), slip = mu * (-vn);
-      return t > slip ? Vec<D>(vt * (1 - slip / t)) : Vec<D>::Zero();
+      const Vec<D> vt = v - vn * n;  // the wall removes the approach and as much of the slip as mu (-vn) allows
+      return Vec<D>(vt - coulomb_projection(vt, mu * (-vn)));
     }
   }
   return v;
@@ -317,8 +317,8 @@ template <int D> void pair_contact(Scene<D>& s, std::vector<Vec<D>>& vel, Index 
   const double vn = rel.dot(n);
   if (vn <= 0) return;  // separating
   const Vec<D> rt = rel - vn * n;
-  const double t = rt.norm(), mu = s.options.contact_friction;
-  const Vec<D> dva = t <= mu * vn ? Vec<D>(-rel) : Vec<D>(-vn * n - (t > 0 ? Vec<D>(mu * vn * rt / t) : Vec<D>::Zero()));
+  const double mu = s.options.contact_friction;
+  const Vec<D> dva = -vn * n - coulomb_projection(rt, mu * vn);  // stick: -rel, to the centre of mass
   const Vec<D> P = ma * dva;  // stick: dva = -rel takes a to the centre of mass, and P takes b there too
   vel[ka] += P / ma;
   vel[kb] -= P / mb;
@@ -370,12 +370,7 @@ void body_contact(Scene<D>& s, std::vector<Vec<D>>& vel, bool fronts, const std:
       const double vn = rel.dot(n);
       if (vn <= 0) continue;  // separating or sliding apart: no correction
       const Vec<D> rt = rel - vn * n;
-      const double t = rt.norm();
-      if (t <= mu * vn) {
-        vel[k] = vcm;  // stick
-      } else {
-        vel[k] -= vn * n + (t > 0 ? Vec<D>(mu * vn * rt / t) : Vec<D>::Zero());
-      }
+      vel[k] -= vn * n + coulomb_projection(rt, mu * vn);  // stick: to vcm
     }
   });
 }

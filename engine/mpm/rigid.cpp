@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/common/coulomb.hpp"
 #include "engine/materials/material.hpp"
 #include "engine/mpm/boundary.hpp"
 
@@ -253,8 +254,7 @@ double RigidBodies<D>::wall_contact(Scene<D>& s, std::vector<Vec<D>>& vel, doubl
         const double st_norm = vt.norm();
         if (st_norm <= 0) continue;
         const Vec<3> t = vt / st_norm;
-        Vec<3> Pt = c.P - c.P.dot(c.n) * c.n, Pt_new = Pt - st_norm / eff(c, t) * t;
-        if (Pt_new.norm() > mu * c.lambda) Pt_new *= mu * c.lambda / Pt_new.norm();
+        const Vec<3> Pt = c.P - c.P.dot(c.n) * c.n, Pt_new = coulomb_projection(Vec<3>(Pt - st_norm / eff(c, t) * t), mu * c.lambda);
         apply(c, Pt_new - Pt);
         c.P += Pt_new - Pt;
         moved = std::max(moved, (Pt_new - Pt).norm());
