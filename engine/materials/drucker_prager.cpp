@@ -25,7 +25,7 @@
 #include "engine/common/parallel.hpp"
 #include "engine/materials/material.hpp"
 #include "engine/materials/mu_of_i.hpp"
-#include "engine/mpm/reduce.hpp"
+#include "engine/common/reduce.hpp"
 
 namespace dmi {
 namespace {

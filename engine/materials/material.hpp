@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "engine/common/state_io.hpp"
-#include "engine/mpm/particles.hpp"
+#include "engine/common/particles.hpp"
 #include "engine/scenario/config.hpp"
 
 namespace dmi {

@@ -34,7 +34,7 @@
 
 #include "engine/common/parallel.hpp"
 #include "engine/materials/material.hpp"
-#include "engine/mpm/reduce.hpp"
+#include "engine/common/reduce.hpp"
 
 namespace dmi {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "engine/contact/member_contact.hpp"
+#include "engine/mpm/member_contact.hpp"
 
 namespace dmi {
 namespace {

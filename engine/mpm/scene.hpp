@@ -11,7 +11,7 @@
 #include "engine/materials/material.hpp"
 #include "engine/mpm/grid.hpp"
 #include "engine/mpm/inflow.hpp"
-#include "engine/mpm/particles.hpp"
+#include "engine/common/particles.hpp"
 #include "engine/mpm/touch.hpp"
 #include "engine/scenario/config.hpp"
 #include "engine/structure/frame.hpp"
@@ -82,7 +82,7 @@ struct SolverOptions {
   double cell_volume = 0.0;     // h^D, times the thickness in 2D (m^3)
 };
 
-// How beam-column members act on the grid (engine/contact/member_contact.hpp).
+// How beam-column members act on the grid (engine/mpm/member_contact.hpp).
 struct MemberCoupling {
   MemberContactMode mode = MemberContactMode::separable;
   double friction = 0.0;

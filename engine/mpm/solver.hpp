@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-#include "engine/contact/member_contact.hpp"
+#include "engine/mpm/member_contact.hpp"
 #include "engine/mpm/clearance.hpp"
 #include "engine/mpm/scene.hpp"
 #include "engine/mpm/transfer.hpp"

@@ -14,7 +14,7 @@
 
 #include "engine/common/types.hpp"
 #include "engine/mpm/grid.hpp"
-#include "engine/mpm/particles.hpp"
+#include "engine/common/particles.hpp"
 
 namespace dmi {
 

@@ -1,4 +1,4 @@
-#include "engine/contact/member_contact.hpp"
+#include "engine/mpm/member_contact.hpp"
 
 #include <algorithm>
 #include <cmath>
