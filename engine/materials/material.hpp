@@ -13,7 +13,7 @@
 
 #include "engine/common/state_io.hpp"
 #include "engine/common/particles.hpp"
-#include "engine/scenario/config.hpp"
+#include "core/options.hpp"
 
 namespace dmi {
 

@@ -15,7 +15,7 @@
 
 #include "engine/common/state_io.hpp"
 #include "engine/common/types.hpp"
-#include "engine/scenario/hydrograph.hpp"
+#include "core/hydrograph.hpp"
 
 namespace dmi {
 

@@ -13,7 +13,7 @@
 #include "engine/mpm/inflow.hpp"
 #include "engine/common/particles.hpp"
 #include "engine/mpm/touch.hpp"
-#include "engine/scenario/config.hpp"
+#include "core/options.hpp"
 #include "engine/structure/frame.hpp"
 #include "engine/structure/space_frame.hpp"
 

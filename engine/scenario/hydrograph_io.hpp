@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/scenario/hydrograph.hpp"
+#include "core/hydrograph.hpp"
 
 namespace dmi {
 

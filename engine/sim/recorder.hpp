@@ -7,6 +7,7 @@
 #include "engine/io/results.hpp"
 #include "engine/io/vtu.hpp"
 #include "engine/mpm/solver.hpp"
+#include "engine/scenario/config.hpp"
 
 namespace dmi {
 
