@@ -34,9 +34,9 @@
 #include "engine/scenario/scenario.hpp"
 #include "engine/sim/run.hpp"
 #include "engine/sim/solid_check.hpp"
-#include "engine/verify/bench.hpp"
+#include "verify/bench.hpp"
 #include "engine/sim/build_scene.hpp"
-#include "engine/verify/validate.hpp"
+#include "verify/validate.hpp"
 #include "sweep/sweep_main.hpp"
 
 #ifndef DMI_VERSION

@@ -25,7 +25,7 @@
 #include "engine/mpm/transfer2d_avx.hpp"
 #include "engine/scenario/config.hpp"
 #include "engine/sim/build_scene.hpp"
-#include "engine/verify/bench.hpp"
+#include "verify/bench.hpp"
 
 using namespace dmi;
 

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <string>
 
-#include "engine/verify/cases_members.hpp"
+#include "verify/cases_members.hpp"
 
 using namespace dmi;
 

@@ -65,7 +65,7 @@ template <int D> class Solver {
   void save_state(StateWriter& w) const;
   void load_state(StateReader& r);
 
-  // Wall time of each phase of step() since profile(true) (the small-scene bench, engine/verify/bench.cpp). Off: one
+  // Wall time of each phase of step() since profile(true) (the small-scene bench, verify/bench.cpp). Off: one
   // untaken branch per phase.
   enum Phase { kBinning, kP2G, kWallTouch, kViscosity, kMembers, kGridUpdate, kBodyContact, kRigid, kG2P, kFrame, kPhases };
   static const char* phase_name(int p);

@@ -10,7 +10,7 @@
 #include "engine/mpm/solver.hpp"
 #include "engine/scenario/scenario.hpp"
 #include "engine/sim/build_scene.hpp"
-#include "engine/verify/validate.hpp"
+#include "verify/validate.hpp"
 
 namespace dmi {
 namespace {

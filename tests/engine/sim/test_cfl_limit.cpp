@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/sim/run.hpp"
-#include "engine/verify/validate.hpp"
+#include "verify/validate.hpp"
 
 TEST(CflLimit, AFactorAboveTheSchemeLimitIsReducedWithANote) {
   struct Case { const char *shape, *transfer; double limit; };

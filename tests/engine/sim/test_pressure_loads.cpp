@@ -9,7 +9,7 @@
 #include "design/design.hpp"
 #include "engine/common/error.hpp"
 #include "engine/scenario/scenario.hpp"
-#include "engine/verify/validate.hpp"
+#include "verify/validate.hpp"
 
 namespace dmi {
 namespace {

@@ -16,7 +16,7 @@
 #include "engine/sim/build_scene.hpp"
 #include "engine/sim/run.hpp"
 #include "engine/scenario/scenario.hpp"
-#include "engine/verify/validate.hpp"
+#include "verify/validate.hpp"
 
 namespace fs = std::filesystem;
 

@@ -1,5 +1,5 @@
 // Verification of beam-column members coupled to MPM (Lin & Yang 2024, verifications 1-2).
-#include "engine/verify/cases_members.hpp"
+#include "verify/cases_members.hpp"
 
 #include "engine/sdof/sdof.hpp"
 #include "engine/solid/table1.hpp"

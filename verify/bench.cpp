@@ -1,4 +1,4 @@
-#include "engine/verify/bench.hpp"
+#include "verify/bench.hpp"
 
 #include <omp.h>
 

@@ -12,7 +12,7 @@
 #include "engine/scenario/scenario.hpp"
 #include "engine/sim/build_frame.hpp"
 #include "engine/structure/frame_system.hpp"
-#include "engine/verify/validate.hpp"
+#include "verify/validate.hpp"
 
 namespace dmi {
 namespace {

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "engine/verify/validate.hpp"
+#include "verify/validate.hpp"
 
 namespace dmi {
 

@@ -3,8 +3,8 @@
 #include <chrono>
 #include <cmath>
 
-#include "engine/verify/cases_members.hpp"
-#include "engine/verify/validate.hpp"
+#include "verify/cases_members.hpp"
+#include "verify/validate.hpp"
 #include "engine/sdof/sdof.hpp"
 
 namespace dmi {

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "engine/common/error.hpp"
-#include "engine/verify/cases_members.hpp"
-#include "engine/verify/validate.hpp"
+#include "verify/cases_members.hpp"
+#include "verify/validate.hpp"
 
 namespace dmi {
 namespace {

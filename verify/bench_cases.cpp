@@ -10,11 +10,11 @@
 #include <unistd.h>
 
 #include "engine/common/error.hpp"
-#include "engine/verify/bench.hpp"
+#include "verify/bench.hpp"
 #include "engine/convergence/grid_convergence.hpp"
 #include "engine/scenario/scenario.hpp"
 #include "engine/sim/run.hpp"
-#include "engine/verify/cases_members.hpp"
+#include "verify/cases_members.hpp"
 
 namespace dmi {
 

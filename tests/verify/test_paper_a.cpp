@@ -1,4 +1,4 @@
-// Lin & Yang (2024) references (engine/verify/cases_members.cpp): eq. (30) solves its own ODE, the stored
+// Lin & Yang (2024) references (verify/cases_members.cpp): eq. (30) solves its own ODE, the stored
 // point-mass FE reference is reproduced, and the paper's numbers used by `validate` are the ones
 // recorded with their source in tests/data/paper_a/.
 #include <gtest/gtest.h>
@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "engine/verify/cases_members.hpp"
+#include "verify/cases_members.hpp"
 
 namespace dmi {
 namespace {

@@ -1,4 +1,4 @@
-#include "engine/verify/validate.hpp"
+#include "verify/validate.hpp"
 
 #include <omp.h>
 
