@@ -420,6 +420,8 @@ Results read_file(const std::string& path, bool with_snapshots) {
       Handle g = r.open(snaps, entry.second, where, H5I_GROUP);
       res.snapshots.push_back(read_snapshot(r, g, where));
     }
+    // In time order: the run writes the state at the peak contact force after the periodic snapshots around it.
+    std::stable_sort(res.snapshots.begin(), res.snapshots.end(), [](const Snapshot& a, const Snapshot& b) { return a.time < b.time; });
   }
   return res;
 }

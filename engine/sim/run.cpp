@@ -11,6 +11,7 @@
 #include <numbers>
 #include <csignal>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
@@ -18,6 +19,7 @@
 #include <sstream>
 #include <exception>
 #include <mutex>
+#include <optional>
 
 #include "engine/common/error.hpp"
 #include "engine/io/results_writer.hpp"
@@ -131,6 +133,27 @@ template <int D> double final_particles(const Scene<D>& sc) {
   return n;
 }
 
+void save_peak_snapshot(StateWriter& w, const std::optional<Snapshot>& s, double force) {
+  w.put(force), w.put(static_cast<std::uint8_t>(s.has_value()));
+  if (!s) return;
+  w.put(s->time), w.put(s->step), w.put(s->dim), w.put(static_cast<std::uint64_t>(s->count));
+  w.put(s->position), w.put(s->displacement), w.put(s->velocity), w.put(s->stress), w.put(s->von_mises), w.put(s->volume);
+  w.put(s->body), w.put(s->material);
+}
+
+void load_peak_snapshot(StateReader& r, std::optional<Snapshot>& s, double& force) {
+  std::uint8_t has = 0;
+  r.get(force), r.get(has);
+  s.reset();
+  if (!has) return;
+  Snapshot& p = s.emplace();
+  std::uint64_t count = 0;
+  r.get(p.time), r.get(p.step), r.get(p.dim), r.get(count);
+  p.count = static_cast<std::size_t>(count);
+  r.get(p.position), r.get(p.displacement), r.get(p.velocity), r.get(p.stress), r.get(p.von_mises), r.get(p.volume);
+  r.get(p.body), r.get(p.material);
+}
+
 template <int D> RunEstimate step_budget(const Solver<D>& solver, const Scenario& s) {
   const double dt0 = solver.stable_time_step(s.analysis.end_time);
   const double est = s.analysis.end_time / dt0, np = final_particles(solver.scene());
@@ -197,6 +220,8 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   std::string results_path, ckpt;
   const std::uint64_t fingerprint = scenario_fingerprint(s);
   LoopState loop;
+  std::optional<Snapshot> peak_snap;  // the state at the largest member contact force so far, not yet written
+  double peak_snapped = 0;            // its force (N)
   if (o.restart && !files) throw InputError("--restart needs the output folder of the run to continue (-o)");
   if (files) {
     fs::create_directories(o.out_dir);
@@ -210,6 +235,7 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
     solver.load_state(r);
     rec.load_state(r);
     loop.load(r);
+    load_peak_snapshot(r, peak_snap, peak_snapped);
     if (!r.at_end()) r.fail("unread bytes after the step-loop state");
     writer = std::make_unique<ResultsWriter>(results_path, info, ResultsWriter::Resume{loop.snapshots});
   } else if (files) {
@@ -217,6 +243,23 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
     fs::remove(ckpt, ec);  // a checkpoint of an earlier run in this folder no longer matches its partial results
     writer = std::make_unique<ResultsWriter>(results_path, info);
   }
+  // The state at the largest member contact force: kept at each new peak and written once
+  // the force has fallen below 90 % of it, or at the end, so that the pictures of a short pulse have a snapshot at its
+  // peak whatever the snapshot interval (the reader orders snapshots by time); a checkpoint carries it.
+  auto write_peak = [&] {
+    if (files && peak_snap) writer->write_snapshot(*peak_snap), ++loop.snapshots;
+    peak_snap.reset();
+  };
+  auto track_peak = [&] {
+    const auto* mc = solver.member_contact();
+    if (!files || !mc || s.output.snapshot_interval <= 0) return;
+    const double f = mc->force().norm();
+    if (f > peak_snapped) {
+      peak_snap = rec.snapshot(solver), peak_snapped = f;
+    } else if (peak_snap && f < 0.9 * peak_snapped) {
+      write_peak();
+    }
+  };
   auto snapshot = [&]() {
     if (!files) return;
     const Snapshot snap = rec.snapshot(solver);
@@ -242,6 +285,7 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
     LoopState l = loop;
     l.wall_seconds = wall_now();
     l.save(w);
+    save_peak_snapshot(w, peak_snap, peak_snapped);
     write_checkpoint(ckpt, D, fingerprint, w.bytes());
   };
 
@@ -277,8 +321,7 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
   while (solver.time() < end - eps) {
     if (solver.steps() % 64 == 0) choose_threads();
     const bool stop = o.stop_after_steps > 0 && solver.steps() >= o.stop_after_steps && solver.steps() > first_step;
-    if (g_signal != 0 || stop) stop_run(g_signal, solver, rec, info, writer.get(), results_path, wall_now(),
-                                        checkpoint, ckpt);
+    if (g_signal != 0 || stop) stop_run(g_signal, solver, rec, info, writer.get(), results_path, wall_now(), checkpoint, ckpt);
     const auto tp0 = o.profile ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
     const double dt = solver.stable_time_step(end - solver.time());
     loop.courant_max = std::max(loop.courant_max, solver.courant());
@@ -286,6 +329,7 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
     solver.step(dt);
     const auto tp2 = o.profile ? std::chrono::steady_clock::now() : tp0;
     rec.accumulate(solver, dt);
+    track_peak();
     loop.dt_min = std::min(loop.dt_min, dt);
     loop.dt_max = std::max(loop.dt_max, dt);
     const bool last = solver.time() >= end - eps;
@@ -310,6 +354,7 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
       last_ckpt = std::chrono::steady_clock::now();
     }
   }
+  write_peak();
   snapshot();
   progress.finish(solver.time(), solver.steps());
 
