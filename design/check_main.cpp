@@ -134,6 +134,21 @@ std::string verdict_text(const json& d) {
 std::string summary_text(const json& d) {
   std::ostringstream o;
   for (const auto& r : d["runs"]) run_summary(o, r);
+  if (d.contains("plane_and_space") && d["plane_and_space"].is_object()) {
+    char line[256];
+    o << "\nplane model against its 3D model (compare_3d)\n";
+    for (const auto& pair : d["plane_and_space"]["pairs"]) {
+      const std::string v = pair["variant"].get<std::string>();
+      std::snprintf(line, sizeof line, "  [%s] %-44s %14s %14s %8s\n", v.empty() ? "scenario" : v.c_str(), "quantity", "plane (2D)", "3D", "2D / 3D");
+      o << line;
+      for (const auto& q : pair["quantities"]) {
+        const std::string u = q["unit"];
+        std::snprintf(line, sizeof line, "  %-*s %-44s %14s %14s %8s\n", static_cast<int>(v.empty() ? 10 : v.size() + 2), "", q["title"].get<std::string>().c_str(),
+                      eng(q["plane"], u).c_str(), eng(q["space"], u).c_str(), q["ratio"].is_number() ? eng(q["ratio"], "").c_str() : "-");
+        o << line;
+      }
+    }
+  }
   if (!d["comparison"].is_null()) {
     char line[256];
     o << "\nwith vs without buffer\n";

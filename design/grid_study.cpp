@@ -1,4 +1,6 @@
 #include "design/grid_study.hpp"
+#include "core/variants.hpp"
+#include "engine/io/results_writer.hpp"
 #include "design/loads.hpp"
 
 #include "engine/convergence/grid_convergence.hpp"
@@ -228,7 +230,16 @@ bool restudy_grid(nlohmann::json& design, const std::string& out, const std::str
   std::sort(levels.begin(), levels.end());
   std::array<nlohmann::json, 3> designs{design, {}, {}};
   std::array<std::string, 3> folders{out, levels[0].second, levels[1].second};
-  const std::array<double, 3> h{levels[0].first * levels[0].first / levels[1].first, levels[0].first, levels[1].first};
+  // Each level's cell as its run recorded it (the folder names round it to 6 digits).
+  std::array<double, 3> h{};
+  for (int g = 0; g < 3; ++g) {
+    const auto files = variant_results(folders[g]);
+    if (files.empty()) return false;
+    const Results r = read_results(files.front().second.string(), false);
+    const auto it = r.info.numbers.find("cell_size");
+    if (it == r.info.numbers.end() || !(it->second > 0)) return false;
+    h[g] = it->second;
+  }
   for (int g = 1; g <= 2; ++g) {
     designs[g] = check_document({folders[g]}, limits_file, software_version);
     write_design_json((fs::path(folders[g]) / "design.json").string(), designs[g]);
