@@ -309,7 +309,18 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
                       "%.3g MPa, is at x = %.2f, y = %.2f, z = %.2f m (x through the thickness, y across, z up)",
                       title.c_str(), sp->case_name.c_str(), sp->von_mises_max / 1e6, sp->section_y, sp->principal_max / 1e6, sp->principal_at[0],
                       sp->principal_at[1], sp->principal_at[2]);
-        add(file, "field_solid", r.variant, b, sp->width, sp->height, nullptr);
+        // The check's own number for this case (design.json, at the elements' Gauss points), beside the picture's nodal one.
+        std::string caption = b;
+        if (r.design.contains("solid") && r.design["solid"].is_object())
+          for (const auto& c : r.design["solid"].value("cases", json::array()))
+            if (c.value("name", std::string()) == sp->case_name && c.contains("max_principal")) {
+              char k[320];
+              std::snprintf(k, sizeof k, "; the picture's colours are nodal values, extrapolated from the elements to the nodes: the "
+                                         "check's principal tension, taken at the Gauss points (design.json), is %.3g MPa",
+                            c["max_principal"].value("value_Pa", NAN) / 1e6);
+              caption += k;
+            }
+        add(file, "field_solid", r.variant, caption, sp->width, sp->height, nullptr);
       }
     } catch (const std::runtime_error& e) {
       throw InputError(r.file + ": " + e.what());
