@@ -40,6 +40,7 @@ struct Check {
   // as 1e300, as is the utilisation of a demand on no capacity: results files hold no infinities (JSON would null them).
   void finish() {
     if (std::isinf(demand)) demand = demand > 0 ? 1e300 : -1e300;
+    if (capacity > 0 && std::abs(demand) < 1e-9 * capacity) demand = 0;  // round-off of a zero demand (e.g. 4.7e-10 Pa)
     utilisation = capacity > 0 ? demand / capacity : (demand > 0 ? 1e300 : 0.0);
     passed = utilisation <= 1.0;
   }

@@ -95,3 +95,16 @@ TEST(DesignLimits, ReadsAFileAndRejectsBadValuesWithThePath) {
   EXPECT_NE(message(R"({"grid_study": {"judge_on": "mean"}})").find("/grid_study/judge_on = \"mean\": expected \"finest\" or \"conservative_bound\""),
             std::string::npos);
 }
+
+// A demand at round-off of its capacity (a tension of 4.7e-10 Pa where nothing pulls) is a zero demand, not a number
+// the report prints; a small real demand stays.
+TEST(Checks, RoundOffDemandIsZero) {
+  dmi::design::Check c;
+  c.demand = 4.72e-10, c.capacity = 1.97e6;
+  c.finish();
+  EXPECT_EQ(c.demand, 0.0);
+  EXPECT_EQ(c.utilisation, 0.0);
+  c.demand = 1.0, c.capacity = 1.97e6;
+  c.finish();
+  EXPECT_EQ(c.demand, 1.0);
+}
