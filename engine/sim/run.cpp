@@ -122,10 +122,11 @@ RunInfo make_info(const Scenario& s, const RunOptions& o) {
   return info;
 }
 
-// A run that cannot finish is refused before anything is written: its step count estimated from the first step (the
-// step only shrinks in an impact, so this is a lower bound), against /analysis/max_steps, and its wall time on one core
-// at the particle kernel's speed (50 ns per particle and step plus 10 us per step, docs/performance.md: a lower bound,
-// scenes with damping or members cost more per particle) against /analysis/max_wall_hours.
+// A run that cannot finish is refused before anything is written: its step count estimated from the first step
+// against /analysis/max_steps, and its wall time on one core at the particle kernel's speed (50 ns per particle and
+// step plus 10 us per step, docs/performance.md) against /analysis/max_wall_hours. Both are first guesses, not bounds:
+// the step changes as a boulder turns rigid in free flight or elastic in a contact, and members, implicit damping and
+// contacts cost more per step (measured 0.2 to 96 times the guess on the bundled examples, worst for 3D frames).
 // Particles at the end of the run: those built, and those an inflow will create.
 template <int D> double final_particles(const Scene<D>& sc) {
   double n = static_cast<double>(sc.particles.size());
@@ -168,7 +169,7 @@ template <int D> RunEstimate step_budget(const Solver<D>& solver, const Scenario
        << " s) it needs about " << est << " steps; shorten end_time or raise /analysis/max_steps";
   else if (!(wall <= 3600 * s.analysis.max_wall_hours))
     os << "a run of at most /analysis/max_wall_hours = " << s.analysis.max_wall_hours << " h: about " << est << " steps of " << np
-       << " particles take at least " << wall / 3600 << " h on one core (50 ns per particle and step); shorten end_time, coarsen the "
+       << " particles take about " << wall / 3600 << " h on one core by a first guess (50 ns per particle and step); shorten end_time, coarsen the "
        << "grid or raise /analysis/max_wall_hours";
   else
     return {est, wall};
