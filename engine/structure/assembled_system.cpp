@@ -39,18 +39,14 @@ void AssembledSystem::build_modal_damping(const ModalDamping& modal) {
   if (nf > kModalDenseMax)
     fail("modal damping computes every mode and takes at most " + std::to_string(kModalDenseMax) + " free DOFs (the frame has " +
          std::to_string(nf) + "); use Rayleigh damping");
-  const Eigen::MatrixXd K(K0_), M(M_);
-  const Eigen::MatrixXd Kf = K(idx, idx), Mf = M(idx, idx);
-  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(Kf, Mf);  // Phi^T Mf Phi = I
-  if (es.info() != Eigen::Success) throw std::runtime_error("Frame: generalised eigen solve for modal damping failed");
+  const Modes m = modes();
   const double wmax = 2 * std::numbers::pi * modal.max_frequency;
   int r = 0;
-  while (r < nf && std::sqrt(std::max(es.eigenvalues()(r), 0.0)) <= wmax) ++r;
+  while (r < nf && std::sqrt(std::max(m.omega2(r), 0.0)) <= wmax) ++r;
   modal_ratio_ = modal.ratio;
-  modal_U_ = Eigen::MatrixXd::Zero(ndof(), r);
-  modal_U_(idx, Eigen::all) = Mf * es.eigenvectors().leftCols(r);
+  modal_U_ = free_.asDiagonal() * (M_ * m.shapes.leftCols(r));  // M phi on the free DOFs, zero on restrained ones
   modal_rates_.resize(r);
-  for (int i = 0; i < r; ++i) modal_rates_(i) = 2 * modal.ratio * std::sqrt(std::max(es.eigenvalues()(i), 0.0));
+  for (int i = 0; i < r; ++i) modal_rates_(i) = 2 * modal.ratio * std::sqrt(std::max(m.omega2(i), 0.0));
 }
 
 double AssembledSystem::damping_rate_bound(double omega_max) const {
@@ -162,19 +158,22 @@ void AssembledSystem::solve_mass(Eigen::VectorXd& r, Eigen::VectorXd& a) const {
   }
 }
 
-Eigen::VectorXd AssembledSystem::eigenvalues() const {
+Eigen::VectorXd AssembledSystem::eigenvalues() const { return solve_modes(false).omega2; }
+
+AssembledSystem::Modes AssembledSystem::modes() const { return solve_modes(true); }
+
+AssembledSystem::Modes AssembledSystem::solve_modes(bool shapes) const {
   const std::vector<int> idx = free_dofs();
-  const int nf = static_cast<int>(idx.size());
   const Eigen::MatrixXd K(K0_), M(M_);
-  Eigen::MatrixXd Kf(nf, nf), Mf(nf, nf);
-  for (int r = 0; r < nf; ++r)
-    for (int c = 0; c < nf; ++c) {
-      Kf(r, c) = K(idx[r], idx[c]);
-      Mf(r, c) = M(idx[r], idx[c]);
-    }
-  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(Kf, Mf, Eigen::EigenvaluesOnly);
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K(idx, idx), M(idx, idx),
+                                                               shapes ? Eigen::ComputeEigenvectors : Eigen::EigenvaluesOnly);
   if (es.info() != Eigen::Success) throw std::runtime_error("Frame: generalised eigen solve failed");
-  return es.eigenvalues();
+  Modes m{es.eigenvalues(), Eigen::MatrixXd()};
+  if (shapes) {
+    m.shapes = Eigen::MatrixXd::Zero(ndof(), static_cast<Eigen::Index>(idx.size()));
+    m.shapes(idx, Eigen::all) = es.eigenvectors();
+  }
+  return m;
 }
 
 std::vector<double> AssembledSystem::natural_frequencies(int n) const {

@@ -75,6 +75,13 @@ class AssembledSystem {
 
   // Generalised eigenvalues omega^2 of (K0, M) on the free DOFs, ascending (dense: small frames only).
   Eigen::VectorXd eigenvalues() const;
+  // The modes on the free DOFs: omega^2 ascending and the mass-normalised shapes (phi^T M phi = I) as full-size
+  // columns, zero on restrained DOFs (dense).
+  struct Modes {
+    Eigen::VectorXd omega2;
+    Eigen::MatrixXd shapes;
+  };
+  Modes modes() const;
   // The n lowest natural circular frequencies (rad/s), ascending; n outside [1, free DOFs] is refused.
   std::vector<double> natural_frequencies(int n) const;
   // omega_max^2: exact up to kDenseEigenMax free DOFs, else the element (Irons) bound plus springs.
@@ -125,6 +132,7 @@ class AssembledSystem {
   void factorise_mass(bool lumped);
   void build_modal_damping(const ModalDamping& modal);
   std::vector<int> free_dofs() const;
+  Modes solve_modes(bool shapes) const;
 
   int node_dofs_ = 3;
   double alpha_ = 0, beta_ = 0, modal_ratio_ = 0;
