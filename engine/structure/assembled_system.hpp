@@ -52,6 +52,9 @@ class AssembledSystem {
   virtual void internal_force(const Eigen::VectorXd& d, Eigen::VectorXd& out) const = 0;
   // Tangent stiffness at d (K0 for the linear transformation), unconstrained.
   virtual SpMat tangent(const Eigen::VectorXd& d) const = 0;
+  // Accepts d as the end of a step: plastic elements update their history (internal_force and tangent are functions
+  // of the committed history and d). Nothing to do for elastic frames.
+  virtual void commit(const Eigen::VectorXd& d) { (void)d; }
   // out = C v = alpha M v + beta K0 v + U diag(rates) U^T v.
   void damping_force(const Eigen::VectorXd& v, Eigen::VectorXd& out) const;
   bool damped() const { return alpha_ > 0 || beta_ > 0 || modal_rates_.size() > 0; }

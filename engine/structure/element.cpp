@@ -134,8 +134,8 @@ PlaneBasic plane_basic(const FrameElementDef& def, double L, BeamTheory theory, 
   return r;
 }
 
-Vec3 plane_section_forces(const Mat3& kb, const Mat34& q0, const Vec3& v, double L0, double L, const Eigen::Vector4d& pk, double xi) {
-  const Vec3 q = kb * v + q0 * pk;
+Vec3 plane_section_forces(const Vec3& qv, const Mat34& q0, double L0, double L, const Eigen::Vector4d& pk, double xi) {
+  const Vec3 q = qv + q0 * pk;
   const Vec3 sp = particular(xi, L0) * pk;  // [N, V, M]
   return {q(0) + sp(0), (q(1) + q(2)) / L + sp(1), -q(1) * (1 - xi) + q(2) * xi + sp(2)};
 }
@@ -156,8 +156,8 @@ double BeamElement::strain_energy(const Vec3& v) const {
   return 0.5 * q.dot(fb_ * q);
 }
 
-SectionForces BeamElement::section_forces(const Vec3& v, double L, const ElementLoad& p, double xi) const {
-  const Vec3 f = plane_section_forces(kb_, q0_, v, L_, L, pack(p), xi);
+SectionForces BeamElement::section_forces(const Vec3& q, double L, const ElementLoad& p, double xi) const {
+  const Vec3 f = plane_section_forces(q, q0_, L_, L, pack(p), xi);
   return {f(0), f(1), f(2)};
 }
 

@@ -80,9 +80,10 @@ struct PlaneBasic {
   }
 };
 PlaneBasic plane_basic(const FrameElementDef& def, double L, BeamTheory theory, const std::function<double(double)>& inertia);
-// [N, V, M] at xi of a plane with basic stiffness kb and fixed-end forces q0 under basic deformations v and load
-// intensity pk; L0 the initial length (the load's particular solution), L the current chord (basic shear).
-Vec3 plane_section_forces(const Mat3& kb, const Mat34& q0, const Vec3& v, double L0, double L, const Eigen::Vector4d& pk, double xi);
+// [N, V, M] at xi of a plane whose deformations carry the basic forces q (kb v for an elastic element, the fibres'
+// for a plastic one), with fixed-end forces q0 and load intensity pk; L0 the initial length (the load's particular
+// solution), L the current chord (basic shear).
+Vec3 plane_section_forces(const Vec3& q, const Mat34& q0, double L0, double L, const Eigen::Vector4d& pk, double xi);
 
 class BeamElement {
  public:
@@ -103,9 +104,9 @@ class BeamElement {
 
   ElementLoad self_weight(const Vec2& g_local) const { return {rho_a0_ * g_local, rho_a1_ * g_local}; }
   Vec6 equivalent_loads(const ElementLoad& p) const { return feq_ * pack(p); }  // local nodal loads
-  // N, V, M at xi from the basic deformations v (q = kb v + q0) plus the load's particular solution;
-  // L is the current chord length (basic shear V = (M_i + M_j) / L).
-  SectionForces section_forces(const Vec3& v, double L, const ElementLoad& p, double xi) const;
+  // N, V, M at xi from the basic forces q of the deformations (kb v, or a plastic element's) plus the load's fixed-end
+  // forces and particular solution; L is the current chord length (basic shear V = (M_i + M_j) / L).
+  SectionForces section_forces(const Vec3& q, double L, const ElementLoad& p, double xi) const;
 
  private:
   static Eigen::Vector4d pack(const ElementLoad& p) { return {p.a.x(), p.b.x(), p.a.y(), p.b.y()}; }

@@ -178,7 +178,7 @@ SectionForces Frame::forces_at(int e, double xi) const {
   impl_->check_element(e, xi);
   const FrameSystem& sys = impl_->sys;
   const ChordState s = sys.transform().state(sys.chord(e), sys.element_dofs(e, impl_->dyn.state.d));
-  return sys.element(e).section_forces(s.v, s.L, sys.element_load(e, impl_->w[e], impl_->dyn.state.d), xi);
+  return sys.element(e).section_forces(sys.basic_forces(e, s.v), s.L, sys.element_load(e, impl_->w[e], impl_->dyn.state.d), xi);
 }
 
 // sigma(y) = N/A - M y/I (frame.hpp); tau(y) = tau_max (1 - (y/c)^2) for a rectangle, tau_max sqrt(1 - (y/c)^2)
@@ -205,7 +205,8 @@ double Frame::strain_energy() const {
   const Eigen::VectorXd& d = impl_->dyn.state.d;
   double u = 0.5 * d.dot(sys.springs().cwiseProduct(d));
   for (int e = 0; e < sys.nelements(); ++e)
-    u += sys.element(e).strain_energy(sys.transform().state(sys.chord(e), sys.element_dofs(e, d)).v);
+    u += sys.fibre_beam(e) ? sys.fibre_beam(e)->elastic_energy()
+                           : sys.element(e).strain_energy(sys.transform().state(sys.chord(e), sys.element_dofs(e, d)).v);
   return u;
 }
 
@@ -213,7 +214,26 @@ double Frame::external_work() const { return impl_->dyn.work_ext; }
 double Frame::applied_work() const { return impl_->dyn.work_applied; }
 double Frame::damping_work() const { return impl_->dyn.work_damp; }
 
-void Frame::save_state(StateWriter& w) const { impl_->dyn.save_state(w, "frame", impl_->w, impl_->f_current); }
-void Frame::load_state(StateReader& r) { impl_->dyn.load_state(r, "frame", impl_->w, impl_->f_current); }
+double Frame::plastic_work() const {
+  double w = 0;
+  for (int e = 0; e < nelements(); ++e)
+    if (const FibreBeam<1>* f = impl_->sys.fibre_beam(e)) w += f->record().plastic_work;
+  return w;
+}
+
+std::optional<PlasticRecord> Frame::plastic_record(int e) const {
+  impl_->check_element(e, 0);
+  const FibreBeam<1>* f = impl_->sys.fibre_beam(e);
+  return f ? std::optional<PlasticRecord>(f->record()) : std::nullopt;
+}
+
+void Frame::save_state(StateWriter& w) const {
+  impl_->dyn.save_state(w, "frame", impl_->w, impl_->f_current);
+  impl_->sys.save_fibres(w);
+}
+void Frame::load_state(StateReader& r) {
+  impl_->dyn.load_state(r, "frame", impl_->w, impl_->f_current);
+  impl_->sys.load_fibres(r);
+}
 
 }  // namespace dmi

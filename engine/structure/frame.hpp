@@ -12,6 +12,7 @@
 #pragma once
 #include <Eigen/Dense>
 #include <memory>
+#include <optional>
 #include <string>
 #include <array>
 #include <vector>
@@ -19,7 +20,9 @@
 #include "engine/common/state_io.hpp"
 #include "engine/structure/damping.hpp"
 #include "engine/structure/fibre.hpp"
+#include "engine/structure/fibre_beam.hpp"
 #include "engine/structure/section.hpp"
+#include "engine/structure/steel_law.hpp"
 
 namespace dmi {
 
@@ -38,6 +41,10 @@ struct FrameElementDef {
   double E = 0, nu = 0, rho = 0;  // Pa, -, kg/m^3
   bool release_i = false, release_j = false;  // moment releases (hinges) at the element ends
   int member = 0;                 // index into FrameModel::members
+  // Elasto-plastic fibre element (fibre_beam.hpp) when steel.fy > 0, with integration_points Gauss-Lobatto sections;
+  // elastic otherwise. A plastic element carries no moment release.
+  SteelLaw steel;                 // its E is the element's
+  int integration_points = 4;
 };
 
 struct FrameSupportDef {
@@ -174,6 +181,10 @@ class Frame {
   double applied_work() const;
   // Energy dissipated by Rayleigh damping since t = 0 (J), accumulated by advance().
   double damping_work() const;
+  // Plastic work of the plastic elements since t = 0 (J; strain_energy() holds their elastic part), and what element e
+  // has done so far (nullopt: an elastic element).
+  double plastic_work() const;
+  std::optional<PlasticRecord> plastic_record(int e) const;
   // Dynamic state (displacements, velocities, accelerations, loads, integrator history, work counters) for
   // checkpoints; load_state() requires the same model.
   void save_state(StateWriter& w) const;

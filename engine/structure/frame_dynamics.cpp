@@ -14,7 +14,7 @@ FrameDynamics::FrameDynamics(const AssembledSystem& sys, FrameIntegrator kind, d
   for (Eigen::VectorXd* x : {&state.d, &state.v, &state.a, &nodal, &f, &d_prev, &v_prev, &cv}) x->setZero(n);
 }
 
-void FrameDynamics::advance(const AssembledSystem& sys, double dt) {
+void FrameDynamics::advance(AssembledSystem& sys, double dt) {
   if (!(dt > 0) || !std::isfinite(dt)) throw std::invalid_argument("Frame::advance: dt must be positive");
   d_prev = state.d;
   v_prev = state.v;
@@ -24,6 +24,7 @@ void FrameDynamics::advance(const AssembledSystem& sys, double dt) {
     const SpMat Ma = from_triplets(sys.ndof(), added);
     integrator->step(state, f, dt, &Ma);
   }
+  sys.commit(state.d);
   d_prev = state.d - d_prev;
   work_ext += f.dot(d_prev);  // loads constant over the step
   work_applied += nodal.dot(d_prev);
@@ -37,7 +38,7 @@ void FrameDynamics::advance(const AssembledSystem& sys, double dt) {
                              std::to_string(integrator->stable_time_step()) + " s?)");
 }
 
-void FrameDynamics::solve_static(const AssembledSystem& sys, int increments) {
+void FrameDynamics::solve_static(AssembledSystem& sys, int increments) {
   Eigen::SimplicialLDLT<SpMat> ldlt(sys.constrained(sys.stiffness()));
   if (ldlt.info() != Eigen::Success) throw std::runtime_error("Frame: static stiffness factorisation failed");
   const Eigen::VectorXd fm = f.cwiseProduct(sys.free());
@@ -60,6 +61,7 @@ void FrameDynamics::solve_static(const AssembledSystem& sys, int increments) {
         if (ldlt.info() != Eigen::Success) throw std::runtime_error("Frame: static tangent factorisation failed (a limit point?)");
         state.d += ldlt.solve(r);
       }
+      sys.commit(state.d);
     }
   }
   state.v.setZero();

@@ -15,10 +15,10 @@ struct FrameDynamics {
   FrameDynamics(const AssembledSystem& sys, FrameIntegrator kind, double hht_alpha);
 
   // Advances by dt under f (held constant); the work of f, of the nodal part and of the damping is booked.
-  void advance(const AssembledSystem& sys, double dt);
+  void advance(AssembledSystem& sys, double dt);
   // Equilibrium under f on the free DOFs (state set to it, velocity and acceleration zero): K0 d = f, or for a
   // corotational frame Newton-Raphson on f_int(d) = f in equal load increments (residual below 1e-10 of the load).
-  void solve_static(const AssembledSystem& sys, int increments = 1);
+  void solve_static(AssembledSystem& sys, int increments = 1);
   // r = f_int + M a + C v - f at the current state: on a restrained DOF, the support's reaction.
   Eigen::VectorXd residual(const AssembledSystem& sys, const Eigen::VectorXd& f) const;
   void clear_loads() { nodal.setZero(), added.clear(); }

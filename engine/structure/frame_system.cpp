@@ -40,6 +40,11 @@ void FrameSystem::assemble() {
     const Chord c{model_.nodes[el.i], dx / dx.norm(), dx.norm()};
     chords_.push_back(c);
     elements_.emplace_back(el, c.L0, model_.theory);
+    fibres_.emplace_back();
+    if (el.steel.fy > 0) {
+      fibres_.back().emplace(el.section, el.s0, el.s1, c.L0, SteelLaw{el.E, el.steel.fy, el.steel.hardening}, el.integration_points);
+      plastic_ = true;
+    }
     const BeamElement& be = elements_.back();
     const Mat6 Ke = transform_->tangent(transform_->state(c, Vec6::Zero()), be.stiffness(), Vec3::Zero());
     scatter_element<3>(tk, el.i, el.j, Ke);
@@ -69,7 +74,7 @@ void FrameSystem::internal_force(const Eigen::VectorXd& d, Eigen::VectorXd& out)
   out = springs_.cwiseProduct(d);
   for (int e = 0; e < nelements(); ++e) {
     const ChordState s = transform_->state(chords_[e], element_dofs(e, d));
-    const Vec6 fe = s.B.transpose() * elements_[e].forces(s.v);
+    const Vec6 fe = s.B.transpose() * basic_forces(e, s.v);
     out.segment<3>(3 * model_.elements[e].i) += fe.head<3>();
     out.segment<3>(3 * model_.elements[e].j) += fe.tail<3>();
   }
@@ -80,17 +85,44 @@ SpMat FrameSystem::tangent(const Eigen::VectorXd& d) const {
   Triplets t;
   for (int e = 0; e < nelements(); ++e) {
     const ChordState s = transform_->state(chords_[e], element_dofs(e, d));
-    const BeamElement& be = elements_[e];
-    scatter_element<3>(t, model_.elements[e].i, model_.elements[e].j, transform_->tangent(s, be.stiffness(), be.forces(s.v)));
+    Mat3 k;
+    const Vec3 q = basic_forces(e, s.v, &k);
+    scatter_element<3>(t, model_.elements[e].i, model_.elements[e].j, transform_->tangent(s, k, q));
   }
   for (int i = 0; i < ndof(); ++i)
     if (springs_(i) > 0) t.emplace_back(i, i, springs_(i));
   return from_triplets(ndof(), t);
 }
 
+Vec3 FrameSystem::basic_forces(int e, const Vec3& v, Mat3* k) const {
+  if (!fibres_[e]) {
+    if (k) *k = elements_[e].stiffness();
+    return elements_[e].forces(v);
+  }
+  Vec3 q;
+  fibres_[e]->respond(v, q, k);
+  return q;
+}
+
+void FrameSystem::commit(const Eigen::VectorXd& d) {
+  if (!plastic_) return;
+  for (int e = 0; e < nelements(); ++e)
+    if (fibres_[e]) fibres_[e]->commit(transform_->state(chords_[e], element_dofs(e, d)).v);
+}
+
+void FrameSystem::save_fibres(StateWriter& w) const {
+  for (const auto& f : fibres_)
+    if (f) f->save_state(w);
+}
+
+void FrameSystem::load_fibres(StateReader& r) {
+  for (auto& f : fibres_)
+    if (f) f->load_state(r);
+}
+
 Vec2 FrameSystem::axis(int e, const Eigen::VectorXd& d) const {
   const Chord& c = chords_[e];
-  if (linear()) return c.e1;
+  if (model_.transform == FrameTransform::linear) return c.e1;
   const Vec6 de = element_dofs(e, d);
   return (c.L0 * c.e1 + de.segment<2>(3) - de.head<2>()).normalized();
 }

@@ -38,6 +38,12 @@ template <class Model, class Fail> void validate_frame_model(const Model& model_
       if (!(el.section.depth(s) > 0 && el.section.width(s) > 0 && el.section.area(s) > 0 &&
             el.section.inertia(s) > 0))
         fail(id + "section dimensions must be positive");
+    if (el.steel.fy > 0) {
+      if (!std::isfinite(el.steel.fy)) fail(id + "yield strength must be finite");
+      if (!(el.steel.hardening >= 0 && el.steel.hardening < 1)) fail(id + "hardening ratio outside [0, 1)");
+      if (el.integration_points < 3 || el.integration_points > 5) fail(id + "integration points outside [3, 5]");
+      if (el.release_i || el.release_j) fail(id + "a plastic element cannot carry a moment release");
+    }
     if (!model_.members.empty() && (el.member < 0 || el.member >= static_cast<int>(model_.members.size())))
       fail(id + "member index " + std::to_string(el.member) + " out of range");
   }

@@ -96,14 +96,14 @@ Vec12 SpaceBeamElement::equivalent_loads(const SpaceElementLoad& p) const {
   return f;
 }
 
-SpaceSectionForces SpaceBeamElement::section_forces(const Vec6& v, double L, const SpaceElementLoad& p, double xi) const {
-  const Vec3 f1 = plane_section_forces(p1_.kb, p1_.q0, Vec3(v(0), v(1), v(2)), L_, L, pack1(p), xi);
-  const Vec3 f2 = plane_section_forces(p2_.kb, p2_.q0, Vec3(v(0), v(3), v(4)), L_, L, pack2(p), xi);
+SpaceSectionForces SpaceBeamElement::section_forces(const Vec6& q, double L, const SpaceElementLoad& p, double xi) const {
+  const Vec3 f1 = plane_section_forces(Vec3(q(0), q(1), q(2)), p1_.q0, L_, L, pack1(p), xi);
+  const Vec3 f2 = plane_section_forces(Vec3(q(0), q(3), q(4)), p2_.q0, L_, L, pack2(p), xi);
   SpaceSectionForces s;
   s.N = f1(0);
   s.Mz = f1(2), s.Vy = -f1(1);  // V of the plane element is dMz/dx = -Vy
   s.My = -f2(2), s.Vz = -f2(1);  // M' = -My, V' = dM'/dx = -Vz
-  s.T = kt_ * v(5);
+  s.T = q(5);
   return s;
 }
 

@@ -45,8 +45,9 @@ class SpaceBeamElement {
 
   SpaceElementLoad self_weight(const Vec3& g_local) const { return {rho_a0_ * g_local, rho_a1_ * g_local}; }
   Vec12 equivalent_loads(const SpaceElementLoad& p) const;  // local nodal loads
-  // Section forces at xi from basic deformations v plus the load's particular solution; L the current chord.
-  SpaceSectionForces section_forces(const Vec6& v, double L, const SpaceElementLoad& p, double xi) const;
+  // Section forces at xi from the basic forces q of the deformations (kb v, or a plastic element's) plus the load's
+  // fixed-end forces and particular solution; L the current chord.
+  SpaceSectionForces section_forces(const Vec6& q, double L, const SpaceElementLoad& p, double xi) const;
 
  private:
   double L_ = 0, m_ = 0, rho_a0_ = 0, rho_a1_ = 0;

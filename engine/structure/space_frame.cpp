@@ -192,7 +192,7 @@ SpaceElementCurve SpaceFrame::curve(int e) const {
   c.e1 = s.R.row(0).transpose(), c.e2 = s.R.row(1).transpose(), c.e3 = s.R.row(2).transpose();
   c.L = s.L;
   const SpaceElementDef& el = model().elements[e];
-  if (impl_->sys.linear()) {
+  if (model().transform == FrameTransform::linear) {
     const Vec12 ul = rotation12(s.R) * impl_->sys.element_dofs(e, d);
     c.o = model().nodes[el.i];
     c.u1 = ul(0), c.u2 = ul(6);
@@ -221,7 +221,7 @@ SpaceSectionForces SpaceFrame::forces_at(int e, double xi) const {
   impl_->check_element(e, xi);
   const SpaceFrameSystem& sys = impl_->sys;
   const SpaceChordState s = sys.element_state(e, impl_->dyn.state.d);
-  return sys.element(e).section_forces(s.v, s.L, sys.element_load(e, impl_->w[e], impl_->dyn.state.d), xi);
+  return sys.element(e).section_forces(sys.basic_forces(e, s.v), s.L, sys.element_load(e, impl_->w[e], impl_->dyn.state.d), xi);
 }
 
 SpaceFibreStresses SpaceFrame::stresses_at(int e, double xi) const {
@@ -245,7 +245,8 @@ double SpaceFrame::strain_energy() const {
   const SpaceFrameSystem& sys = impl_->sys;
   const Eigen::VectorXd& d = impl_->dyn.state.d;
   double u = 0.5 * d.dot(sys.springs().cwiseProduct(d));
-  for (int e = 0; e < sys.nelements(); ++e) u += sys.element(e).strain_energy(sys.element_state(e, d).v);
+  for (int e = 0; e < sys.nelements(); ++e)
+    u += sys.fibre_beam(e) ? sys.fibre_beam(e)->elastic_energy() : sys.element(e).strain_energy(sys.element_state(e, d).v);
   return u;
 }
 
@@ -253,7 +254,26 @@ double SpaceFrame::external_work() const { return impl_->dyn.work_ext; }
 double SpaceFrame::applied_work() const { return impl_->dyn.work_applied; }
 double SpaceFrame::damping_work() const { return impl_->dyn.work_damp; }
 
-void SpaceFrame::save_state(StateWriter& w) const { impl_->dyn.save_state(w, "space_frame", impl_->w, impl_->f_current); }
-void SpaceFrame::load_state(StateReader& r) { impl_->dyn.load_state(r, "space_frame", impl_->w, impl_->f_current); }
+double SpaceFrame::plastic_work() const {
+  double w = 0;
+  for (int e = 0; e < nelements(); ++e)
+    if (const FibreBeam<2>* f = impl_->sys.fibre_beam(e)) w += f->record().plastic_work;
+  return w;
+}
+
+std::optional<PlasticRecord> SpaceFrame::plastic_record(int e) const {
+  impl_->check_element(e, 0);
+  const FibreBeam<2>* f = impl_->sys.fibre_beam(e);
+  return f ? std::optional<PlasticRecord>(f->record()) : std::nullopt;
+}
+
+void SpaceFrame::save_state(StateWriter& w) const {
+  impl_->dyn.save_state(w, "space_frame", impl_->w, impl_->f_current);
+  impl_->sys.save_fibres(w);
+}
+void SpaceFrame::load_state(StateReader& r) {
+  impl_->dyn.load_state(r, "space_frame", impl_->w, impl_->f_current);
+  impl_->sys.load_fibres(r);
+}
 
 }  // namespace dmi

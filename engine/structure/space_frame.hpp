@@ -18,6 +18,7 @@
 #include <Eigen/Dense>
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,10 @@ struct SpaceElementDef {
   bool release_i = false, release_j = false;  // both bending moments released (a ball joint) at the element ends
   Vec3 orientation = Vec3::Zero();  // hint for e2 (zero: the default of the header: global z, or x for a vertical member)
   int member = 0;                 // index into SpaceFrameModel::members
+  // Elasto-plastic fibre element (fibre_beam.hpp) when steel.fy > 0, with integration_points Gauss-Lobatto sections;
+  // elastic otherwise. A plastic element carries no moment release.
+  SteelLaw steel;                 // its E is the element's
+  int integration_points = 4;
 };
 
 struct SpaceSupportDef {
@@ -151,6 +156,9 @@ class SpaceFrame {
   double external_work() const;
   double applied_work() const;
   double damping_work() const;
+  // Plastic work of the plastic elements since t = 0 (J), and what element e has done so far (nullopt: elastic).
+  double plastic_work() const;
+  std::optional<PlasticRecord> plastic_record(int e) const;
   void save_state(StateWriter& w) const;
   void load_state(StateReader& r);
 

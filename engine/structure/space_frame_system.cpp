@@ -44,6 +44,12 @@ void SpaceFrameSystem::assemble() {
       fail("element " + std::to_string(e) + ": the orientation vector is parallel to the element (it must give the section's depth direction)");
     chords_.push_back(c);
     elements_.emplace_back(el, c.L0, model_.theory);
+    fibres_.emplace_back();
+    if (el.steel.fy > 0) {
+      const double torsion = elements_.back().stiffness()(5, 5);
+      fibres_.back().emplace(el.section, el.s0, el.s1, c.L0, SteelLaw{el.E, el.steel.fy, el.steel.hardening}, el.integration_points, torsion);
+      plastic_ = true;
+    }
     const SpaceBeamElement& be = elements_.back();
     const Mat12 Ke = transform_->tangent(c, Vec12::Zero(), transform_->state(c, Vec12::Zero()), be.stiffness(), Vec6::Zero());
     scatter_element<6>(tk, el.i, el.j, Ke);
@@ -72,7 +78,7 @@ void SpaceFrameSystem::internal_force(const Eigen::VectorXd& d, Eigen::VectorXd&
   out = springs_.cwiseProduct(d);
   for (int e = 0; e < nelements(); ++e) {
     const SpaceChordState s = element_state(e, d);
-    const Vec12 fe = s.B.transpose() * elements_[e].forces(s.v);
+    const Vec12 fe = s.B.transpose() * basic_forces(e, s.v);
     out.segment<6>(6 * model_.elements[e].i) += fe.head<6>();
     out.segment<6>(6 * model_.elements[e].j) += fe.tail<6>();
   }
@@ -84,16 +90,43 @@ SpMat SpaceFrameSystem::tangent(const Eigen::VectorXd& d) const {
   for (int e = 0; e < nelements(); ++e) {
     const Vec12 de = element_dofs(e, d);
     const SpaceChordState s = transform_->state(chords_[e], de);
-    const SpaceBeamElement& be = elements_[e];
-    scatter_element<6>(t, model_.elements[e].i, model_.elements[e].j, transform_->tangent(chords_[e], de, s, be.stiffness(), be.forces(s.v)));
+    Mat6 k;
+    const Vec6 q = basic_forces(e, s.v, &k);
+    scatter_element<6>(t, model_.elements[e].i, model_.elements[e].j, transform_->tangent(chords_[e], de, s, k, q));
   }
   for (int i = 0; i < ndof(); ++i)
     if (springs_(i) > 0) t.emplace_back(i, i, springs_(i));
   return from_triplets(ndof(), t);
 }
 
+Vec6 SpaceFrameSystem::basic_forces(int e, const Vec6& v, Mat6* k) const {
+  if (!fibres_[e]) {
+    if (k) *k = elements_[e].stiffness();
+    return elements_[e].forces(v);
+  }
+  Vec6 q;
+  fibres_[e]->respond(v, q, k);
+  return q;
+}
+
+void SpaceFrameSystem::commit(const Eigen::VectorXd& d) {
+  if (!plastic_) return;
+  for (int e = 0; e < nelements(); ++e)
+    if (fibres_[e]) fibres_[e]->commit(element_state(e, d).v);
+}
+
+void SpaceFrameSystem::save_fibres(StateWriter& w) const {
+  for (const auto& f : fibres_)
+    if (f) f->save_state(w);
+}
+
+void SpaceFrameSystem::load_fibres(StateReader& r) {
+  for (auto& f : fibres_)
+    if (f) f->load_state(r);
+}
+
 SpaceElementLoad SpaceFrameSystem::element_load(int e, const Vec3& w_local, const Eigen::VectorXd& d) const {
-  const Eigen::Matrix3d R = linear() ? chords_[e].R : element_state(e, d).R;
+  const Eigen::Matrix3d R = model_.transform == FrameTransform::linear ? chords_[e].R : element_state(e, d).R;
   SpaceElementLoad p = elements_[e].self_weight(R * model_.gravity);
   p.a += w_local;
   p.b += w_local;
@@ -108,7 +141,7 @@ void SpaceFrameSystem::add_element_loads(const std::vector<Vec3>& w, const Eigen
   const bool gravity = model_.gravity.squaredNorm() > 0;
   for (int e = 0; e < nelements(); ++e) {
     if (!gravity && w[e].squaredNorm() == 0 && model_.permanent.empty()) continue;
-    const Eigen::Matrix3d R = linear() ? chords_[e].R : element_state(e, d).R;
+    const Eigen::Matrix3d R = model_.transform == FrameTransform::linear ? chords_[e].R : element_state(e, d).R;
     const Vec12 fg = rotation12(R).transpose() * elements_[e].equivalent_loads(element_load(e, w[e], d));
     f.segment<6>(6 * model_.elements[e].i) += fg.head<6>();
     f.segment<6>(6 * model_.elements[e].j) += fg.tail<6>();

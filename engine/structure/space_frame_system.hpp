@@ -4,10 +4,12 @@
 // is diagonal in each element's local axes, so a node's rotational block is a full 3 x 3 in global axes.
 #pragma once
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "engine/structure/assembled_system.hpp"
+#include "engine/structure/fibre_beam.hpp"
 #include "engine/structure/space_element.hpp"
 #include "engine/structure/space_transform.hpp"
 
@@ -19,12 +21,21 @@ class SpaceFrameSystem final : public AssembledSystem {
 
   const SpaceFrameModel& model() const { return model_; }
   int nelements() const { return static_cast<int>(elements_.size()); }
-  bool linear() const override { return model_.transform == FrameTransform::linear; }
+  // Linear: the linear transformation and elastic elements only (K0 is then the stiffness at every state).
+  bool linear() const override { return model_.transform == FrameTransform::linear && !plastic_; }
+  bool plastic() const { return plastic_; }
   const SpaceBeamElement& element(int e) const { return elements_[e]; }
   const SpaceChord& chord(int e) const { return chords_[e]; }
   const SpaceTransform& transform() const { return *transform_; }
   Vec12 element_dofs(int e, const Eigen::VectorXd& d) const;
   SpaceChordState element_state(int e, const Eigen::VectorXd& d) const { return transform_->state(chords_[e], element_dofs(e, d)); }
+  // Basic forces of element e at deformations v: kb v, or a plastic element's from its fibres; k: dq/dv.
+  Vec6 basic_forces(int e, const Vec6& v, Mat6* k = nullptr) const;
+  const FibreBeam<2>* fibre_beam(int e) const { return fibres_[e] ? &*fibres_[e] : nullptr; }
+  void commit(const Eigen::VectorXd& d) override;
+  // The plastic elements' fibre histories (checkpoints; nothing for an elastic frame).
+  void save_fibres(StateWriter& w) const;
+  void load_fibres(StateReader& r);
 
   void internal_force(const Eigen::VectorXd& d, Eigen::VectorXd& out) const override;
   SpMat tangent(const Eigen::VectorXd& d) const override;
@@ -42,6 +53,8 @@ class SpaceFrameSystem final : public AssembledSystem {
 
   SpaceFrameModel model_;
   std::vector<SpaceBeamElement> elements_;
+  std::vector<std::optional<FibreBeam<2>>> fibres_;  // the plastic elements' basic systems
+  bool plastic_ = false;
   std::vector<SpaceChord> chords_;
   std::unique_ptr<SpaceTransform> transform_;
 };
