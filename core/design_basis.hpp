@@ -30,8 +30,11 @@ struct DamBasis {
   double deposit_height_m = kUnset, deposit_unit_weight_N_m3 = kUnset, deposit_coefficient = kUnset;
   bool deposit_submerged = false;  // below the water surface at its buoyant unit weight (deposit_unit_weight the saturated one)
   double water_height_m = kUnset, water_unit_weight_N_m3 = kUnset;
-  // Steel open: the column pipes.
+  // Steel open: the column pipes, the steel's yield strength and how the members were modelled (plastic: they yield,
+  // elastic: they do not).
   double column_diameter_m = kUnset, column_wall_thickness_m = kUnset;
+  double yield_strength_Pa = kUnset;
+  std::string member_model;  // plastic | elastic ("" unknown)
 };
 
 enum class BoulderModel { elastic, rigid, elastic_when_touching };

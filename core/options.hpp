@@ -44,6 +44,8 @@ struct MaterialConfig {
   double mu_s = 0.0, mu_2 = 0.0, inertial_I0 = 0.0;       // - (mu_i: Jop, Forterre & Pouliquen 2006)
   double grain_diameter = 0.0, grain_density = 2650.0;    // m, kg/m^3 (mu_i)
   double regularisation_alpha = 1.9;                      // - (mu_i: Barker & Gray 2017; 0 = none)
+  double yield_strength = 0.0;                            // Pa (elastic_plastic: members' steel)
+  double hardening_ratio = 0.01;                          // - (elastic_plastic: post-yield modulus / E)
 };
 
 }  // namespace dmi

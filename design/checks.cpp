@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 namespace dmi::design {
 
@@ -66,6 +67,41 @@ double chs_torsion_resistance(double D, double t, double fy_Pa, double gamma_M0)
 double chs_shear_resistance_with_torsion(double T, double D, double t, double fy_Pa, double gamma_M0) {
   // tau_t,Ed / (f_y / (sqrt 3 gamma_M0)) = (|T| / W_t) / (T_Rd / W_t) = |T| / T_Rd
   return std::max(0.0, 1 - std::abs(T) / chs_torsion_resistance(D, t, fy_Pa, gamma_M0)) * chs_shear_resistance(D, t, fy_Pa, gamma_M0);
+}
+
+double buckling_imperfection(const std::string& curve) {
+  if (curve == "a0") return 0.13;
+  if (curve == "a") return 0.21;
+  if (curve == "b") return 0.34;
+  if (curve == "c") return 0.49;
+  if (curve == "d") return 0.76;
+  throw std::invalid_argument("buckling curve '" + curve + "' (a0, a, b, c or d)");
+}
+
+double flexural_buckling_resistance(double A, double I, double L_cr, double E, double fy, double alpha, double gamma_M1) {
+  const double N_cr = std::numbers::pi * std::numbers::pi * E * I / (L_cr * L_cr), lambda = std::sqrt(A * fy / N_cr);
+  const double phi = 0.5 * (1 + alpha * (lambda - 0.2) + lambda * lambda);
+  const double chi = std::min(1.0, 1 / (phi + std::sqrt(phi * phi - lambda * lambda)));
+  return chi * A * fy / gamma_M1;
+}
+
+namespace {
+struct DentCurve {
+  double Rc, c1, c2;
+};
+DentCurve dent_curve(double D, double t, double fy, double b) {
+  return {fy * t * t / 4 * std::sqrt(D / t), 22 + 1.2 * b / D, 1.925 / (3.5 + b / D)};
+}
+}  // namespace
+
+double dent_depth_at_force(double F, double D, double t, double fy, double b) {
+  const DentCurve k = dent_curve(D, t, fy, b);
+  return D * std::pow(F / (k.c1 * k.Rc), 1 / k.c2);
+}
+
+double dent_depth_for_energy(double E, double D, double t, double fy, double b) {
+  const DentCurve k = dent_curve(D, t, fy, b);
+  return D * std::pow(E * (k.c2 + 1) / (k.c1 * k.Rc * D), 1 / (k.c2 + 1));
 }
 
 }  // namespace dmi::design

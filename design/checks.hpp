@@ -79,4 +79,17 @@ double chs_torsion_resistance(double D, double t, double fy_Pa, double gamma_M0)
 // V_pl,T,Rd = [1 - tau_t,Ed / (f_y / (sqrt 3 gamma_M0))] V_pl,Rd, tau_t,Ed = |T| / W_t (not below 0), N.
 double chs_shear_resistance_with_torsion(double T, double D, double t, double fy_Pa, double gamma_M0);
 
+// --- Steel members that yield (EN 1993-1-1 6.3; DNV-RP-C204) -------------------------------------------------------
+// Imperfection factor alpha of a buckling curve a0, a, b, c, d (EN 1993-1-1 Table 6.1: 0.13, 0.21, 0.34, 0.49, 0.76).
+double buckling_imperfection(const std::string& curve);
+// Flexural buckling resistance N_b,Rd = chi A f_y / gamma_M1 (EN 1993-1-1 eq. 6.47), chi = 1 / (Phi + sqrt(Phi^2 -
+// lambda^2)) <= 1, Phi = 0.5 (1 + alpha (lambda - 0.2) + lambda^2) (eq. 6.49), lambda = sqrt(A f_y / N_cr) (eq. 6.50),
+// N_cr = pi^2 E I / L_cr^2. Returns N (class 1-3 sections: A, not A_eff).
+double flexural_buckling_resistance(double A, double I, double L_cr, double E, double fy, double alpha, double gamma_M1);
+// Local denting of a tube of diameter D and wall t struck over a width b (DNV-RP-C204 (2010) sec. 3.10; NORSOK N-004
+// Annex A): R / R_c = c1 (w/D)^c2, R_c = f_y t^2 / 4 sqrt(D/t), c1 = 22 + 1.2 b/D, c2 = 1.925 / (3.5 + b/D); the energy
+// to a dent w is E = c1 R_c D (w/D)^(c2 + 1) / (c2 + 1). The dent depth (m) at a force F (N), and under an energy E (J).
+double dent_depth_at_force(double F, double D, double t, double fy, double b);
+double dent_depth_for_energy(double E, double D, double t, double fy, double b);
+
 }  // namespace dmi::design

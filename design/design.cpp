@@ -1,5 +1,6 @@
 // design_run: one results.h5 -> one entry of design.json "runs" (layout: docs/design-json.md).
 #include "design/design.hpp"
+#include "design/plastic_checks.hpp"
 
 #include "engine/common/json_input.hpp"
 
@@ -240,9 +241,12 @@ void require_documents(const Results& r, const std::string& where) {
 
 }  // namespace
 
-json design_run(const Results& r, const Limits& L, const std::string& where) {
+json design_run(const Results& r, const Limits& limits, const std::string& where) {
   if (!r.complete) throw std::runtime_error(where + ": the run did not finish (complete = 0); nothing to check");
   require_documents(r, where);
+  const std::optional<DesignBasis> basis = read_design_basis(r, where);
+  Limits L = limits;  // the steel's f_y is the one the run simulated, when its design basis gives it
+  if (basis && is_set(basis->dam.yield_strength_Pa)) L.steel.yield_strength = basis->dam.yield_strength_Pa;
   json run{{"results_file", where}, {"scenario_name", r.info.scenario_name}, {"variant", r.info.variant}};
   std::vector<Check> checks;
   const json structure = parse_document(r, "structure", where);
@@ -273,8 +277,8 @@ json design_run(const Results& r, const Limits& L, const std::string& where) {
   run["contact"] = contact_json(c);
   punching(parse_document(r, "peak_contact", where), members, L, checks, where);
   run["solid"] = solid_part(parse_document(r, "solid_check", where), L, checks, where);
+  run["plastic"] = frame ? plastic_part(r, *frame, members, basis, c, L.steel, checks, where) : json(nullptr);
   json est = json::array();
-  const std::optional<DesignBasis> basis = read_design_basis(r, where);
   if (basis)
     for (const auto& e : estimates(*basis, base_shear, c.present ? c.peak_N : 0.0, r.info.dimension)) est.push_back(e.to_json());
   run["estimates"] = est;

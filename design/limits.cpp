@@ -33,7 +33,9 @@ json Limits::to_json() const {
   else
     c["punching_patch_m"] = nullptr;
   return json{{"concrete", c},
-              {"steel", {{"yield_strength_Pa", steel.yield_strength}, {"gamma_M0", steel.gamma_M0}}},
+              {"steel", {{"yield_strength_Pa", steel.yield_strength}, {"gamma_M0", steel.gamma_M0}, {"gamma_M1", steel.gamma_M1},
+                         {"strain_limit", steel.strain_limit}, {"residual_drift_limit", steel.residual_drift_limit},
+                         {"dent_depth_limit", steel.dent_depth_limit}, {"buckling_curve", steel.buckling_curve}}},
               {"foundation", {{"friction", foundation.friction}, {"cohesion_Pa", foundation.cohesion},
                               {"bearing_capacity_Pa", foundation.bearing_capacity}, {"uplift_factor", foundation.uplift_factor},
                               {"sliding_factor_usual", foundation.sliding_factor_usual},
@@ -164,13 +166,29 @@ Limits parse_limits(const json& j, const std::string& file) {
   }
   if (j.contains("steel")) {
     const json& s = j["steel"];
-    r.keys(s, "/steel", {"yield_strength_Pa", "gamma_M0"});
+    r.keys(s, "/steel", {"yield_strength_Pa", "gamma_M0", "gamma_M1", "strain_limit", "residual_drift_limit", "dent_depth_limit", "buckling_curve"});
     r.number(s, "/steel", "yield_strength_Pa", L.steel.yield_strength);
     r.range(s, "/steel", "yield_strength_Pa", L.steel.yield_strength, 1e8, 2e9, "a steel yield strength in Pa between 1e8 and 2e9 (235 MPa is 235e6 Pa)");
     if (s.contains("gamma_M0")) {
       const json& v = s["gamma_M0"];
       if (!v.is_number() || !(v.get<double>() >= 1.0) || !std::isfinite(v.get<double>())) r.fail("/steel/gamma_M0", &v, "a partial factor >= 1");
       L.steel.gamma_M0 = v.get<double>();
+    }
+    if (s.contains("gamma_M1")) {
+      const json& v = s["gamma_M1"];
+      if (!v.is_number() || !(v.get<double>() >= 1.0) || !std::isfinite(v.get<double>())) r.fail("/steel/gamma_M1", &v, "a partial factor >= 1");
+      L.steel.gamma_M1 = v.get<double>();
+    }
+    r.number(s, "/steel", "strain_limit", L.steel.strain_limit);
+    r.range(s, "/steel", "strain_limit", L.steel.strain_limit, 1e-3, 0.2, "a strain between 0.001 and 0.2 (5 % is 0.05)");
+    r.number(s, "/steel", "residual_drift_limit", L.steel.residual_drift_limit);
+    r.range(s, "/steel", "residual_drift_limit", L.steel.residual_drift_limit, 1e-4, 0.1, "a drift ratio between 1e-4 and 0.1 (1 % is 0.01)");
+    r.number(s, "/steel", "dent_depth_limit", L.steel.dent_depth_limit);
+    r.range(s, "/steel", "dent_depth_limit", L.steel.dent_depth_limit, 1e-3, 0.5, "a dent depth over the diameter between 0.001 and 0.5 (6 % is 0.06)");
+    if (s.contains("buckling_curve")) {
+      const json& v = s["buckling_curve"];
+      if (!v.is_string() || (v != "a0" && v != "a" && v != "b" && v != "c" && v != "d")) r.fail("/steel/buckling_curve", &v, "one of \"a0\", \"a\", \"b\", \"c\", \"d\" (EN 1993-1-1 Table 6.2)");
+      L.steel.buckling_curve = v.get<std::string>();
     }
   }
   if (j.contains("members")) {

@@ -36,6 +36,12 @@ struct ConcreteLimits {
 struct SteelLimits {
   double yield_strength = 235e6;  // f_y (Pa), S235 (EN 10025-2)
   double gamma_M0 = 1.0;          // partial factor of cross-section resistance (EN 1993-1-1 6.1, recommended 1.0)
+  double gamma_M1 = 1.0;          // partial factor of member resistance to instability (EN 1993-1-1 6.1, recommended 1.0)
+  // Plastic members (docs/design-checks.md, "Plastic steel"), the ultimate level:
+  double strain_limit = 0.05;          // principal strain at the section surface (EN 1993-1-5 Annex C.8(1) Note 1)
+  double residual_drift_limit = 0.01;  // residual crest displacement / height: the realignment limit (FEMA P-58-1 Table C-1, DS3)
+  double dent_depth_limit = 0.06;      // dent depth / D of a struck pipe (ASME B31.8 851.4.1: plain dents deeper call for repair)
+  std::string buckling_curve = "a";    // of a circular hollow section: a hot-finished, c cold-formed (EN 1993-1-1 Table 6.2)
   double design_strength() const { return yield_strength / gamma_M0; }
 };
 

@@ -57,6 +57,7 @@ FrameInfo parse_structure(const std::string& doc, const std::string& where, cons
       FrameInfo::Element el;
       el.member = e.at("member"), el.i = e.at("i"), el.j = e.at("j"), el.s0 = e.at("s0"), el.s1 = e.at("s1"), el.E = e.at("youngs_modulus_Pa");
       el.section = section_of(e.at("section"));
+      el.yield_strength = e.value("yield_strength_Pa", 0.0);
       if (f.dim == 3) el.e2 = {e.at("e2").at(0).get<double>(), e.at("e2").at(1).get<double>(), e.at("e2").at(2).get<double>()};
       if (el.i < 0 || el.j < 0 || el.i >= int(f.nodes.size()) || el.j >= int(f.nodes.size())) throw std::out_of_range("element node index");
       f.elements.push_back(el);
@@ -70,6 +71,7 @@ FrameInfo parse_structure(const std::string& doc, const std::string& where, cons
       mb.length = std::sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) + (b[2] - a[2]) * (b[2] - a[2]));
       const auto& e0 = f.elements[mb.first];
       mb.cls = classify(mb.name, mb.material, e0.section, e0.E, L);
+      mb.plastic = e0.yield_strength > 0;
       f.members.push_back(mb);
     }
     for (const auto& s : j.at("supports")) {
@@ -212,8 +214,11 @@ Check proto(const std::string& id, const std::string& title, const MemberEnvelop
   Check c;
   c.id = id, c.title = title, c.member = m.name, c.material = m.cls, c.unit = unit, c.formula = formula, c.source = source;
   c.space = m.dim == 3;
-  // Elastic stresses within strengths are the serviceability level; the members' resistances are the ultimate one.
-  if (id == "concrete_shear" || id == "steel_interaction" || id == "steel_shear" || id == "steel_torsion") c.level = "ultimate";
+  // Elastic stresses within strengths are the serviceability level; the members' resistances are the ultimate one. A
+  // member that yields by design (plastic) reaches its axial + bending resistance by construction: that is its
+  // serviceability limit (no permanent deformation), its ultimate level the strain, drift, buckling and dent checks
+  // (plastic_checks.hpp); shear and torsion stay ultimate (the fibres do not limit them).
+  if (id == "concrete_shear" || id == "steel_shear" || id == "steel_torsion" || (id == "steel_interaction" && !m.plastic)) c.level = "ultimate";
   return c;
 }
 
@@ -312,7 +317,7 @@ std::vector<MemberEnvelope> member_envelopes(const Results& r, const FrameInfo& 
   const SteelLimits& S = L.steel;
   for (const auto& m : f.members) {
     MemberEnvelope env;
-    env.dim = f.dim, env.name = m.name, env.cls = m.cls, env.length = m.length;
+    env.dim = f.dim, env.name = m.name, env.cls = m.cls, env.length = m.length, env.plastic = m.plastic;
     for (int k = 0; k <= m.count; ++k) {
       const auto& el = f.elements[m.first + std::min(k, m.count - 1)];
       const auto& x = f.nodes[k < m.count ? el.i : el.j];

@@ -19,6 +19,7 @@ struct FrameInfo {
   struct Element {
     int member = 0, i = 0, j = 0;
     double s0 = 0, s1 = 1, E = 0;
+    double yield_strength = 0;  // Pa: an elasto-plastic element (0: elastic)
     Section section = Section::rectangle(1, 1);
     std::array<double, 3> e2{0, 0, 0};  // space frames: the section's depth axis (global)
   };
@@ -26,6 +27,7 @@ struct FrameInfo {
     std::string name, material, cls;  // cls: concrete | steel (limits, material name, section, E; docs/design-checks.md)
     int first = 0, count = 0;
     double length = 0;                // m
+    bool plastic = false;             // its elements are elasto-plastic (they yield in the run)
   };
   struct Support {
     std::string node, series;         // series: the history path of its reaction
@@ -64,6 +66,7 @@ struct Station {
 
 struct MemberEnvelope {
   int dim = 2;
+  bool plastic = false;  // elasto-plastic: its section resistance is the serviceability level (it yields by design)
   std::string name, cls;
   double length = 0;
   std::vector<Station> stations;

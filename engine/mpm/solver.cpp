@@ -487,6 +487,7 @@ template <int D> Diagnostics<D> Solver<D>::diagnostics() const {
     d.frame_gravity_work = f->external_work() - f->applied_work();
     d.contact_work = f->applied_work();
     d.frame_damping = f->damping_work();
+    d.frame_plastic = f->plastic_work();
   }
   return d;
 }

@@ -29,11 +29,12 @@ template <int D> struct Diagnostics {
   double inflow_mass = 0, inflow_energy = 0;
   Vec<D> inflow_momentum = Vec<D>::Zero();
   double frame_damping = 0;        // J, dissipated by the frame's Rayleigh damping
+  double frame_plastic = 0;        // J, plastic work in the frame's elasto-plastic members
   // Energy balance error (J) of the whole system, continua and frame: stored energy minus the work of
   // gravity and walls (and inflow zones) and the energy inflows brought in, minus E_0. Member contact is internal to the system, so its losses (and any
   // numerical loss or gain) show here: negative = dissipated.
   double balance(double e0) const {
-    return kinetic + strain + dissipated + frame_kinetic + frame_strain + frame_damping - gravity_work - boundary_work -
+    return kinetic + strain + dissipated + frame_kinetic + frame_strain + frame_damping + frame_plastic - gravity_work - boundary_work -
            frame_gravity_work - inflow_energy - e0;
   }
 };

@@ -161,6 +161,7 @@ struct StructureConfig {
   double modal_damping_ratio = 0;                    // modal damping: zeta of every mode up to the frequency below
   double modal_damping_max_frequency = std::numeric_limits<double>::infinity();  // Hz
   double hht_alpha = -0.1;                           // newmark: HHT alpha in [-1/3, 0]
+  int integration_points = 5;                        // Gauss-Lobatto sections of an elastic_plastic member's elements
   std::vector<FrameNodeConfig> nodes;
   std::vector<MemberConfig> members;
   std::vector<SupportConfig> supports;

@@ -99,6 +99,8 @@ DamBasis read_dam(const Object& o) {
   together({{"deposit_height_m", d.deposit_height_m}, {"deposit_unit_weight_N_m3", d.deposit_unit_weight_N_m3}, {"deposit_coefficient", d.deposit_coefficient}});
   together({{"water_height_m", d.water_height_m}, {"water_unit_weight_N_m3", d.water_unit_weight_N_m3}});
   d.column_diameter_m = o.positive("column_diameter_m", !concrete), d.column_wall_thickness_m = o.positive("column_wall_thickness_m", !concrete);
+  d.yield_strength_Pa = o.positive("yield_strength_Pa", false);
+  if (o.has("member_model")) d.member_model = o.text("member_model", {"plastic", "elastic"});
   return d;
 }
 
@@ -158,6 +160,8 @@ json design_basis_to_json(const DesignBasis& b) {
   if (d.deposit_submerged) dam["deposit_submerged"] = "yes";
   put(dam, "water_height_m", d.water_height_m), put(dam, "water_unit_weight_N_m3", d.water_unit_weight_N_m3);
   put(dam, "column_diameter_m", d.column_diameter_m), put(dam, "column_wall_thickness_m", d.column_wall_thickness_m);
+  put(dam, "yield_strength_Pa", d.yield_strength_Pa);
+  if (!d.member_model.empty()) dam["member_model"] = d.member_model;
   json out{{"dam", dam}};
   if (const auto& k = b.boulder) {
     json o{{"model", boulder_model_name(k->model)}};
@@ -195,7 +199,8 @@ DesignBasis design_basis_from_json(const json& j, const std::string& file, const
   b.dam = read_dam(Object(j["dam"], file, prefix + "/dam",
                           {"type", "height_m", "width_m", "width_rule", "youngs_modulus_Pa", "poisson_ratio", "density_kg_m3", "crest_thickness_m",
                            "base_thickness_m", "heel_x_m", "toe_x_m", "crest_upstream_x_m", "crest_downstream_x_m", "deposit_height_m", "deposit_unit_weight_N_m3", "deposit_coefficient",
-                           "deposit_submerged", "water_height_m", "water_unit_weight_N_m3", "column_diameter_m", "column_wall_thickness_m"}));
+                           "deposit_submerged", "water_height_m", "water_unit_weight_N_m3", "column_diameter_m", "column_wall_thickness_m",
+                           "yield_strength_Pa", "member_model"}));
   if (top.has("boulder"))
     b.boulder = read_boulder(Object(j["boulder"], file, prefix + "/boulder",
                                     {"mass_kg", "diameter_m", "density_kg_m3", "youngs_modulus_Pa", "poisson_ratio", "speed_m_s",

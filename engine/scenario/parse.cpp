@@ -95,13 +95,15 @@ void read_material(Obj& o, MaterialConfig& m) {
                                          "Drucker-Prager matched to Mohr-Coulomb in plane strain; granular debris) | newtonian "
                                          "(weakly compressible viscous fluid; slurry) | bingham (weakly compressible Bingham fluid, "
                                          "Papanastasiou-regularised; mud and debris slurry) | mu_i (elastic-viscoplastic dense granular "
-                                         "flow, the mu(I) rheology of Jop, Forterre & Pouliquen 2006). The fluids, drucker_prager and mu_i "
-                                         "need plane strain or 3D"});
+                                         "flow, the mu(I) rheology of Jop, Forterre & Pouliquen 2006) | elastic_plastic (steel of "
+                                         "beam-column members only: linear elastic to yield_strength, then bilinear with kinematic "
+                                         "hardening in each fibre of the section). The fluids, drucker_prager and mu_i need plane strain "
+                                         "or 3D"});
   if (!o.documenting() && m.model != "linear_elastic" && m.model != "neo_hookean" && m.model != "drucker_prager" &&
-      m.model != "newtonian" && m.model != "bingham" && m.model != "mu_i")
-    o.fail("model", nullptr, "linear_elastic, neo_hookean, drucker_prager, newtonian, bingham or mu_i (got '" + m.model + "')");
+      m.model != "newtonian" && m.model != "bingham" && m.model != "mu_i" && m.model != "elastic_plastic")
+    o.fail("model", nullptr, "linear_elastic, neo_hookean, drucker_prager, newtonian, bingham, mu_i or elastic_plastic (got '" + m.model + "')");
   o.number("density", m.density, positive("kg/m^3", "mass density", true));
-  if (when_any(o, "model", m.model, {"linear_elastic", "neo_hookean", "drucker_prager", "mu_i"})) {
+  if (when_any(o, "model", m.model, {"linear_elastic", "neo_hookean", "drucker_prager", "mu_i", "elastic_plastic"})) {
     o.number("youngs_modulus", m.youngs_modulus, positive("Pa", "Young's modulus E", true));
     o.number("poisson_ratio", m.poisson_ratio, Spec{.doc = "Poisson's ratio", .min = -1, .max = 0.5, .min_open = true, .max_open = true, .required = true});
   }
@@ -120,6 +122,15 @@ void read_material(Obj& o, MaterialConfig& m) {
                          "near a wall), but the fluid reads its density low within a cell or two of a free surface or of "
                          "another body and carries less pressure there (docs/verification.md)",
                   .min = 0});
+  }
+  o.end_when();
+  if (o.when("model", m.model, "elastic_plastic")) {
+    o.number("yield_strength", m.yield_strength,
+             Spec{.unit = "Pa", .doc = "yield strength f_y of the steel (S235: 235e6, S355: 355e6; EN 10025-2)", .min = 1e8, .max = 2e9,
+                  .required = true});
+    o.number("hardening_ratio", m.hardening_ratio,
+             Spec{.doc = "post-yield modulus over E (linear kinematic hardening); the default 0.01 is the E/100 strain-hardening slope "
+                         "of EN 1993-1-5 Annex C.6(2); 0 = perfectly plastic", .min = 0, .max = 0.5});
   }
   o.end_when();
   if (o.when("model", m.model, "bingham")) {

@@ -135,6 +135,9 @@ void read_structure(Obj o, StructureConfig& st) {
                          "the default -0.1 damps frame modes far above the time step's resolution, which stick contact "
                          "otherwise pumps (docs/verification.md)", .min = -1.0 / 3, .max = 0});
   o.end_when();
+  o.integer("integration_points", st.integration_points,
+            Spec{.doc = "Gauss-Lobatto sections along each element of an elastic_plastic member (3 to 5; the end sections, where "
+                        "plastic hinges form, are always among them)", .min = 3, .max = 5});
   o.boolean("self_weight", st.self_weight, Spec{.doc = "apply analysis.gravity to the members' own mass"});
   if (o.when("self_weight", st.self_weight ? "true" : "", "true"))
     o.choice<FrameInitialState>("initial_state", st.initial_state,

@@ -256,6 +256,8 @@ DesignBasis Builder::design_basis() const {
     if (d_.water_height > 0) dam.water_height_m = d_.water_height, dam.water_unit_weight_N_m3 = d_.water_unit_weight;
   } else {
     dam.column_diameter_m = d_.column_d, dam.column_wall_thickness_m = d_.column_t;
+    if (d_.steel_yield > 0) dam.yield_strength_Pa = d_.steel_yield;
+    dam.member_model = d_.member_model;
   }
   if (p_.boulder) {
     const BoulderPreset& b = *p_.boulder;

@@ -12,11 +12,13 @@ namespace dmi {
 struct DamPreset {
   std::string type, base = "fixed", sloped_face = "downstream", model = "members", damping_model = "modal";
   std::string beam_theory;  // the members' beam theory (scenario structure.theory); empty before parsing
+  std::string member_model = "plastic";  // steel_open: plastic (elastic_plastic steel) or elastic members
   double height = 0, width = 1.0, damping_ratio = 0.05;
   bool width_given = true;  // false: 2D with a boulder takes the effective width of the impact (preset_scene.cpp)
   int elements = 8;
   double crest = 0, base_thickness = 0;                          // concrete_gravity, m
   nlohmann::json concrete, steel;                                // material objects
+  double steel_yield = 0;                                        // steel_open: f_y (Pa) the checks take
   int rows = 2, levels = 2;                                      // steel_open
   double row_spacing = 0, column_d = 0, column_t = 0, beam_d = 0, beam_t = 0;
   bool bracing = true;

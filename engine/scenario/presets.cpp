@@ -130,7 +130,9 @@ void read_dam(Obj o, DamPreset& d) {
                                     "(computed modes; the kHz modes a hard impact excites get the same ratio as the first); "
                                     "rayleigh = C = alpha M + beta K fitted at the first two modes of the dam as a uniform "
                                     "cantilever (zeta grows with frequency above the second and damps a hard impact's kHz modes "
-                                    "heavily); mass = C = alpha M with zeta at the first mode (zeta falls above it)"});
+                                    "heavily); mass = C = alpha M with zeta at the first mode (zeta falls above it). Default modal; mass for a "
+                                    "steel_open dam with plastic members (damping built on the initial stiffness puts spurious "
+                                    "moments on yielding hinges, which then dissipate what the steel should; Charney 2008)"});
   // A short hard impact excites the dam's higher modes, which the members must resolve (docs/verification.md).
   if (d.type == "concrete_gravity") d.elements = 16;
   o.integer("elements", d.elements, Spec{.doc = "beam-column elements per member (members model); default 16 for concrete_gravity "
@@ -186,9 +188,23 @@ void read_dam(Obj o, DamPreset& d) {
       o.fail("row_spacing", &v, "a row spacing larger than the column diameter " + json(d.column_d).dump() + " m (the rows would overlap)");
     }
     if (d.beam_t > 0) pipe_wall(b, d.beam_d > 0 ? d.beam_d : d.column_d, d.beam_t);
-    d.steel = material_object(o, "steel", json{{"model", "linear_elastic"}, {"density", 7850}, {"youngs_modulus", 205e9}, {"poisson_ratio", 0.3}},
-                              "steel", "steel");
+    o.choice<std::string>("member_model", d.member_model, {{"plastic", "plastic"}, {"elastic", "elastic"}},
+                          Spec{.doc = "the members: plastic (the default: elastic_plastic steel, force-based fibre beam-columns that yield "
+                                      "and absorb the boulder's energy; a slit dam is sized to) or elastic (linear elastic members: the "
+                                      "serviceability level, or a comparison)"});
+    d.steel = material_object(o, "steel", json{{"model", "elastic_plastic"}, {"density", 7850}, {"youngs_modulus", 205e9}, {"poisson_ratio", 0.3},
+                                               {"yield_strength", 355e6}, {"hardening_ratio", 0.01}},
+                              "steel (S355 by default: f_y 355 MPa, EN 10025-2; the design checks take this f_y)", "steel");
     plausible(o, "steel", d.steel, "steel", 1e11, 3e11, 7000, 8500);
+    if (d.member_model == "plastic" && !o.documenting() && !o.given("damping_model")) d.damping_model = "mass";
+    if (d.member_model == "elastic" && d.steel.value("model", "") == "elastic_plastic") {
+      d.steel["model"] = "linear_elastic";
+      d.steel.erase("hardening_ratio");
+      d.steel_yield = d.steel.value("yield_strength", 355e6);
+      d.steel.erase("yield_strength");
+    } else {
+      d.steel_yield = d.steel.value("yield_strength", 0.0);
+    }
   }
   o.end_when();
   o.finish();

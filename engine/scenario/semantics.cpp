@@ -147,9 +147,12 @@ std::set<std::string> check_structure(const Scenario& s, const std::string& file
     }
     const auto mat = models.find(m.material);
     if (mat == models.end()) throw InputError(file, p + "/material", quoted(m.material), "the name of one of the materials");
-    if (mat->second != "linear_elastic")
-      throw InputError(file, p + "/material", quoted(m.material), "a linear_elastic material (beam-column members are linear elastic; '" +
+    if (mat->second != "linear_elastic" && mat->second != "elastic_plastic")
+      throw InputError(file, p + "/material", quoted(m.material), "a linear_elastic or elastic_plastic material (beam-column members; '" +
                                                                       m.material + "' is " + mat->second + ")");
+    if (mat->second == "elastic_plastic" && (m.release_start || m.release_end))
+      throw InputError(file, p + (m.release_start ? "/release_start" : "/release_end"), "true",
+                       "false for an elastic_plastic member (its end sections yield; a hinge is a linear_elastic member's release)");
     const SectionConfig& c = m.section;
     if (c.type == "pipe" && c.wall_thickness > 0.5 * c.diameter)
       throw InputError(file, p + "/section/wall_thickness", value_text(c.wall_thickness),
@@ -266,6 +269,9 @@ void check_semantics(const Scenario& s, const std::string& file) {
       if ((m.model == "drucker_prager" || m.model == "mu_i" || m.model == "newtonian" || m.model == "bingham") && s.analysis.plane == Plane::stress)
         throw InputError(file, p + "/material", "\"" + b.material + "\"", "a material other than " + m.model + " in plane stress "
                                                                         "(Drucker-Prager debris and slurries need plane strain or 3D)");
+      if (m.model == "elastic_plastic")
+        throw InputError(file, p + "/material", "\"" + b.material + "\"", "a material for a continuum body (elastic_plastic is the steel of "
+                                                                        "beam-column members only)");
       if (b.rigid_when_free && m.model != "linear_elastic")
         throw InputError(file, p + "/rigid_when_free", "true", "false, or a linear_elastic material for the body (its material is " + m.model +
                                                                ": only a linear-elastic body can be relaxed to stress-free when it turns rigid)");

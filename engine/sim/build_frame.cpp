@@ -109,6 +109,10 @@ template <int D> typename FrameTypes<D>::Model build_model(const Scenario& s) {
       e.release_i = k == 0 && mc.release_start;
       e.release_j = k + 1 == mc.elements && mc.release_end;
       e.member = static_cast<int>(fm.members.size());
+      if (mat.model == "elastic_plastic") {
+        e.steel = SteelLaw{mat.youngs_modulus, mat.yield_strength, mat.hardening_ratio};
+        e.integration_points = st.integration_points;
+      }
       if constexpr (D == 3)
         if (mc.orientation.size() == 3) e.orientation = Vec3(mc.orientation[0], mc.orientation[1], mc.orientation[2]);
       fm.elements.push_back(e);
@@ -198,6 +202,10 @@ template <class F> std::string structure_document(const Scenario& s, const F& fr
     }
     elements.push_back({{"member", e.member}, {"i", e.i}, {"j", e.j}, {"s0", e.s0}, {"s1", e.s1}, {"section", sec},
                         {"youngs_modulus_Pa", e.E}, {"poisson_ratio", e.nu}, {"density_kg_m3", e.rho}});
+    if (e.steel.fy > 0) {
+      elements.back()["yield_strength_Pa"] = e.steel.fy;
+      elements.back()["hardening_ratio"] = e.steel.hardening;
+    }
     if constexpr (space) {
       const Eigen::Matrix3d a = frame.axes(static_cast<int>(k));
       elements.back()["e2"] = {a(1, 0), a(1, 1), a(1, 2)};

@@ -173,7 +173,15 @@ template <int D> Scene<D> build_scene(const Scenario& s) {
 
   MaterialRegistry<D> registry;
   register_materials(registry);
-  for (const auto& m : s.materials) sc.materials.push_back(registry.make(m, s.analysis.plane));
+  for (const auto& m : s.materials) {
+    if (m.model != "elastic_plastic") {
+      sc.materials.push_back(registry.make(m, s.analysis.plane));
+      continue;
+    }
+    MaterialConfig elastic = m;  // the members' steel: no body uses it; its slot keeps the materials' indices
+    elastic.model = "linear_elastic";
+    sc.materials.push_back(registry.make(elastic, s.analysis.plane));
+  }
 
   for (std::size_t b = 0; b < s.bodies.size(); ++b) {
     const BodyConfig& bc = s.bodies[b];

@@ -209,6 +209,13 @@ template <int D> void Recorder<D>::add_frame_series(const FrameOf<D>& f, const S
   add("frame/displacement", D == 2 ? "m, m, rad" : "m, rad", dofs);
   add("frame/end_forces", D == 2 ? "N, N, N m" : "N, N m", ends);
   add("frame/contact_force", "N", axes<D>());  // force of the material on the members, interval mean
+  if (f.plastic()) {  // elasto-plastic members: plastic work, and per element what it has done so far
+    add("energy/frame_plastic", "J", {"value"});
+    std::vector<std::string> pc;
+    for (int e = 0; e < f.nelements(); ++e)
+      for (const char* c : {"_work", "_peak_strain", "_plastic_strain"}) pc.push_back("e" + std::to_string(e) + c);
+    add("frame/plastic", "J, -, -", pc);
+  }
   for (const auto& sup : s.structure.supports)
     add("supports/" + sup.node + "/reaction", D == 2 ? "N, N, N m" : "N, N m", D == 2 ? std::vector<std::string>{"Fx", "Fy", "M"} : std::vector<std::string>{"Fx", "Fy", "Fz", "Mx", "My", "Mz"});
 }
@@ -230,6 +237,14 @@ void Recorder<D>::sample_frame(const FrameOf<D>& f, const MemberContact<D>& mc, 
   const Vec<D> mean = elapsed_ > 0 ? Vec<D>(member_impulse_ / elapsed_) : mc.force();
   cf.data.insert(cf.data.end(), mean.data(), mean.data() + D);
   member_impulse_.setZero();
+  if (f.plastic()) {
+    series_[k++].data.push_back(d.frame_plastic);
+    Series& ps = series_[k++];
+    for (int e = 0; e < f.nelements(); ++e) {
+      const auto r = f.plastic_record(e).value_or(PlasticRecord{});
+      ps.data.insert(ps.data.end(), {r.plastic_work, r.peak_strain, r.peak_plastic_strain});
+    }
+  }
   for (int r = 0; r < static_cast<int>(f.model().supports.size()); ++r) {
     const auto rf = f.reaction(r);
     Series& rs = series_[k++];

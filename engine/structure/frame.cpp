@@ -214,6 +214,8 @@ double Frame::external_work() const { return impl_->dyn.work_ext; }
 double Frame::applied_work() const { return impl_->dyn.work_applied; }
 double Frame::damping_work() const { return impl_->dyn.work_damp; }
 
+bool Frame::plastic() const { return impl_->sys.plastic(); }
+
 double Frame::plastic_work() const {
   double w = 0;
   for (int e = 0; e < nelements(); ++e)

@@ -44,7 +44,7 @@ struct FrameElementDef {
   // Elasto-plastic fibre element (fibre_beam.hpp) when steel.fy > 0, with integration_points Gauss-Lobatto sections;
   // elastic otherwise. A plastic element carries no moment release.
   SteelLaw steel;                 // its E is the element's
-  int integration_points = 4;
+  int integration_points = 5;
 };
 
 struct FrameSupportDef {
@@ -184,6 +184,7 @@ class Frame {
   // Plastic work of the plastic elements since t = 0 (J; strain_energy() holds their elastic part), and what element e
   // has done so far (nullopt: an elastic element).
   double plastic_work() const;
+  bool plastic() const;  // has elasto-plastic elements
   std::optional<PlasticRecord> plastic_record(int e) const;
   // Dynamic state (displacements, velocities, accelerations, loads, integrator history, work counters) for
   // checkpoints; load_state() requires the same model.

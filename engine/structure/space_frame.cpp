@@ -254,6 +254,8 @@ double SpaceFrame::external_work() const { return impl_->dyn.work_ext; }
 double SpaceFrame::applied_work() const { return impl_->dyn.work_applied; }
 double SpaceFrame::damping_work() const { return impl_->dyn.work_damp; }
 
+bool SpaceFrame::plastic() const { return impl_->sys.plastic(); }
+
 double SpaceFrame::plastic_work() const {
   double w = 0;
   for (int e = 0; e < nelements(); ++e)

@@ -43,7 +43,7 @@ struct SpaceElementDef {
   // Elasto-plastic fibre element (fibre_beam.hpp) when steel.fy > 0, with integration_points Gauss-Lobatto sections;
   // elastic otherwise. A plastic element carries no moment release.
   SteelLaw steel;                 // its E is the element's
-  int integration_points = 4;
+  int integration_points = 5;
 };
 
 struct SpaceSupportDef {
@@ -158,6 +158,7 @@ class SpaceFrame {
   double damping_work() const;
   // Plastic work of the plastic elements since t = 0 (J), and what element e has done so far (nullopt: elastic).
   double plastic_work() const;
+  bool plastic() const;  // has elasto-plastic elements
   std::optional<PlasticRecord> plastic_record(int e) const;
   void save_state(StateWriter& w) const;
   void load_state(StateReader& r);

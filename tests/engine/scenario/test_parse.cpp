@@ -544,7 +544,7 @@ TEST(ScenarioErrors, OutOfRange) {
   expect_error(with([](json& j) { j["analysis"]["cfl"] = 1.5; }), "/analysis/cfl", {"> 0 and <= 1"});
   expect_error(with([](json& j) { j["analysis"]["dimension"] = 4; }), "/analysis/dimension", {">= 2 and <= 3"});
   expect_error(with([](json& j) { j["bodies"][0]["particles_per_cell"] = 0; }), "/bodies/0/particles_per_cell", {">= 1 and <= 8"});
-  expect_error(with([](json& j) { j["materials"][0]["model"] = "mohr_coulomb"; }), "/materials/0/model", {"linear_elastic, neo_hookean, drucker_prager, newtonian, bingham or mu_i", "mohr_coulomb"});
+  expect_error(with([](json& j) { j["materials"][0]["model"] = "mohr_coulomb"; }), "/materials/0/model", {"linear_elastic, neo_hookean, drucker_prager, newtonian, bingham, mu_i or elastic_plastic", "mohr_coulomb"});
   expect_error(with([](json& j) { j["bodies"][0]["shape"]["type"] = "cylinder"; }), "/bodies/0/shape/type", {"box, ball or polygon", "cylinder"});
   // mu(I): the limiting friction must exceed the static one.
   auto mu_i = [](json& j) {
@@ -810,7 +810,7 @@ TEST(ScenarioStructureErrors, MaterialsAndSections) {
   expect_error(frame_with([](json& j) {
                  j["materials"][1]["model"] = "neo_hookean";
                }),
-               "/structure/members/0/material", {"= \"steel\"", "a linear_elastic material", "'steel' is neo_hookean"});
+               "/structure/members/0/material", {"= \"steel\"", "a linear_elastic or elastic_plastic material", "'steel' is neo_hookean"});
   expect_error(frame_with([](json& j) {
                  j["structure"]["members"][0]["section"] = {{"type", "pipe"}, {"diameter", 0.2}, {"wall_thickness", 0.11}};
                }),
