@@ -278,6 +278,7 @@ json design_run(const Results& r, const Limits& limits, const std::string& where
   punching(parse_document(r, "peak_contact", where), members, L, checks, where);
   run["solid"] = solid_part(parse_document(r, "solid_check", where), L, checks, where);
   run["plastic"] = frame ? plastic_part(r, *frame, members, basis, c, L.steel, checks, where) : json(nullptr);
+  run["steel_yield_strength_Pa"] = L.steel.yield_strength;
   json est = json::array();
   if (basis)
     for (const auto& e : estimates(*basis, base_shear, c.present ? c.peak_N : 0.0, r.info.dimension)) est.push_back(e.to_json());

@@ -13,6 +13,7 @@
 
 #include "design/design.hpp"
 #include "render/report.hpp"
+#include "render/report_rows.hpp"
 
 #include "core/variants.hpp"
 #include "render/sha256.hpp"
@@ -21,8 +22,6 @@ namespace dmi::render {
 
 using nlohmann::json;
 namespace fs = std::filesystem;
-
-namespace {
 
 std::string fmt(const char* f, double v) {
   char b[64];
@@ -43,6 +42,8 @@ std::string eng(double v, const std::string& unit) {
   if (unit.empty() || unit == "-") return fmt("%.3g", v);
   return fmt("%.3g", v) + " " + unit;
 }
+
+namespace {
 
 double num(const json& j, std::initializer_list<const char*> path, double fallback = NAN) {
   const json* p = &j;
@@ -218,6 +219,8 @@ json materials(const RunData& r) {
   return out;
 }
 
+}  // namespace
+
 // Rows of a per-run table: key, then one value per run.
 // A row per quantity, a value per run; a value every run shares is written once across the runs' columns (`same`,
 // `span`), so that a long text does not repeat in narrow columns.
@@ -233,6 +236,8 @@ json per_run_rows(const std::vector<RunData>& runs, const std::vector<std::pair<
   }
   return out;
 }
+
+namespace {
 
 // The dam on its foundation (design.json runs[].stability), a column per run; empty when no run has it.
 json stability_rows(const std::vector<RunData>& runs) {
@@ -453,6 +458,8 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
   d["formulas"] = formulas;
   d["stability_rows"] = stability_rows(runs);
   d["has_stability"] = !d["stability_rows"].empty();
+  d["plastic_rows"] = plastic_rows(runs);
+  d["has_plastic"] = !d["plastic_rows"].empty();
   d["model_rows"] = per_run_rows(runs, {
       {"cell size", [](const RunData& r) { return fmt("%.3g m", r.results.info.numbers.count("cell_size") ? r.results.info.numbers.at("cell_size") : NAN); }},
       {"particles", [](const RunData& r) { return fmt("%.0f", r.results.info.numbers.count("particles") ? r.results.info.numbers.at("particles") : NAN); }},

@@ -51,6 +51,7 @@ const std::vector<ValidationCase>& validation_cases();
 std::vector<ValidationCase> member_validation_cases();  // cases_members.cpp (Lin & Yang 2024)
 std::vector<ValidationCase> debris_validation_cases();  // cases_debris.cpp (granular collapse)
 std::vector<ValidationCase> dam_validation_cases();     // cases_dam.cpp (the dam members against a solid model)
+std::vector<ValidationCase> plastic_validation_cases(); // cases_plastic.cpp (elasto-plastic members against closed forms)
 
 // Bar vibration at one resolution (used by the case, tests and benchmarks).
 struct BarResult {

@@ -67,6 +67,12 @@ Vec2 Frame::node_position(int n) const {
   return model().nodes[n] + impl_->dyn.state.d.segment<2>(3 * n);
 }
 
+void Frame::set_velocity(const Eigen::VectorXd& v) {
+  if (v.size() != impl_->sys.ndof() || !v.allFinite()) throw std::invalid_argument("Frame::set_velocity: a finite vector of ndof() entries");
+  impl_->dyn.state.v = v.cwiseProduct(impl_->sys.free());
+  impl_->dyn.state.a_current = false;
+}
+
 void Frame::clear_loads() {
   impl_->dyn.nodal.setZero();
   impl_->dyn.added.clear();

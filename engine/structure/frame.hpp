@@ -130,6 +130,8 @@ class Frame {
   const Eigen::VectorXd& velocity() const;
   double time() const;
   Vec2 node_position(int n) const;   // current (X + u)
+  // Sets the velocity (global DOF vector; restrained entries are ignored): an initial condition, e.g. a struck mass.
+  void set_velocity(const Eigen::VectorXd& v);
 
   // External loads (and attached masses) held over the next advance(); cleared by clear_loads(). Self-weight (model
   // gravity) is added internally and need not be applied.

@@ -8,7 +8,7 @@
 
 namespace dmi {
 
-FrameDynamics::FrameDynamics(const AssembledSystem& sys, FrameIntegrator kind, double hht_alpha)
+FrameDynamics::FrameDynamics(AssembledSystem& sys, FrameIntegrator kind, double hht_alpha)
     : integrator(make_integrator(sys, kind, hht_alpha)) {
   const int n = sys.ndof();
   for (Eigen::VectorXd* x : {&state.d, &state.v, &state.a, &nodal, &f, &d_prev, &v_prev, &cv}) x->setZero(n);

@@ -12,7 +12,7 @@
 namespace dmi {
 
 struct FrameDynamics {
-  FrameDynamics(const AssembledSystem& sys, FrameIntegrator kind, double hht_alpha);
+  FrameDynamics(AssembledSystem& sys, FrameIntegrator kind, double hht_alpha);
 
   // Advances by dt under f (held constant); the work of f, of the nodal part and of the damping is booked.
   void advance(AssembledSystem& sys, double dt);

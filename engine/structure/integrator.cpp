@@ -42,7 +42,7 @@ void ExplicitEuler::step(FrameState& s, const Eigen::VectorXd& f, double dt, con
   s.a_current = false;                                 // a is a_n, not a_{n+1}
 }
 
-Newmark::Newmark(const AssembledSystem& sys, double hht_alpha) : sys_(sys) {
+Newmark::Newmark(AssembledSystem& sys, double hht_alpha) : sys_(sys) {
   const double a = hht_alpha;
   if (!(a >= -1.0 / 3 && a <= 0)) throw std::invalid_argument("Frame: HHT alpha must lie in [-1/3, 0]");
   alpha_ = a;
@@ -166,10 +166,30 @@ void Newmark::step_linear(FrameState& s, const Eigen::VectorXd& f, double dt, co
   kinematics(s, dd_, dt, s);
 }
 
-// Corotational: Newton-Raphson on R(D) = f - (M + Ma) a_{n+1} - (1 + alpha)(f_int(d_{n+1}) + C v_{n+1})
+// Corotational or plastic: Newton-Raphson on R(D) = f - (M + Ma) a_{n+1} - (1 + alpha)(f_int(d_{n+1}) + C v_{n+1})
 // + alpha (f_int(d_n) + C v_n), Jacobian c0 (M + Ma) + (1 + alpha)(K_t + c1 C).
 void Newmark::step_newton(FrameState& s, const Eigen::VectorXd& f, double dt, const SpMat* Ma) {
-  constexpr int kMaxIterations = 20;
+  double res = 0, ref = 0;
+  if (newton(s, f, dt, Ma, res, ref)) return;
+  const FrameState n = s;
+  for (int k = 2; k <= 64; k *= 2) {
+    bool ok = true;
+    for (int j = 0; j < k && ok; ++j) {
+      ok = newton(s, f, dt / k, Ma, res, ref);
+      if (ok && j + 1 < k) sys_.commit(s.d), s.t += dt / k;
+    }
+    if (ok) {
+      s.t = n.t;  // step() advances the time by dt
+      return;
+    }
+    s = n;
+  }
+  throw std::runtime_error("Frame: Newmark Newton iterations did not converge at t = " + std::to_string(n.t + dt) +
+                           " s, residual " + std::to_string(res) + " N (relative " + std::to_string(res / ref) + "), in up to 64 sub-steps");
+}
+
+bool Newmark::newton(FrameState& s, const Eigen::VectorXd& f, double dt, const SpMat* Ma, double& res, double& ref) {
+  constexpr int kMaxIterations = 20, kMaxHalvings = 8;
   constexpr double kResidualTol = 1e-8, kIncrementTol = 1e-8;
   const double c0 = 1 / (beta_ * dt * dt), c1 = gamma_ / (beta_ * dt);
   const double ar = sys_.rayleigh_mass(), br = sys_.rayleigh_stiffness();
@@ -179,32 +199,43 @@ void Newmark::step_newton(FrameState& s, const Eigen::VectorXd& f, double dt, co
   fint0_ += tmp_;  // f_int(d_n) + C v_n
   const Eigen::VectorXd fm = f.cwiseProduct(sys_.free());
   Eigen::VectorXd D = dt * n.v, delta = Eigen::VectorXd::Zero(sys_.ndof());
-  double ref = 0, res = 0;
-  for (int it = 0; it <= kMaxIterations; ++it) {
-    kinematics(n, D, dt, s);
+  const auto residual = [&](const Eigen::VectorXd& Dk, Eigen::VectorXd& inertia) {
+    kinematics(n, Dk, dt, s);
     sys_.internal_force(s.d, fint_);
     sys_.damping_force(s.v, tmp_);
-    Eigen::VectorXd inertia = sys_.mass() * s.a;
+    inertia = sys_.mass() * s.a;
     if (Ma) inertia += *Ma * s.a;
     rhs_ = (f - inertia - (1 + alpha_) * (fint_ + tmp_) + alpha_ * fint0_).cwiseProduct(sys_.free());
-    if (it == 0)
-      ref = std::max({fm.norm(), fint_.cwiseProduct(sys_.free()).norm(), inertia.cwiseProduct(sys_.free()).norm(),
-                      std::numeric_limits<double>::min()});
-    res = rhs_.norm();
-    if (it > 0 && res <= kResidualTol * ref && delta.norm() <= kIncrementTol * std::max(D.norm(), s.d.norm())) return;
+    return rhs_.norm();
+  };
+  Eigen::VectorXd inertia;
+  res = residual(D, inertia);
+  ref = std::max({fm.norm(), fint_.cwiseProduct(sys_.free()).norm(), inertia.cwiseProduct(sys_.free()).norm(), std::numeric_limits<double>::min()});
+  for (int it = 0; it <= kMaxIterations; ++it) {
+    if (it > 0 && res <= kResidualTol * ref && delta.norm() <= kIncrementTol * std::max(D.norm(), s.d.norm())) return true;
     if (it == kMaxIterations) break;
     SpMat J = (1 + alpha_) * (sys_.tangent(s.d) + c1 * br * sys_.stiffness()) + (c0 + (1 + alpha_) * c1 * ar) * sys_.mass();
     if (Ma) J += c0 * *Ma;
     if (!factorize(sys_.constrained(J), (1 + alpha_) * c1, false)) break;
     solve(rhs_, delta);
-    D += delta;
+    // Backtracking: the full step unless it raises the residual (a hinge yielding through the step).
+    const Eigen::VectorXd D0 = D;
+    double step = 1;
+    for (int h = 0;; ++h, step *= 0.5) {
+      D = D0 + step * delta;
+      const double trial = residual(D, inertia);
+      if (trial < res || h == kMaxHalvings) {
+        res = trial;
+        break;
+      }
+    }
+    delta *= step;
   }
   s = n;  // leave the state at t_n
-  throw std::runtime_error("Frame: Newmark Newton iterations did not converge at t = " + std::to_string(n.t + dt) +
-                           " s, residual " + std::to_string(res) + " N (relative " + std::to_string(res / ref) + ")");
+  return false;
 }
 
-std::unique_ptr<FrameTimeIntegrator> make_integrator(const AssembledSystem& sys, FrameIntegrator kind, double hht_alpha) {
+std::unique_ptr<FrameTimeIntegrator> make_integrator(AssembledSystem& sys, FrameIntegrator kind, double hht_alpha) {
   if (kind == FrameIntegrator::newmark) return std::make_unique<Newmark>(sys, hht_alpha);
   return std::make_unique<ExplicitEuler>(sys);
 }

@@ -63,12 +63,14 @@ class ExplicitEuler final : public FrameTimeIntegrator {
 // need it, since stick contact feeds the undamped high modes that ring at omega dt >> 1 back into
 // the material (a debris block on a steel pipe gained 4e6 J with alpha = 0 at dt = 1e-4 s).
 // Linear: the effective matrix c0 (M + Ma) + (1 + alpha)(K0 + c1 C) is factorised when dt changes
-// (and in steps with attached mass); corotational: Newton-Raphson with K_t in place of K0. The modal damping term
+// (and in steps with attached mass); corotational or plastic: Newton-Raphson with K_t in place of K0, with a
+// backtracking line search on the residual; a step whose Newton iterations fail is retried in 2, 4, ... 64 sub-steps,
+// each committed (a plastic hinge forming within a step can leave the tangent too soft for the full step). The modal damping term
 // U diag(rates) U^T joins the sparse factorisation as a low-rank update (Woodbury identity, Golub & Van Loan
 // 2013, sec. 2.1.4): (A + U D U^T)^-1 b = A^-1 b - Y (D^-1 + U^T Y)^-1 U^T A^-1 b, Y = A^-1 U.
 class Newmark final : public FrameTimeIntegrator {
  public:
-  Newmark(const AssembledSystem& sys, double hht_alpha);
+  Newmark(AssembledSystem& sys, double hht_alpha);
   double stable_time_step() const override;
   void step(FrameState& s, const Eigen::VectorXd& f, double dt, const SpMat* Ma) override;
   void save_state(StateWriter& w) const override { w.put(fint_), w.put(fint0_), w.put(tmp_), w.put(rhs_), w.put(dd_); }
@@ -83,13 +85,15 @@ class Newmark final : public FrameTimeIntegrator {
   void kinematics(const FrameState& n, const Eigen::VectorXd& D, double dt, FrameState& s);
   void step_linear(FrameState& s, const Eigen::VectorXd& f, double dt, const SpMat* Ma);
   void step_newton(FrameState& s, const Eigen::VectorXd& f, double dt, const SpMat* Ma);
+  // One Newton solve of the step; false (s left at t_n) when it does not converge.
+  bool newton(FrameState& s, const Eigen::VectorXd& f, double dt, const SpMat* Ma, double& residual, double& reference);
   // Factorises A (the sparse part of the effective matrix) and, with modal damping weighted by c_modal in the
   // effective matrix, the Woodbury capacitance matrix.
   bool factorize(const SpMat& A, double c_modal, bool throw_on_failure = true);
   // x = (A + c_modal U diag(rates) U^T)^-1 b for the last factorisation.
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
 
-  const AssembledSystem& sys_;
+  AssembledSystem& sys_;  // non-const: sub-steps commit plastic elements
   double alpha_ = 0, beta_ = 0.25, gamma_ = 0.5;
   double dt_factored_ = 0;   // 0: keff_ is stale (new dt, or restarted)
   bool factored_with_mass_ = false;  // solver_ holds keff_ + c0 Ma, not keff_
@@ -102,6 +106,6 @@ class Newmark final : public FrameTimeIntegrator {
   Eigen::VectorXd fint_, fint0_, tmp_, rhs_, dd_;
 };
 
-std::unique_ptr<FrameTimeIntegrator> make_integrator(const AssembledSystem& sys, FrameIntegrator kind, double hht_alpha);
+std::unique_ptr<FrameTimeIntegrator> make_integrator(AssembledSystem& sys, FrameIntegrator kind, double hht_alpha);
 
 }  // namespace dmi

@@ -93,7 +93,7 @@ TEST(ModalDamping, SpaceFrameDampingMatrixIsDiagonalInTheModes) {
 // zeta of mode k from the decay of its modal coordinate q = phi_k^T M d after release from d = phi_k (Newmark,
 // average acceleration, dt = T_k / 200: the period error (pi/200)^2 / 12 = 2e-5 does not reach the ratio).
 double measured_ratio(const FrameModel& m, int k) {
-  const FrameSystem sys(m);
+  FrameSystem sys(m);
   const Modes md = modes_of(sys);
   const Eigen::VectorXd mphi = sys.mass() * md.phi.col(k);
   Newmark nm(sys, 0.0);

@@ -1,0 +1,23 @@
+// Formatting shared by the report's tables (report_data.cpp and the sections beside it).
+#pragma once
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "render/render_main.hpp"
+
+namespace dmi::render {
+
+std::string fmt(const char* f, double v);
+// Engineering units: Pa -> MPa, N -> kN, N m -> kN m, N s -> kN s, s -> ms, m below 0.1 m -> mm; other units as given.
+std::string eng(double v, const std::string& unit);
+// A row per quantity, a value per run; a value every run shares is written once across the runs' columns.
+nlohmann::json per_run_rows(const std::vector<RunData>& runs,
+                            const std::vector<std::pair<std::string, std::function<std::string(const RunData&)>>>& rows);
+// The steel members that yield (design.json runs[].plastic), a column per run; empty when no run has them.
+nlohmann::json plastic_rows(const std::vector<RunData>& runs);
+
+}  // namespace dmi::render
