@@ -128,6 +128,14 @@ std::string verdict_text(const json& d) {
         << l["governing"]["title"].get<std::string>() << ")\n";
     }
   if (v.contains("judged_levels")) o << "  the verdict judges: " << v["judged_levels"].get<std::string>() << " (limits file: verdict.level)\n";
+  // The member model the verdict rests on (elastic members cannot yield; plastic ones are judged by strain and drift).
+  if (d.contains("runs"))
+    for (const auto& r : d["runs"])
+      if (r.contains("plastic") && r["plastic"].is_object()) {
+        o << "  members: " << r["plastic"]["member_model"].get<std::string>() << ", f_y " << eng(r["steel_yield_strength_Pa"], "Pa") << " ("
+          << (r["variant"].get<std::string>().empty() ? std::string("the run") : r["variant"].get<std::string>()) << ")\n";
+        break;
+      }
   return o.str();
 }
 
