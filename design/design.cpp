@@ -259,6 +259,12 @@ json design_run(const Results& r, const Limits& limits, const std::string& where
   std::optional<FrameInfo> frame;
   if (!structure.is_null()) {
     const FrameInfo& f = frame.emplace(parse_structure(structure.dump(), where, L));
+    if (!(basis && is_set(basis->dam.yield_strength_Pa)))  // else the f_y its plastic members yielded at
+      for (const auto& e : f.elements)
+        if (e.yield_strength > 0) {
+          L.steel.yield_strength = e.yield_strength;
+          break;
+        }
     members = member_envelopes(r, f, L, where);
     for (const auto& m : members) {
       run["members"].push_back(member_json(m));
