@@ -20,6 +20,7 @@
 // section's surface and the accumulated plastic strain.
 #pragma once
 #include <Eigen/Dense>
+#include <optional>
 #include <vector>
 
 #include "engine/common/state_io.hpp"
@@ -105,5 +106,28 @@ template <int NP> class FibreBeam {
 
 extern template class FibreBeam<1>;
 extern template class FibreBeam<2>;
+
+// The elasto-plastic elements of a frame (one slot per element, empty for an elastic one), shared by the plane and the
+// space frame: their plastic work, records and checkpoints.
+template <int NP> struct FibreBeams {
+  std::vector<std::optional<FibreBeam<NP>>> beams;
+  bool any = false;
+  const FibreBeam<NP>* at(int e) const { return beams[e] ? &*beams[e] : nullptr; }
+  double plastic_work() const {
+    double w = 0;
+    for (const auto& b : beams)
+      if (b) w += b->record().plastic_work;
+    return w;
+  }
+  std::optional<PlasticRecord> record(int e) const { return beams[e] ? std::optional<PlasticRecord>(beams[e]->record()) : std::nullopt; }
+  void save_state(StateWriter& w) const {
+    for (const auto& b : beams)
+      if (b) b->save_state(w);
+  }
+  void load_state(StateReader& r) {
+    for (auto& b : beams)
+      if (b) b->load_state(r);
+  }
+};
 
 }  // namespace dmi

@@ -222,26 +222,20 @@ double Frame::damping_work() const { return impl_->dyn.work_damp; }
 
 bool Frame::plastic() const { return impl_->sys.plastic(); }
 
-double Frame::plastic_work() const {
-  double w = 0;
-  for (int e = 0; e < nelements(); ++e)
-    if (const FibreBeam<1>* f = impl_->sys.fibre_beam(e)) w += f->record().plastic_work;
-  return w;
-}
+double Frame::plastic_work() const { return impl_->sys.fibres().plastic_work(); }
 
 std::optional<PlasticRecord> Frame::plastic_record(int e) const {
   impl_->check_element(e, 0);
-  const FibreBeam<1>* f = impl_->sys.fibre_beam(e);
-  return f ? std::optional<PlasticRecord>(f->record()) : std::nullopt;
+  return impl_->sys.fibres().record(e);
 }
 
 void Frame::save_state(StateWriter& w) const {
   impl_->dyn.save_state(w, "frame", impl_->w, impl_->f_current);
-  impl_->sys.save_fibres(w);
+  impl_->sys.fibres().save_state(w);
 }
 void Frame::load_state(StateReader& r) {
   impl_->dyn.load_state(r, "frame", impl_->w, impl_->f_current);
-  impl_->sys.load_fibres(r);
+  impl_->sys.fibres().load_state(r);
 }
 
 }  // namespace dmi

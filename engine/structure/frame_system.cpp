@@ -40,10 +40,10 @@ void FrameSystem::assemble() {
     const Chord c{model_.nodes[el.i], dx / dx.norm(), dx.norm()};
     chords_.push_back(c);
     elements_.emplace_back(el, c.L0, model_.theory);
-    fibres_.emplace_back();
+    fibres_.beams.emplace_back();
     if (el.steel.fy > 0) {
-      fibres_.back().emplace(el.section, el.s0, el.s1, c.L0, SteelLaw{el.E, el.steel.fy, el.steel.hardening}, el.integration_points);
-      plastic_ = true;
+      fibres_.beams.back().emplace(el.section, el.s0, el.s1, c.L0, SteelLaw{el.E, el.steel.fy, el.steel.hardening}, el.integration_points);
+      fibres_.any = true;
     }
     const BeamElement& be = elements_.back();
     const Mat6 Ke = transform_->tangent(transform_->state(c, Vec6::Zero()), be.stiffness(), Vec3::Zero());
@@ -95,29 +95,19 @@ SpMat FrameSystem::tangent(const Eigen::VectorXd& d) const {
 }
 
 Vec3 FrameSystem::basic_forces(int e, const Vec3& v, Mat3* k) const {
-  if (!fibres_[e]) {
+  if (!fibres_.beams[e]) {
     if (k) *k = elements_[e].stiffness();
     return elements_[e].forces(v);
   }
   Vec3 q;
-  fibres_[e]->respond(v, q, k);
+  fibres_.beams[e]->respond(v, q, k);
   return q;
 }
 
 void FrameSystem::commit(const Eigen::VectorXd& d) {
-  if (!plastic_) return;
+  if (!fibres_.any) return;
   for (int e = 0; e < nelements(); ++e)
-    if (fibres_[e]) fibres_[e]->commit(transform_->state(chords_[e], element_dofs(e, d)).v);
-}
-
-void FrameSystem::save_fibres(StateWriter& w) const {
-  for (const auto& f : fibres_)
-    if (f) f->save_state(w);
-}
-
-void FrameSystem::load_fibres(StateReader& r) {
-  for (auto& f : fibres_)
-    if (f) f->load_state(r);
+    if (fibres_.beams[e]) fibres_.beams[e]->commit(transform_->state(chords_[e], element_dofs(e, d)).v);
 }
 
 Vec2 FrameSystem::axis(int e, const Eigen::VectorXd& d) const {

@@ -29,19 +29,19 @@ class FrameSystem final : public AssembledSystem {
   const FrameModel& model() const { return model_; }
   int nelements() const { return static_cast<int>(elements_.size()); }
   // Linear: the linear transformation and elastic elements only (K0 is then the stiffness at every state).
-  bool linear() const override { return model_.transform == FrameTransform::linear && !plastic_; }
-  bool plastic() const { return plastic_; }
+  bool linear() const override { return model_.transform == FrameTransform::linear && !fibres_.any; }
+  bool plastic() const { return fibres_.any; }
   const BeamElement& element(int e) const { return elements_[e]; }
   const Chord& chord(int e) const { return chords_[e]; }
   const CoordTransform& transform() const { return *transform_; }
   Vec6 element_dofs(int e, const Eigen::VectorXd& d) const;
   // Basic forces of element e at deformations v: kb v, or a plastic element's from its fibres; k: dq/dv.
   Vec3 basic_forces(int e, const Vec3& v, Mat3* k = nullptr) const;
-  const FibreBeam<1>* fibre_beam(int e) const { return fibres_[e] ? &*fibres_[e] : nullptr; }
+  const FibreBeam<1>* fibre_beam(int e) const { return fibres_.at(e); }
+  // The plastic elements (plastic work, records, checkpoints; empty slots for an elastic frame).
+  FibreBeams<1>& fibres() { return fibres_; }
+  const FibreBeams<1>& fibres() const { return fibres_; }
   void commit(const Eigen::VectorXd& d) override;
-  // The plastic elements' fibre histories (checkpoints; nothing for an elastic frame).
-  void save_fibres(StateWriter& w) const;
-  void load_fibres(StateReader& r);
   Vec2 axis(int e, const Eigen::VectorXd& d) const;  // e1 of the element's load and result axes at d
 
   void internal_force(const Eigen::VectorXd& d, Eigen::VectorXd& out) const override;
@@ -60,8 +60,7 @@ class FrameSystem final : public AssembledSystem {
 
   FrameModel model_;
   std::vector<BeamElement> elements_;
-  std::vector<std::optional<FibreBeam<1>>> fibres_;  // the plastic elements' basic systems
-  bool plastic_ = false;
+  FibreBeams<1> fibres_;  // the plastic elements' basic systems
   std::vector<Chord> chords_;
   std::unique_ptr<CoordTransform> transform_;
 };

@@ -44,11 +44,11 @@ void SpaceFrameSystem::assemble() {
       fail("element " + std::to_string(e) + ": the orientation vector is parallel to the element (it must give the section's depth direction)");
     chords_.push_back(c);
     elements_.emplace_back(el, c.L0, model_.theory);
-    fibres_.emplace_back();
+    fibres_.beams.emplace_back();
     if (el.steel.fy > 0) {
       const double torsion = elements_.back().stiffness()(5, 5);
-      fibres_.back().emplace(el.section, el.s0, el.s1, c.L0, SteelLaw{el.E, el.steel.fy, el.steel.hardening}, el.integration_points, torsion);
-      plastic_ = true;
+      fibres_.beams.back().emplace(el.section, el.s0, el.s1, c.L0, SteelLaw{el.E, el.steel.fy, el.steel.hardening}, el.integration_points, torsion);
+      fibres_.any = true;
     }
     const SpaceBeamElement& be = elements_.back();
     const Mat12 Ke = transform_->tangent(c, Vec12::Zero(), transform_->state(c, Vec12::Zero()), be.stiffness(), Vec6::Zero());
@@ -100,29 +100,19 @@ SpMat SpaceFrameSystem::tangent(const Eigen::VectorXd& d) const {
 }
 
 Vec6 SpaceFrameSystem::basic_forces(int e, const Vec6& v, Mat6* k) const {
-  if (!fibres_[e]) {
+  if (!fibres_.beams[e]) {
     if (k) *k = elements_[e].stiffness();
     return elements_[e].forces(v);
   }
   Vec6 q;
-  fibres_[e]->respond(v, q, k);
+  fibres_.beams[e]->respond(v, q, k);
   return q;
 }
 
 void SpaceFrameSystem::commit(const Eigen::VectorXd& d) {
-  if (!plastic_) return;
+  if (!fibres_.any) return;
   for (int e = 0; e < nelements(); ++e)
-    if (fibres_[e]) fibres_[e]->commit(element_state(e, d).v);
-}
-
-void SpaceFrameSystem::save_fibres(StateWriter& w) const {
-  for (const auto& f : fibres_)
-    if (f) f->save_state(w);
-}
-
-void SpaceFrameSystem::load_fibres(StateReader& r) {
-  for (auto& f : fibres_)
-    if (f) f->load_state(r);
+    if (fibres_.beams[e]) fibres_.beams[e]->commit(element_state(e, d).v);
 }
 
 SpaceElementLoad SpaceFrameSystem::element_load(int e, const Vec3& w_local, const Eigen::VectorXd& d) const {

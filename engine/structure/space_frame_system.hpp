@@ -22,8 +22,8 @@ class SpaceFrameSystem final : public AssembledSystem {
   const SpaceFrameModel& model() const { return model_; }
   int nelements() const { return static_cast<int>(elements_.size()); }
   // Linear: the linear transformation and elastic elements only (K0 is then the stiffness at every state).
-  bool linear() const override { return model_.transform == FrameTransform::linear && !plastic_; }
-  bool plastic() const { return plastic_; }
+  bool linear() const override { return model_.transform == FrameTransform::linear && !fibres_.any; }
+  bool plastic() const { return fibres_.any; }
   const SpaceBeamElement& element(int e) const { return elements_[e]; }
   const SpaceChord& chord(int e) const { return chords_[e]; }
   const SpaceTransform& transform() const { return *transform_; }
@@ -31,11 +31,11 @@ class SpaceFrameSystem final : public AssembledSystem {
   SpaceChordState element_state(int e, const Eigen::VectorXd& d) const { return transform_->state(chords_[e], element_dofs(e, d)); }
   // Basic forces of element e at deformations v: kb v, or a plastic element's from its fibres; k: dq/dv.
   Vec6 basic_forces(int e, const Vec6& v, Mat6* k = nullptr) const;
-  const FibreBeam<2>* fibre_beam(int e) const { return fibres_[e] ? &*fibres_[e] : nullptr; }
+  const FibreBeam<2>* fibre_beam(int e) const { return fibres_.at(e); }
+  // The plastic elements (plastic work, records, checkpoints; empty slots for an elastic frame).
+  FibreBeams<2>& fibres() { return fibres_; }
+  const FibreBeams<2>& fibres() const { return fibres_; }
   void commit(const Eigen::VectorXd& d) override;
-  // The plastic elements' fibre histories (checkpoints; nothing for an elastic frame).
-  void save_fibres(StateWriter& w) const;
-  void load_fibres(StateReader& r);
 
   void internal_force(const Eigen::VectorXd& d, Eigen::VectorXd& out) const override;
   SpMat tangent(const Eigen::VectorXd& d) const override;
@@ -53,8 +53,7 @@ class SpaceFrameSystem final : public AssembledSystem {
 
   SpaceFrameModel model_;
   std::vector<SpaceBeamElement> elements_;
-  std::vector<std::optional<FibreBeam<2>>> fibres_;  // the plastic elements' basic systems
-  bool plastic_ = false;
+  FibreBeams<2> fibres_;  // the plastic elements' basic systems
   std::vector<SpaceChord> chords_;
   std::unique_ptr<SpaceTransform> transform_;
 };
