@@ -12,6 +12,7 @@
 
 #include "design/damping_share.hpp"
 #include "design/estimates.hpp"
+#include "design/pressures.hpp"
 #include "design/volume_health.hpp"
 #include "engine/scenario/design_basis_json.hpp"
 #include "design/phases.hpp"
@@ -301,6 +302,8 @@ json design_run(const Results& r, const Limits& limits, const std::string& where
     if (k.s_m >= 0 && k.time_s >= 0 && k.situation == "accidental" && k.utilisation > u_member) u_member = k.utilisation, t_member = k.time_s;
   run["damping"] = basis ? damping_share(r, *basis, t_member, base_shear_time) : json(nullptr);
   run["volume_health"] = volume_health(r);
+  run["face_profile"] = face_profile(r, where);
+  run["sensors"] = sensor_peaks(r);
   return run;
 }
 

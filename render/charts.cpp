@@ -80,10 +80,10 @@ void font(vtkTextProperty* p, int size, bool bold = false) {
 }
 }  // namespace
 
-std::vector<Curve> small_magnitude_curves(const std::vector<Curve>& curves) {
-  auto peak = [](const Curve& c) {
+std::vector<Curve> small_magnitude_curves(const std::vector<Curve>& curves, bool by_x) {
+  auto peak = [by_x](const Curve& c) {
     double p = 0;
-    for (double v : c.y) p = std::max(p, std::abs(v));
+    for (double v : by_x ? c.x : c.y) p = std::max(p, std::abs(v));
     return p;
   };
   double top = 0;

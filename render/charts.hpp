@@ -30,8 +30,8 @@ struct ChartSpec {
 void render_chart(const ChartSpec& spec, const std::string& path);
 
 // The curves whose peak |y| is below a tenth of the largest curve's: on a common linear axis they lie flat, so a chart
-// draws them again on their own scale.
-std::vector<Curve> small_magnitude_curves(const std::vector<Curve>& curves);
+// draws them again on their own scale. by_x: the magnitude is along x (a profile: value across, position up).
+std::vector<Curve> small_magnitude_curves(const std::vector<Curve>& curves, bool by_x = false);
 
 // A horizontal (or, with vertical = true, vertical) limit line across [a, b] as a dashed curve.
 Curve limit_line(const std::string& label, double value, double a, double b, bool vertical = false);

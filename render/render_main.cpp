@@ -157,6 +157,32 @@ std::array<unsigned char, 3> colour(std::size_t i) {
   return c[i % 4];
 }
 
+// The contact pressure along each run's struck face (design.json runs[].face_profile) at the instant of its largest
+// moment about the face's foot: a step curve per run, pressure across, position along the face up.
+ChartSpec face_profile_chart(const std::vector<RunData>& runs) {
+  ChartSpec c;
+  c.title = "contact pressure on the struck face at the instant of its largest moment about the foot";
+  c.x_label = "pressure [kPa]", c.y_label = "position along the face from its foot [m]";
+  c.x_tight = false;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const json& f = runs[i].design.contains("face_profile") ? runs[i].design["face_profile"] : json();
+    if (!f.is_object()) continue;
+    Curve cv;
+    char b[200];
+    std::snprintf(b, sizeof b, "%st = %.2f ms, resultant %.3g kN at %.2f m", runs[i].variant.empty() ? "" : (nice_variant(runs[i].variant) + ", ").c_str(),
+                  f["time_s"].get<double>() * 1e3, f["resultant_N"].get<double>() * 1e-3, f["height_m"].get<double>());
+    cv.label = b;
+    cv.color = colour(i);
+    cv.dashed = runs[i].variant == "without_buffer";
+    for (std::size_t k = 0; k < f["pressure_Pa"].size(); ++k) {
+      const double p = f["pressure_Pa"][k].get<double>() * 1e-3, mid = f["positions_m"][k].get<double>(), half = 0.5 * f["lengths_m"][k].get<double>();
+      cv.x.insert(cv.x.end(), {p, p}), cv.y.insert(cv.y.end(), {mid - half, mid + half});
+    }
+    c.curves.push_back(cv);
+  }
+  return c;
+}
+
 // The y of the impact point: the force-weighted y of the contact loads at the peak (/documents/peak_contact), else the
 // middle of the frame's nodes, else of the grid's particles at the start.
 double impact_y(const RunData& r) {
@@ -402,6 +428,20 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
       draw(small, fs::path(file).stem().string() + "_small.png", small.title);
     }
   };
+  if (ChartSpec fp = face_profile_chart(runs); !fp.curves.empty()) {  // a bare impact's MPa beside a buffered kPa: panels of their own
+    ChartSpec small = fp;
+    small.curves = small_magnitude_curves(fp.curves, true);
+    for (auto* spec : {&fp, &small}) {
+      if (spec->curves.empty()) continue;
+      const std::string name = spec == &fp ? "chart_face_profile.png" : "chart_face_profile_small.png";
+      if (spec == &small) spec->title += ", the runs below a tenth of the largest peak";
+      spec->svg_path = (fs::path(image_dir) / fs::path(name).replace_extension(".svg")).string();
+      spec->draw = mine();
+      render_chart(*spec, (fs::path(image_dir) / name).string());
+      add(name, "chart", "", spec->title, spec->width, spec->height, nullptr);
+      manifest.back()["vector_file"] = fs::path(spec->svg_path).filename().string();
+    }
+  }
   const bool frames = std::all_of(runs.begin(), runs.end(), [](const RunData& r) { return r.frame && !r.frame->supports.empty(); });
   if (frames) {
     // The contact chart ends a pulse length after the last run's pulse (in ms).

@@ -460,6 +460,8 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
   d["has_stability"] = !d["stability_rows"].empty();
   d["plastic_rows"] = plastic_rows(runs);
   d["has_plastic"] = !d["plastic_rows"].empty();
+  d["pressure_rows"] = pressure_rows(runs);
+  d["has_pressure"] = !d["pressure_rows"].empty();
   d["model_rows"] = per_run_rows(runs, {
       {"cell size", [](const RunData& r) { return fmt("%.3g m", r.results.info.numbers.count("cell_size") ? r.results.info.numbers.at("cell_size") : NAN); }},
       {"particles", [](const RunData& r) { return fmt("%.0f", r.results.info.numbers.count("particles") ? r.results.info.numbers.at("particles") : NAN); }},

@@ -19,5 +19,8 @@ nlohmann::json per_run_rows(const std::vector<RunData>& runs,
                             const std::vector<std::pair<std::string, std::function<std::string(const RunData&)>>>& rows);
 // The steel members that yield (design.json runs[].plastic), a column per run; empty when no run has them.
 nlohmann::json plastic_rows(const std::vector<RunData>& runs);
+// The pressure on the struck face (its profile's resultant, position and moment) and the sensors' peaks, a column per run;
+// empty when no run recorded them.
+nlohmann::json pressure_rows(const std::vector<RunData>& runs);
 
 }  // namespace dmi::render

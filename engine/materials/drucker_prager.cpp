@@ -56,6 +56,13 @@ template <int D> class DruckerPrager final : public Material<D> {
   void load_state(StateReader& r) override { r.get(power_), r.get(dissipated_); }
   void attach(const Particles<D>& p, Index, Index) override { power_.resize(p.size(), 0.0); }
 
+  // The stress is integrated from rates: a state inside the yield surface may be the initial one.
+  bool prestress(Particles<D>& p, Index i, const Mat<3>& sigma) override {
+    p.stress[i] = sigma.template topLeftCorner<D, D>();
+    if constexpr (D == 2) p.stress_zz[i] = sigma(2, 2);
+    return true;
+  }
+
   // Full 3D stress of a particle, and back.
   static Mat3 full(const Particles<D>& p, Index i) {
     Mat3 s = Mat3::Zero();

@@ -37,6 +37,12 @@ template <int D> class LinearElastic final : public Material<D> {
     permute_array(elastic_, perm), permute_array(elastic_zz_, perm), permute_array(power_, perm), permute_array(viscous_, perm);
   }
   double dissipated() const override { return dissipated_; }
+  // The stress is integrated from rates (hypoelastic): any stress may be the initial state.
+  bool prestress(Particles<D>& p, Index i, const Mat<3>& sigma) override {
+    p.stress[i] = sigma.template topLeftCorner<D, D>();
+    if constexpr (D == 2) p.stress_zz[i] = sigma(2, 2);
+    return true;
+  }
   // The stress is integrated from rates (hypoelastic), so zero is a stress-free state at any F.
   bool relax(Particles<D>& p, Index begin, Index end) override {
     for (Index i = begin; i < end; ++i) {

@@ -52,6 +52,9 @@ template <int D> class Material {
   // Makes particles [begin, end) stress-free in their present configuration (a body turning rigid, Solver::
   // switch_free_bodies); false where the law cannot (its stress follows from F or from a history it cannot drop).
   virtual bool relax(Particles<D>& /*p*/, Index /*begin*/, Index /*end*/) { return false; }
+  // Starts particle i from the full (3x3) Cauchy stress sigma (a geostatic state), before attach(): false where the
+  // law cannot (its stress follows from F). A fluid takes the pressure -tr(sigma)/3 and the volume ratio J it implies.
+  virtual bool prestress(Particles<D>& /*p*/, Index /*i*/, const Mat<3>& /*sigma*/) { return false; }
   // The solver reordered the particles: new[i] = old[perm[i]]; laws with per-particle arrays follow.
   virtual void permute(const std::vector<Index>& /*perm*/) {}
   // Internal variables (per-particle arrays, dissipated energy) for checkpoints; laws without any write nothing.

@@ -90,6 +90,16 @@ template <int D> class ViscousFluid final : public Material<D> {
     dissipated_ += dt * deterministic_sum(end - begin, [&](Index k) { return power_[begin + k]; });
   }
 
+  // The pressure of sigma and the volume ratio J = K / (K + p) that gives it (the inverse of pressure(J)).
+  bool prestress(Particles<D>& p, Index i, const Mat<3>& sigma) override {
+    const double pr = std::max(0.0, -sigma.trace() / 3), J = K_ / (K_ + pr);
+    p.F[i] = std::pow(J, 1.0 / D) * Mat<D>::Identity();
+    p.vol[i] = p.vol0[i] * J;
+    p.stress[i] = -pr * Mat<D>::Identity();
+    if constexpr (D == 2) p.stress_zz[i] = -pr;
+    return true;
+  }
+
   double strain_energy(const Particles<D>& p, Index begin, Index end) const override {
     double e = 0;
     for (Index i = begin; i < end; ++i) e += p.vol0[i] * energy_density(p.F[i].determinant());

@@ -138,7 +138,10 @@ template <int D>
 double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double time, bool record, bool reset, const std::vector<Index>* nodes) {
   Grid<D>& g = *s.grid;
   if (record && reset) {
-    for (auto& w : s.walls) w.force = w.carried, w.carried.setZero();
+    for (auto& w : s.walls) {
+      w.force = w.carried, w.carried.setZero();
+      for (auto& ps : w.sensors) ps.force = 0;
+    }
     for (auto& r : s.regions) r.force.setZero();
     for (auto& in : s.inflows) in.force.setZero();
   }
@@ -174,6 +177,8 @@ double apply_boundaries(Scene<D>& s, std::vector<Vec<D>>& vel, double dt, double
         if (record) {
           const Vec<D> dp = m * (vel[k] - before);
           w.force -= dp / dt;
+          for (auto& ps : w.sensors)
+            if (n.dot(ps.normal) > 0.5) patch_add(ps, x, Vec<D>(-dp / dt), g.h());
           // A fixed wall does no work; a mirrored node's velocity is an image, not wall motion.
           if (!mirrored) work += dp.dot(vel[k]);
         }

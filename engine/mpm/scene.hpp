@@ -11,6 +11,7 @@
 #include "engine/materials/material.hpp"
 #include "engine/mpm/grid.hpp"
 #include "engine/mpm/inflow.hpp"
+#include "engine/mpm/sensor.hpp"
 #include "engine/common/particles.hpp"
 #include "engine/mpm/touch.hpp"
 #include "core/options.hpp"
@@ -58,6 +59,7 @@ template <int D> struct Wall {
   bool surface_detection = true;
   TouchSet touch;
   Vec<D> force = Vec<D>::Zero();  // of the last step
+  std::vector<PressurePatch<D>> sensors;  // pressure sensors on its surface: their forces of the last step
 };
 
 // Grid nodes inside [lo, hi] move with the prescribed velocity during [start, end).

@@ -72,6 +72,8 @@ struct BodyConfig {
   DVec velocity;                                     // m/s
   // Optional sine mode added to velocity: v += amplitude sin(wavevector . (x - origin)).
   DVec sine_amplitude, sine_wavevector, sine_origin;  // m/s, rad/m, m
+  bool geostatic = false;                            // start from the stress of its own weight (engine/sim/geostatic.hpp)
+  double earth_pressure_coefficient = -1;            // K0 = sigma_h / sigma_v; < 0: the material's default
 };
 
 
@@ -182,11 +184,30 @@ struct MemberContactConfig {
   std::vector<std::string> bonded;                   // bodies stuck to the members whatever the mode
 };
 
+// A pressure sensor: the normal traction on a wall or a member face averaged over a square (a segment in 2D) of
+// side size centred at point, as a transducer of that face reads it.
+struct SensorConfig {
+  std::string name, wall, member;                    // exactly one of wall and member
+  DVec point;                                        // m, on the face
+  double size = 0;                                   // m
+};
+
+// The pressure profile along a struck face made of members: the normal contact force on each element, per unit
+// face area, with its resultant and the resultant's position along the face.
+struct FaceProfileConfig {
+  bool present = false;
+  std::vector<std::string> members;                  // in order along the face, each starting where the last ended
+  DVec direction;                                    // into the face (the load's direction); normalised when read
+  double width = 0;                                  // m, loaded width of the face (3D); 2D: the analysis thickness
+};
+
 struct OutputConfig {
   double snapshot_interval = 0.0;                    // s; 0 = first and last state only
   double history_interval = 0.0;                     // s; 0 = every step
   bool vtk = true;
   std::vector<ProbeConfig> probes;
+  std::vector<SensorConfig> sensors;
+  FaceProfileConfig face_profile;
 };
 
 // --- Solid-FE check of a concrete dam body (Lin, Cheng & Tuan, Table 1) ------------------------------

@@ -248,6 +248,17 @@ void read_body(Obj& o, BodyConfig& b) {
     read_shape(o.object("shape", "region the body fills; particles are seeded on a regular sub-grid of every cell inside it"), b.shape);
   }
   o.integer("particles_per_cell", b.particles_per_cell, Spec{.doc = "particles per cell along each axis", .min = 1, .max = 8});
+  std::string init = "stress_free";
+  o.string("initial_stress", init, Spec{.doc = "stress_free | geostatic: the stress of the body's own weight above each particle, "
+                                               "sigma_v = -rho g d (d: depth below the body's top in the particle's column), "
+                                               "sigma_h = K0 sigma_v, so that a body at rest under gravity starts at rest instead of "
+                                               "ringing (a fluid: hydrostatic pressure, its volume compressed to match)"});
+  if (!o.documenting() && init != "stress_free" && init != "geostatic") o.fail("initial_stress", o.given("initial_stress"), "stress_free or geostatic");
+  b.geostatic = init == "geostatic";
+  o.number("earth_pressure_coefficient", b.earth_pressure_coefficient,
+           Spec{.doc = "K0 = sigma_h / sigma_v of the geostatic state; default: 1 for fluids, 1 - sin(friction_angle) for "
+                       "drucker_prager (Jaky 1944), nu / (1 - nu) for linear_elastic (no lateral strain); fluids take 1 only",
+                .min = 0, .max = 3});
   o.boolean("rigid", b.rigid, Spec{.doc = "move as a rigid body: translation and rotation from the particles' momentum and angular momentum "
                                           "after each grid update, no stress, no step limit from the material's stiffness (its density "
                                           "gives the mass); contacts act on it as on any body. For a boulder whose deformation does not "
@@ -363,11 +374,40 @@ void read_probe(Obj& o, ProbeConfig& p) {
   if (p.quantities.empty()) p.quantities = allowed;
 }
 
+void read_sensor(Obj& o, SensorConfig& c) {
+  o.string("name", c.name, Spec{.doc = "sensor name; its history is stored as sensors/<name>/pressure", .required = true});
+  o.string("wall", c.wall, Spec{.doc = "the wall (plane or box) the sensor sits on; give wall or member"});
+  o.string("member", c.member, Spec{.doc = "the structure member whose face the sensor sits on; give wall or member"});
+  if (!o.documenting() && c.wall.empty() == c.member.empty()) o.fail("wall", o.given("wall"), "exactly one of wall and member");
+  o.vector("point", c.point, any("m", "centre of the sensor, on the wall's surface or the member's face", true));
+  o.number("size", c.size, Spec{.unit = "m", .doc = "side of the square the normal traction is averaged over (its length along the "
+                                                    "face in 2D), as a transducer's face; at least the cell size is advised",
+                                .min = 0, .min_open = true, .required = true});
+}
+
+void read_face_profile(Obj o, FaceProfileConfig& f) {
+  if (!o.present()) return;
+  f.present = true;
+  o.strings("members", f.members, {}, Spec{.doc = "the members that make the face, in order, each starting where the last ended", .required = true});
+  o.vector("direction", f.direction, any("-", "direction into the face: the normal contact force along it is the pressure", true));
+  o.number("width", f.width, Spec{.unit = "m", .doc = "loaded width of the face (3D; required there); a 2D face has the analysis thickness",
+                                  .min = 0, .min_open = true});
+  o.finish();
+  if (o.documenting()) return;
+  if (f.members.empty()) o.fail("members", o.given("members"), "at least one member");
+  double n = 0;
+  for (double v : f.direction) n += v * v;
+  if (!(n > 0)) o.fail("direction", o.given("direction"), "a nonzero vector");
+  for (double& v : f.direction) v /= std::sqrt(n);
+}
+
 void read_output(Obj o, OutputConfig& out) {
   o.number("snapshot_interval", out.snapshot_interval, Spec{.unit = "s", .doc = "time between particle field snapshots; 0 = initial and final state only", .min = 0});
   o.number("history_interval", out.history_interval, Spec{.unit = "s", .doc = "time between history samples (energies, probes, wall forces); 0 = every step", .min = 0});
   o.boolean("vtk", out.vtk, Spec{.doc = "also write ParaView files fields/particles_NNNN.vtu and fields/particles.pvd"});
   o.array<ProbeConfig>("probes", out.probes, Spec{.doc = "named points and quantities recorded as histories"}, read_probe);
+  o.array<SensorConfig>("sensors", out.sensors, Spec{.doc = "pressure sensors on walls and member faces, recorded as sensors/<name>/pressure"}, read_sensor);
+  read_face_profile(o.object("face_profile", "the pressure profile along a struck face made of members (face/ in results.h5)"), out.face_profile);
   o.finish();
 }
 

@@ -129,6 +129,7 @@ class Builder {
   double h_ = 0, slope_ = 0, end_time_ = 0, boulder_r_ = 0, boulder_m_ = 0, impact_y_ = 0, boulder_speed_ = 0;
   std::string width_rule_ = "given";  // how the 2D width was set
   json out_ = json::object(), materials_ = json::array(), bodies_ = json::array(), probes_ = json::array(), bonded_ = json::array();
+  json face_;  // the struck face whose pressure profile is recorded (output.face_profile), or null
   Box box_;
   bool members_ = true;
   int dim_ = 2;
@@ -231,6 +232,7 @@ json Builder::build() {
   if (p_.debris) out_["mpm"] = json{{"stress_update", "musl"}};
   if (members_) out_["member_contact"] = json{{"mode", "separable"}, {"bonded", bonded_}};
   out_["output"]["probes"] = probes_;
+  if (!face_.is_null()) out_["output"]["face_profile"] = face_;
   out_["design_basis"] = design_basis_to_json(design_basis());
   return out_;
 }
@@ -351,6 +353,8 @@ void Builder::add_concrete_members() {
   if (!pl.empty()) st["pressure_loads"] = pl;
   damp(st, d_.concrete, 0.5 * (d_.base_thickness + d_.crest) * c / std::sqrt(12.0));
   out_["structure"] = st;
+  face_ = json{{"members", {"dam"}}, {"direction", at(1.0, 0.0)}};
+  if (dim_ == 3) face_["width"] = d_.width;
   box_.add(xu(0), 0), box_.add(xd(0), H), box_.add(xu(H), H);
   if (dim_ == 3) return;  // member probes are plane-frame only (the space frame's histories carry every section force)
   probes_.push_back(json{{"name", "base"}, {"type", "member"}, {"member", "dam"}, {"position", 0.0}, {"quantities", {"section_forces", "fibre_stress"}}});
@@ -386,6 +390,8 @@ void Builder::add_steel_frame() {
   json st{{"integrator", "newmark"}, {"theory", d_.beam_theory}, {"self_weight", true}, {"nodes", nodes}, {"members", members}, {"supports", supports}};
   damp(st, d_.steel, std::sqrt(D * D + std::pow(D - 2 * d_.column_t, 2)) / 4);  // pipe: r^2 = (D^2 + d^2) / 16
   out_["structure"] = st;
+  face_ = json{{"members", json::array()}, {"direction", at(1.0, 0.0)}};  // the upstream column line
+  for (int k = 1; k <= d_.levels; ++k) face_["members"].push_back("column_0_" + std::to_string(k));
   box_.add(0, 0), box_.add(xd(0), H + 0.5 * D);
   probes_.push_back(json{{"name", "base"}, {"type", "member"}, {"member", "column_0_1"}, {"position", 0.0},
                          {"quantities", {"section_forces", "fibre_stress"}}});

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -240,6 +241,58 @@ double check_inflow(const Scenario& s, const std::string& file, std::size_t i) {
   return in.hydrograph.particle_estimate(h / b.particles_per_cell);
 }
 
+// Pressure sensors: on an existing wall (within half a cell of its surface) or member; the face profile's members exist
+// and follow each other along the face.
+void check_sensors(const Scenario& s, const std::string& file, const std::set<std::string>& members) {
+  const double h = s.grid.cell_size;
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < s.output.sensors.size(); ++i) {
+    const SensorConfig& c = s.output.sensors[i];
+    const std::string p = "/output/sensors/" + std::to_string(i);
+    if (!names.insert(c.name).second) throw InputError(file, p + "/name", quoted(c.name), "a name not used before in this list");
+    if (!c.member.empty()) {
+      if (!members.count(c.member))
+        throw InputError(file, p + "/member", quoted(c.member),
+                         s.structure.present ? "the name of one of the structure's members" : "a structure member (there is no structure)");
+      continue;
+    }
+    const auto w = std::find_if(s.walls.begin(), s.walls.end(), [&](const WallConfig& x) { return x.name == c.wall; });
+    if (w == s.walls.end()) throw InputError(file, p + "/wall", quoted(c.wall), "the name of one of the walls");
+    double gap = 0;  // distance from the wall's surface
+    if (w->type == "plane") {
+      double nn = 0;
+      for (std::size_t d = 0; d < c.point.size(); ++d) gap += (c.point[d] - w->point[d]) * w->normal[d], nn += w->normal[d] * w->normal[d];
+      gap = std::abs(gap) / std::sqrt(nn);
+    } else {
+      double out = 0, in = std::numeric_limits<double>::infinity();  // outside: distance to the box; inside: to its nearest face
+      for (std::size_t d = 0; d < c.point.size(); ++d) {
+        const double e = std::max({w->min[d] - c.point[d], c.point[d] - w->max[d], 0.0});
+        out += e * e;
+        in = std::min({in, c.point[d] - w->min[d], w->max[d] - c.point[d]});
+      }
+      gap = out > 0 ? std::sqrt(out) : in;
+    }
+    if (gap > 0.5 * h)
+      throw InputError(file, p + "/point", value_text(c.point),
+                       "a point on the surface of wall " + quoted(c.wall) + " (it is " + value_text(gap) + " m from it; at most half a cell)");
+  }
+  const FaceProfileConfig& f = s.output.face_profile;
+  if (!f.present) return;
+  for (std::size_t i = 0; i < f.members.size(); ++i) {
+    const std::string p = "/output/face_profile/members/" + std::to_string(i);
+    const auto& all = s.structure.members;
+    const auto m = std::find_if(all.begin(), all.end(), [&](const MemberConfig& x) { return x.name == f.members[i]; });
+    if (m == all.end()) throw InputError(file, p, quoted(f.members[i]), "the name of one of the structure's members");
+    if (i == 0) continue;
+    const auto prev = std::find_if(all.begin(), all.end(), [&](const MemberConfig& x) { return x.name == f.members[i - 1]; });
+    if (m->start != prev->end)
+      throw InputError(file, p, quoted(f.members[i]), "a member starting at the node where " + quoted(f.members[i - 1]) + " ends (" +
+                                                          quoted(prev->end) + ")");
+  }
+  if (s.analysis.dimension == 3 && !(f.width > 0))
+    throw InputError(file, "/output/face_profile/width", "(absent)", "the loaded width of the face in a 3D analysis");
+}
+
 // Cross-references and geometry: what a single key cannot check.
 }  // namespace
 
@@ -381,6 +434,7 @@ void check_semantics(const Scenario& s, const std::string& file) {
     throw InputError(file, "/member_contact/bodies", json(s.member_contact.bodies).dump(),
                      "all bodies (or none listed) with contact.method single_field: the bodies share one velocity field, so "
                      "members act on all of them; use multi_field to exempt some");
+  check_sensors(s, file, members);
   std::set<std::string> probes;
   for (std::size_t i = 0; i < s.output.probes.size(); ++i) {
     const auto& pr = s.output.probes[i];

@@ -1,11 +1,13 @@
 #include "engine/sim/build_scene.hpp"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "engine/common/error.hpp"
 #include "engine/scenario/shape_geometry.hpp"
 #include "engine/sim/build_frame.hpp"
+#include "engine/sim/geostatic.hpp"
 
 namespace dmi {
 namespace {
@@ -162,6 +164,39 @@ static void rigid_hull(const ShapeConfig& shape, int dim, Body& body) {
   }
 }
 
+// The pressure sensors on a wall (engine/mpm/sensor.hpp): a plane's normal, or the outward normal of the box face
+// nearest the sensor's point.
+template <int D> void add_wall_sensors(const Scenario& s, Wall<D>& wall) {
+  for (const SensorConfig& c : s.output.sensors) {
+    if (c.wall != wall.name) continue;
+    const Vec<D> x = vec<D>(c.point);
+    Vec<D> n = wall.normal;
+    if (wall.box) {
+      double best = std::numeric_limits<double>::infinity();
+      for (int d = 0; d < D; ++d)
+        for (int side = 0; side < 2; ++side)
+          if (const double e = std::abs(side ? x[d] - wall.hi[d] : x[d] - wall.lo[d]); e < best)
+            best = e, n = side ? Vec<D>(Vec<D>::Unit(d)) : Vec<D>(-Vec<D>::Unit(d));
+    }
+    wall.sensors.push_back(make_patch<D>(c.name, x, n, c.size, s.analysis.thickness));
+    for (const WallConfig& o : s.walls)
+      if (o.type == "plane" && o.name != wall.name) wall.sensors.back().clips.push_back({vec<D>(o.point), vec<D>(o.normal).normalized()});
+  }
+}
+
+// A body that starts from its own weight's stress (engine/sim/geostatic.hpp): deformable, and a fluid with K0 = 1.
+template <int D> void start_geostatic(const Scenario& s, Scene<D>& sc, const Body& body, std::size_t b) {
+  const BodyConfig& bc = s.bodies[b];
+  const MaterialConfig& m = s.materials[static_cast<std::size_t>(body.material)];
+  const std::string path = "/bodies/" + std::to_string(b);
+  if (bc.rigid) throw InputError(s.message_source(), path + "/initial_stress", "\"geostatic\"", "stress_free on a rigid body (it carries no stress)");
+  const bool fluid = m.model == "newtonian" || m.model == "bingham";
+  if (fluid && bc.earth_pressure_coefficient >= 0 && bc.earth_pressure_coefficient != 1)
+    throw InputError(s.message_source(), path + "/earth_pressure_coefficient", (std::ostringstream() << bc.earth_pressure_coefficient).str(),
+                     "1 or nothing for a fluid (its pressure is isotropic)");
+  geostatic_state<D>(sc, body, earth_pressure_at_rest(m, bc.earth_pressure_coefficient), s.message_source(), path);
+}
+
 template <int D> Scene<D> build_scene(const Scenario& s) {
   Scene<D> sc;
   const double h = s.grid.cell_size;
@@ -213,6 +248,7 @@ template <int D> Scene<D> build_scene(const Scenario& s) {
     if (body.end == body.begin)
       throw InputError(s.message_source(), "/bodies/" + std::to_string(b) + "/shape", "",
                        "a shape that contains at least one particle position (it is smaller than the particle spacing)");
+    if (bc.geostatic) start_geostatic(s, sc, body, b);
     sc.bodies.push_back(body);
   }
   for (const auto& w : s.walls) {
@@ -236,6 +272,7 @@ template <int D> Scene<D> build_scene(const Scenario& s) {
     wall.condition = w.condition;
     wall.friction = w.friction;
     wall.surface_detection = w.detection == DetectionKind::surface;
+    add_wall_sensors(s, wall);
     sc.walls.push_back(wall);
   }
   for (const auto& r : s.prescribed_velocity) {

@@ -17,7 +17,7 @@ template <int D> Series& Recorder<D>::add(const std::string& path, const std::st
   return series_.back();
 }
 
-template <int D> Recorder<D>::Recorder(const Solver<D>& solver, const Scenario& s) {
+template <int D> Recorder<D>::Recorder(const Solver<D>& solver, const Scenario& s) : pressures_(solver, s) {
   const Scene<D>& sc = solver.scene();
   for (const char* e : {"kinetic", "strain", "gravity_work", "boundary_work", "balance_error", "dissipated"})
     add(std::string("energy/") + e, "J", {"value"});
@@ -76,6 +76,7 @@ template <int D> Recorder<D>::Recorder(const Solver<D>& solver, const Scenario& 
     }
     probes_.push_back(p);
   }
+  pressures_.add_series(series_);
   impulse_.assign(sc.walls.size() + sc.regions.size() + sc.inflows.size(), Vec<D>::Zero());
   const auto d0 = solver.diagnostics();
   e0_ = d0.kinetic + d0.strain + d0.frame_kinetic + d0.frame_strain;
@@ -87,6 +88,7 @@ template <int D> void Recorder<D>::accumulate(const Solver<D>& solver, double dt
   for (const auto& w : sc.walls) impulse_[b++] += w.force * dt;
   for (const auto& r : sc.regions) impulse_[b++] += r.force * dt;
   for (const auto& in : sc.inflows) impulse_[b++] += in.force * dt;
+  pressures_.accumulate(solver, dt);
   if (const auto* mc = solver.member_contact()) {
     member_impulse_ += mc->force() * dt;
     if (mc->force().norm() > peak_contact_) {
@@ -137,6 +139,7 @@ template <int D> void Recorder<D>::sample(const Solver<D>& solver, double dt) {
   }
   for (auto& i : impulse_) i.setZero();
   if (sc.frame) sample_frame(*sc.frame, *solver.member_contact(), d, k);
+  const double elapsed = elapsed_;
   elapsed_ = 0;
   const auto& P = sc.particles;
   for (const auto& p : probes_) {
@@ -175,6 +178,7 @@ template <int D> void Recorder<D>::sample(const Solver<D>& solver, double dt) {
       }
     }
   }
+  pressures_.sample(series_, k, elapsed);
   // Results never hold NaN or inf: a recorded quantity that overflowed (an energy of a 1e200 m/s body) stops the run
   // here, before it is written, as a non-finite particle state stops it in the step.
   for (const Series& s : series_) {
@@ -342,6 +346,7 @@ template <int D> void Recorder<D>::save_state(StateWriter& w) const {
   for (const Series& s : series_) w.put(s.path), w.put(s.data);
   w.put(impulse_), w.put(member_impulse_), w.put(elapsed_), w.put(peak_contact_), w.put(peak_contact_time_), w.put(e0_);
   save_loads(w, peak_loads_);
+  pressures_.save_state(w);
 }
 
 template <int D> void Recorder<D>::load_state(StateReader& r) {
@@ -360,6 +365,7 @@ template <int D> void Recorder<D>::load_state(StateReader& r) {
   r.expect_size("wall, region and inflow impulses", impulse_.size(), ni);
   r.get(member_impulse_), r.get(elapsed_), r.get(peak_contact_), r.get(peak_contact_time_), r.get(e0_);
   load_loads(r, peak_loads_);
+  pressures_.load_state(r);
 }
 
 template class Recorder<2>;

@@ -8,6 +8,7 @@
 #include "engine/io/vtu.hpp"
 #include "engine/mpm/solver.hpp"
 #include "engine/scenario/config.hpp"
+#include "engine/sim/pressure_recorder.hpp"
 
 namespace dmi {
 
@@ -30,6 +31,8 @@ template <int D> class Recorder {
   // JSON document "peak_contact": the members' contact loads at the step with the largest total contact
   // force (time, total, and each load's member, position along it, surface point and force); "" if none.
   std::string peak_contact_document(const FrameOf<D>& f) const;
+  // JSON document "face_profile" (engine/sim/pressure_recorder.hpp); "" if the scenario has none.
+  std::string face_profile_document() const { return pressures_.face_document(); }
   // Histories so far and the interval accumulators, for checkpoints (the series layout comes from the scenario).
   void save_state(StateWriter& w) const;
   void load_state(StateReader& r);
@@ -58,6 +61,7 @@ template <int D> class Recorder {
   double peak_contact_ = 0, peak_contact_time_ = 0;  // largest |total contact force| (N) and when
   std::vector<ContactLoadOf<D>> peak_loads_;
   double e0_ = 0;
+  PressureRecorder<D> pressures_;
 };
 
 }  // namespace dmi

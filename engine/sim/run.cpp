@@ -382,6 +382,7 @@ template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
     info.documents["structure"] = structure_document(s, *solver.scene().frame);
     const std::string doc = rec.peak_contact_document(*solver.scene().frame);
     if (!doc.empty()) info.documents["peak_contact"] = doc;
+    if (const std::string face = rec.face_profile_document(); !face.empty()) info.documents["face_profile"] = face;
   }
   if (std::any_of(solver.scene().bodies.begin(), solver.scene().bodies.end(), [](const Body& b) { return b.rigid_when_free; })) {
     info.numbers["free_rigid_switches"] = static_cast<double>(solver.free_switches());
