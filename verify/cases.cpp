@@ -317,6 +317,7 @@ const std::vector<ValidationCase>& validation_cases() {
     for (auto& m : debris_validation_cases()) c.push_back(std::move(m));
     for (auto& m : dam_validation_cases()) c.push_back(std::move(m));
     for (auto& m : plastic_validation_cases()) c.push_back(std::move(m));
+    for (auto& m : experiment_validation_cases()) c.push_back(std::move(m));
     return c;
   }();
   return cases;

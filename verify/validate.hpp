@@ -52,6 +52,7 @@ std::vector<ValidationCase> member_validation_cases();  // cases_members.cpp (Li
 std::vector<ValidationCase> debris_validation_cases();  // cases_debris.cpp (granular collapse)
 std::vector<ValidationCase> dam_validation_cases();     // cases_dam.cpp (the dam members against a solid model)
 std::vector<ValidationCase> plastic_validation_cases(); // cases_plastic.cpp (elasto-plastic members against closed forms)
+std::vector<ValidationCase> experiment_validation_cases();  // cases_experiments.cpp (measured pressures, bodies at rest)
 
 // Bar vibration at one resolution (used by the case, tests and benchmarks).
 struct BarResult {

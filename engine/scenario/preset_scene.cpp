@@ -113,6 +113,7 @@ class Builder {
   // the buffer (a fixed-point pass, since the bed height at the front depends on where the front is).
   double front_foot(double height, double gap) const;
   void add_grid_walls_and_time();
+  void add_face_sensors();
   DesignBasis design_basis() const;
   // The diameter of the sphere of the boulder's mass (m).
   double boulder_diameter() const { return std::cbrt(6 * boulder_m_ / (p_.boulder->density * kPi)); }
@@ -130,6 +131,7 @@ class Builder {
   std::string width_rule_ = "given";  // how the 2D width was set
   json out_ = json::object(), materials_ = json::array(), bodies_ = json::array(), probes_ = json::array(), bonded_ = json::array();
   json face_;  // the struck face whose pressure profile is recorded (output.face_profile), or null
+  json sensors_ = json::array();  // pressure sensors on the struck face (output.sensors)
   Box box_;
   bool members_ = true;
   int dim_ = 2;
@@ -223,6 +225,7 @@ json Builder::build() {
   if (p_.buffer) add_buffer();
   if (p_.boulder) add_boulder();
   if (p_.debris) add_debris();
+  add_face_sensors();
   add_grid_walls_and_time();
   out_["materials"] = materials_;
   out_["bodies"] = bodies_;
@@ -233,8 +236,23 @@ json Builder::build() {
   if (members_) out_["member_contact"] = json{{"mode", "separable"}, {"bonded", bonded_}};
   out_["output"]["probes"] = probes_;
   if (!face_.is_null()) out_["output"]["face_profile"] = face_;
+  if (!sensors_.empty()) out_["output"]["sensors"] = sensors_;
   out_["design_basis"] = design_basis_to_json(design_basis());
   return out_;
+}
+
+// Pressure sensors on the concrete dam member's upstream face, two cells across (docs/results.md, "Pressures"): at the
+// boulder's impact height, or at a quarter and three quarters of a surge's depth.
+void Builder::add_face_sensors() {
+  if (!members_ || d_.type != "concrete_gravity") return;
+  auto sensor = [&](const std::string& name, double y) {
+    sensors_.push_back({{"name", name}, {"member", "dam"}, {"point", at(xu(y), y)}, {"size", clean(2 * h_)}});
+  };
+  if (p_.boulder) sensor("face_at_impact", std::clamp(impact_y_, h_, d_.height - h_));
+  if (p_.debris) {
+    sensor("face_quarter_depth", 0.25 * p_.debris->depth);
+    sensor("face_three_quarter_depth", std::min(0.75 * p_.debris->depth, d_.height - h_));
+  }
 }
 
 // What the design checks and closed-form estimates of design/ need (docs/design-json.md, "design basis"): the real
