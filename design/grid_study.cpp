@@ -81,6 +81,11 @@ json grid_study_section(const std::array<json, 3>& designs, const std::array<dou
         (std::string("/base_total/") + shear_key(dim) + "/abs_max/value").c_str());
     add("base_moment", dim == 3 ? "peak overturning moment |(sum Mx, sum My)|" : "peak base moment |sum M|", "N m",
         (std::string("/base_total/") + moment_key(dim) + "/abs_max/value").c_str());
+    add("face_resultant", "face pressure resultant at its largest moment about the foot", "N", "/face_profile/resultant_N");
+    add("face_height", "position of that resultant along the face", "m", "/face_profile/height_m");
+    add("debris_peak", "debris load: peak over the surge's passage", "N", "/debris_phases/peak_N");
+    add("debris_dynamic", "debris load: dynamic (the surge's body)", "N", "/debris_phases/dynamic_N");
+    add("debris_static", "debris load: static tail (the deposit)", "N", "/debris_phases/static_N");
     if (run.contains("verdict") && run["verdict"]["governing"].is_object()) {
       const json& gov = run["verdict"]["governing"];
       const std::string id = gov["id"], member = gov["member"];

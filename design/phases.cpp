@@ -1,5 +1,6 @@
 #include "design/phases.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -39,6 +40,37 @@ std::optional<DebrisPhases> debris_phases(const std::vector<double>& t, const st
   return p;
 }
 
+// The deposit at rest against the face over the last 10 % of the run: its height, the highest element of the face
+// profile carrying more than 5 % of the largest mean pressure there, and the hydrostatic load of a fluid of the
+// debris' density that high, rho g h_d^2 w / 2 (K = 1: the upper bound of a granular deposit's earth pressure).
+// Null without a face profile.
+json deposit_load(const Results& r, double rho, double w) {
+  const Series* p = r.find("face/pressure");
+  const auto doc = r.info.documents.find("face_profile");
+  if (!p || doc == r.info.documents.end() || r.time.size() < 2) return nullptr;
+  const json d = json::parse(doc->second, nullptr, false);
+  const std::size_t nb = p->components.size();
+  if (d.is_discarded() || !d.contains("bins") || d["bins"].size() != nb) return nullptr;
+  std::vector<double> mean(nb, 0.0);
+  const double tail = r.time.back() - 0.1 * (r.time.back() - r.time.front());
+  double span = 0;
+  for (std::size_t k = 1; k < r.time.size(); ++k) {
+    if (r.time[k] <= tail) continue;
+    const double dt = r.time[k] - r.time[k - 1];
+    for (std::size_t b = 0; b < nb; ++b) mean[b] += p->data[k * nb + b] * dt;
+    span += dt;
+  }
+  const double top = *std::max_element(mean.begin(), mean.end());
+  if (!(span > 0) || !(top > 0)) return nullptr;
+  double height = 0, measured = 0;
+  for (std::size_t b = 0; b < nb; ++b) {
+    const double from = d["bins"][b]["from"].get<double>(), to = d["bins"][b]["to"].get<double>();
+    if (mean[b] > 0.05 * top) height = std::max(height, to);
+    measured += mean[b] / span * (to - from) * d.value("width", w);
+  }
+  return json{{"height_m", height}, {"hydrostatic_N", 0.5 * rho * 9.81 * height * height * w}, {"face_resultant_N", measured}};
+}
+
 json debris_phases(const Results& r, const DesignBasis& basis) {
   if (!basis.debris || !is_set(basis.debris->length_m)) return nullptr;
   const Series* s = r.find("frame/contact_force");
@@ -48,7 +80,16 @@ json debris_phases(const Results& r, const DesignBasis& basis) {
   std::vector<double> F(r.time.size());
   for (std::size_t k = 0; k < F.size(); ++k) F[k] = std::hypot(s->data[2 * k], s->data[2 * k + 1]);
   const auto p = debris_phases(r.time, F, rho * v * v * h * w, L / v);
-  return p ? p->to_json() : json(nullptr);
+  if (!p) return nullptr;
+  json out = p->to_json();
+  const double g = 9.81, Fr = v / std::sqrt(g * h), alpha_cui = 5.3 * std::pow(Fr, -1.5);
+  out["froude"] = Fr;
+  out["cui"] = {{"alpha", alpha_cui}, {"force_N", alpha_cui * p->flux_N}, {"in_range", Fr >= 2.3 && Fr <= 6.2},
+                {"source", "Cui, Zeng & Lei (2015): alpha = 5.3 Fr^-1.5 for a viscous debris flow in a flume (depth 7.2-11.2 cm, "
+                           "speed 2.4-5.2 m/s, Fr about 2.3-6.2); read second-hand, not checked against the paper"}};
+  out["geo"] = {{"alpha", 2.5}, {"force_N", 2.5 * p->flux_N}, {"source", "Kwan (2012), GEO Report 270: alpha = 2.5 for a rigid barrier"}};
+  out["deposit"] = deposit_load(r, rho, w);
+  return out;
 }
 
 }  // namespace dmi::design

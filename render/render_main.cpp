@@ -161,7 +161,7 @@ std::array<unsigned char, 3> colour(std::size_t i) {
 // moment about the face's foot: a step curve per run, pressure across, position along the face up.
 ChartSpec face_profile_chart(const std::vector<RunData>& runs) {
   ChartSpec c;
-  c.title = "contact pressure on the struck face at the instant of its largest moment about the foot";
+  c.title = "contact pressure on the struck face, at its largest moment about the foot";
   c.x_label = "pressure [kPa]", c.y_label = "position along the face from its foot [m]";
   c.x_tight = false;
   for (std::size_t i = 0; i < runs.size(); ++i) {
@@ -169,8 +169,9 @@ ChartSpec face_profile_chart(const std::vector<RunData>& runs) {
     if (!f.is_object()) continue;
     Curve cv;
     char b[200];
-    std::snprintf(b, sizeof b, "%st = %.2f ms, resultant %.3g kN at %.2f m", runs[i].variant.empty() ? "" : (nice_variant(runs[i].variant) + ", ").c_str(),
-                  f["time_s"].get<double>() * 1e3, f["resultant_N"].get<double>() * 1e-3, f["height_m"].get<double>());
+    const double R = f["resultant_N"].get<double>();
+    std::snprintf(b, sizeof b, "%st = %.2f ms, resultant %.3g %s at %.2f m", runs[i].variant.empty() ? "" : (nice_variant(runs[i].variant) + ", ").c_str(),
+                  f["time_s"].get<double>() * 1e3, R >= 1e6 ? R * 1e-6 : R * 1e-3, R >= 1e6 ? "MN" : "kN", f["height_m"].get<double>());
     cv.label = b;
     cv.color = colour(i);
     cv.dashed = runs[i].variant == "without_buffer";
@@ -434,7 +435,7 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
     for (auto* spec : {&fp, &small}) {
       if (spec->curves.empty()) continue;
       const std::string name = spec == &fp ? "chart_face_profile.png" : "chart_face_profile_small.png";
-      if (spec == &small) spec->title += ", the runs below a tenth of the largest peak";
+      if (spec == &small) spec->title = "contact pressure on the struck face: the runs below a tenth of the largest";
       spec->svg_path = (fs::path(image_dir) / fs::path(name).replace_extension(".svg")).string();
       spec->draw = mine();
       render_chart(*spec, (fs::path(image_dir) / name).string());

@@ -566,6 +566,7 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
                       {"dynamic", force("dynamic_N", "alpha_dynamic")}, {"static", force("static_N", "alpha_static")}});
   }
   d["has_debris_phases"] = !phases.empty();
+  d["debris_practice"] = debris_practice_rows(runs, design_doc);
   d["debris_phases"] = phases;
   d["debris_phases_intro"] =
       "The contact force of the surge in its three phases (Cui, Zeng & Lei 2015): the peak while the surge passes (from its arrival, the "

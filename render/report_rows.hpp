@@ -22,5 +22,8 @@ nlohmann::json plastic_rows(const std::vector<RunData>& runs);
 // The pressure on the struck face (its profile's resultant, position and moment) and the sensors' peaks, a column per run;
 // empty when no run recorded them.
 nlohmann::json pressure_rows(const std::vector<RunData>& runs);
+// The debris load beside practice (GEO 270's alpha, Cui et al.'s alpha(Fr) marked second-hand, the deposit's hydrostatic
+// load against the static tail), with the grid uncertainty where design_doc holds a grid study; empty without a surge.
+nlohmann::json debris_practice_rows(const std::vector<RunData>& runs, const nlohmann::json& design_doc);
 
 }  // namespace dmi::render

@@ -48,3 +48,28 @@ TEST(DebrisPhases, ShortRunAndNoArrival) {
   EXPECT_FALSE(debris_phases(t, std::vector<double>(t.size(), 0.5), 100.0, 1.0));
   EXPECT_FALSE(debris_phases(t, F, 0.0, 1.0));
 }
+
+namespace dmi::design {
+namespace {
+
+// Three face elements 1 m long, 2 m wide; over the last 10 % of a 10 s run (the sample at 10 s) they carry 1000, 500
+// and 10 Pa: the deposit reaches the top of the second (10 Pa is below 5 % of 1000), h_d = 2 m, its hydrostatic load
+// 2000 x 9.81 x 2^2 x 2 / 2 = 78 480 N; the face carries (1000 + 500 + 10) x 1 x 2 = 3 020 N.
+TEST(DebrisPhases, DepositAgainstTheFaceByHand) {
+  Results r;
+  for (int k = 0; k <= 10; ++k) r.time.push_back(k);
+  Series p{"face/pressure", "Pa", {"bin0", "bin1", "bin2"}, {}};
+  for (int k = 0; k <= 10; ++k) p.data.insert(p.data.end(), {k == 10 ? 1000.0 : 0.0, k == 10 ? 500.0 : 0.0, k == 10 ? 10.0 : 99.0});
+  r.series.push_back(p);
+  r.info.documents["face_profile"] =
+      R"({"width": 2, "bins": [{"from": 0, "to": 1}, {"from": 1, "to": 2}, {"from": 2, "to": 3}]})";
+  const nlohmann::json d = deposit_load(r, 2000, 2);
+  EXPECT_DOUBLE_EQ(d["height_m"].get<double>(), 2.0);
+  EXPECT_NEAR(d["hydrostatic_N"].get<double>(), 78480.0, 1e-9);
+  EXPECT_NEAR(d["face_resultant_N"].get<double>(), 3020.0, 1e-9);
+  r.info.documents.clear();
+  EXPECT_TRUE(deposit_load(r, 2000, 2).is_null());
+}
+
+}  // namespace
+}  // namespace dmi::design
