@@ -83,6 +83,13 @@ std::vector<RunData> load_runs(const std::string& out_dir, json& design_doc) {
   return runs;
 }
 
+std::string nice_variant(const std::string& v) { return v == "with_buffer" ? "with buffer" : v == "without_buffer" ? "without buffer" : ""; }
+
+std::array<unsigned char, 3> colour(std::size_t i) {
+  static const std::array<unsigned char, 3> c[] = {{31, 119, 180}, {255, 127, 14}, {44, 160, 44}, {148, 103, 189}};
+  return c[i % 4];
+}
+
 namespace {
 
 std::size_t nearest_snapshot(const Results& r, double t) {
@@ -107,7 +114,6 @@ std::string ms(double t) {
   return b;
 }
 
-std::string nice_variant(const std::string& v) { return v == "with_buffer" ? "with buffer" : v == "without_buffer" ? "without buffer" : ""; }
 
 const json* plotted_check(const json& run);
 
@@ -152,37 +158,7 @@ std::string scale_note(const FieldImage& f, const std::vector<Panel>& panels) {
   return s;
 }
 
-std::array<unsigned char, 3> colour(std::size_t i) {
-  static const std::array<unsigned char, 3> c[] = {{31, 119, 180}, {255, 127, 14}, {44, 160, 44}, {148, 103, 189}};
-  return c[i % 4];
-}
 
-// The contact pressure along each run's struck face (design.json runs[].face_profile) at the instant of its largest
-// moment about the face's foot: a step curve per run, pressure across, position along the face up.
-ChartSpec face_profile_chart(const std::vector<RunData>& runs) {
-  ChartSpec c;
-  c.title = "contact pressure on the struck face, at its largest moment about the foot";
-  c.x_label = "pressure [kPa]", c.y_label = "position along the face from its foot [m]";
-  c.x_tight = false;
-  for (std::size_t i = 0; i < runs.size(); ++i) {
-    const json& f = runs[i].design.contains("face_profile") ? runs[i].design["face_profile"] : json();
-    if (!f.is_object()) continue;
-    Curve cv;
-    char b[200];
-    const double R = f["resultant_N"].get<double>();
-    std::snprintf(b, sizeof b, "%st = %.2f ms, resultant %.3g %s at %.2f m", runs[i].variant.empty() ? "" : (nice_variant(runs[i].variant) + ", ").c_str(),
-                  f["time_s"].get<double>() * 1e3, R >= 1e6 ? R * 1e-6 : R * 1e-3, R >= 1e6 ? "MN" : "kN", f["height_m"].get<double>());
-    cv.label = b;
-    cv.color = colour(i);
-    cv.dashed = runs[i].variant == "without_buffer";
-    for (std::size_t k = 0; k < f["pressure_Pa"].size(); ++k) {
-      const double p = f["pressure_Pa"][k].get<double>() * 1e-3, mid = f["positions_m"][k].get<double>(), half = 0.5 * f["lengths_m"][k].get<double>();
-      cv.x.insert(cv.x.end(), {p, p}), cv.y.insert(cv.y.end(), {mid - half, mid + half});
-    }
-    c.curves.push_back(cv);
-  }
-  return c;
-}
 
 // The y of the impact point: the force-weighted y of the contact loads at the peak (/documents/peak_contact), else the
 // middle of the frame's nodes, else of the grid's particles at the start.

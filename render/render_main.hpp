@@ -1,6 +1,7 @@
 // `damimpact render OUT/`: the pictures of a finished run (or a with/without-buffer comparison) into OUT/images/,
 // with a manifest OUT/images/images.json (file, kind, title, caption, size, colour ranges) the report reads.
 #pragma once
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -9,6 +10,7 @@
 
 #include "design/members.hpp"
 #include "engine/io/results.hpp"
+#include "render/charts.hpp"
 
 namespace dmi::render {
 
@@ -19,6 +21,13 @@ struct RunData {
   nlohmann::json design;                 // its entry of design.json "runs"
   std::optional<design::FrameInfo> frame;
 };
+
+// A variant's name in words ("with buffer", "without buffer", "" for a single run) and run i's colour in the charts.
+std::string nice_variant(const std::string& v);
+std::array<unsigned char, 3> colour(std::size_t i);
+// The contact pressure along each run's struck face (design.json runs[].face_profile) at its largest moment about the
+// foot: a step curve per run (render/report_pressure.cpp); no curves when no run has a face profile.
+ChartSpec face_profile_chart(const std::vector<RunData>& runs);
 
 // The runs of OUT (OUT/results.h5, or OUT/with_buffer and OUT/without_buffer) and design.json (OUT/design.json when
 // present, else computed with the default limits). Throws dmi::InputError naming the path.

@@ -1,8 +1,10 @@
 // The report's rows on the pressure of the struck face (design.json runs[].face_profile) and the pressure sensors
 // (runs[].sensors); docs/results.md "Pressures".
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
+#include "render/charts.hpp"
 #include "render/report_rows.hpp"
 
 namespace dmi::render {
@@ -91,6 +93,37 @@ json debris_practice_rows(const std::vector<RunData>& runs, const json& design_d
           p["static_N"].get<double>(), "h_d: the face profile's loaded height over the last 10 % of the run");
   }
   return rows;
+}
+
+}  // namespace dmi::render
+
+namespace dmi::render {
+
+// The contact pressure along each run's struck face (design.json runs[].face_profile) at the instant of its largest
+// moment about the face's foot: a step curve per run, pressure across, position along the face up.
+ChartSpec face_profile_chart(const std::vector<RunData>& runs) {
+  ChartSpec c;
+  c.title = "contact pressure on the struck face, at its largest moment about the foot";
+  c.x_label = "pressure [kPa]", c.y_label = "position along the face from its foot [m]";
+  c.x_tight = false;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const json& f = runs[i].design.contains("face_profile") ? runs[i].design["face_profile"] : json();
+    if (!f.is_object()) continue;
+    Curve cv;
+    char b[200];
+    const double R = f["resultant_N"].get<double>();
+    std::snprintf(b, sizeof b, "%st = %.2f ms, resultant %.3g %s at %.2f m", runs[i].variant.empty() ? "" : (nice_variant(runs[i].variant) + ", ").c_str(),
+                  f["time_s"].get<double>() * 1e3, R >= 1e6 ? R * 1e-6 : R * 1e-3, R >= 1e6 ? "MN" : "kN", f["height_m"].get<double>());
+    cv.label = b;
+    cv.color = colour(i);
+    cv.dashed = runs[i].variant == "without_buffer";
+    for (std::size_t k = 0; k < f["pressure_Pa"].size(); ++k) {
+      const double p = f["pressure_Pa"][k].get<double>() * 1e-3, mid = f["positions_m"][k].get<double>(), half = 0.5 * f["lengths_m"][k].get<double>();
+      cv.x.insert(cv.x.end(), {p, p}), cv.y.insert(cv.y.end(), {mid - half, mid + half});
+    }
+    c.curves.push_back(cv);
+  }
+  return c;
 }
 
 }  // namespace dmi::render

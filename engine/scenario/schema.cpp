@@ -269,4 +269,11 @@ std::string markdown(const std::vector<Row>& rows) {
   return os.str();
 }
 
+bool when_any(Obj& o, const std::string& key, const std::string& value, const std::vector<std::string>& options) {
+  std::string label;
+  for (const auto& option : options) label += (label.empty() ? "" : " or ") + option;
+  o.when(key, value, label);
+  return o.documenting() || std::find(options.begin(), options.end(), value) != options.end();
+}
+
 }  // namespace dmi::schema

@@ -147,4 +147,8 @@ void Obj::array(const char* key, std::vector<T>& out, const Spec& s, const std::
   }
 }
 
+// when() for several options: true in read mode when value is one of them; in document mode the rows declared until
+// end_when() are tagged "when <key> = a or b".
+bool when_any(Obj& o, const std::string& key, const std::string& value, const std::vector<std::string>& options);
+
 }  // namespace dmi::schema
