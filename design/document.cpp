@@ -138,6 +138,7 @@ json design_document(const std::vector<json>& runs, const Limits& limits, const 
         if (doc["comparison"].is_null() && !is_space_variant(v)) doc["comparison"] = compare_runs(runs[j], runs[i]);
       }
   }
+  for (std::size_t i = 0; i < runs.size(); ++i) doc["runs"][i]["reference"] = static_cast<bool>(reference[i]);
   doc["plane_and_space"] = plane_and_space_section(runs);
   json gov = nullptr;
   int checks = 0, failed = 0;

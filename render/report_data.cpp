@@ -417,11 +417,7 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
       "Checks and estimates: docs/design-checks.md.";
   json rl = json::array();
   for (const auto& r : runs) {
-    bool reference = false;
-    if (plane_variant(r.variant) == "without_buffer") {
-      const std::string with = is_space_variant(r.variant) ? space_variant("with_buffer") : "with_buffer";
-      for (const auto& o : runs) reference = reference || o.variant == with;
-    }
+    const bool reference = r.design.value("reference", false);  // the bare run of a comparison (design/document.cpp)
     json checks = json::array();
     for (const auto& c : r.design["checks"]) {
       const double u = c["utilisation"];
