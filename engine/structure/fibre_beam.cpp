@@ -155,13 +155,15 @@ template <int NP> bool FibreBeam<NP>::iterate(const VecV& v, Trial& t) const {
 }
 
 template <int NP> void FibreBeam<NP>::respond(const VecV& v, VecV& q, MatV* k) const {
-  const Trial t = state_at(v);
-  q = t.q;
-  if (k) *k = t.k;
+  last_ = state_at(v);
+  last_v_ = v, has_last_ = true;
+  q = last_.q;
+  if (k) *k = last_.k;
 }
 
 template <int NP> void FibreBeam<NP>::commit(const VecV& v) {
-  Trial t = state_at(v);
+  Trial t = has_last_ && v == last_v_ ? std::move(last_) : state_at(v);
+  has_last_ = false;
   for (std::size_t g = 0; g < points_.size(); ++g) record_.peak_strain = std::max(record_.peak_strain, surface_strain(points_[g], t.e[g]));
   double energy = 0;
   if (t.history.empty()) {
@@ -195,6 +197,7 @@ template <int NP> void FibreBeam<NP>::save_state(StateWriter& w) const {
 
 template <int NP> void FibreBeam<NP>::load_state(StateReader& r) {
   const std::size_t n = fibres_.size();
+  has_last_ = false;
   r.get(history_), r.get(accumulated_), r.get(record_), r.get(elastic_energy_), r.get(e_);
   for (int c = 0; c < NV; ++c) r.get(q_(c)), r.get(v_(c));
   r.expect_size("element sections", e_.size(), points_.size());

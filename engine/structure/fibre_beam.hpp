@@ -102,6 +102,11 @@ template <int NP> class FibreBeam {
   VecV v_yield_;                       // deformations at first yield (tolerance scales)
   PlasticRecord record_;
   double elastic_energy_ = 0;
+  // The last state determination respond() made and its v: a step's commit at the v of its last Newton iteration
+  // takes it instead of determining the same state again.
+  mutable Trial last_;
+  mutable VecV last_v_;
+  mutable bool has_last_ = false;
 };
 
 extern template class FibreBeam<1>;
