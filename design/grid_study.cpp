@@ -70,7 +70,10 @@ json grid_study_section(const std::array<json, 3>& designs, const std::array<dou
     }
     auto add = [&](const std::string& id, const std::string& title, const std::string& unit, const char* ptr) {
       const json::json_pointer p(ptr);
-      if (!run.contains(p) || run[p].is_null()) return;  // not in this kind of run (no frame, no contact)
+      // Not in this kind of run (no frame, no contact), or null on one grid (a surge whose static tail that grid's run
+      // does not reach): left out of the study. A value that is there but not a number is an altered file (number_at).
+      for (const json* r : runs)
+        if (!r->contains(p) || (*r)[p].is_null()) return;
       std::array<double, 3> f{};
       for (int g = 0; g < 3; ++g) f[g] = std::abs(number_at(*runs[g], p, title + " of run '" + variant + "'", folders[g]));
       qs.push_back(quantity(variant, id, title, unit, h, f));
@@ -82,7 +85,7 @@ json grid_study_section(const std::array<json, 3>& designs, const std::array<dou
     add("base_moment", dim == 3 ? "peak overturning moment |(sum Mx, sum My)|" : "peak base moment |sum M|", "N m",
         (std::string("/base_total/") + moment_key(dim) + "/abs_max/value").c_str());
     add("face_resultant", "face pressure resultant at its largest moment about the foot", "N", "/face_profile/resultant_N");
-    add("face_height", "position of that resultant along the face", "m", "/face_profile/height_m");
+    add("face_height", "height of that resultant above the foot", "m", "/face_profile/height_m");
     add("debris_peak", "debris load: peak over the surge's passage", "N", "/debris_phases/peak_N");
     add("debris_dynamic", "debris load: dynamic (the surge's body)", "N", "/debris_phases/dynamic_N");
     add("debris_static", "debris load: static tail (the deposit)", "N", "/debris_phases/static_N");

@@ -51,6 +51,7 @@ json deposit_load(const Results& r, double rho, double w) {
   const json d = json::parse(doc->second, nullptr, false);
   const std::size_t nb = p->components.size();
   if (d.is_discarded() || !d.contains("bins") || d["bins"].size() != nb) return nullptr;
+  const double width = d.value("width", w);  // the face's: the one its pressures were measured over
   std::vector<double> mean(nb, 0.0);
   const double tail = r.time.back() - 0.1 * (r.time.back() - r.time.front());
   double span = 0;
@@ -64,11 +65,12 @@ json deposit_load(const Results& r, double rho, double w) {
   if (!(span > 0) || !(top > 0)) return nullptr;
   double height = 0, measured = 0;
   for (std::size_t b = 0; b < nb; ++b) {
-    const double from = d["bins"][b]["from"].get<double>(), to = d["bins"][b]["to"].get<double>();
-    if (mean[b] > 0.05 * top) height = std::max(height, to);
-    measured += mean[b] / span * (to - from) * d.value("width", w);
+    const json& bin = d["bins"][b];
+    const double from = bin["from"].get<double>(), to = bin["to"].get<double>();
+    if (mean[b] > 0.05 * top) height = std::max(height, bin.value("height_to", to));  // above the foot, not along the face
+    measured += mean[b] / span * (to - from) * width;
   }
-  return json{{"height_m", height}, {"hydrostatic_N", 0.5 * rho * 9.81 * height * height * w}, {"face_resultant_N", measured}};
+  return json{{"height_m", height}, {"hydrostatic_N", 0.5 * rho * 9.81 * height * height * width}, {"face_resultant_N", measured}};
 }
 
 json debris_phases(const Results& r, const DesignBasis& basis) {

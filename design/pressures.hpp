@@ -11,7 +11,7 @@
 namespace dmi::design {
 
 // {members, direction, width_m, positions_m (bin centres along the face), lengths_m, time_s, pressure_Pa (per bin at
-// time_s), resultant_N, height_m (of the resultant along the face), moment_N_m (resultant x height), peak_resultant_N,
+// time_s), resultant_N, height_m (of the resultant above the foot, across the load), moment_N_m (resultant x height), peak_resultant_N,
 // peak_resultant_time_s}; null when the run recorded no face profile or no load reached the face.
 nlohmann::json face_profile(const Results& r, const std::string& where);
 

@@ -79,7 +79,12 @@ std::vector<RunData> load_runs(const std::string& out_dir, json& design_doc) {
     }
     entries.push_back(r.design);
   }
-  if (!design_doc.is_object()) design_doc = design::design_document(entries, design::Limits{}, "");
+  // Which run is the bare reference of a comparison: design_document's pairing (a design.json written before it said
+  // so, or none, leaves the flag to it).
+  const json paired = design::design_document(entries, design::Limits{}, "");
+  if (!design_doc.is_object()) design_doc = paired;
+  for (std::size_t i = 0; i < runs.size(); ++i)
+    if (!runs[i].design.contains("reference")) runs[i].design["reference"] = paired["runs"][i]["reference"];
   return runs;
 }
 

@@ -29,7 +29,7 @@ json pressure_rows(const std::vector<RunData>& runs) {
   if (std::any_of(runs.begin(), runs.end(), [](const RunData& r) { return face(r) != nullptr; })) {
     rows.push_back(face_row("instant of the largest moment about the foot", [](const json& f) { return eng(f["time_s"], "s"); }));
     rows.push_back(face_row("resultant of the face pressure", [](const json& f) { return eng(f["resultant_N"], "N"); }));
-    rows.push_back(face_row("its position along the face from the foot", [](const json& f) { return fmt("%.3g m", f["height_m"].get<double>()); }));
+    rows.push_back(face_row("its height above the foot", [](const json& f) { return fmt("%.3g m", f["height_m"].get<double>()); }));
     rows.push_back(face_row("its moment about the foot", [](const json& f) { return eng(f["moment_N_m"], "N m"); }));
     rows.push_back(face_row("largest pressure of the profile (element length × face width)", [](const json& f) {
       std::size_t k = 0;

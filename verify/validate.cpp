@@ -115,7 +115,7 @@ int validate_main(const std::vector<std::string>& names, bool json, bool list, i
   const char* suite = stress ? "damimpact validate --stress --list" : "damimpact validate --list";
   if (list) {
     for (const auto& c : all)
-      std::printf("%-20s %s%s\n", c.name.c_str(), c.description.c_str(), c.by_default ? "" : " [known defect: run only when named]");
+      std::printf("%-20s %s%s\n", c.name.c_str(), c.description.c_str(), c.by_default ? "" : " [run only when named]");
     return 0;
   }
   for (const auto& n : names) {

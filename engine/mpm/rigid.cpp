@@ -263,6 +263,7 @@ double RigidBodies<D>::wall_contact(Scene<D>& s, std::vector<Vec<D>>& vel, doubl
     }
     for (const Contact& c : cs) {
       c.wall->force -= c.P.template head<D>() / dt;
+      for (auto& ps : c.wall->sensors) patch_add(ps, Vec<D>(m.xc + c.r.template head<D>()), Vec<D>(-c.P.template head<D>() / dt), g.h());
       const Vec<3> v = V + W.cross(c.r);  // friction's work where the point slips; the fixed wall's normal impulse does none
       work += (c.P - c.P.dot(c.n) * c.n).dot(v - v.dot(c.n) * c.n);
     }

@@ -56,8 +56,9 @@ template <int D> PressurePatch<D> make_patch(const std::string& name, const Vec<
 template <int D> double clipped_overlap(const PressurePatch<D>& p, const Vec<D>& x, const Vec<D>& t, double u, double h) {
   double lo = -0.5 * h, hi = 0.5 * h;
   for (const auto& [q, m] : p.clips) {
-    const double tm = t.dot(m), s0 = -(x - q).dot(m) / tm;  // (x + s t - q) . m >= 0
+    const double tm = t.dot(m);
     if (std::abs(tm) <= 0.5) continue;
+    const double s0 = -(x - q).dot(m) / tm;  // (x + s t - q) . m >= 0
     if (tm > 0) lo = std::max(lo, s0);
     else hi = std::min(hi, s0);
   }
@@ -65,10 +66,12 @@ template <int D> double clipped_overlap(const PressurePatch<D>& p, const Vec<D>&
   return std::max(0.0, std::min(u + hi, 0.5 * p.size) - std::max(u + lo, -0.5 * p.size)) / (hi - lo);
 }
 
-// Fraction of a node's force at x (spacing h) the patch receives: 0 unless the node lies within h of the face plane.
+// Fraction of a node's force at x (spacing h) the patch receives: 0 unless the node lies between a cell in front of
+// the face and two behind it (a wall holds the nodes its material's stencils reach, up to 1.5 h behind its plane;
+// the patch's centre lies on the face).
 template <int D> double patch_weight(const PressurePatch<D>& p, const Vec<D>& x, double h) {
   const Vec<D> r = x - p.centre;
-  if (std::abs(r.dot(p.normal)) > h) return 0.0;
+  if (const double depth = r.dot(p.normal); depth > h * (1 + 1e-9) || depth < -2 * h) return 0.0;
   double w = clipped_overlap(p, x, p.t1, r.dot(p.t1), h);
   if constexpr (D == 3) w *= clipped_overlap(p, x, p.t2, r.dot(p.t2), h);
   return w;

@@ -169,14 +169,18 @@ static void rigid_hull(const ShapeConfig& shape, int dim, Body& body) {
 template <int D> void add_wall_sensors(const Scenario& s, Wall<D>& wall) {
   for (const SensorConfig& c : s.output.sensors) {
     if (c.wall != wall.name) continue;
-    const Vec<D> x = vec<D>(c.point);
+    Vec<D> x = vec<D>(c.point);
     Vec<D> n = wall.normal;
-    if (wall.box) {
+    if (wall.box) {  // the nearest face; the point moved onto it
       double best = std::numeric_limits<double>::infinity();
+      int axis = 0, upper = 0;
       for (int d = 0; d < D; ++d)
         for (int side = 0; side < 2; ++side)
-          if (const double e = std::abs(side ? x[d] - wall.hi[d] : x[d] - wall.lo[d]); e < best)
-            best = e, n = side ? Vec<D>(Vec<D>::Unit(d)) : Vec<D>(-Vec<D>::Unit(d));
+          if (const double e = std::abs(side ? x[d] - wall.hi[d] : x[d] - wall.lo[d]); e < best) best = e, axis = d, upper = side;
+      n = upper ? Vec<D>(Vec<D>::Unit(axis)) : Vec<D>(-Vec<D>::Unit(axis));
+      x[axis] = upper ? wall.hi[axis] : wall.lo[axis];
+    } else {
+      x -= (x - wall.point).dot(n) * n;  // onto the plane
     }
     wall.sensors.push_back(make_patch<D>(c.name, x, n, c.size, s.analysis.thickness));
     for (const WallConfig& o : s.walls)
@@ -190,7 +194,14 @@ template <int D> void start_geostatic(const Scenario& s, Scene<D>& sc, const Bod
   const MaterialConfig& m = s.materials[static_cast<std::size_t>(body.material)];
   const std::string path = "/bodies/" + std::to_string(b);
   if (bc.rigid) throw InputError(s.message_source(), path + "/initial_stress", "\"geostatic\"", "stress_free on a rigid body (it carries no stress)");
+  if (s.analysis.plane == Plane::stress)
+    throw InputError(s.message_source(), path + "/initial_stress", "\"geostatic\"",
+                     "stress_free in plane stress (the geostatic state assumes no lateral strain: plane strain or 3D)");
   const bool fluid = m.model == "newtonian" || m.model == "bingham";
+  if (fluid && m.volume_relaxation > 0)
+    throw InputError(s.message_source(), path + "/initial_stress", "\"geostatic\"",
+                     "stress_free with the material's volume_relaxation (it would relax the compressed volume, and the "
+                     "hydrostatic pressure with it, back towards the space the particles fill)");
   if (fluid && bc.earth_pressure_coefficient >= 0 && bc.earth_pressure_coefficient != 1)
     throw InputError(s.message_source(), path + "/earth_pressure_coefficient", (std::ostringstream() << bc.earth_pressure_coefficient).str(),
                      "1 or nothing for a fluid (its pressure is isotropic)");
@@ -230,6 +241,9 @@ template <int D> Scene<D> build_scene(const Scenario& s) {
     body.rigid_when_free = bc.rigid_when_free;
     if (bc.rigid) rigid_hull(bc.shape, D, body);
     body.begin = static_cast<Index>(sc.particles.size());
+    if (bc.inflow.present && bc.geostatic)
+      throw InputError(s.message_source(), "/bodies/" + std::to_string(b) + "/initial_stress", "\"geostatic\"",
+                       "stress_free on a body an inflow fills (its debris enters moving)");
     if (bc.inflow.present) {  // created as the debris enters (engine/mpm/inflow.hpp)
       body.end = body.begin;
       sc.bodies.push_back(body);

@@ -63,13 +63,18 @@ template <int D> PressureRecorder<D>::PressureRecorder(const Solver<D>& solver, 
     width_ = D == 2 ? s.analysis.thickness : fp.width;
     bin_of_.assign(static_cast<std::size_t>(f->nelements()), -1);
     double along = 0;
+    {
+      const FrameMemberDef& first = member(fp.members.front());
+      foot_ = f->model().nodes[static_cast<std::size_t>(f->model().elements[static_cast<std::size_t>(first.first_element)].i)];
+    }
     for (const std::string& name : fp.members) {
       const FrameMemberDef& m = member(name);
       for (int e = m.first_element; e < m.first_element + m.elements; ++e) {
         const auto& el = f->model().elements[static_cast<std::size_t>(e)];
-        const double L = (f->model().nodes[static_cast<std::size_t>(el.j)] - f->model().nodes[static_cast<std::size_t>(el.i)]).norm();
+        const Vec<D> a = f->model().nodes[static_cast<std::size_t>(el.i)], b = f->model().nodes[static_cast<std::size_t>(el.j)];
+        const double L = (b - a).norm();
         bin_of_[static_cast<std::size_t>(e)] = static_cast<int>(bins_.size());
-        bins_.push_back({name, e, along, along + L});
+        bins_.push_back({name, e, along, along + L, arm(a), arm(b)});
         along += L;
       }
     }
@@ -103,10 +108,9 @@ template <int D> void PressureRecorder<D>::accumulate(const Solver<D>& solver, d
   for (const ContactLoadOf<D>& l : mc->loads()) {
     const int b = bin_of_.empty() ? -1 : bin_of_[static_cast<std::size_t>(l.element)];
     if (b < 0) continue;
-    const Bin& bin = bins_[static_cast<std::size_t>(b)];
     const double fn = l.force.dot(direction_) * dt;
     impulse_[k + static_cast<std::size_t>(b)] += fn;
-    moment_ += fn * (bin.from + l.xi * (bin.to - bin.from));
+    moment_ += fn * arm(l.point);
   }
 }
 
@@ -132,9 +136,10 @@ template <int D> void PressureRecorder<D>::sample(std::vector<Series>& out, std:
 template <int D> std::string PressureRecorder<D>::face_document() const {
   if (bins_.empty()) return "";
   nlohmann::json bins = nlohmann::json::array();
-  for (const Bin& b : bins_) bins.push_back({{"member", b.member}, {"element", b.element}, {"from", b.from}, {"to", b.to}});
+  for (const Bin& b : bins_)
+    bins.push_back({{"member", b.member}, {"element", b.element}, {"from", b.from}, {"to", b.to}, {"height_from", b.height_from}, {"height_to", b.height_to}});
   return nlohmann::json{{"members", face_members_}, {"direction", std::vector<double>(direction_.data(), direction_.data() + D)},
-                        {"width", width_}, {"bins", bins}, {"units", {{"from", "m"}, {"to", "m"}, {"width", "m"}}}}
+                        {"width", width_}, {"bins", bins}, {"units", {{"from", "m"}, {"to", "m"}, {"height_from", "m"}, {"height_to", "m"}, {"width", "m"}}}}
       .dump();
 }
 

@@ -29,7 +29,9 @@ template <int D> class PressureRecorder {
  private:
   struct WallSensor { std::size_t wall = 0, index = 0; };
   struct MemberSensor { PressurePatch<D> patch; int first = 0, last = 0; };  // elements [first, last)
-  struct Bin { std::string member; int element = 0; double from = 0, to = 0; };  // span along the face (m)
+  // An element of the face: its span along the face (m), and the height of its ends above the face's foot, measured
+  // across the load direction (the lever arm of a load there about the foot).
+  struct Bin { std::string member; int element = 0; double from = 0, to = 0, height_from = 0, height_to = 0; };
   double h_ = 0;
   std::vector<WallSensor> walls_;
   std::vector<std::string> wall_names_;
@@ -39,9 +41,14 @@ template <int D> class PressureRecorder {
   std::vector<int> bin_of_;        // per element: its bin, -1 when not on the face
   std::vector<std::string> face_members_;
   Vec<D> direction_ = Vec<D>::Zero();
+  Vec<D> foot_ = Vec<D>::Zero();   // the face's first node (initial position)
+  double arm(const Vec<D>& x) const {  // height of x above the foot across the load direction
+    const Vec<D> r = x - foot_;
+    return (r - r.dot(direction_) * direction_).norm();
+  }
   double width_ = 0;
   std::vector<double> impulse_;    // wall sensors, member sensors, face bins (N s)
-  double moment_ = 0;              // sum of the face's normal impulse times its position along the face (N s m)
+  double moment_ = 0;              // sum of the face's normal impulse times its arm about the foot (N s m)
 };
 
 }  // namespace dmi

@@ -55,6 +55,9 @@ class AssembledSystem {
   // Accepts d as the end of a step: plastic elements update their history (internal_force and tangent are functions
   // of the committed history and d). Nothing to do for elastic frames.
   virtual void commit(const Eigen::VectorXd& d) { (void)d; }
+  // The committed history kept before a step tries sub-steps (each committed), and put back when they fail.
+  virtual void keep_committed() {}
+  virtual void restore_committed() {}
   // out = C v = alpha M v + beta K0 v + U diag(rates) U^T v.
   void damping_force(const Eigen::VectorXd& v, Eigen::VectorXd& out) const;
   bool damped() const { return alpha_ > 0 || beta_ > 0 || modal_rates_.size() > 0; }

@@ -15,7 +15,8 @@
 // loads needs one element (a displacement-based element needs many: its curvature is linear). Section (fibre.hpp
 // conventions): eps(y', z') = eps_0 - kappa_1 y' - kappa_2 z'. Twist stays elastic (St Venant: T = (G J / L) twist),
 // shear deformation is not modelled (Euler-Bernoulli). Each fibre follows steel_law.hpp.
-// The state is committed; respond() is a pure function of it and v (a Newton iteration may call it at any trial v),
+// The state is committed; respond() depends on it and v alone (a Newton iteration may call it at any trial v; it keeps
+// its last result for commit, so one element is not to be responded to from two threads at once),
 // commit() accepts v as the end of a step and books the plastic work sum sigma d(eps_p) A w L, the peak strain at the
 // section's surface and the accumulated plastic strain.
 #pragma once

@@ -172,6 +172,7 @@ void Newmark::step_newton(FrameState& s, const Eigen::VectorXd& f, double dt, co
   double res = 0, ref = 0;
   if (newton(s, f, dt, Ma, res, ref)) return;
   const FrameState n = s;
+  sys_.keep_committed();
   for (int k = 2; k <= 64; k *= 2) {
     bool ok = true;
     for (int j = 0; j < k && ok; ++j) {
@@ -183,6 +184,7 @@ void Newmark::step_newton(FrameState& s, const Eigen::VectorXd& f, double dt, co
       return;
     }
     s = n;
+    sys_.restore_committed();  // the sub-steps committed so far are undone with the state
   }
   throw std::runtime_error("Frame: Newmark Newton iterations did not converge at t = " + std::to_string(n.t + dt) +
                            " s, residual " + std::to_string(res) + " N (relative " + std::to_string(res / ref) + "), in up to 64 sub-steps");

@@ -9,6 +9,7 @@
 #include "engine/scenario/scenario.hpp"
 #include "engine/sim/build_scene.hpp"
 #include "engine/sim/geostatic.hpp"
+#include "verify/validate.hpp"
 
 namespace dmi {
 namespace {
@@ -34,6 +35,33 @@ TEST(Sensor, NodeForcesSpreadOverTheirTributariesByHand) {
   EXPECT_NEAR(patch_pressure(p.force, p.area), 0.85 * F / 0.009, 1e-9);
   patch_add(p, Vec2(1.61, 0.0), Vec2(-F, 0), h);  // a pull is a negative pressure
   EXPECT_NEAR(p.force, 0.0, 1e-12);
+}
+
+// The nodes a wall holds reach 1.5 h behind its plane: a node one cell behind still loads the sensor; two and a half
+// cells behind, or more than a cell in front, it does not.
+TEST(Sensor, NodesBehindTheWallCount) {
+  const double h = 0.01;
+  const PressurePatch<2> p = make_patch<2>("P", Vec2(1.0, 0.5), Vec2(-1, 0), 0.02, 1.0);
+  EXPECT_NEAR(patch_weight(p, Vec2(1.0 + h, 0.5), h), 1.0, 1e-12);      // one cell behind (normal -x: behind is +x)
+  EXPECT_EQ(patch_weight(p, Vec2(1.0 + 2.5 * h, 0.5), h), 0.0);
+  EXPECT_NEAR(patch_weight(p, Vec2(1.0 - h, 0.5), h), 1.0, 1e-12);      // one cell in front
+  EXPECT_EQ(patch_weight(p, Vec2(1.0 - 1.5 * h, 0.5), h), 0.0);
+}
+
+// A rigid block resting on the floor presses on it through its hull contact, which the floor's sensor reads: a sensor
+// wider than the block reads its weight over the sensor's area.
+TEST(Sensor, RigidBlockOnTheFloorReadsItsWeight) {
+  const json j = json::parse(R"({"schema_version": 1, "name": "block",
+    "analysis": {"dimension": 2, "plane": "strain", "thickness": 2.0, "end_time": 0.2, "gravity": [0, -10]},
+    "grid": {"origin": [-0.2, -0.2], "size": [1.4, 0.8], "cell_size": 0.05},
+    "materials": [{"name": "rock", "density": 2500, "youngs_modulus": 1e9, "poisson_ratio": 0.2}],
+    "bodies": [{"name": "b", "material": "rock", "rigid": true, "shape": {"type": "box", "min": [0.3, 0], "max": [0.7, 0.2]}}],
+    "walls": [{"name": "floor", "type": "plane", "point": [0, 0], "normal": [0, 1], "condition": "slip"}],
+    "output": {"history_interval": 0.01, "sensors": [{"name": "under", "wall": "floor", "point": [0.5, 0], "size": 0.8}]}})");
+  const RunOutput out = run_quiet(parse_scenario(j, "block.json"));
+  const Series& p = series(out.results, "sensors/under/pressure");
+  const double weight = 2500 * 0.4 * 0.2 * 2.0 * 10, area = 0.8 * 2.0;
+  EXPECT_NEAR(time_mean(out.results.time, p, 0, 0.1, 0.2) * area / weight, 1.0, 0.02);
 }
 
 // A sensor spanning whole cells reads force over area; in 3D the weight is the product of both axes' overlaps.
