@@ -286,6 +286,10 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
              {"surge arrival", nearest_snapshot(r.results, num(dp, {"arrival_s"}, t_start))},
              {"load peak", nearest_snapshot(r.results, num(dp, {"peak_time_s"}, t_peak))},
              {"deposit", r.results.snapshots.size() - 1}};
+    // Members that yield keep a residual shape: the last snapshot shows it (the members' deformation scaled as in the
+    // rest of the sequence).
+    if (r.design.contains("plastic") && r.design["plastic"].is_object() && r.results.snapshots.size() > 1)
+      seq.push_back({"residual shape (end of the run)", r.results.snapshots.size() - 1});
     std::vector<Panel> all;
     for (const auto& [what, s] : seq) all.push_back({&r.results, fr, s, ""});
     FieldSpec sspec = spec;
