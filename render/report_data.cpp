@@ -437,7 +437,9 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
             eng(g["demand"], g["unit"]) + " against " + eng(g["capacity"], g["unit"]) + ", utilisation " + fmt("%.2f", g["utilisation"].get<double>()) +
             " (" + where(g) + "). " + g["formula"].get<std::string>() + "; " + g["source"].get<std::string>() + ".";
     }
-    rl.push_back({{"label", label(r)}, {"reference", reference}, {"checks", checks}, {"governing", gov}});
+    const json groups = check_group_rows(r.design);
+    rl.push_back({{"label", label(r)}, {"reference", reference}, {"checks", checks}, {"governing", gov}, {"groups", groups},
+                  {"has_groups", !groups.empty()}});
   }
   d["runs"] = rl;
   d["checks_intro"] =

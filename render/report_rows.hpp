@@ -19,6 +19,9 @@ nlohmann::json per_run_rows(const std::vector<RunData>& runs,
                             const std::vector<std::pair<std::string, std::function<std::string(const RunData&)>>>& rows);
 // The steel members that yield (design.json runs[].plastic), a column per run; empty when no run has them.
 nlohmann::json plastic_rows(const std::vector<RunData>& runs);
+// A run's member checks by member group (the name before its first '_'): per check and group the members it covers, how
+// many fail and the governing one; empty when no group holds more than one member.
+nlohmann::json check_group_rows(const nlohmann::json& design_run);
 // The pressure on the struck face (its profile's resultant, position and moment) and the sensors' peaks, a column per run;
 // empty when no run recorded them.
 nlohmann::json pressure_rows(const std::vector<RunData>& runs);

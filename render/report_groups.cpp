@@ -1,0 +1,58 @@
+// The report's summary of a run's member checks by member group (docs/guide.md, "Reading the report"): a frame of many
+// members (a steel open dam's columns, beams, braces and ties) gives a check per member; the summary shows, per check and
+// group, how many members it covers and fail and which member governs.
+#include <algorithm>
+#include <map>
+#include <string>
+#include <utility>
+
+#include "render/report_rows.hpp"
+
+namespace dmi::render {
+
+using nlohmann::json;
+
+namespace {
+
+// A member's group: its name up to the first '_' (column_0_1 -> column); the whole name when it has none.
+std::string group_of(const std::string& member) { return member.substr(0, member.find('_')); }
+
+}  // namespace
+
+json check_group_rows(const json& design_run) {
+  struct Group {
+    std::string title, member, unit, level;
+    int members = 0, failed = 0;
+    double util = -1;
+    json demand, capacity;
+  };
+  std::map<std::pair<std::string, std::string>, Group> groups;  // (check id, group)
+  std::vector<std::pair<std::string, std::string>> order;
+  for (const auto& c : design_run.value("checks", json::array())) {
+    const std::string member = c.value("member", std::string());
+    if (member.empty() || member.rfind("solid: ", 0) == 0 || c.value("level", std::string()) == "information") continue;
+    const auto key = std::make_pair(c["id"].get<std::string>(), group_of(member));
+    auto [it, fresh] = groups.try_emplace(key);
+    if (fresh) order.push_back(key);
+    Group& g = it->second;
+    g.title = c["title"], g.unit = c["unit"];
+    const std::string level = c.value("level", std::string("serviceability"));
+    if (g.level.empty() || g.level == level) g.level = level;
+    else g.level = "both";
+    ++g.members;
+    g.failed += c["passed"].get<bool>() ? 0 : 1;
+    if (c["utilisation"].get<double>() > g.util) g.util = c["utilisation"], g.member = member, g.demand = c["demand"], g.capacity = c["capacity"];
+  }
+  if (std::none_of(groups.begin(), groups.end(), [](const auto& g) { return g.second.members > 1; })) return json::array();
+  json rows = json::array();
+  for (const auto& key : order) {
+    const Group& g = groups.at(key);
+    const std::string level = g.level == "ultimate" ? "ULS" : g.level == "serviceability" ? "SLS" : "SLS, ULS";
+    rows.push_back({{"title", g.title}, {"level", level}, {"group", key.second + "s"}, {"members", g.members}, {"failed", g.failed}, {"member", g.member},
+                    {"demand", eng(g.demand, g.unit)}, {"capacity", eng(g.capacity, g.unit)}, {"util", fmt("%.2f", g.util)},
+                    {"status_class", g.failed > 0 ? "fail" : "pass"}});
+  }
+  return rows;
+}
+
+}  // namespace dmi::render

@@ -1,0 +1,36 @@
+// The report's member checks by member group (render/report_groups.cpp), by hand.
+#include <gtest/gtest.h>
+
+#include "render/report_rows.hpp"
+
+namespace dmi::render {
+namespace {
+
+using nlohmann::json;
+
+json check(const std::string& id, const std::string& member, double u, const std::string& level = "ultimate") {
+  return {{"id", id}, {"title", id + " title"}, {"member", member}, {"utilisation", u}, {"passed", u <= 1}, {"demand", 100 * u},
+          {"capacity", 100.0}, {"unit", "N"}, {"level", level}};
+}
+
+// Two columns and a beam: the shear row of the columns counts 2 members, 1 failing, column_1_1 governing at 1.20; the
+// beam's own row counts 1. The solid-FE and information checks stay out.
+TEST(ReportGroups, GovernsPerCheckAndGroup) {
+  const json run = {{"checks", {check("shear", "column_0_1", 0.5), check("shear", "column_1_1", 1.2), check("shear", "beam_0_1", 0.3),
+                                check("stress", "column_0_1", 0.7, "serviceability"), check("principal", "solid: x", 9.0, "information")}}};
+  const json rows = check_group_rows(run);
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0]["group"], "columns");
+  EXPECT_EQ(rows[0]["members"], 2);
+  EXPECT_EQ(rows[0]["failed"], 1);
+  EXPECT_EQ(rows[0]["member"], "column_1_1");
+  EXPECT_EQ(rows[0]["util"], "1.20");
+  EXPECT_EQ(rows[0]["level"], "ULS");
+  EXPECT_EQ(rows[1]["group"], "beams");
+  EXPECT_EQ(rows[2]["level"], "SLS");
+  // One member per group (a concrete dam): no summary.
+  EXPECT_TRUE(check_group_rows(json{{"checks", {check("shear", "dam", 0.5), check("stress", "dam", 0.7)}}}).empty());
+}
+
+}  // namespace
+}  // namespace dmi::render
