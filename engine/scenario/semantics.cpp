@@ -293,29 +293,20 @@ void check_sensors(const Scenario& s, const std::string& file, const std::set<st
     throw InputError(file, "/output/face_profile/width", "(absent)", "the loaded width of the face in a 3D analysis");
 }
 
-// Cross-references and geometry: what a single key cannot check.
-}  // namespace
+// A name not used before in its list.
+void unique(std::set<std::string>& set, const std::string& name, const std::string& file, const std::string& path) {
+  if (!set.insert(name).second) throw InputError(file, path, "\"" + name + "\"", "a name not used before in this list");
+}
 
-void check_semantics(const Scenario& s, const std::string& file) {
+// Each body: a unique name, a material it may use, a shape inside the grid; returns the particles they will hold.
+double check_bodies(const Scenario& s, const std::string& file, const std::set<std::string>& mats, std::set<std::string>& bodies) {
   const int dim = s.analysis.dimension;
-  if (s.bodies.empty() && !(s.solid_check.present && !s.structure.present))
-    throw InputError(file, "/bodies", "[]", "at least one body (or a scenario with only a solid_check)");
-  check_solid_check(s, file);
-  std::set<std::string> mats, bodies, walls;
-  auto dup = [&](std::set<std::string>& set, const std::string& name, const std::string& path) {
-    if (!set.insert(name).second) throw InputError(file, path, "\"" + name + "\"", "a name not used before in this list");
-  };
-  for (std::size_t i = 0; i < s.materials.size(); ++i) dup(mats, s.materials[i].name, "/materials/" + std::to_string(i) + "/name");
   const double h = s.grid.cell_size;
-  for (int d = 0; d < dim; ++d)
-    if (!(s.grid.size[d] > h))
-      throw InputError(file, "/grid/cell_size", value_text(h), "a cell size smaller than the grid size along every axis (grid size " +
-                                                                 value_text(s.grid.size) + ")");
   double est = 0;
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {
     const BodyConfig& b = s.bodies[i];
     const std::string p = "/bodies/" + std::to_string(i);
-    dup(bodies, b.name, p + "/name");
+    unique(bodies, b.name, file, p + "/name");
     if (!mats.count(b.material)) throw InputError(file, p + "/material", "\"" + b.material + "\"", "the name of one of the materials");
     for (const auto& m : s.materials) {
       if (m.name != b.material) continue;
@@ -351,6 +342,13 @@ void check_semantics(const Scenario& s, const std::string& file) {
     for (int d = 0; d < dim; ++d) vol *= (hi[d] - lo[d]) / h;
     est += vol * std::pow(b.particles_per_cell, dim);
   }
+  return est;
+}
+
+// The particles, cells and memory the run will need, against what it may have.
+void check_resources(const Scenario& s, const std::string& file, double est) {
+  const int dim = s.analysis.dimension;
+  const double h = s.grid.cell_size;
   if (est > 2e8) {
     std::ostringstream os;  // a double: the estimate can exceed every integer type
     os.precision(3);
@@ -380,10 +378,16 @@ void check_semantics(const Scenario& s, const std::string& file) {
       throw InputError(file, "/grid/cell_size", value_text(h), os.str());
     }
   }
+}
+
+// Walls and prescribed-velocity regions: unique names (one list), a normal, a box with extent, a time window.
+void check_walls(const Scenario& s, const std::string& file) {
+  const int dim = s.analysis.dimension;
+  std::set<std::string> walls;
   for (std::size_t i = 0; i < s.walls.size(); ++i) {
     const WallConfig& w = s.walls[i];
     const std::string p = "/walls/" + std::to_string(i);
-    dup(walls, w.name, p + "/name");
+    unique(walls, w.name, file, p + "/name");
     if (w.type == "plane") {
       double n2 = 0;
       for (double x : w.normal) n2 += x * x;
@@ -397,14 +401,16 @@ void check_semantics(const Scenario& s, const std::string& file) {
   for (std::size_t i = 0; i < s.prescribed_velocity.size(); ++i) {
     const auto& r = s.prescribed_velocity[i];
     const std::string p = "/prescribed_velocity/" + std::to_string(i);
-    dup(walls, r.name, p + "/name");
+    unique(walls, r.name, file, p + "/name");
     for (int d = 0; d < dim; ++d)
       if (!(r.max[d] > r.min[d]))
         throw InputError(file, p + "/max", value_text(r.max), "max > min along every axis (min = " + value_text(r.min) + ")");
     if (r.end <= r.start) throw InputError(file, p + "/end", value_text(r.end), "end > start (start = " + value_text(r.start) + ")");
   }
-  std::set<std::string> members;
-  if (s.structure.present) members = check_structure(s, file, bodies);
+}
+
+// The bodies member contact names, and what one velocity field for all bodies cannot do.
+void check_member_contact(const Scenario& s, const std::string& file, const std::set<std::string>& bodies) {
   for (std::size_t i = 0; i < s.member_contact.bodies.size(); ++i)
     if (!bodies.count(s.member_contact.bodies[i]))
       throw InputError(file, "/member_contact/bodies/" + std::to_string(i), quoted(s.member_contact.bodies[i]), "the name of one of the bodies");
@@ -434,12 +440,16 @@ void check_semantics(const Scenario& s, const std::string& file) {
     throw InputError(file, "/member_contact/bodies", json(s.member_contact.bodies).dump(),
                      "all bodies (or none listed) with contact.method single_field: the bodies share one velocity field, so "
                      "members act on all of them; use multi_field to exempt some");
-  check_sensors(s, file, members);
+}
+
+// Probes: unique names, on an existing body or (plane) member.
+void check_probes(const Scenario& s, const std::string& file, const std::set<std::string>& bodies, const std::set<std::string>& members) {
+  const int dim = s.analysis.dimension;
   std::set<std::string> probes;
   for (std::size_t i = 0; i < s.output.probes.size(); ++i) {
     const auto& pr = s.output.probes[i];
     const std::string p = "/output/probes/" + std::to_string(i);
-    dup(probes, pr.name, p + "/name");
+    unique(probes, pr.name, file, p + "/name");
     if (pr.type == "member") {
       if (dim == 3)
         throw InputError(file, p + "/type", quoted(pr.type), "a body or particle probe in a 3D analysis (member probes read plane "
@@ -452,7 +462,30 @@ void check_semantics(const Scenario& s, const std::string& file) {
     } else if (pr.type == "particle" && std::any_of(s.bodies.begin(), s.bodies.end(), [&](const BodyConfig& b) { return b.name == pr.target && b.inflow.present; })) {
       throw InputError(file, p + "/type", quoted(pr.type), "a body probe on an inflow body (its particles do not exist at t = 0)");
     }
-  }
+  }}
+
+// Cross-references and geometry: what a single key cannot check.
+}  // namespace
+
+void check_semantics(const Scenario& s, const std::string& file) {
+  const int dim = s.analysis.dimension;
+  if (s.bodies.empty() && !(s.solid_check.present && !s.structure.present))
+    throw InputError(file, "/bodies", "[]", "at least one body (or a scenario with only a solid_check)");
+  check_solid_check(s, file);
+  std::set<std::string> mats, bodies;
+  for (std::size_t i = 0; i < s.materials.size(); ++i) unique(mats, s.materials[i].name, file, "/materials/" + std::to_string(i) + "/name");
+  const double h = s.grid.cell_size;
+  for (int d = 0; d < dim; ++d)
+    if (!(s.grid.size[d] > h))
+      throw InputError(file, "/grid/cell_size", value_text(h), "a cell size smaller than the grid size along every axis (grid size " +
+                                                                 value_text(s.grid.size) + ")");
+  check_resources(s, file, check_bodies(s, file, mats, bodies));
+  check_walls(s, file);
+  std::set<std::string> members;
+  if (s.structure.present) members = check_structure(s, file, bodies);
+  check_member_contact(s, file, bodies);
+  check_sensors(s, file, members);
+  check_probes(s, file, bodies, members);
 }
 
 }  // namespace dmi
