@@ -80,7 +80,7 @@ int dry_run_report(const std::string& file, const std::vector<dmi::ScenarioVaria
     const dmi::Scenario& s = v.scenario;
     const dmi::RunEstimate e = dmi::preflight(s);
     char cost[160] = "";
-    if (e.steps > 0) std::snprintf(cost, sizeof cost, "; about %.3g steps at the first step's size, a first guess of %.3g s on one core", e.steps, e.wall_s);
+    if (e.steps > 0) std::snprintf(cost, sizeof cost, "; about %.3g steps, a first guess of %.3g s on one core", e.steps, e.wall_s);
     std::fprintf(expand ? stderr : stdout, "%s%s%s: valid scenario '%s' (%dD, %zu bodies, %zu materials, %zu walls, %zu members%s)\n", file.c_str(),
                  v.label.empty() ? "" : " / ", v.label.c_str(), s.name.c_str(), s.analysis.dimension, s.bodies.size(), s.materials.size(),
                  s.walls.size(), s.structure.members.size(), cost);

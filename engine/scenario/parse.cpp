@@ -49,9 +49,9 @@ void read_analysis(Obj o, AnalysisConfig& a) {
   o.number("max_steps", a.max_steps, Spec{.doc = "a run whose estimated step count (end_time over the first step) exceeds this is refused "
                                                  "before it starts; raise it for a run that is meant to be that long",
                                           .min = 1, .max = 1e15});
-  o.number("max_wall_hours", a.max_wall_hours, Spec{.unit = "h", .doc = "a run whose estimated wall time on one core (steps x particles at "
-                                                                        "the kernel's 50 ns per particle and step, a lower bound) exceeds this "
-                                                                        "is refused before it starts; raise it for a run meant to be that long",
+  o.number("max_wall_hours", a.max_wall_hours, Spec{.unit = "h", .doc = "a run whose estimated wall time on one core (the dry run's first "
+                                                                        "guess, docs/performance.md) exceeds this is refused before it starts; "
+                                                                        "raise it for a run meant to be that long",
                                                      .min = 0, .max = 1e9, .min_open = true});
   o.finish();
   if (a.dimension == 3) a.plane = Plane::none;

@@ -30,6 +30,7 @@
 #include "engine/sim/build_scene.hpp"
 #include "engine/sim/checkpoint.hpp"
 #include "engine/sim/recorder.hpp"
+#include "engine/sim/run_estimate.hpp"
 
 namespace dmi {
 namespace {
@@ -122,11 +123,9 @@ RunInfo make_info(const Scenario& s, const RunOptions& o) {
   return info;
 }
 
-// A run that cannot finish is refused before anything is written: its step count estimated from the first step
-// against /analysis/max_steps, and its wall time on one core at the particle kernel's speed (50 ns per particle and
-// step plus 10 us per step, docs/performance.md) against /analysis/max_wall_hours. Both are first guesses, not bounds:
-// the step changes as a boulder turns rigid in free flight or elastic in a contact, and members, implicit damping and
-// contacts cost more per step (measured 0.2 to 96 times the guess on the bundled examples, worst for 3D frames).
+// A run that cannot finish is refused before anything is written: its step count and its wall time on one core
+// (engine/sim/run_estimate.hpp) against /analysis/max_steps and /analysis/max_wall_hours. Both are first guesses,
+// not bounds.
 // Particles at the end of the run: those built, and those an inflow will create.
 template <int D> double final_particles(const Scene<D>& sc) {
   double n = static_cast<double>(sc.particles.size());
@@ -157,8 +156,9 @@ void load_peak_snapshot(StateReader& r, std::optional<Snapshot>& s, double& forc
 
 template <int D> RunEstimate step_budget(const Solver<D>& solver, const Scenario& s) {
   const double dt0 = solver.stable_time_step(s.analysis.end_time);
-  const double est = s.analysis.end_time / dt0, np = final_particles(solver.scene());
-  const double wall = est * (np * 50e-9 + 10e-6);
+  const double np = final_particles(solver.scene());
+  const RunEstimate guess = estimate_run(solver, s, np);
+  const double est = guess.steps, wall = guess.wall_s;
   std::ostringstream end, os;
   end << s.analysis.end_time;
   os.precision(3);
@@ -169,7 +169,7 @@ template <int D> RunEstimate step_budget(const Solver<D>& solver, const Scenario
        << " s) it needs about " << est << " steps; shorten end_time or raise /analysis/max_steps";
   else if (!(wall <= 3600 * s.analysis.max_wall_hours))
     os << "a run of at most /analysis/max_wall_hours = " << s.analysis.max_wall_hours << " h: about " << est << " steps of " << np
-       << " particles take about " << wall / 3600 << " h on one core by a first guess (50 ns per particle and step); shorten end_time, coarsen the "
+       << " particles take about " << wall / 3600 << " h on one core by a first guess (docs/performance.md); shorten end_time, coarsen the "
        << "grid or raise /analysis/max_wall_hours";
   else
     return {est, wall};
