@@ -104,15 +104,6 @@ std::size_t nearest_snapshot(const Results& r, double t) {
   return best;
 }
 
-double num(const json& j, std::initializer_list<const char*> path, double fallback) {
-  const json* p = &j;
-  for (const char* k : path) {
-    if (!p->is_object() || !p->contains(k) || (*p)[k].is_null()) return fallback;
-    p = &(*p)[k];
-  }
-  return p->is_number() ? p->get<double>() : fallback;
-}
-
 std::string ms(double t) {
   char b[32];
   std::snprintf(b, sizeof b, "%.1f ms", t * 1e3);

@@ -2,6 +2,8 @@
 // with a manifest OUT/images/images.json (file, kind, title, caption, size, colour ranges) the report reads.
 #pragma once
 #include <array>
+#include <cmath>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,6 +23,9 @@ struct RunData {
   nlohmann::json design;                 // its entry of design.json "runs"
   std::optional<design::FrameInfo> frame;
 };
+
+// The number at path in j (nested keys), or fallback where a key is missing or null or the value not a number.
+double num(const nlohmann::json& j, std::initializer_list<const char*> path, double fallback = std::nan(""));
 
 // A variant's name in words ("with buffer", "without buffer", "" for a single run) and run i's colour in the charts.
 std::string nice_variant(const std::string& v);

@@ -1,0 +1,150 @@
+// The report's sections on design-practice loads (the estimates, a debris surge's phases), numerical health and the
+// limits used (docs/design-checks.md), for report_data.cpp.
+#include <cmath>
+#include <string>
+
+#include "render/report_rows.hpp"
+
+namespace dmi::render {
+
+using nlohmann::json;
+
+void estimates_data(const std::vector<RunData>& runs, const json& design_doc, bool space, json& d) {
+  // Design-practice loads beside the simulation.
+  json est = json::array();
+  bool banded = false;
+  for (const auto& r : runs)
+    for (const auto& e : r.design["estimates"]) {
+      const bool ok = e.value("applicable", true) && e["value_N"].is_number();
+      const std::string what = e["compare_to"] == "peak_base_shear" ? "base shear" : "contact";
+      std::string sim = ok ? eng(e["simulated_N"], "N") : "—", sim_note = ok ? what : "", ratio = ok ? fmt("%.2f", e["ratio"].get<double>()) : "—", band;
+      if (ok && e.contains("simulated_gci")) {
+        banded = true;
+        sim_note += fmt(", GCI %.0f %%", 100 * e["simulated_gci"].get<double>());
+        band = fmt("%.2f", e["ratio_low"].get<double>()) + "–" + (e["ratio_high"].is_number() ? fmt("%.2f", e["ratio_high"].get<double>()) : std::string("∞"));
+      }
+      const double q = ok ? e["ratio"].get<double>() : NAN;
+      const bool far = ok && (q < 0.5 || q > 2);
+      const std::string note = estimate_note(q, e.value("note", ""));
+      est.push_back({{"run", label(r)}, {"title", e["title"]}, {"formula", e["formula"]}, {"parameters", e.value("parameters", "")},
+                     {"value", ok ? eng(e["value_N"], "N") : std::string("n/a")}, {"simulated", sim}, {"simulated_note", sim_note}, {"ratio", ratio}, {"ratio_band", band}, {"source", e["source"]},
+                     {"note", note}, {"row_class", ok ? (far ? "far" : "") : "muted"}});
+    }
+  d["estimates"] = est;
+  // The debris load in its three phases, against the momentum flux of the surge.
+  json phases = json::array();
+  for (const auto& r : runs) {
+    const json& p = r.design.value("debris_phases", json());
+    if (!p.is_object()) continue;
+    auto force = [&](const char* key, const char* alpha) {  // the force, and α under it
+      const double f = num(p, {key}), a = num(p, {alpha});
+      return std::isfinite(f) && std::isfinite(a) ? json{{"v", eng(p[key], "N")}, {"a", fmt("α %.2f", a)}}
+                                                  : json{{"v", "—"}, {"a", "the run ends within the passage"}};
+    };
+    auto seconds = [&](const char* key) { const double t = num(p, {key}); return std::isfinite(t) ? fmt("%.3f s", t) : std::string("—"); };
+    phases.push_back({{"run", label(r)}, {"flux", std::isfinite(num(p, {"flux_N"})) ? eng(p["flux_N"], "N") : std::string("—")},
+                      {"arrival", seconds("arrival_s")}, {"passage", seconds("passage_s")},
+                      {"peak", force("peak_N", "alpha_peak")}, {"peak_at", seconds("peak_time_s")},
+                      {"dynamic", force("dynamic_N", "alpha_dynamic")}, {"static", force("static_N", "alpha_static")}});
+  }
+  d["has_debris_phases"] = !phases.empty();
+  d["debris_practice"] = debris_practice_rows(runs, design_doc);
+  d["debris_phases"] = phases;
+  d["debris_phases_intro"] =
+      "The contact force of the surge in its three phases (Cui, Zeng & Lei 2015): the peak while the surge passes (from its arrival, the "
+      "first 1 % of the momentum flux, for T = L / v), the dynamic load of its body (mean over the last three quarters of T) and the static "
+      "load of the deposit (mean over the last 10 % of the run). α = F / (ρ v² h w), the dynamic impact coefficient (GEO Report 270 takes "
+      "α = 2.5 for a rigid barrier). The surge's snout is set by debris_surge.front_length; a blunt front strikes as an elastic wave set by "
+      "the debris modulus (the bound row of the table above).";
+  d["estimates_intro"] =
+      std::string("The loads design practice would assign to this impact, beside the simulated peak they stand for (a sanity band, not checks): "
+                  "ratio = estimate / simulated. A model that does not fit the scenario is listed with the reason. ") +
+      (space ? "The 3D model strikes with a sphere, as the boulder formulas assume. "
+             : "The 2D model strikes with a cylinder of the boulder's mass, while the boulder formulas assume a sphere. ") +
+      "Formulas, sources and assumptions: docs/design-checks.md." +
+      (banded ? " With the grid study, the simulated peak carries its grid convergence index (GCI) and the ratio the band it spans for the simulated peak within ± GCI." : "");
+}
+
+void health_data(const std::vector<RunData>& runs, json& d) {
+  // Health.
+  d["health_intro"] =
+      "Energy balance error = kinetic + strain (+ frame) − work of gravity and walls − energy brought in by inflows − initial energy; member "
+      "contact is internal, so "
+      "its losses show as a negative error. Reference: the largest kinetic + strain energy of the run.";
+  d["health_rows"] = per_run_rows(runs, {
+      {"status", [](const RunData& r) { return r.results.complete ? std::string("complete") : std::string("incomplete"); }},
+      {"non-finite values in the histories", [](const RunData& r) { return all_finite(r.results) ? std::string("none") : std::string("FOUND"); }},
+      {"reference energy", [](const RunData& r) { return fmt("%.4g kJ", reference_energy(r.results) / 1e3); }},
+      {"largest energy created", [](const RunData& r) {
+         const double e = series_max(r.results, "energy/balance_error", false), ref = reference_energy(r.results);
+         return std::isnan(e) ? std::string("—") : fmt("%.3g J", std::max(0.0, e)) + fmt(" (%.2f %%)", 100 * std::max(0.0, e) / ref);
+       }},
+      {"largest |balance error|", [](const RunData& r) {
+         const double e = series_max(r.results, "energy/balance_error", true), ref = reference_energy(r.results);
+         return std::isnan(e) ? std::string("—") : fmt("%.3g J", e) + fmt(" (%.1f %%)", 100 * e / ref);
+       }},
+      {"energy dissipated by the members' structural damping", [](const RunData& r) {
+         const Series* s = r.results.find("energy/frame_damping");
+         if (!s || s->data.empty()) return std::string("—");
+         std::string t = fmt("%.4g J", s->data.back());
+         if (const json* d = r.design.contains("damping") && r.design["damping"].is_object() ? &r.design["damping"] : nullptr)
+           t += fmt(" (%.1f %% of the impact energy; by the governing member demand ", 100 * (*d)["share"].get<double>()) +
+                fmt("%.1f %% of it", 100 * (*d)["share_at_governing"].get<double>()) +
+                fmt(" and %.1f %% of the energy the members had received", 100 * num(*d, {"share_of_received_at_governing"}, 0.0)) +
+                ((*d)["base_shear_peak"].is_object() ? fmt("; by the peak base shear %.1f %% of it", 100 * (*d)["base_shear_peak"]["share_of_received"].get<double>())
+                                                     : std::string()) +
+                ((*d)["flagged"].get<bool>() ? ": ABOVE 10 %, the peaks rest on the damping ratio)" : ")");
+         return t;
+       }},
+      {"bodies' volume (largest / as created; flagged above 1.05)", [](const RunData& r) {
+         std::string t;
+         if (r.design.contains("volume_health"))
+           for (const auto& v : r.design["volume_health"])
+             t += (t.empty() ? "" : "; ") + v["probe"].get<std::string>() + fmt(" %.3f", v["largest_ratio"].get<double>()) +
+                  (v["flagged"].get<bool>() ? " (GAINED VOLUME: a non-dilatant body should keep it; its loads are suspect)" : "");
+         return t.empty() ? std::string("—") : t;
+       }},
+      {"largest Courant number used", [](const RunData& r) {
+         const auto& n = r.results.info.numbers;
+         return n.count("courant_max") ? fmt("%.3f", n.at("courant_max")) : std::string("—");
+       }},
+      {"smallest particle J = V/V0", [](const RunData& r) {
+         const auto& n = r.results.info.numbers;
+         return n.count("jacobian_min") ? fmt("%.4f", n.at("jacobian_min")) : std::string("—");
+       }},
+      {"contact projection iterations, max", [](const RunData& r) {
+         const auto& n = r.results.info.numbers;
+         return n.count("projection_iterations_max") ? fmt("%.0f", n.at("projection_iterations_max")) : std::string("—");
+       }}});
+}
+
+json limit_rows(const json& design_doc) {
+  // Limits.
+  json lr = json::array();
+  if (design_doc.contains("limits")) {
+    const json& c = design_doc["limits"]["concrete"];
+    const json& s = design_doc["limits"]["steel"];
+    lr.push_back({{"key", "concrete f'c, f_t (rule)"}, {"value", eng(c["compressive_strength_Pa"], "Pa") + ", " + eng(c["tensile_strength_Pa"], "Pa") + " (" +
+                                                                     c["tensile_rule"].get<std::string>() + ")"}});
+    lr.push_back({{"key", "concrete φ flexure / compression / shear, α"},
+                  {"value", fmt("%.2f", c["phi_flexure"].get<double>()) + " / " + fmt("%.2f", c["phi_compression"].get<double>()) + " / " +
+                                fmt("%.2f", c["phi_shear"].get<double>()) + ", " + fmt("%.2f", c["compression_coefficient"].get<double>())}});
+    lr.push_back({{"key", "steel f_y, γ_M0"}, {"value", eng(s["yield_strength_Pa"], "Pa") + ", " + fmt("%.2f", s["gamma_M0"].get<double>())}});
+    lr.push_back({{"key", "concrete strengths under the impact"},
+                  {"value", c.value("strain_rate_effects", true) ? "raised by the strain rate (fib MC2010 5.1.11.1)" : "static"}});
+    if (design_doc["limits"].contains("foundation")) {
+      const json& f = design_doc["limits"]["foundation"];
+      lr.push_back({{"key", "foundation joint: tan φ, c, allowable bearing, uplift"},
+                    {"value", fmt("%.2f", f["friction"].get<double>()) + ", " + eng(f["cohesion_Pa"], "Pa") + ", " + eng(f["bearing_capacity_Pa"], "Pa") +
+                                  fmt(", %.2f of full (assumptions unless the limits file sets them)", f["uplift_factor"].get<double>())}});
+      lr.push_back({{"key", "stability: sliding factor at rest, sliding limit, rocking factor"},
+                    {"value", fmt("%.2f", f["sliding_factor_usual"].get<double>()) + ", " + eng(f["sliding_displacement_limit_m"], "m") +
+                                  fmt(", %.2f", f["rocking_safety_factor"].get<double>())}});
+    }
+    if (design_doc["limits"].contains("verdict"))
+      lr.push_back({{"key", "levels judged"}, {"value", design_doc["limits"]["verdict"].value("level", std::string("both"))}});
+  }
+  return lr;
+}
+
+}  // namespace dmi::render
