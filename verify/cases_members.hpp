@@ -66,4 +66,9 @@ std::vector<double> windowed_rate(const std::vector<double>& t, const Series& s,
 ErrorPair compare_history(const std::vector<double>& t, const std::vector<double>& u, double t0,
                           const std::function<double(double)>& ref);
 
+// Cases in their own files: cases_impact.cpp, cases_buffer.cpp.
+std::vector<CaseResult> impact_contact();
+std::vector<CaseResult> tyre_buffer_case();
+std::vector<CaseResult> buffer_pad_case();
+
 }  // namespace dmi
