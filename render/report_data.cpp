@@ -314,29 +314,11 @@ bool all_finite(const Results& r) {
 }
 
 
-json report_data(const std::vector<RunData>& runs, const json& design_doc, const json& manifest, const std::string& image_dir,
-                 const std::string& software_version) {
-  const RunData& first = runs.front();
-  json d;
-  std::string name = first.results.info.scenario_name;
-  for (const char* suffix : {" (with buffer)", " (without buffer)"})
-    if (name.size() > std::strlen(suffix) && name.compare(name.size() - std::strlen(suffix), std::string::npos, suffix) == 0)
-      name.erase(name.size() - std::strlen(suffix));
-  d["scenario_name"] = name;
-  try {
-    d["description"] = json::parse(first.results.info.scenario_json).value("description", "");
-  } catch (const json::exception&) {
-    d["description"] = "";
-  }
-  d["software_version"] = software_version.empty() ? first.results.info.software_version : software_version;
-  d["input_file"] = first.results.info.scenario_file.empty() ? "(not recorded)" : first.results.info.scenario_file;
-  d["input_sha256"] = sha256_hex(first.results.info.scenario_json);
-  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  char when[64];
-  std::strftime(when, sizeof when, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
-  d["generated"] = when;
-  // Verdict.
-  const json& v = design_doc["verdict"];
+namespace {
+
+// The verdict's headline class and word in d; returns its sentence: failed checks, the governing one, each level and
+// situation.
+std::string verdict_data(const json& v, json& d) {
   const std::string status = v.value("status", "no_checks");
   d["verdict_class"] = status == "pass" ? "pass" : status == "fail" ? "fail" : "none";
   d["verdict_word"] = status == "pass" ? "PASS" : status == "fail" ? "FAIL" : "NO CHECKS";
@@ -364,6 +346,12 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
     }
   if (v.contains("judged_levels") && v["judged_levels"] != "both")
     vt += " The verdict judges the " + v["judged_levels"].get<std::string>() + " level only (limits file).";
+  return vt;
+}
+
+// The grid study's table in d; returns the sentence on the governing utilisation's grid uncertainty (judged: the runs
+// the verdict judges).
+std::string grid_data(const json& design_doc, const std::string& judged, json& d) {
   // Grid uncertainty: the governing numbers with their GCI, or a plain statement that it is unknown.
   auto grid_word = [](const std::string& b) -> std::string {
     if (b == "converged") return "converged";
@@ -374,7 +362,6 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
   };
   json gq = json::array();
   std::string gov_grid;
-  const std::string judged = v.value("runs_judged", std::string());
   if (design_doc.contains("grid_study") && design_doc["grid_study"].is_object()) {
     const json& gs = design_doc["grid_study"];
     for (const auto& q : gs["quantities"]) {
@@ -398,25 +385,12 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
   }
   d["has_grid_study"] = !gq.empty();
   d["grid_quantities"] = gq;
-  d["verdict_text"] = vt + gov_grid;
-  std::string rt, files;
-  for (const auto& r : runs) rt += (rt.empty() ? "" : ", ") + label(r), files += (files.empty() ? "" : ", ") + r.file;
-  d["runs_text"] = rt;
-  d["results_files"] = files;
-  d["scenario_rows"] = scenario_rows(first);
-  d["materials"] = materials(first);
-  // Model.
-  const bool space = first.frame ? first.frame->dim == 3 : (!first.results.snapshots.empty() && first.results.snapshots[0].dim == 3);
-  d["methods"] =
-      std::string("Material Point Method for the boulder, debris and buffer (explicit, Lin & Yang 2024); beam-column finite elements for the dam "
-                  "members, coupled to the particles by Lin & Yang's two-stage contact with Yang's equivalent force field (Lin & Yang 2024, eqs. 15–29); ") +
-      (space ? "three dimensions (z up): space beam-columns with biaxial bending and torsion, checked around their sections. "
-             : "plane strain, the out-of-plane width as given. ") +
-      (std::any_of(runs.begin(), runs.end(), [](const RunData& r) { return is_space_variant(r.variant); })
-           ? "The runs marked (3D) are the same scenario in three dimensions (compare_3d): the sphere of the boulder's mass on the "
-             "dam's crest, the dam a space beam-column whose section is the crest length wide. "
-           : "") +
-      "Checks and estimates: docs/design-checks.md.";
+  return gov_grid;
+}
+
+// Per run: its label, whether it is the bare reference, its checks' rows, the governing check's sentence and the
+// summary by member group.
+json run_checks(const std::vector<RunData>& runs) {
   json rl = json::array();
   for (const auto& r : runs) {
     const bool reference = r.design.value("reference", false);  // the bare run of a comparison (design/document.cpp)
@@ -443,26 +417,12 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
     rl.push_back({{"label", label(r)}, {"reference", reference}, {"checks", checks}, {"governing", gov}, {"groups", groups},
                   {"has_groups", !groups.empty()}});
   }
-  d["runs"] = rl;
-  d["checks_intro"] =
-      "Each check compares the largest demand over the whole run and along every member (or in the solid-FE model) with its factored "
-      "capacity; utilisation = demand / capacity. The bar turns orange above 0.8 and red above 1. Level: SLS serviceability (the dam stays "
-      "elastic and undamaged), ULS ultimate (it stands and is not holed), info reported and never judged (a linear stress under the "
-      "contact patch is singular under a concentrated load).";
-  std::set<std::string> seen;
-  json formulas = json::array();
-  for (const auto& r : runs)
-    for (const auto& c : r.design["checks"])
-      if (seen.insert(c["id"].get<std::string>() + c["title"].get<std::string>()).second)
-        formulas.push_back({{"title", c["title"]}, {"formula", c["formula"]}, {"source", c["source"]}});
-  d["formulas"] = formulas;
-  d["stability_rows"] = stability_rows(runs);
-  d["has_stability"] = !d["stability_rows"].empty();
-  d["plastic_rows"] = plastic_rows(runs);
-  d["has_plastic"] = !d["plastic_rows"].empty();
-  d["pressure_rows"] = pressure_rows(runs);
-  d["has_pressure"] = !d["pressure_rows"].empty();
-  d["model_rows"] = per_run_rows(runs, {
+  return rl;
+}
+
+// The model table: a row per quantity, a column per run.
+json model_rows(const std::vector<RunData>& runs) {
+  return per_run_rows(runs, {
       {"cell size", [](const RunData& r) { return fmt("%.3g m", r.results.info.numbers.count("cell_size") ? r.results.info.numbers.at("cell_size") : NAN); }},
       {"particles", [](const RunData& r) { return fmt("%.0f", r.results.info.numbers.count("particles") ? r.results.info.numbers.at("particles") : NAN); }},
       {"members / elements", [](const RunData& r) { return r.frame ? std::to_string(r.frame->members.size()) + " / " + std::to_string(r.frame->elements.size()) : std::string("—"); }},
@@ -491,6 +451,73 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
        }},
       {"wall time", [](const RunData& r) { return fmt("%.1f s", r.results.info.numbers.count("wall_seconds") ? r.results.info.numbers.at("wall_seconds") : NAN); }},
       {"threads", [](const RunData& r) { return fmt("%.0f", r.results.info.numbers.count("threads") ? r.results.info.numbers.at("threads") : NAN); }}});
+}
+
+}  // namespace
+
+json report_data(const std::vector<RunData>& runs, const json& design_doc, const json& manifest, const std::string& image_dir,
+                 const std::string& software_version) {
+  const RunData& first = runs.front();
+  json d;
+  std::string name = first.results.info.scenario_name;
+  for (const char* suffix : {" (with buffer)", " (without buffer)"})
+    if (name.size() > std::strlen(suffix) && name.compare(name.size() - std::strlen(suffix), std::string::npos, suffix) == 0)
+      name.erase(name.size() - std::strlen(suffix));
+  d["scenario_name"] = name;
+  try {
+    d["description"] = json::parse(first.results.info.scenario_json).value("description", "");
+  } catch (const json::exception&) {
+    d["description"] = "";
+  }
+  d["software_version"] = software_version.empty() ? first.results.info.software_version : software_version;
+  d["input_file"] = first.results.info.scenario_file.empty() ? "(not recorded)" : first.results.info.scenario_file;
+  d["input_sha256"] = sha256_hex(first.results.info.scenario_json);
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  char when[64];
+  std::strftime(when, sizeof when, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  d["generated"] = when;
+  const json& v = design_doc["verdict"];
+  const std::string vt = verdict_data(v, d);
+  const std::string gov_grid = grid_data(design_doc, v.value("runs_judged", std::string()), d);
+  d["verdict_text"] = vt + gov_grid;
+  std::string rt, files;
+  for (const auto& r : runs) rt += (rt.empty() ? "" : ", ") + label(r), files += (files.empty() ? "" : ", ") + r.file;
+  d["runs_text"] = rt;
+  d["results_files"] = files;
+  d["scenario_rows"] = scenario_rows(first);
+  d["materials"] = materials(first);
+  // Model.
+  const bool space = first.frame ? first.frame->dim == 3 : (!first.results.snapshots.empty() && first.results.snapshots[0].dim == 3);
+  d["methods"] =
+      std::string("Material Point Method for the boulder, debris and buffer (explicit, Lin & Yang 2024); beam-column finite elements for the dam "
+                  "members, coupled to the particles by Lin & Yang's two-stage contact with Yang's equivalent force field (Lin & Yang 2024, eqs. 15–29); ") +
+      (space ? "three dimensions (z up): space beam-columns with biaxial bending and torsion, checked around their sections. "
+             : "plane strain, the out-of-plane width as given. ") +
+      (std::any_of(runs.begin(), runs.end(), [](const RunData& r) { return is_space_variant(r.variant); })
+           ? "The runs marked (3D) are the same scenario in three dimensions (compare_3d): the sphere of the boulder's mass on the "
+             "dam's crest, the dam a space beam-column whose section is the crest length wide. "
+           : "") +
+      "Checks and estimates: docs/design-checks.md.";
+  d["runs"] = run_checks(runs);
+  d["checks_intro"] =
+      "Each check compares the largest demand over the whole run and along every member (or in the solid-FE model) with its factored "
+      "capacity; utilisation = demand / capacity. The bar turns orange above 0.8 and red above 1. Level: SLS serviceability (the dam stays "
+      "elastic and undamaged), ULS ultimate (it stands and is not holed), info reported and never judged (a linear stress under the "
+      "contact patch is singular under a concentrated load).";
+  std::set<std::string> seen;
+  json formulas = json::array();
+  for (const auto& r : runs)
+    for (const auto& c : r.design["checks"])
+      if (seen.insert(c["id"].get<std::string>() + c["title"].get<std::string>()).second)
+        formulas.push_back({{"title", c["title"]}, {"formula", c["formula"]}, {"source", c["source"]}});
+  d["formulas"] = formulas;
+  d["stability_rows"] = stability_rows(runs);
+  d["has_stability"] = !d["stability_rows"].empty();
+  d["plastic_rows"] = plastic_rows(runs);
+  d["has_plastic"] = !d["plastic_rows"].empty();
+  d["pressure_rows"] = pressure_rows(runs);
+  d["has_pressure"] = !d["pressure_rows"].empty();
+  d["model_rows"] = model_rows(runs);
   // Comparison.
   d["has_comparison"] = design_doc["comparison"].is_object();
   json cmp = json::array();
