@@ -118,6 +118,14 @@ extern template class FibreBeam<2>;
 template <int NP> struct FibreBeams {
   std::vector<std::optional<FibreBeam<NP>>> beams;
   bool any = false;
+  // The elements as committed before a step's sub-steps (each committed), put back when the sub-steps fail.
+  std::optional<std::vector<std::optional<FibreBeam<NP>>>> kept;
+  void keep() {
+    if (any) kept = beams;
+  }
+  void restore() {
+    if (kept) beams = *kept;
+  }
   const FibreBeam<NP>* at(int e) const { return beams[e] ? &*beams[e] : nullptr; }
   double plastic_work() const {
     double w = 0;

@@ -42,12 +42,8 @@ class FrameSystem final : public AssembledSystem {
   FibreBeams<1>& fibres() { return fibres_; }
   const FibreBeams<1>& fibres() const { return fibres_; }
   void commit(const Eigen::VectorXd& d) override;
-  void keep_committed() override {
-    if (fibres_.any) kept_ = fibres_;
-  }
-  void restore_committed() override {
-    if (kept_) fibres_ = *kept_;
-  }
+  void keep_committed() override { fibres_.keep(); }
+  void restore_committed() override { fibres_.restore(); }
   Vec2 axis(int e, const Eigen::VectorXd& d) const;  // e1 of the element's load and result axes at d
 
   void internal_force(const Eigen::VectorXd& d, Eigen::VectorXd& out) const override;
@@ -67,7 +63,6 @@ class FrameSystem final : public AssembledSystem {
   FrameModel model_;
   std::vector<BeamElement> elements_;
   FibreBeams<1> fibres_;  // the plastic elements' basic systems
-  std::optional<FibreBeams<1>> kept_;  // the plastic elements as committed before a step's sub-steps
   std::vector<Chord> chords_;
   std::unique_ptr<CoordTransform> transform_;
 };

@@ -36,12 +36,8 @@ class SpaceFrameSystem final : public AssembledSystem {
   FibreBeams<2>& fibres() { return fibres_; }
   const FibreBeams<2>& fibres() const { return fibres_; }
   void commit(const Eigen::VectorXd& d) override;
-  void keep_committed() override {
-    if (fibres_.any) kept_ = fibres_;
-  }
-  void restore_committed() override {
-    if (kept_) fibres_ = *kept_;
-  }
+  void keep_committed() override { fibres_.keep(); }
+  void restore_committed() override { fibres_.restore(); }
 
   void internal_force(const Eigen::VectorXd& d, Eigen::VectorXd& out) const override;
   SpMat tangent(const Eigen::VectorXd& d) const override;
@@ -60,7 +56,6 @@ class SpaceFrameSystem final : public AssembledSystem {
   SpaceFrameModel model_;
   std::vector<SpaceBeamElement> elements_;
   FibreBeams<2> fibres_;  // the plastic elements' basic systems
-  std::optional<FibreBeams<2>> kept_;  // the plastic elements as committed before a step's sub-steps
   std::vector<SpaceChord> chords_;
   std::unique_ptr<SpaceTransform> transform_;
 };
