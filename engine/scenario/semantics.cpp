@@ -91,13 +91,10 @@ void check_frame_geometry(const StructureConfig& st, const std::string& file) {
   }
 }
 
-std::set<std::string> check_structure(const Scenario& s, const std::string& file, const std::set<std::string>& bodies) {
+// The frame's nodes: unique names, inside the grid (the members act on the grid around them). Returns name -> index.
+std::map<std::string, std::size_t> check_frame_nodes(const Scenario& s, const std::string& file) {
   const StructureConfig& st = s.structure;
   const std::string base = "/structure";
-  if (st.nodes.size() < 2)
-    throw InputError(file, base + "/nodes", "", "at least two nodes (got " + std::to_string(st.nodes.size()) + ")");
-  if (st.members.empty()) throw InputError(file, base + "/members", "[]", "at least one member");
-  if (st.supports.empty()) throw InputError(file, base + "/supports", "[]", "at least one support (an unsupported frame is a mechanism)");
   std::map<std::string, std::size_t> nodes;  // name -> index
   const auto& g = s.grid;
   for (std::size_t i = 0; i < st.nodes.size(); ++i) {
@@ -115,6 +112,49 @@ std::set<std::string> check_structure(const Scenario& s, const std::string& file
         throw InputError(file, p + "/position", value_text(n.position), os.str());
       }
   }
+  return nodes;
+}
+
+// One member between nodes a and b (p its JSON path): a length, an orientation off its axis (3D), a material members
+// may have, a pipe wall that fits its diameter.
+void check_member(const Scenario& s, const std::string& file, const MemberConfig& m, const std::string& p, std::size_t a, std::size_t b,
+                  const std::map<std::string, std::string>& models) {
+  const StructureConfig& st = s.structure;
+  const DVec &xa = st.nodes[a].position, &xb = st.nodes[b].position;
+  double l2 = 0;
+  for (std::size_t d = 0; d < xa.size(); ++d) l2 += (xb[d] - xa[d]) * (xb[d] - xa[d]);
+  if (!(l2 > 0))
+    throw InputError(file, p + "/end", quoted(m.end), "an end node away from the start node '" + m.start + "' (both are at " +
+                                                           value_text(xa) + ": a zero-length member)");
+  if (m.orientation.size() == 3) {  // 3D: its part normal to the member gives the section's depth direction
+    double o2 = 0, od = 0;
+    for (std::size_t d = 0; d < 3; ++d) o2 += m.orientation[d] * m.orientation[d], od += m.orientation[d] * (xb[d] - xa[d]);
+    if (!(o2 - od * od / l2 > 1e-12 * o2) || !(o2 > 0))
+      throw InputError(file, p + "/orientation", value_text(m.orientation),
+                       "a vector not parallel to the member (its part normal to the member is the section's depth direction)");
+  }
+  const auto mat = models.find(m.material);
+  if (mat == models.end()) throw InputError(file, p + "/material", quoted(m.material), "the name of one of the materials");
+  if (mat->second != "linear_elastic" && mat->second != "elastic_plastic")
+    throw InputError(file, p + "/material", quoted(m.material), "a linear_elastic or elastic_plastic material (beam-column members; '" +
+                                                                    m.material + "' is " + mat->second + ")");
+  if (mat->second == "elastic_plastic" && (m.release_start || m.release_end))
+    throw InputError(file, p + (m.release_start ? "/release_start" : "/release_end"), "true",
+                     "false for an elastic_plastic member (its end sections yield; a hinge is a linear_elastic member's release)");
+  const SectionConfig& c = m.section;
+  if (c.type == "pipe" && c.wall_thickness > 0.5 * c.diameter)
+    throw InputError(file, p + "/section/wall_thickness", value_text(c.wall_thickness),
+                     "a wall thickness <= diameter / 2 = " + value_text(0.5 * c.diameter) + " m");
+}
+
+std::set<std::string> check_structure(const Scenario& s, const std::string& file, const std::set<std::string>& bodies) {
+  const StructureConfig& st = s.structure;
+  const std::string base = "/structure";
+  if (st.nodes.size() < 2)
+    throw InputError(file, base + "/nodes", "", "at least two nodes (got " + std::to_string(st.nodes.size()) + ")");
+  if (st.members.empty()) throw InputError(file, base + "/members", "[]", "at least one member");
+  if (st.supports.empty()) throw InputError(file, base + "/supports", "[]", "at least one support (an unsupported frame is a mechanism)");
+  const std::map<std::string, std::size_t> nodes = check_frame_nodes(s, file);
   std::map<std::string, std::string> models;  // material name -> model
   for (const auto& m : s.materials) models[m.name] = m.model;
   auto node_ref = [&](const std::string& name, const std::string& path) {
@@ -132,32 +172,8 @@ std::set<std::string> check_structure(const Scenario& s, const std::string& file
       throw InputError(file, p + "/name", quoted(m.name), "a name that no body has (probes refer to bodies and members by name)");
     const std::size_t a = node_ref(m.start, p + "/start"), b = node_ref(m.end, p + "/end");
     if (a == b) throw InputError(file, p + "/end", quoted(m.end), "a node other than the start node");
-    const DVec &xa = st.nodes[a].position, &xb = st.nodes[b].position;
-    double l2 = 0;
-    for (std::size_t d = 0; d < xa.size(); ++d) l2 += (xb[d] - xa[d]) * (xb[d] - xa[d]);
-    if (!(l2 > 0))
-      throw InputError(file, p + "/end", quoted(m.end), "an end node away from the start node '" + m.start + "' (both are at " +
-                                                             value_text(xa) + ": a zero-length member)");
     connected[a] = connected[b] = true;
-    if (m.orientation.size() == 3) {  // 3D: its part normal to the member gives the section's depth direction
-      double o2 = 0, od = 0;
-      for (std::size_t d = 0; d < 3; ++d) o2 += m.orientation[d] * m.orientation[d], od += m.orientation[d] * (xb[d] - xa[d]);
-      if (!(o2 - od * od / l2 > 1e-12 * o2) || !(o2 > 0))
-        throw InputError(file, p + "/orientation", value_text(m.orientation),
-                         "a vector not parallel to the member (its part normal to the member is the section's depth direction)");
-    }
-    const auto mat = models.find(m.material);
-    if (mat == models.end()) throw InputError(file, p + "/material", quoted(m.material), "the name of one of the materials");
-    if (mat->second != "linear_elastic" && mat->second != "elastic_plastic")
-      throw InputError(file, p + "/material", quoted(m.material), "a linear_elastic or elastic_plastic material (beam-column members; '" +
-                                                                      m.material + "' is " + mat->second + ")");
-    if (mat->second == "elastic_plastic" && (m.release_start || m.release_end))
-      throw InputError(file, p + (m.release_start ? "/release_start" : "/release_end"), "true",
-                       "false for an elastic_plastic member (its end sections yield; a hinge is a linear_elastic member's release)");
-    const SectionConfig& c = m.section;
-    if (c.type == "pipe" && c.wall_thickness > 0.5 * c.diameter)
-      throw InputError(file, p + "/section/wall_thickness", value_text(c.wall_thickness),
-                       "a wall thickness <= diameter / 2 = " + value_text(0.5 * c.diameter) + " m");
+    check_member(s, file, m, p, a, b, models);
   }
   for (std::size_t i = 0; i < st.nodes.size(); ++i)
     if (!connected[i])
