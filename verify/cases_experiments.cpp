@@ -63,7 +63,7 @@ std::vector<CaseResult> lobovsky() {
   return stamp(r, timer.seconds());
 }
 
-// examples/dam_break_kleefsman_3d.json at H/h = 10, 15, 20 to T = 4.5 (about 7 min on two cores: run by name).
+// examples/dam_break_kleefsman_3d.json at H/h = 10, 15, 20 to T = 4.5 (a long case: run by name).
 // Kleefsman, Fekken, Veldman, Iwanowski & Buchner (2005), J. Comput. Phys. 206, 363-393 (MARIN, SPHERIC test 2): the
 // pressure on the block's water-facing face at 0.021 m (P1) and 0.101 m (P3), one record as digitised by the PySPH
 // project. Metric: the mean over T 2.5-4.5, the load after the impact, on the 80 mm sensors, at the finest grid; the
@@ -161,7 +161,7 @@ std::vector<CaseResult> at_rest() {
 std::vector<ValidationCase> experiment_validation_cases() {
   return {{"lobovsky", "water dam break on a wall (Lobovsky et al. 2014): the quasi-static pressure at 80 mm, three grids", lobovsky},
           {"at_rest", "water and sand started geostatic: hydrostatic wall pressure, earth pressure between Ka and K0, no ringing", at_rest},
-          {"kleefsman", "water dam break on a block in a 3D tank (Kleefsman et al. 2005): the face pressures after the impact, three grids (8 min; by name)",
+          {"kleefsman", "water dam break on a block in a 3D tank (Kleefsman et al. 2005): the face pressures after the impact, three grids (long)",
            kleefsman, false}};
 }
 
