@@ -63,12 +63,6 @@ template <int D> void check_member_overlaps(const Scenario& s, const Scene<D>& s
     }
 }
 
-template <int D> Vec<D> vec(const DVec& v) {
-  Vec<D> r;
-  for (int d = 0; d < D; ++d) r[d] = v[d];
-  return r;
-}
-
 template <int D> bool inside(const ShapeConfig& s, const Vec<D>& x) { return shape_contains(s, x.data(), D); }
 
 // Reach of the body from a seeded particle at x along -e_d (lo) and +e_d (hi): half the spacing dx where the

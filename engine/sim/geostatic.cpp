@@ -1,7 +1,7 @@
 #include "engine/sim/geostatic.hpp"
 
+#include <array>
 #include <cmath>
-#include <limits>
 #include <map>
 
 #include "engine/common/error.hpp"

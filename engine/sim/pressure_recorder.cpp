@@ -7,20 +7,15 @@
 #include <limits>
 
 #include "engine/common/error.hpp"
+#include "engine/sim/build_scene.hpp"
 
 namespace dmi {
 namespace {
 
-template <int D> Vec<D> vec_of(const DVec& v) {
-  Vec<D> x;
-  for (int d = 0; d < D; ++d) x[d] = v[static_cast<std::size_t>(d)];
-  return x;
-}
-
 // The sensor's patch on a member's face: the point's projection on the nearest element's initial chord gives the
 // face normal (from the centre-line through the point); the square's first axis runs along the member.
 template <int D> PressurePatch<D> member_patch(const FrameOf<D>& f, const FrameMemberDef& m, const SensorConfig& c, double thickness) {
-  const Vec<D> x = vec_of<D>(c.point);
+  const Vec<D> x = vec<D>(c.point);
   double best = std::numeric_limits<double>::infinity();
   Vec<D> n = Vec<D>::Zero(), axis = Vec<D>::Zero();
   for (int e = m.first_element; e < m.first_element + m.elements; ++e) {
@@ -59,7 +54,7 @@ template <int D> PressureRecorder<D>::PressureRecorder(const Solver<D>& solver, 
   const FaceProfileConfig& fp = s.output.face_profile;
   if (fp.present && f) {
     face_members_ = fp.members;
-    direction_ = vec_of<D>(fp.direction);
+    direction_ = vec<D>(fp.direction);
     width_ = D == 2 ? s.analysis.thickness : fp.width;
     bin_of_.assign(static_cast<std::size_t>(f->nelements()), -1);
     double along = 0;

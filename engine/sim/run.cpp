@@ -157,7 +157,7 @@ void load_peak_snapshot(StateReader& r, std::optional<Snapshot>& s, double& forc
 template <int D> RunEstimate step_budget(const Solver<D>& solver, const Scenario& s) {
   const double dt0 = solver.stable_time_step(s.analysis.end_time);
   const double np = final_particles(solver.scene());
-  const RunEstimate guess = estimate_run(solver, s, np);
+  const RunEstimate guess = estimate_run(solver, s, dt0, np);
   const double est = guess.steps, wall = guess.wall_s;
   std::ostringstream end, os;
   end << s.analysis.end_time;

@@ -15,9 +15,9 @@ double particle_cost(const MaterialConfig& m, int dim) {
 
 }  // namespace
 
-template <int D> RunEstimate estimate_run(const Solver<D>& solver, const Scenario& s, double particles_at_end) {
+template <int D> RunEstimate estimate_run(const Solver<D>& solver, const Scenario& s, double dt0, double particles_at_end) {
   const Scene<D>& sc = solver.scene();
-  const double end = s.analysis.end_time, dt0 = solver.stable_time_step(end);
+  const double end = s.analysis.end_time;
   // Steps.
   bool free_body = false, others_rigid = true;
   double near = 0;
@@ -56,7 +56,7 @@ template <int D> RunEstimate estimate_run(const Solver<D>& solver, const Scenari
   return {steps, steps * cost};
 }
 
-template RunEstimate estimate_run<2>(const Solver<2>&, const Scenario&, double);
-template RunEstimate estimate_run<3>(const Solver<3>&, const Scenario&, double);
+template RunEstimate estimate_run<2>(const Solver<2>&, const Scenario&, double, double);
+template RunEstimate estimate_run<3>(const Solver<3>&, const Scenario&, double, double);
 
 }  // namespace dmi

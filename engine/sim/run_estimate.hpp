@@ -14,6 +14,7 @@ namespace dmi {
 // elastic; half for a rigid body, four times for a Kelvin-Voigt damped solid, whose viscosity takes sub-steps), each
 // member element at 0.5 us in a linear frame (one factorisation) and, in a corotational or plastic one, 5 us (2D) or
 // 12 us (3D), six times that for an elasto-plastic element; and 5 us.
-template <int D> RunEstimate estimate_run(const Solver<D>& solver, const Scenario& s, double particles_at_end);
+// dt0: the solver's first stable step.
+template <int D> RunEstimate estimate_run(const Solver<D>& solver, const Scenario& s, double dt0, double particles_at_end);
 
 }  // namespace dmi

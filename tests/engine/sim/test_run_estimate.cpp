@@ -23,7 +23,7 @@ TEST(RunEstimate, WaterBlockByHand) {
   const Scenario s = parse_scenario(j, "block.json");
   const Solver<2> solver(build_scene<2>(s));
   ASSERT_EQ(solver.scene().particles.size(), 800u);
-  const RunEstimate e = estimate_run(solver, s, 800);
+  const RunEstimate e = estimate_run(solver, s, solver.stable_time_step(0.1), 800);
   EXPECT_NEAR(e.steps, 0.1 / solver.stable_time_step(0.1), 1e-9 * e.steps);
   EXPECT_NEAR(e.wall_s / e.steps, 800 * 100e-9 + 5e-6, 1e-15);
 }
@@ -42,7 +42,7 @@ TEST(RunEstimate, BoulderRigidInFlight) {
   const Scenario s = parse_scenario(j, "boulder.json");
   const Solver<2> solver(build_scene<2>(s));
   const double dt0 = solver.stable_time_step(0.2), near = 6 * 0.05 / 5.0;
-  const RunEstimate e = estimate_run(solver, s, static_cast<double>(solver.scene().particles.size()));
+  const RunEstimate e = estimate_run(solver, s, dt0, static_cast<double>(solver.scene().particles.size()));
   EXPECT_NEAR(e.steps, near / dt0 + (0.2 - near) / 0.001, 1e-6 * e.steps);
 }
 
