@@ -6,6 +6,7 @@
 
 #include "engine/mpm/solver.hpp"
 #include "engine/sim/build_scene.hpp"
+#include "verify/cases_members.hpp"
 #include "verify/validate.hpp"
 
 namespace dmi {
@@ -152,8 +153,7 @@ double height_rms(const DamBreak& d) {
   double sum = 0;
   int n = 0;
   for (std::size_t k = 0; k < tau.size() && tau[k] <= d.tau.back(); ++k) {
-    const std::size_t j = static_cast<std::size_t>(std::lower_bound(d.tau.begin(), d.tau.end(), tau[k]) - d.tau.begin());
-    const double w = (tau[k] - d.tau[j - 1]) / (d.tau[j] - d.tau[j - 1]), sim = d.height[j - 1] + w * (d.height[j] - d.height[j - 1]);
+    const double sim = interpolate(d.tau, d.height, tau[k]);
     sum += (sim - H[k]) * (sim - H[k]), ++n;
   }
   return std::sqrt(sum / n);
