@@ -371,6 +371,14 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
           ei.width, ei.height, &ei);
     }
   }
+  // A chart as PNG and SVG into the images and the manifest.
+  auto draw = [&](ChartSpec& spec, const std::string& name, const std::string& caption) {
+    spec.svg_path = (fs::path(image_dir) / fs::path(name).replace_extension(".svg")).string();
+    spec.draw = mine();
+    render_chart(spec, (fs::path(image_dir) / name).string());
+    add(name, "chart", "", caption, spec.width, spec.height, nullptr);
+    manifest.back()["vector_file"] = fs::path(spec.svg_path).filename().string();
+  };
   // Charts: every run overlaid (the bare run dashed).
   auto overlay = [&](const std::string& file, const std::string& title, const std::string& ylabel, auto&& series_of, double scale,
                      std::vector<Curve> extra = {}, double x_max = 0) {
@@ -392,13 +400,6 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
     small.curves = small_magnitude_curves(c.curves);
     for (auto& e : extra) c.curves.push_back(e);
     if (c.curves.empty()) return;
-    auto draw = [&](ChartSpec& spec, const std::string& name, const std::string& caption) {
-      spec.svg_path = (fs::path(image_dir) / fs::path(name).replace_extension(".svg")).string();
-      spec.draw = mine();
-      render_chart(spec, (fs::path(image_dir) / name).string());
-      add(name, "chart", "", caption, spec.width, spec.height, nullptr);
-      manifest.back()["vector_file"] = fs::path(spec.svg_path).filename().string();
-    };
     draw(c, file, title);
     if (!small.curves.empty()) {
       small.title = title + ", the runs below a tenth of the largest peak";
@@ -408,15 +409,10 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
   if (ChartSpec fp = face_profile_chart(runs); !fp.curves.empty()) {  // a bare impact's MPa beside a buffered kPa: panels of their own
     ChartSpec small = fp;
     small.curves = small_magnitude_curves(fp.curves, true);
-    for (auto* spec : {&fp, &small}) {
-      if (spec->curves.empty()) continue;
-      const std::string name = spec == &fp ? "chart_face_profile.png" : "chart_face_profile_small.png";
-      if (spec == &small) spec->title = "contact pressure on the struck face: the runs below a tenth of the largest";
-      spec->svg_path = (fs::path(image_dir) / fs::path(name).replace_extension(".svg")).string();
-      spec->draw = mine();
-      render_chart(*spec, (fs::path(image_dir) / name).string());
-      add(name, "chart", "", spec->title, spec->width, spec->height, nullptr);
-      manifest.back()["vector_file"] = fs::path(spec->svg_path).filename().string();
+    draw(fp, "chart_face_profile.png", fp.title);
+    if (!small.curves.empty()) {
+      small.title = "contact pressure on the struck face: the runs below a tenth of the largest";
+      draw(small, "chart_face_profile_small.png", small.title);
     }
   }
   const bool frames = std::all_of(runs.begin(), runs.end(), [](const RunData& r) { return r.frame && !r.frame->supports.empty(); });
@@ -479,13 +475,7 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
         const double ft = lc["phi_flexure"].get<double>() * lc["tensile_strength_Pa"].get<double>() * 1e-6;
         e.curves.push_back(limit_line("tension limit", ft, 0, smax, true));
       }
-      if (!e.curves.empty()) {
-        e.svg_path = (fs::path(image_dir) / "chart_envelope.svg").string();
-        e.draw = mine();
-        render_chart(e, (fs::path(image_dir) / "chart_envelope.png").string());
-        add("chart_envelope.png", "chart", "", e.title, e.width, e.height, nullptr);
-        manifest.back()["vector_file"] = "chart_envelope.svg";
-      }
+      if (!e.curves.empty()) draw(e, "chart_envelope.png", e.title);
     }
   }
   if (assist) return json{{"images", manifest}};  // the second process: the pictures only
