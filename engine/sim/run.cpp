@@ -190,239 +190,297 @@ template <class F> void record_periods(const F& f, RunInfo& info) {
   for (std::size_t k = 0; k < w.size(); ++k) info.numbers["frame_period_" + std::to_string(k + 1)] = 2 * std::numbers::pi / w[k];
 }
 
-template <int D> RunOutput run(const Scenario& s, const RunOptions& o) {
-  namespace fs = std::filesystem;
-  const auto t0 = std::chrono::steady_clock::now();
-  Solver<D> solver(build_scene<D>(s));
-  Recorder<D> rec(solver, s);
-  RunInfo info = make_info(s, o);
-  info.numbers["particles"] = static_cast<double>(solver.scene().particles.size());
-  if (const auto* f = solver.scene().frame.get()) record_periods(*f, info);
-  // A CFL factor above the scheme's measured stability limit is reduced to it, with a message (docs/reliability.md).
-  if (const double lim = stable_cfl_limit(s.mpm.shape, s.mpm.transfer); s.analysis.cfl > lim && !s.mpm.allow_unstable_cfl) {
-    solver.scene().options.cfl = lim;
-    char msg[256];
-    std::snprintf(msg, sizeof msg, "/analysis/cfl = %g is above the stable limit %g measured for %s %s; the run uses %g", s.analysis.cfl, lim,
-                  name_of(s.mpm.shape), s.mpm.transfer == TransferKind::apic ? "APIC" : "FLIP", lim);
-    info.strings["notes"] = msg;
-    info.numbers["cfl_used"] = lim;
-    if (o.progress != ProgressMode::quiet) std::fprintf(stderr, "damimpact: note: %s\n", msg);
-  }
+// One run: the solver and its recorder, the step loop, results.h5 with its snapshots (periodic, and one at the member
+// contact's peak), the checkpoint, and the RunInfo written at the end.
+template <int D> class RunDriver {
+ public:
+  RunDriver(const Scenario& s, const RunOptions& o)
+      : s_(s), o_(o), solver_(build_scene<D>(s)), rec_(solver_, s), info_(make_info(s, o)), files_(!o.out_dir.empty()),
+        fingerprint_(scenario_fingerprint(s)), end_(s.analysis.end_time), eps_(1e-12 * s.analysis.end_time) {}
 
-  if (!o.restart) {
-    const RunEstimate e = step_budget(solver, s);
-    info.numbers["steps_estimate"] = e.steps, info.numbers["wall_estimate_s"] = e.wall_s;
-  }
-
-  // SIGINT and SIGTERM stop the run cleanly from before its partial results file exists.
-  const InterruptScope signals;
-  std::unique_ptr<ResultsWriter> writer;
-  const bool files = !o.out_dir.empty();
-  std::string results_path, ckpt;
-  const std::uint64_t fingerprint = scenario_fingerprint(s);
-  LoopState loop;
-  std::optional<Snapshot> peak_snap;  // the state at the largest member contact force so far, not yet written
-  double peak_snapped = 0;            // its force (N)
-  if (o.restart && !files) throw InputError("--restart needs the output folder of the run to continue (-o)");
-  if (files) {
-    fs::create_directories(o.out_dir);
-    if (s.output.vtk) fs::create_directories(fs::path(o.out_dir) / "fields");
-    results_path = (fs::path(o.out_dir) / "results.h5").string();
-    ckpt = (fs::path(o.out_dir) / kCheckpointName).string();
-    if (!o.restart) check_disk_space(s, static_cast<std::size_t>(final_particles(solver.scene())), o.out_dir);
-  }
-  if (o.restart) {  // the state of the checkpoint, and the partial results up to it
-    StateReader r(read_checkpoint(ckpt, D, fingerprint), ckpt);
-    solver.load_state(r);
-    rec.load_state(r);
-    loop.load(r);
-    load_peak_snapshot(r, peak_snap, peak_snapped);
-    if (!r.at_end()) r.fail("unread bytes after the step-loop state");
-    writer = std::make_unique<ResultsWriter>(results_path, info, ResultsWriter::Resume{loop.snapshots});
-  } else if (files) {
-    std::error_code ec;
-    fs::remove(ckpt, ec);  // a checkpoint of an earlier run in this folder no longer matches its partial results
-    writer = std::make_unique<ResultsWriter>(results_path, info);
-  }
-  // The state at the largest member contact force: kept at each new peak and written once
-  // the force has fallen below 90 % of it, or at the end, so that the pictures of a short pulse have a snapshot at its
-  // peak whatever the snapshot interval (the reader orders snapshots by time); a checkpoint carries it.
-  auto write_peak = [&] {
-    if (files && peak_snap) writer->write_snapshot(*peak_snap), ++loop.snapshots;
-    peak_snap.reset();
-  };
-  auto track_peak = [&] {
-    const auto* mc = solver.member_contact();
-    if (!files || !mc || s.output.snapshot_interval <= 0) return;
-    const double f = mc->force().norm();
-    if (f > peak_snapped) {
-      peak_snap = rec.snapshot(solver), peak_snapped = f;
-    } else if (peak_snap && f < 0.9 * peak_snapped) {
-      write_peak();
-    }
-  };
-  auto snapshot = [&]() {
-    if (!files) return;
-    const Snapshot snap = rec.snapshot(solver);
-    writer->write_snapshot(snap);
-    ++loop.snapshots;
-    if (s.output.vtk) {
-      char name[64];
-      std::snprintf(name, sizeof name, "particles_%04zu.vtu", loop.vtk_files.size());
-      write_vtu((fs::path(o.out_dir) / "fields" / name).string(), snap);
-      loop.vtk_files.emplace_back(snap.time, name);
-      if (const auto* f = solver.scene().frame.get()) {
-        std::snprintf(name, sizeof name, "members_%04zu.vtu", loop.member_files.size());
-        write_lines_vtu((fs::path(o.out_dir) / "fields" / name).string(), Recorder<D>::member_snapshot(*f));
-        loop.member_files.emplace_back(snap.time, name);
-      }
-    }
-  };
-  auto wall_now = [&]() { return loop.wall_seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
-  auto checkpoint = [&]() {  // between steps: everything the next step reads
-    StateWriter w;
-    solver.save_state(w);
-    rec.save_state(w);
-    LoopState l = loop;
-    l.wall_seconds = wall_now();
-    l.save(w);
-    save_peak_snapshot(w, peak_snap, peak_snapped);
-    write_checkpoint(ckpt, D, fingerprint, w.bytes());
-  };
-
-  const double end = s.analysis.end_time;
-  const double eps = 1e-12 * end;
-  // The first multiple of `interval` after t (one division, whatever dt / interval is).
-  auto next_after = [eps](double t, double interval) { return interval * (std::floor((t + eps) / interval) + 1); };
-  if (!o.restart) {
-    rec.sample(solver, 0.0);
+  RunOutput execute() {
+    describe();
+    const InterruptScope signals;  // SIGINT and SIGTERM stop the run cleanly from before its partial results file exists
+    open_output();
+    if (!o_.restart) start();
+    Progress progress(o_.progress, end_, s_.name);
+    first_step_ = solver_.steps();
+    solver_.profile(o_.profile);
+    last_ckpt_ = Clock::now();
+    // One thread below kParallelScene particles (re-checked as an inflow adds them); results do not depend on it. The
+    // calling thread's count is restored however the run ends (a sweep runs its next case on the same thread).
+    requested_ = omp_get_max_threads();
+    const RestoreThreads restore{requested_};
+    choose_threads();
+    while (solver_.time() < end_ - eps_) step(progress);
+    write_peak();
     snapshot();
-    loop.next_sample = s.output.history_interval, loop.next_snap = s.output.snapshot_interval;
-    loop.dt_min = std::numeric_limits<double>::infinity(), loop.dt_max = 0, loop.courant_max = 0, loop.j_min = solver.min_jacobian();
+    progress.finish(solver_.time(), solver_.steps());
+    record_end();
+    return finish();
   }
-  Progress progress(o.progress, end, s.name);
-  const long first_step = solver.steps();
-  double profile_time_step = 0, profile_recorder = 0;  // o.profile: stable_time_step; recorder, snapshots, progress
-  solver.profile(o.profile);
-  auto last_ckpt = std::chrono::steady_clock::now();
-  // One thread below kParallelScene particles (re-checked as an inflow adds them); results do not depend on it. The
-  // calling thread's count is restored however the run ends (a sweep runs its next case on the same thread).
-  const int requested = omp_get_max_threads();
+
+ private:
+  using Clock = std::chrono::steady_clock;
   struct RestoreThreads {
     int n;
     ~RestoreThreads() { omp_set_num_threads(n); }
-  } restore{requested};
-  int used = 0;
-  auto choose_threads = [&] {
-    const int t = static_cast<Index>(solver.scene().particles.size()) >= kParallelScene ? requested : 1;
-    if (t != omp_get_max_threads()) omp_set_num_threads(t);
-    used = std::max(used, t);
   };
-  choose_threads();
-  while (solver.time() < end - eps) {
-    if (solver.steps() % 64 == 0) choose_threads();
-    const bool stop = o.stop_after_steps > 0 && solver.steps() >= o.stop_after_steps && solver.steps() > first_step;
-    if (g_signal != 0 || stop) stop_run(g_signal, solver, rec, info, writer.get(), results_path, wall_now(), checkpoint, ckpt);
-    const auto tp0 = o.profile ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
-    const double dt = solver.stable_time_step(end - solver.time());
-    loop.courant_max = std::max(loop.courant_max, solver.courant());
-    const auto tp1 = o.profile ? std::chrono::steady_clock::now() : tp0;
-    solver.step(dt);
-    const auto tp2 = o.profile ? std::chrono::steady_clock::now() : tp0;
-    rec.accumulate(solver, dt);
-    track_peak();
-    loop.dt_min = std::min(loop.dt_min, dt);
-    loop.dt_max = std::max(loop.dt_max, dt);
-    const bool last = solver.time() >= end - eps;
-    if (last || s.output.history_interval <= 0 || solver.time() >= loop.next_sample - eps) {
-      rec.sample(solver, dt);
-      loop.j_min = std::min(loop.j_min, solver.min_jacobian());
-      if (s.output.history_interval > 0) loop.next_sample = next_after(solver.time(), s.output.history_interval);
+
+  // The scene's particles and periods, the CFL factor used and the first guess of the run's cost.
+  void describe() {
+    info_.numbers["particles"] = static_cast<double>(solver_.scene().particles.size());
+    if (const auto* f = solver_.scene().frame.get()) record_periods(*f, info_);
+    // A CFL factor above the scheme's measured stability limit is reduced to it, with a message (docs/reliability.md).
+    if (const double lim = stable_cfl_limit(s_.mpm.shape, s_.mpm.transfer); s_.analysis.cfl > lim && !s_.mpm.allow_unstable_cfl) {
+      solver_.scene().options.cfl = lim;
+      char msg[256];
+      std::snprintf(msg, sizeof msg, "/analysis/cfl = %g is above the stable limit %g measured for %s %s; the run uses %g", s_.analysis.cfl,
+                    lim, name_of(s_.mpm.shape), s_.mpm.transfer == TransferKind::apic ? "APIC" : "FLIP", lim);
+      info_.strings["notes"] = msg;
+      info_.numbers["cfl_used"] = lim;
+      if (o_.progress != ProgressMode::quiet) std::fprintf(stderr, "damimpact: note: %s\n", msg);
     }
-    if (!last && s.output.snapshot_interval > 0 && solver.time() >= loop.next_snap - eps) {
-      snapshot();
-      loop.next_snap = next_after(solver.time(), s.output.snapshot_interval);
-    }
-    progress.update(solver.time(), solver.steps(), dt);
-    if (o.profile) {
-      const auto tp3 = std::chrono::steady_clock::now();
-      profile_time_step += std::chrono::duration<double>(tp1 - tp0).count();
-      profile_recorder += std::chrono::duration<double>(tp3 - tp2).count();
-    }
-    if (files && !last && o.checkpoint_every > 0 &&
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - last_ckpt).count() >= o.checkpoint_every) {
-      checkpoint();
-      last_ckpt = std::chrono::steady_clock::now();
+    if (!o_.restart) {
+      const RunEstimate e = step_budget(solver_, s_);
+      info_.numbers["steps_estimate"] = e.steps, info_.numbers["wall_estimate_s"] = e.wall_s;
     }
   }
-  write_peak();
-  snapshot();
-  progress.finish(solver.time(), solver.steps());
 
-  info.numbers["steps"] = static_cast<double>(solver.steps());
-  info.numbers["wall_seconds"] = wall_now();
-  info.numbers["particles"] = static_cast<double>(solver.scene().particles.size());  // at the end (an inflow adds them)
-  if (o.profile) {
+  // The output folder and results.h5: new, or resumed with the state of the checkpoint and the partial results up to it.
+  void open_output() {
+    namespace fs = std::filesystem;
+    if (o_.restart && !files_) throw InputError("--restart needs the output folder of the run to continue (-o)");
+    if (files_) {
+      fs::create_directories(o_.out_dir);
+      if (s_.output.vtk) fs::create_directories(fs::path(o_.out_dir) / "fields");
+      results_path_ = (fs::path(o_.out_dir) / "results.h5").string();
+      ckpt_ = (fs::path(o_.out_dir) / kCheckpointName).string();
+      if (!o_.restart) check_disk_space(s_, static_cast<std::size_t>(final_particles(solver_.scene())), o_.out_dir);
+    }
+    if (o_.restart) {
+      StateReader r(read_checkpoint(ckpt_, D, fingerprint_), ckpt_);
+      solver_.load_state(r);
+      rec_.load_state(r);
+      loop_.load(r);
+      load_peak_snapshot(r, peak_snap_, peak_snapped_);
+      if (!r.at_end()) r.fail("unread bytes after the step-loop state");
+      writer_ = std::make_unique<ResultsWriter>(results_path_, info_, ResultsWriter::Resume{loop_.snapshots});
+    } else if (files_) {
+      std::error_code ec;
+      fs::remove(ckpt_, ec);  // a checkpoint of an earlier run in this folder no longer matches its partial results
+      writer_ = std::make_unique<ResultsWriter>(results_path_, info_);
+    }
+  }
+
+  // A new run's first sample and snapshot.
+  void start() {
+    rec_.sample(solver_, 0.0);
+    snapshot();
+    loop_.next_sample = s_.output.history_interval, loop_.next_snap = s_.output.snapshot_interval;
+    loop_.dt_min = std::numeric_limits<double>::infinity(), loop_.dt_max = 0, loop_.courant_max = 0, loop_.j_min = solver_.min_jacobian();
+  }
+
+  // The first multiple of `interval` after t (one division, whatever dt / interval is).
+  double next_after(double t, double interval) const { return interval * (std::floor((t + eps_) / interval) + 1); }
+
+  // One step and what follows it: histories, snapshots, progress, profile and checkpoint.
+  void step(Progress& progress) {
+    if (solver_.steps() % 64 == 0) choose_threads();
+    const bool stop = o_.stop_after_steps > 0 && solver_.steps() >= o_.stop_after_steps && solver_.steps() > first_step_;
+    if (g_signal != 0 || stop)
+      stop_run(g_signal, solver_, rec_, info_, writer_.get(), results_path_, wall_now(), [this] { checkpoint(); }, ckpt_);
+    const auto tp0 = o_.profile ? Clock::now() : Clock::time_point{};
+    const double dt = solver_.stable_time_step(end_ - solver_.time());
+    loop_.courant_max = std::max(loop_.courant_max, solver_.courant());
+    const auto tp1 = o_.profile ? Clock::now() : tp0;
+    solver_.step(dt);
+    const auto tp2 = o_.profile ? Clock::now() : tp0;
+    rec_.accumulate(solver_, dt);
+    track_peak();
+    loop_.dt_min = std::min(loop_.dt_min, dt);
+    loop_.dt_max = std::max(loop_.dt_max, dt);
+    const bool last = solver_.time() >= end_ - eps_;
+    if (last || s_.output.history_interval <= 0 || solver_.time() >= loop_.next_sample - eps_) {
+      rec_.sample(solver_, dt);
+      loop_.j_min = std::min(loop_.j_min, solver_.min_jacobian());
+      if (s_.output.history_interval > 0) loop_.next_sample = next_after(solver_.time(), s_.output.history_interval);
+    }
+    if (!last && s_.output.snapshot_interval > 0 && solver_.time() >= loop_.next_snap - eps_) {
+      snapshot();
+      loop_.next_snap = next_after(solver_.time(), s_.output.snapshot_interval);
+    }
+    progress.update(solver_.time(), solver_.steps(), dt);
+    if (o_.profile) {
+      const auto tp3 = Clock::now();
+      profile_time_step_ += std::chrono::duration<double>(tp1 - tp0).count();
+      profile_recorder_ += std::chrono::duration<double>(tp3 - tp2).count();
+    }
+    if (files_ && !last && o_.checkpoint_every > 0 && std::chrono::duration<double>(Clock::now() - last_ckpt_).count() >= o_.checkpoint_every) {
+      checkpoint();
+      last_ckpt_ = Clock::now();
+    }
+  }
+
+  void choose_threads() {
+    const int t = static_cast<Index>(solver_.scene().particles.size()) >= kParallelScene ? requested_ : 1;
+    if (t != omp_get_max_threads()) omp_set_num_threads(t);
+    used_ = std::max(used_, t);
+  }
+
+  double wall_now() const { return loop_.wall_seconds + std::chrono::duration<double>(Clock::now() - t0_).count(); }
+
+  void snapshot() {
+    namespace fs = std::filesystem;
+    if (!files_) return;
+    const Snapshot snap = rec_.snapshot(solver_);
+    writer_->write_snapshot(snap);
+    ++loop_.snapshots;
+    if (!s_.output.vtk) return;
+    char name[64];
+    std::snprintf(name, sizeof name, "particles_%04zu.vtu", loop_.vtk_files.size());
+    write_vtu((fs::path(o_.out_dir) / "fields" / name).string(), snap);
+    loop_.vtk_files.emplace_back(snap.time, name);
+    if (const auto* f = solver_.scene().frame.get()) {
+      std::snprintf(name, sizeof name, "members_%04zu.vtu", loop_.member_files.size());
+      write_lines_vtu((fs::path(o_.out_dir) / "fields" / name).string(), Recorder<D>::member_snapshot(*f));
+      loop_.member_files.emplace_back(snap.time, name);
+    }
+  }
+
+  // The state at the largest member contact force: kept at each new peak and written once the force has fallen below
+  // 90 % of it, or at the end, so that the pictures of a short pulse have a snapshot at its peak whatever the snapshot
+  // interval (the reader orders snapshots by time); a checkpoint carries it.
+  void track_peak() {
+    const auto* mc = solver_.member_contact();
+    if (!files_ || !mc || s_.output.snapshot_interval <= 0) return;
+    const double f = mc->force().norm();
+    if (f > peak_snapped_)
+      peak_snap_ = rec_.snapshot(solver_), peak_snapped_ = f;
+    else if (peak_snap_ && f < 0.9 * peak_snapped_)
+      write_peak();
+  }
+
+  void write_peak() {
+    if (files_ && peak_snap_) writer_->write_snapshot(*peak_snap_), ++loop_.snapshots;
+    peak_snap_.reset();
+  }
+
+  // Between steps: everything the next step reads.
+  void checkpoint() {
+    StateWriter w;
+    solver_.save_state(w);
+    rec_.save_state(w);
+    LoopState l = loop_;
+    l.wall_seconds = wall_now();
+    l.save(w);
+    save_peak_snapshot(w, peak_snap_, peak_snapped_);
+    write_checkpoint(ckpt_, D, fingerprint_, w.bytes());
+  }
+
+  // The run's figures: its cost, the profile, numerical health, the structure's documents and the solid check.
+  void record_end() {
+    info_.numbers["steps"] = static_cast<double>(solver_.steps());
+    info_.numbers["wall_seconds"] = wall_now();
+    info_.numbers["particles"] = static_cast<double>(solver_.scene().particles.size());  // at the end (an inflow adds them)
+    if (o_.profile) record_profile();
+    info_.numbers["dt_min"] = loop_.dt_min;
+    info_.numbers["dt_max"] = loop_.dt_max;
+    info_.numbers["courant_max"] = loop_.courant_max;  // numerical health (docs/results.md)
+    info_.numbers["jacobian_min"] = std::isfinite(loop_.j_min) ? loop_.j_min : 1.0;
+    info_.numbers["threads"] = requested_;
+    info_.numbers["threads_used"] = used_;  // the most the step loop used (kParallelScene)
+    record_structure();
+    record_solver_stats();
+    if (s_.solid_check.present) {
+      const auto t1 = Clock::now();
+      const auto it = info_.documents.find("peak_contact");
+      auto docs = run_solid_check(s_, it == info_.documents.end() ? "" : it->second);
+      info_.documents["solid_check"] = std::move(docs.check), info_.documents["solid_field"] = std::move(docs.field);
+      info_.numbers["solid_check_seconds"] = std::chrono::duration<double>(Clock::now() - t1).count();
+    }
+    info_.strings["status"] = "complete";
+  }
+
+  void record_profile() {
     auto key = [](std::string n) {
       for (char& c : n) c = c == ' ' ? '_' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
       return "profile_" + n + "_seconds";
     };
-    for (int p = 0; p < Solver<D>::kPhases; ++p) info.numbers[key(Solver<D>::phase_name(p))] = solver.phase_seconds()[p];
-    info.numbers["profile_time_step_seconds"] = profile_time_step;
-    info.numbers["profile_recorder_seconds"] = profile_recorder;
-    info.numbers["rigid_passes_per_step"] = solver.steps() > first_step ? double(solver.rigid_passes()) / double(solver.steps() - first_step) : 0.0;
+    for (int p = 0; p < Solver<D>::kPhases; ++p) info_.numbers[key(Solver<D>::phase_name(p))] = solver_.phase_seconds()[p];
+    info_.numbers["profile_time_step_seconds"] = profile_time_step_;
+    info_.numbers["profile_recorder_seconds"] = profile_recorder_;
+    const long steps = solver_.steps() - first_step_;
+    info_.numbers["rigid_passes_per_step"] = steps > 0 ? double(solver_.rigid_passes()) / double(steps) : 0.0;
   }
-  info.numbers["dt_min"] = loop.dt_min;
-  info.numbers["dt_max"] = loop.dt_max;
-  info.numbers["courant_max"] = loop.courant_max;   // numerical health (docs/results.md)
-  info.numbers["jacobian_min"] = std::isfinite(loop.j_min) ? loop.j_min : 1.0;
-  info.numbers["threads"] = requested;
-  info.numbers["threads_used"] = used;  // the most the step loop used (kParallelScene)
-  if (solver.scene().frame) {
-    info.documents["structure"] = structure_document(s, *solver.scene().frame);
-    const std::string doc = rec.peak_contact_document(*solver.scene().frame);
-    if (!doc.empty()) info.documents["peak_contact"] = doc;
-    if (const std::string face = rec.face_profile_document(); !face.empty()) info.documents["face_profile"] = face;
+
+  void record_structure() {
+    const auto* frame = solver_.scene().frame.get();
+    if (!frame) return;
+    info_.documents["structure"] = structure_document(s_, *frame);
+    const std::string doc = rec_.peak_contact_document(*frame);
+    if (!doc.empty()) info_.documents["peak_contact"] = doc;
+    if (const std::string face = rec_.face_profile_document(); !face.empty()) info_.documents["face_profile"] = face;
   }
-  if (std::any_of(solver.scene().bodies.begin(), solver.scene().bodies.end(), [](const Body& b) { return b.rigid_when_free; })) {
-    info.numbers["free_rigid_switches"] = static_cast<double>(solver.free_switches());
-    info.numbers["free_rigid_steps"] = static_cast<double>(solver.free_rigid_steps());
+
+  void record_solver_stats() {
+    const auto& bodies = solver_.scene().bodies;
+    if (std::any_of(bodies.begin(), bodies.end(), [](const Body& b) { return b.rigid_when_free; })) {
+      info_.numbers["free_rigid_switches"] = static_cast<double>(solver_.free_switches());
+      info_.numbers["free_rigid_steps"] = static_cast<double>(solver_.free_rigid_steps());
+    }
+    if (const auto* iv = solver_.viscosity()) {
+      info_.numbers["viscous_steps"] = static_cast<double>(iv->stats().steps);
+      info_.numbers["viscous_stages"] = static_cast<double>(iv->stats().stages);
+    }
+    if (const auto* mc = solver_.member_contact()) {
+      const MemberContactStats& st = mc->stats();
+      info_.numbers["member_contact_candidates"] = static_cast<double>(st.candidates);
+      info_.numbers["member_contact_loaded"] = static_cast<double>(st.loaded);
+      info_.numbers["projection_iterations_mean"] = st.candidates > 0 ? double(st.projection_iterations) / st.candidates : 0.0;
+      info_.numbers["projection_iterations_max"] = st.max_projection_iterations;
+    }
   }
-  if (const auto* iv = solver.viscosity()) {
-    info.numbers["viscous_steps"] = static_cast<double>(iv->stats().steps);
-    info.numbers["viscous_stages"] = static_cast<double>(iv->stats().stages);
-  }
-  if (const auto* mc = solver.member_contact()) {
-    const MemberContactStats& st = mc->stats();
-    info.numbers["member_contact_candidates"] = static_cast<double>(st.candidates);
-    info.numbers["member_contact_loaded"] = static_cast<double>(st.loaded);
-    info.numbers["projection_iterations_mean"] = st.candidates > 0 ? double(st.projection_iterations) / st.candidates : 0.0;
-    info.numbers["projection_iterations_max"] = st.max_projection_iterations;
-  }
-  if (s.solid_check.present) {
-    const auto t1 = std::chrono::steady_clock::now();
-    const auto it = info.documents.find("peak_contact");
-    auto docs = run_solid_check(s, it == info.documents.end() ? "" : it->second);
-    info.documents["solid_check"] = std::move(docs.check), info.documents["solid_field"] = std::move(docs.field);
-    info.numbers["solid_check_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
-  }
-  info.strings["status"] = "complete";
-  RunOutput out;
-  out.results.info = info;
-  out.results.time = rec.time();
-  out.results.series = rec.series();
-  out.results.complete = true;
-  if (files) {
-    if (s.output.vtk) write_pvd((fs::path(o.out_dir) / "fields" / "particles.pvd").string(), loop.vtk_files);
-    if (s.output.vtk && !loop.member_files.empty())
-      write_pvd((fs::path(o.out_dir) / "fields" / "members.pvd").string(), loop.member_files);
-    writer->finish(out.results.time, out.results.series, info);
-    out.results_path = results_path;
+
+  // The results in memory and, with an output folder, results.h5 completed and the checkpoint removed.
+  RunOutput finish() {
+    namespace fs = std::filesystem;
+    RunOutput out;
+    out.results.info = info_;
+    out.results.time = rec_.time();
+    out.results.series = rec_.series();
+    out.results.complete = true;
+    if (!files_) return out;
+    if (s_.output.vtk) write_pvd((fs::path(o_.out_dir) / "fields" / "particles.pvd").string(), loop_.vtk_files);
+    if (s_.output.vtk && !loop_.member_files.empty()) write_pvd((fs::path(o_.out_dir) / "fields" / "members.pvd").string(), loop_.member_files);
+    writer_->finish(out.results.time, out.results.series, info_);
+    out.results_path = results_path_;
     std::error_code ec;
-    fs::remove(ckpt, ec);  // the run is complete: nothing to restart
+    fs::remove(ckpt_, ec);  // the run is complete: nothing to restart
+    return out;
   }
-  return out;
-}
+
+  const Scenario& s_;
+  const RunOptions& o_;
+  const Clock::time_point t0_ = Clock::now();
+  Solver<D> solver_;
+  Recorder<D> rec_;
+  RunInfo info_;
+  std::unique_ptr<ResultsWriter> writer_;
+  const bool files_;
+  std::string results_path_, ckpt_;
+  const std::uint64_t fingerprint_;
+  LoopState loop_;
+  std::optional<Snapshot> peak_snap_;  // the state at the largest member contact force so far, not yet written
+  double peak_snapped_ = 0;            // its force (N)
+  const double end_, eps_;
+  long first_step_ = 0;
+  double profile_time_step_ = 0, profile_recorder_ = 0;  // o.profile: stable_time_step; recorder, snapshots, progress
+  Clock::time_point last_ckpt_;
+  int requested_ = 1, used_ = 0;
+};
+
+template <int D> RunOutput run(const Scenario& s, const RunOptions& o) { return RunDriver<D>(s, o).execute(); }
 
 // A scenario with only a solid_check (no bodies): the solid-FE load cases, no time stepping.
 RunOutput run_solid_only(const Scenario& s, const RunOptions& o) {
