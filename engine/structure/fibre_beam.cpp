@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace dmi {
 
@@ -106,24 +108,29 @@ template <int NP> bool FibreBeam<NP>::elastic_at(const VecV& v, Trial& t) const 
 template <int NP> typename FibreBeam<NP>::Trial FibreBeam<NP>::state_at(const VecV& v) const {
   Trial t;
   if (elastic_at(v, t)) return t;
-  // From the committed state; failing that, by continuation: the same v reached in k sub-increments, each starting
-  // from the last one's forces and section deformations (the fibres always return from their committed history).
-  for (int k : {1, 4, 16, 64}) {
+  // From the committed state with Newton's full steps; failing that, with damped steps, and then by continuation: the
+  // same v reached in k sub-increments, each starting from the last one's forces and section deformations (the fibres
+  // always return from their committed history).
+  constexpr std::pair<int, bool> kAttempts[] = {{1, false}, {1, true}, {4, true}, {16, true}, {64, true}};
+  for (const auto& [k, damped] : kAttempts) {
     t.q = q_;
     t.e = e_;
     t.history = history_;
     bool ok = true;
-    for (int j = 1; j <= k; ++j) ok = iterate(v_ + (v - v_) * (double(j) / k), t);
+    for (int j = 1; j <= k && ok; ++j) ok = iterate(v_ + (v - v_) * (double(j) / k), t, damped);
     if (ok) return t;
   }
   throw std::runtime_error("FibreBeam: the element state did not converge (a fully plastic section under a growing force?)");
 }
 
-template <int NP> bool FibreBeam<NP>::iterate(const VecV& v, Trial& t) const {
+template <int NP> bool FibreBeam<NP>::iterate(const VecV& v, Trial& t, bool damped) const {
   constexpr int kMaxIterations = 50;
   const int n = static_cast<int>(points_.size());
   std::vector<SecM> fs(n);
   std::vector<SecV> r(n), ds(n);
+  // Newton's iteration on a piecewise-linear (bilinear fibre) response can cycle between two branches. Damped: a step
+  // that does not lower the unbalance halves the next one (down to 1/64), a step that does doubles it back up to 1.
+  double alpha = 1, previous = std::numeric_limits<double>::infinity();
   for (int it = 0;; ++it) {
     MatV F = MatV::Zero();
     VecV vr = VecV::Zero(), magnitude = v.cwiseAbs() + v_yield_;  // magnitude: the round-off scale of v - vr
@@ -149,8 +156,10 @@ template <int NP> bool FibreBeam<NP>::iterate(const VecV& v, Trial& t) const {
     for (int g = 0; g < n; ++g) unbalance = std::max(unbalance, ds[g].cwiseQuotient(s_yield_).cwiseAbs().maxCoeff());
     if (unbalance <= 1e-10) return true;
     if (it == kMaxIterations || !std::isfinite(unbalance)) return false;
-    t.q += dq;
-    for (int g = 0; g < n; ++g) t.e[g] += r[g] + fs[g] * (force_matrix(points_[g].xi) * dq);
+    if (damped) alpha = unbalance < previous ? std::min(1.0, 2 * alpha) : std::max(1.0 / 64, 0.5 * alpha);
+    previous = unbalance;
+    t.q += alpha * dq;
+    for (int g = 0; g < n; ++g) t.e[g] += alpha * (r[g] + fs[g] * (force_matrix(points_[g].xi) * dq));
   }
 }
 

@@ -87,7 +87,8 @@ template <int NP> class FibreBeam {
   void section(int g, const SecV& e, SecV& s, SecM& ks, std::vector<FibreHistory>* h) const;
   bool elastic_at(const VecV& v, Trial& t) const;  // virgin and every surface within its elastic range
   Trial state_at(const VecV& v) const;
-  bool iterate(const VecV& v, Trial& t) const;  // element state determination from t; false: not converged
+  // Element state determination from t (damped: halved steps where the unbalance stops falling); false: not converged.
+  bool iterate(const VecV& v, Trial& t, bool damped) const;
 
   SteelLaw law_;
   double L_ = 0, torsion_ = 0;
