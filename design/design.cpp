@@ -14,7 +14,6 @@
 #include "design/estimates.hpp"
 #include "design/pressures.hpp"
 #include "design/volume_health.hpp"
-#include "engine/scenario/design_basis_json.hpp"
 #include "design/phases.hpp"
 #include "design/local_damage_checks.hpp"
 #include "design/stability_checks.hpp"
@@ -107,16 +106,6 @@ json parse_document(const Results& r, const char* name, const std::string& where
   }
 }
 
-}  // namespace
-
-std::optional<DesignBasis> read_design_basis(const Results& r, const std::string& where) {
-  const json doc = parse_document(r, "design_basis", where);
-  if (doc.is_null()) return std::nullopt;
-  return design_basis_from_json(doc, where, "/documents/design_basis");
-}
-
-namespace {
-
 // Solid-FE peaks (Lin, Cheng & Tuan, Table 1) and their concrete checks: max principal vs phi_f f_t, min principal vs phi_c alpha f'c.
 json solid_part(const json& doc, const Limits& L, std::vector<Check>& checks, const std::string& where) {
   if (doc.is_null()) return nullptr;
@@ -152,50 +141,46 @@ json solid_part(const json& doc, const Limits& L, std::vector<Check>& checks, co
   return json{{"model", doc.value("model", json::object())}, {"cases", cases}};
 }
 
-double norm(const json& v) {
+double norm(const std::vector<double>& v) {
   double s = 0;
-  for (const auto& c : v) s += c.get<double>() * c.get<double>();
+  for (double c : v) s += c * c;
   return std::sqrt(s);
 }
 
 // Punching around the contact patch (ACI 318-19 Table 14.5.5.1(b)), concrete members only. Demand: the total contact
-// force of /documents/peak_contact (the step of the largest contact force), at the force-weighted position of its loads
-// on the most loaded member, where the member depth is taken.
-void punching(const json& pc, const std::vector<MemberEnvelope>& members, const Limits& L, std::vector<Check>& checks, const std::string& where) {
-  if (!L.concrete.punching_patch_width || pc.is_null()) return;
-  try {
-    std::map<std::string, std::pair<double, double>> on;  // member -> (sum |F|, sum |F| position)
-    for (const auto& l : pc.at("loads")) {
-      const double f = norm(l.at("force"));
-      auto& s = on[l.at("member").get<std::string>()];
-      s.first += f, s.second += f * std::clamp(l.at("position").get<double>(), 0.0, 1.0);
-    }
-    if (on.empty()) return;
-    const auto best = std::max_element(on.begin(), on.end(), [](const auto& a, const auto& b) { return a.second.first < b.second.first; });
-    const auto m = std::find_if(members.begin(), members.end(), [&](const MemberEnvelope& e) { return e.name == best->first; });
-    if (m == members.end() || m->cls != "concrete" || !(best->second.first > 0)) return;
-    const double pos = best->second.second / best->second.first;
-    const auto& st = m->stations;  // depth at the load: linear between stations
-    std::size_t k = 0;
-    while (k + 2 < st.size() && st[k + 1].position < pos) ++k;
-    const double w = std::clamp((pos - st[k].position) / (st[k + 1].position - st[k].position), 0.0, 1.0);
-    const double h = st[k].depth + w * (st[k + 1].depth - st[k].depth);
-    Check p;
-    p.id = "concrete_punching", p.title = "punching shear at the contact patch", p.member = m->name, p.material = "concrete", p.unit = "N";
-    p.level = "ultimate";
-    p.demand = norm(pc.at("total_force"));
-    p.capacity = concrete_punching_capacity(L.concrete.compressive_strength, L.concrete.lambda, *L.concrete.punching_patch_width,
-                                            *L.concrete.punching_patch_height, h, L.concrete.phi_shear);
-    p.position = pos, p.s_m = pos * m->length, p.time_s = pc.at("time").get<double>();
-    p.x_m = st[k].x + w * (st[k + 1].x - st[k].x), p.y_m = st[k].y + w * (st[k + 1].y - st[k].y), p.z_m = st[k].z + w * (st[k + 1].z - st[k].z);
-    p.space = m->dim == 3;
-    p.formula = "F_contact <= phi_v min(0.11 (1 + 2/beta), 0.22) lambda sqrt(f'c) b_o h, b_o = 2 (c1 + h) + 2 (c2 + h)";
-    p.source = "ACI 318-19 Table 14.5.5.1(b), 22.6.4.1";
-    p.finish();
-    checks.push_back(p);
-  } catch (const json::exception& e) {
-    throw std::runtime_error(where + ": /documents/peak_contact is malformed (" + std::string(e.what()) + ")");
+// force at the peak contact (the step of the largest contact force), at the force-weighted position of its loads on
+// the most loaded member, where the member depth is taken.
+void punching(const std::optional<PeakContact>& pc, const std::vector<MemberEnvelope>& members, const Limits& L, std::vector<Check>& checks) {
+  if (!L.concrete.punching_patch_width || !pc) return;
+  std::map<std::string, std::pair<double, double>> on;  // member -> (sum |F|, sum |F| position)
+  for (const ContactLoadAt& l : pc->loads) {
+    const double f = norm(l.force);
+    auto& s = on[l.member];
+    s.first += f, s.second += f * std::clamp(l.position, 0.0, 1.0);
   }
+  if (on.empty()) return;
+  const auto best = std::max_element(on.begin(), on.end(), [](const auto& a, const auto& b) { return a.second.first < b.second.first; });
+  const auto m = std::find_if(members.begin(), members.end(), [&](const MemberEnvelope& e) { return e.name == best->first; });
+  if (m == members.end() || m->cls != "concrete" || !(best->second.first > 0)) return;
+  const double pos = best->second.second / best->second.first;
+  const auto& st = m->stations;  // depth at the load: linear between stations
+  std::size_t k = 0;
+  while (k + 2 < st.size() && st[k + 1].position < pos) ++k;
+  const double w = std::clamp((pos - st[k].position) / (st[k + 1].position - st[k].position), 0.0, 1.0);
+  const double h = st[k].depth + w * (st[k + 1].depth - st[k].depth);
+  Check p;
+  p.id = "concrete_punching", p.title = "punching shear at the contact patch", p.member = m->name, p.material = "concrete", p.unit = "N";
+  p.level = "ultimate";
+  p.demand = norm(pc->total_force);
+  p.capacity = concrete_punching_capacity(L.concrete.compressive_strength, L.concrete.lambda, *L.concrete.punching_patch_width,
+                                          *L.concrete.punching_patch_height, h, L.concrete.phi_shear);
+  p.position = pos, p.s_m = pos * m->length, p.time_s = pc->time;
+  p.x_m = st[k].x + w * (st[k + 1].x - st[k].x), p.y_m = st[k].y + w * (st[k + 1].y - st[k].y), p.z_m = st[k].z + w * (st[k + 1].z - st[k].z);
+  p.space = m->dim == 3;
+  p.formula = "F_contact <= phi_v min(0.11 (1 + 2/beta), 0.22) lambda sqrt(f'c) b_o h, b_o = 2 (c1 + h) + 2 (c2 + h)";
+  p.source = "ACI 318-19 Table 14.5.5.1(b), 22.6.4.1";
+  p.finish();
+  checks.push_back(p);
 }
 
 // The verdict of one run: each level's own (checks, failed, passed, governing), and over the levels the limits judge
@@ -245,7 +230,7 @@ void require_documents(const Results& r, const std::string& where) {
 json design_run(const Results& r, const Limits& limits, const std::string& where) {
   if (!r.complete) throw std::runtime_error(where + ": the run did not finish (complete = 0); nothing to check");
   require_documents(r, where);
-  const std::optional<DesignBasis> basis = read_design_basis(r, where);
+  const std::optional<DesignBasis>& basis = r.info.design_basis;
   Limits L = limits;  // the steel's f_y is the one the run simulated, when its design basis gives it
   if (basis && is_set(basis->dam.yield_strength_Pa)) L.steel.yield_strength = basis->dam.yield_strength_Pa;
   json run{{"results_file", where}, {"scenario_name", r.info.scenario_name}, {"variant", r.info.variant}};
@@ -282,7 +267,7 @@ json design_run(const Results& r, const Limits& limits, const std::string& where
     run["dimension"] = f.dim;
   }
   run["contact"] = contact_json(c);
-  punching(parse_document(r, "peak_contact", where), members, L, checks, where);
+  punching(r.info.peak_contact, members, L, checks);
   run["solid"] = solid_part(parse_document(r, "solid_check", where), L, checks, where);
   run["plastic"] = frame ? plastic_part(r, *frame, members, basis, c, L.steel, checks, where) : json(nullptr);
   run["steel_yield_strength_Pa"] = L.steel.yield_strength;

@@ -19,8 +19,6 @@ constexpr int kDesignFormatVersion = 1;
 // closed-form estimates, checks and the verdict. `where` names the results file in errors.
 nlohmann::json design_run(const Results& r, const Limits& limits, const std::string& where);
 
-// The design basis the run carries (/documents/design_basis), validated; nullopt when it has none.
-std::optional<DesignBasis> read_design_basis(const Results& r, const std::string& where);
 
 // With vs without buffer: every compared peak and its reduction in % (docs/design-json.md "comparison").
 nlohmann::json compare_runs(const nlohmann::json& with_buffer, const nlohmann::json& without_buffer);

@@ -129,15 +129,12 @@ json residual_drift(const Results& r, const FrameInfo& f, const std::optional<De
 // smaller governs. A knife-edge contact (b = 0), the lower resistance curve.
 json dent(const Results& r, const FrameInfo& f, const std::optional<DesignBasis>& basis, const Contact& contact, const SteelLimits& S,
           std::vector<Check>& checks) {
-  const auto doc = r.info.documents.find("peak_contact");
-  if (doc == r.info.documents.end() || !contact.present) return nullptr;
-  const json pc = json::parse(doc->second, nullptr, false);
-  if (pc.is_discarded() || !pc.contains("loads") || pc["loads"].empty()) return nullptr;
+  if (!r.info.peak_contact || r.info.peak_contact->loads.empty() || !contact.present) return nullptr;
   std::map<std::string, double> per_member;
-  for (const auto& l : pc["loads"]) {
+  for (const ContactLoadAt& l : r.info.peak_contact->loads) {
     double m2 = 0;
-    for (const auto& x : l.at("force")) m2 += x.get<double>() * x.get<double>();
-    per_member[l.at("member").get<std::string>()] += std::sqrt(m2);
+    for (double x : l.force) m2 += x * x;
+    per_member[l.member] += std::sqrt(m2);
   }
   const auto struck = std::max_element(per_member.begin(), per_member.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
   const auto m = std::find_if(f.members.begin(), f.members.end(), [&](const FrameInfo::Member& x) { return x.name == struck->first; });
@@ -159,7 +156,7 @@ json dent(const Results& r, const FrameInfo& f, const std::optional<DesignBasis>
                        "R = 22 f_y t^2/4 sqrt(D/t) (w/D)^0.55",
                        "DNV-RP-C204 (2010) sec. 3.10 (knife-edge contact); limit ASME B31.8 851.4.1");
   c.demand = w / D, c.capacity = S.dent_depth_limit, c.time_s = contact.peak_time_s;
-  place(c, f, *m, pc["loads"][0].value("position", 0.5));
+  place(c, f, *m, r.info.peak_contact->loads[0].position);
   c.finish();
   checks.push_back(c);
   return json{{"member", m->name}, {"diameter_m", D}, {"wall_thickness_m", t}, {"pulse_mean_force_N", F}, {"energy_J", E},

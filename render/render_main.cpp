@@ -156,19 +156,17 @@ std::string scale_note(const FieldImage& f, const std::vector<Panel>& panels) {
 
 
 
-// The y of the impact point: the force-weighted y of the contact loads at the peak (/documents/peak_contact), else the
-// middle of the frame's nodes, else of the grid's particles at the start.
+// The y of the impact point: the force-weighted y of the contact loads at the peak, else the middle of the frame's
+// nodes, else of the grid's particles at the start.
 double impact_y(const RunData& r) {
-  if (const auto it = r.results.info.documents.find("peak_contact"); it != r.results.info.documents.end()) {
-    const json pc = json::parse(it->second, nullptr, false);
+  if (const auto& pc = r.results.info.peak_contact) {
     double w = 0, wy = 0;
-    if (pc.is_object() && pc.contains("loads"))
-      for (const auto& l : pc["loads"]) {
-        if (!l.contains("point") || l["point"].size() != 3 || !l.contains("force")) continue;
-        double f2 = 0;
-        for (const auto& c : l["force"]) f2 += c.get<double>() * c.get<double>();
-        w += std::sqrt(f2), wy += std::sqrt(f2) * l["point"][1].get<double>();
-      }
+    for (const ContactLoadAt& l : pc->loads) {
+      if (l.point.size() != 3) continue;
+      double f2 = 0;
+      for (double c : l.force) f2 += c * c;
+      w += std::sqrt(f2), wy += std::sqrt(f2) * l.point[1];
+    }
     if (w > 0) return wy / w;
   }
   double lo = 1e300, hi = -1e300;

@@ -16,7 +16,7 @@
 #include "render/report_rows.hpp"
 
 #include "core/variants.hpp"
-#include "render/sha256.hpp"
+#include "engine/scenario/sha256.hpp"
 
 namespace dmi::render {
 
@@ -138,7 +138,7 @@ namespace {
 json scenario_rows(const RunData& r) {
   json rows = json::array();
   auto row = [&](const std::string& k, const std::string& v) { rows.push_back({{"key", k}, {"value", v}}); };
-  const std::optional<DesignBasis> basis = design::read_design_basis(r.results, r.file);
+  const std::optional<DesignBasis>& basis = r.results.info.design_basis;
   if (!basis) {
     row("bodies", std::to_string(r.results.info.body_names.size()));
     if (r.frame) row("members", std::to_string(r.frame->members.size()));

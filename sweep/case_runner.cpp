@@ -10,10 +10,11 @@
 #include "design/loads.hpp"
 #include "engine/common/error.hpp"
 #include "engine/io/results_writer.hpp"
+#include "engine/scenario/identity.hpp"
 #include "engine/scenario/scenario.hpp"
 #include "engine/sim/run.hpp"
+#include "pipeline/run_folder.hpp"
 #include "render/report.hpp"
-#include "render/sha256.hpp"
 
 namespace dmi::sweep {
 namespace fs = std::filesystem;
@@ -73,21 +74,17 @@ void link_tree(const fs::path& from, const fs::path& to) {
   }
 }
 
-bool complete(const fs::path& d) { return fs::exists(d / "results.h5") && !fs::exists(d / "results.h5.partial"); }
-
 // Simulates every variant into dir (dir/<label>/ for labelled ones); adds their run wall times to sim_wall and
-// returns the results files. Variants identical after expansion -- the canonical JSON of the low-level scenario,
-// keys sorted -- are simulated once per sweep: the first run is kept under OUT/runs/<hash>/ and later cases link
-// its files (the without-buffer run of every buffer thickness at one boulder speed). Runs are deterministic for any
-// thread count, so a linked run is the run the case would have made.
+// returns the results files. Variants of one identity (engine/scenario/identity.hpp) are simulated once per sweep:
+// the first run is kept under OUT/runs/<identity>/ and later cases link its files (the without-buffer run of every
+// buffer thickness at one boulder speed).
 std::vector<std::string> run_variants(const std::vector<ScenarioVariant>& variants, const fs::path& dir, const SweepOptions& o,
                                       double& sim_wall) {
   std::vector<std::string> written;
   for (const auto& v : variants) {
     const fs::path vd = v.label.empty() ? dir : dir / v.label;
-    const std::string& text = v.scenario.expanded_text.empty() ? v.scenario.source_text : v.scenario.expanded_text;
-    const fs::path shared = fs::path(o.out_dir) / "runs" / render::sha256_hex(json::parse(text).dump()).substr(0, 20);
-    if (complete(shared)) {
+    const fs::path shared = fs::path(o.out_dir) / "runs" / scenario_identity(v.scenario).substr(0, 20);
+    if (pipeline::run_state(shared) == pipeline::RunState::complete) {
       fs::remove_all(vd);
       link_tree(shared, vd);
       sim_wall += read_results((vd / "results.h5").string(), false).info.numbers.at("wall_seconds");
@@ -129,14 +126,13 @@ json run_case(const SweepSpec& spec, std::size_t k, const SweepOptions& o) {
     fs::create_directories(dir);
     const std::string text = case_scenario(spec, k).dump(1) + "\n";
     const fs::path scen = dir / "scenario.json";
-    const bool same_scenario = read_text(scen) == text;
-    if (!same_scenario) render::write_text_atomic(scen.string(), text);
+    if (read_text(scen) != text) render::write_text_atomic(scen.string(), text);
     const auto variants = parse_scenario_variants(text, scen.string());
     std::vector<std::string> written;
-    bool reused = same_scenario;
+    bool reused = true;
     for (const auto& v : variants) {
       const fs::path vd = v.label.empty() ? dir : dir / v.label;
-      reused = reused && complete(vd);
+      reused = reused && pipeline::holds_run_of(vd, v.scenario);
       written.push_back((vd / "results.h5").string());
     }
     double sim_wall = 0;

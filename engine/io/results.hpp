@@ -3,8 +3,12 @@
 #pragma once
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "core/design_basis.hpp"
+#include "core/peak_contact.hpp"
 
 namespace dmi {
 
@@ -50,8 +54,10 @@ struct RunInfo {
   std::vector<std::string> body_names, material_names;
   std::map<std::string, double> numbers;       // e.g. "cell_size", "end_time", "wall_seconds", "steps"
   std::map<std::string, std::string> strings;  // e.g. "shape_function", "transfer", "status"
-  // JSON documents (/documents/<name>): e.g. "peak_contact" (the contact loads on the members at the
-  // instant of the largest contact force), "solid_check" (solid-FE checks); docs/results.md.
+  std::optional<DesignBasis> design_basis;  // /documents/design_basis: what the presets described (checks, estimates)
+  std::optional<PeakContact> peak_contact;  // /documents/peak_contact: members touched in the run
+  // The other JSON documents (/documents/<name>): e.g. "structure" (the frame), "solid_check" (solid-FE checks);
+  // docs/results.md.
   std::map<std::string, std::string> documents;
 };
 

@@ -14,6 +14,10 @@
 #include "engine/io/h5_util.hpp"
 #include "engine/io/results_writer.hpp"
 
+#include "engine/common/json_input.hpp"
+#include "engine/io/peak_contact_json.hpp"
+#include "engine/scenario/design_basis_json.hpp"
+
 namespace dmi {
 
 namespace {
@@ -301,6 +305,35 @@ Snapshot read_snapshot(const Reader& r, hid_t g, const std::string& where) {
   return s;
 }
 
+// /documents: the typed records (the peak contact, the design basis: validated, InputError naming the key) and the
+// other documents as their JSON text.
+void read_documents(const Reader& r, hid_t file, const std::string& path, RunInfo& info) {
+  if (r.has_link(file, "documents")) {
+    Handle docs = r.open(file, "documents", "/documents", H5I_GROUP);
+    for (const std::string& name : r.children(docs, "/documents")) {
+      Handle ds = r.open(docs, name, "/documents/" + name, H5I_DATASET);
+      std::vector<std::string> v = r.strings(ds, false, "/documents/" + name);
+      if (v.size() != 1) r.error("/documents/" + name + " is not a single string");
+      info.documents[name] = std::move(v[0]);
+    }
+  }
+  if (const auto it = info.documents.find("peak_contact"); it != info.documents.end()) {  // a typed record
+    try {
+      check_json_structure(it->second, "/documents/peak_contact");
+      const nlohmann::json j = nlohmann::json::parse(it->second, nullptr, false);
+      info.peak_contact = peak_contact_from_json(j, "/documents/peak_contact");
+    } catch (const std::exception& e) {
+      r.error(e.what());
+    }
+    info.documents.erase(it);
+  }
+  if (const auto it = info.documents.find("design_basis"); it != info.documents.end()) {  // validated: InputError naming the key
+    check_json_structure(it->second, path + ": /documents/design_basis");
+    info.design_basis = design_basis_from_json(nlohmann::json::parse(it->second), path, "/documents/design_basis");
+    info.documents.erase(it);
+  }
+}
+
 Results read_file(const std::string& path, bool with_snapshots) {
   Reader r(path);
   Handle fapl(check_id(H5Pcreate(H5P_FILE_ACCESS), path, "cannot create property list"), H5Pclose);
@@ -347,15 +380,7 @@ Results read_file(const std::string& path, bool with_snapshots) {
     info.scenario_expanded_json = std::move(v[0]);
   }
   if (r.has_attr(file, "variant", "/")) info.variant = r.attr_string(file, "variant", "/");
-  if (r.has_link(file, "documents")) {
-    Handle docs = r.open(file, "documents", "/documents", H5I_GROUP);
-    for (const std::string& name : r.children(docs, "/documents")) {
-      Handle ds = r.open(docs, name, "/documents/" + name, H5I_DATASET);
-      std::vector<std::string> v = r.strings(ds, false, "/documents/" + name);
-      if (v.size() != 1) r.error("/documents/" + name + " is not a single string");
-      info.documents[name] = std::move(v[0]);
-    }
-  }
+  read_documents(r, file, path, info);
   {
     Handle run = r.open(file, "run", "/run", H5I_GROUP);
     std::vector<std::string> names;

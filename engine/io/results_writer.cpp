@@ -18,10 +18,14 @@
 // HDF5 1.8 (libver bounds V18), whose metadata is checksummed.
 #include "engine/io/results_writer.hpp"
 
+#include "engine/io/peak_contact_json.hpp"
+#include "engine/scenario/design_basis_json.hpp"
+
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <set>
 #include <vector>
 
@@ -214,10 +218,13 @@ struct ResultsWriter::Impl {
     if (!info.scenario_expanded_json.empty()) write_strings(file, "scenario_expanded", {info.scenario_expanded_json}, true, f);
     attr_string(file, "variant", info.variant, f);
     remove_link(file, "documents", f);
-    if (!info.documents.empty()) {
+    std::map<std::string, std::string> documents = info.documents;
+    if (info.peak_contact) documents["peak_contact"] = peak_contact_to_json(*info.peak_contact).dump();
+    if (info.design_basis) documents["design_basis"] = design_basis_to_json(*info.design_basis).dump();
+    if (!documents.empty()) {
       Handle docs(check_id(H5Gcreate2(file, "documents", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), f, "cannot create group /documents"),
                   H5Gclose);
-      for (const auto& [name, text] : info.documents) write_strings(docs, name, {text}, true, f);
+      for (const auto& [name, text] : documents) write_strings(docs, name, {text}, true, f);
     }
 
     remove_link(file, "run", f);

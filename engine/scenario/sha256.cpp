@@ -1,11 +1,11 @@
 // SHA-256 after FIPS 180-4 (NIST, 2015), section 6.2: 64 rounds over 512-bit blocks, big-endian words.
-#include "render/sha256.hpp"
+#include "engine/scenario/sha256.hpp"
 
 #include <array>
 #include <cstdint>
 #include <cstdio>
 
-namespace dmi::render {
+namespace dmi {
 
 namespace {
 constexpr std::array<std::uint32_t, 64> kK = {
@@ -48,4 +48,4 @@ std::string sha256_hex(const std::string& bytes) {
   return out;
 }
 
-}  // namespace dmi::render
+}  // namespace dmi

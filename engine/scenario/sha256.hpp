@@ -2,6 +2,6 @@
 #pragma once
 #include <string>
 
-namespace dmi::render {
+namespace dmi {
 std::string sha256_hex(const std::string& bytes);
 }

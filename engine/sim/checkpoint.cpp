@@ -1,5 +1,7 @@
 #include "engine/sim/checkpoint.hpp"
 
+#include "engine/scenario/identity.hpp"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -18,9 +20,7 @@ std::uint64_t fnv1a(const std::string& bytes, std::uint64_t h) {
   return h;
 }
 
-std::uint64_t scenario_fingerprint(const Scenario& s) {
-  return fnv1a(s.variant, fnv1a(s.expanded_text, fnv1a(s.source_text)));
-}
+std::uint64_t scenario_fingerprint(const Scenario& s) { return std::stoull(scenario_identity(s).substr(0, 16), nullptr, 16); }
 
 void LoopState::save(StateWriter& w) const {
   w.tag("loop");

@@ -15,7 +15,7 @@ namespace dmi {
 
 // FNV-1a, 64 bit.
 std::uint64_t fnv1a(const std::string& bytes, std::uint64_t h = 14695981039346656037ull);
-// What a checkpoint must match: the scenario as given, its expansion and the variant.
+// What a checkpoint must match: the scenario's identity (engine/scenario/identity.hpp), its first 64 bits.
 std::uint64_t scenario_fingerprint(const Scenario& s);
 
 // The step loop's own state (engine/sim/run.cpp).

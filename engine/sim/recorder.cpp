@@ -100,10 +100,11 @@ template <int D> void Recorder<D>::accumulate(const Solver<D>& solver, double dt
   elapsed_ += dt;
 }
 
-template <int D> std::string Recorder<D>::peak_contact_document(const FrameOf<D>& f) const {
-  if (peak_loads_.empty()) return "";
+template <int D> std::optional<PeakContact> Recorder<D>::peak_contact(const FrameOf<D>& f) const {
+  if (peak_loads_.empty()) return std::nullopt;
   const auto& m = f.model();
-  nlohmann::json loads = nlohmann::json::array();
+  PeakContact p;
+  p.time = peak_contact_time_;
   Vec<D> total = Vec<D>::Zero();
   auto list = [](const Vec<D>& v) { return std::vector<double>(v.data(), v.data() + D); };
   for (const ContactLoadOf<D>& l : peak_loads_) {
@@ -111,12 +112,11 @@ template <int D> std::string Recorder<D>::peak_contact_document(const FrameOf<D>
     const FrameMemberDef& mem = m.members[e.member];
     // Position along the member as a fraction of its length: elements are equal in length along it.
     const double s = (l.element - mem.first_element + l.xi) / mem.elements;
-    loads.push_back({{"member", mem.name}, {"position", s}, {"point", list(l.point)}, {"force", list(l.force)}});
+    p.loads.push_back({mem.name, s, list(l.point), list(l.force)});
     total += l.force;
   }
-  return nlohmann::json{{"time", peak_contact_time_}, {"total_force", list(total)}, {"units", {{"time", "s"}, {"point", "m"}, {"force", "N"}}},
-                        {"loads", loads}}
-      .dump();
+  p.total_force = list(total);
+  return p;
 }
 
 template <int D> void Recorder<D>::sample(const Solver<D>& solver, double dt) {

@@ -1,6 +1,7 @@
 // Builds history series (energies, momentum, wall/region forces, probes) and particle snapshots
 // from a solver, without the solver knowing about output.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,9 +29,9 @@ template <int D> class Recorder {
   const std::vector<double>& time() const { return time_; }
   std::vector<Series>& series() { return series_; }
   double initial_energy() const { return e0_; }
-  // JSON document "peak_contact": the members' contact loads at the step with the largest total contact
-  // force (time, total, and each load's member, position along it, surface point and force); "" if none.
-  std::string peak_contact_document(const FrameOf<D>& f) const;
+  // The members' contact loads at the step with the largest total contact force (core/peak_contact.hpp); none if
+  // the members were never touched.
+  std::optional<PeakContact> peak_contact(const FrameOf<D>& f) const;
   // JSON document "face_profile" (engine/sim/pressure_recorder.hpp); "" if the scenario has none.
   std::string face_profile_document() const { return pressures_.face_document(); }
   // Histories so far and the interval accumulators, for checkpoints (the series layout comes from the scenario).

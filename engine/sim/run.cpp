@@ -119,7 +119,7 @@ RunInfo make_info(const Scenario& s, const RunOptions& o) {
   info.strings["stress_update"] = s.mpm.update == StressUpdate::usl ? "usl" : "musl";
   info.strings["plane"] = s.analysis.dimension == 3 ? "none" : s.analysis.plane == Plane::strain ? "strain" : "stress";
   info.strings["contact"] = s.contact.method == ContactMethod::multi_field ? "multi_field" : "single_field";
-  if (s.design_basis) info.documents["design_basis"] = design_basis_to_json(*s.design_basis).dump();
+  info.design_basis = s.design_basis;
   return info;
 }
 
@@ -394,8 +394,7 @@ template <int D> class RunDriver {
     record_solver_stats();
     if (s_.solid_check.present) {
       const auto t1 = Clock::now();
-      const auto it = info_.documents.find("peak_contact");
-      auto docs = run_solid_check(s_, it == info_.documents.end() ? "" : it->second);
+      auto docs = run_solid_check(s_, info_.peak_contact ? &*info_.peak_contact : nullptr);
       info_.documents["solid_check"] = std::move(docs.check), info_.documents["solid_field"] = std::move(docs.field);
       info_.numbers["solid_check_seconds"] = std::chrono::duration<double>(Clock::now() - t1).count();
     }
@@ -418,8 +417,7 @@ template <int D> class RunDriver {
     const auto* frame = solver_.scene().frame.get();
     if (!frame) return;
     info_.documents["structure"] = structure_document(s_, *frame);
-    const std::string doc = rec_.peak_contact_document(*frame);
-    if (!doc.empty()) info_.documents["peak_contact"] = doc;
+    info_.peak_contact = rec_.peak_contact(*frame);
     if (const std::string face = rec_.face_profile_document(); !face.empty()) info_.documents["face_profile"] = face;
   }
 
@@ -488,7 +486,7 @@ RunOutput run_solid_only(const Scenario& s, const RunOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   RunInfo info = make_info(s, o);
   RunOutput out;
-  auto docs = run_solid_check(s, "");
+  auto docs = run_solid_check(s, nullptr);
   info.documents["solid_check"] = std::move(docs.check), info.documents["solid_field"] = std::move(docs.field);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   info.numbers["steps"] = 0;

@@ -51,13 +51,13 @@ Model make_model(const SolidCheckConfig& c) {
 
 // Horizontal contact loads on one member binned by height (bins of width dz from z = 0), as samples of
 // a piecewise-linear pressure: each bin a hat of half-width dz, so the integral is sum(F_x) / W.
-std::pair<std::vector<double>, std::vector<double>> contact_profile(const json& doc, const std::string& member, double dz, double W,
+std::pair<std::vector<double>, std::vector<double>> contact_profile(const PeakContact& pc, const std::string& member, double dz, double W,
                                                                     double H, double& resultant) {
   std::map<long, double> bins;
   resultant = 0;
-  for (const auto& l : doc.at("loads")) {
-    if (!member.empty() && l.at("member") != member) continue;
-    const double z = std::clamp(l.at("point")[1].get<double>(), 0.0, H), fx = l.at("force")[0].get<double>();
+  for (const ContactLoadAt& l : pc.loads) {
+    if (!member.empty() && l.member != member) continue;
+    const double z = std::clamp(l.point[1], 0.0, H), fx = l.force[0];
     bins[static_cast<long>(std::floor(z / dz))] += fx;
     resultant += fx;
   }
@@ -138,13 +138,12 @@ void prepare_solid_check(const SolidCheckConfig& c) {
   }
 }
 
-SolidCheckDocuments run_solid_check(const Scenario& s, const std::string& peak_contact_json) {
+SolidCheckDocuments run_solid_check(const Scenario& s, const PeakContact* contact) {
   const SolidCheckConfig& c = s.solid_check;
   const std::shared_ptr<const Factorised> fm = factorised(c);
   const Model& m = fm->m;
   const StaticSolver& solver = fm->solver;
   const int dim = m.mesh.dim;
-  const json contact = peak_contact_json.empty() ? json() : json::parse(peak_contact_json);
   json cases = json::array(), field_cases = json::array();
   for (std::size_t i = 0; i < c.loads.size(); ++i) {
     const SolidLoadConfig& l = c.loads[i];
@@ -168,13 +167,13 @@ SolidCheckDocuments run_solid_check(const Scenario& s, const std::string& peak_c
       else
         add_pressure_profile(m.mesh, m.mat, Face::upstream, {l.height - h, l.height, l.height + h}, {0.0, l.force / (W * h), 0.0}, f);
     } else {
-      if (contact.is_null())
+      if (!contact)
         throw InputError(s.message_source(), "/solid_check/loads/" + std::to_string(i) + "/type", "\"simulation\"",
                          "a run in which the members were touched (no contact loads were recorded)");
       const std::string member = l.member.empty() ? s.structure.members.front().name : l.member;
       double resultant = 0;
-      const auto [z, q] = contact_profile(contact, member, s.grid.cell_size, c.width, c.height, resultant);
-      entry["time_s"] = contact.at("time");
+      const auto [z, q] = contact_profile(*contact, member, s.grid.cell_size, c.width, c.height, resultant);
+      entry["time_s"] = contact->time;
       entry["member"] = member;
       entry["profile"] = {{"height_m", z}, {"pressure_Pa", q}};
       if (z.size() < 2 || !(std::abs(resultant) > 0)) {

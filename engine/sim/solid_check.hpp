@@ -12,6 +12,7 @@
 #pragma once
 #include <string>
 
+#include "core/peak_contact.hpp"
 #include "engine/scenario/config.hpp"
 
 namespace dmi {
@@ -22,9 +23,9 @@ struct SolidCheckDocuments {
                       // principal stress and displacement, 6 significant digits (the pictures read this)
 };
 
-// peak_contact_json: the run's "peak_contact" document ("" when the run had none). Throws
-// InputError when a simulation load case has no contact loads to take.
-SolidCheckDocuments run_solid_check(const Scenario& s, const std::string& peak_contact_json);
+// peak_contact: the run's contact loads at their peak (null when the members were never touched). Throws InputError
+// when a simulation load case has no contact loads to take.
+SolidCheckDocuments run_solid_check(const Scenario& s, const PeakContact* peak_contact);
 // Builds and factorises the dam body's model now (kept for run_solid_check, which otherwise does it on first use): a
 // caller with a core to spare runs it beside the simulations. Errors are left to run_solid_check.
 void prepare_solid_check(const SolidCheckConfig& c);

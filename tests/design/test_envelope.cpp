@@ -187,8 +187,7 @@ TEST(DesignEnvelope, DesignRunJsonCarriesPeaksChecksAndVerdict) {
   EXPECT_EQ(run["verdict"]["governing"]["id"], "concrete_shear");
   // Punching around a 0.4 x 0.4 m patch when asked for (the peak contact load on the member, at mid-height).
   dmi::Results r2 = r;
-  r2.info.documents["peak_contact"] = R"({"time": 0.1, "total_force": [2e5, 0], "loads": [{"member": "dam", "position": 0.4, "point": [0, 0.8], "force": [1e5, 0]},
-      {"member": "dam", "position": 0.6, "point": [0, 1.2], "force": [1e5, 0]}]})";
+  r2.info.peak_contact = dmi::PeakContact{0.1, {2e5, 0}, {{"dam", 0.4, {0, 0.8}, {1e5, 0}}, {"dam", 0.6, {0, 1.2}, {1e5, 0}}}};
   Limits L;
   L.concrete.punching_patch_width = 0.4, L.concrete.punching_patch_height = 0.4;
   const json run2 = design_run(r2, L, "hand.h5");

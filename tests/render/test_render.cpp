@@ -28,7 +28,7 @@
 #include "render/render_main.hpp"
 #include "render/report.hpp"
 #include "render/solid.hpp"
-#include "render/sha256.hpp"
+#include "engine/scenario/sha256.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -109,9 +109,9 @@ fs::path Render::dir;
 
 TEST(RenderBasics, Sha256AndBase64KnownVectors) {
   // FIPS 180-4 examples.
-  EXPECT_EQ(dmi::render::sha256_hex("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
-  EXPECT_EQ(dmi::render::sha256_hex(""), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
-  EXPECT_EQ(dmi::render::sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"),
+  EXPECT_EQ(dmi::sha256_hex("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+  EXPECT_EQ(dmi::sha256_hex(""), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+  EXPECT_EQ(dmi::sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"),
             "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
   // RFC 4648 section 10.
   EXPECT_EQ(dmi::render::base64("f"), "Zg==");

@@ -27,7 +27,8 @@ TEST(PeakSnapshot, TheContactPeakHasASnapshot) {
   o.progress = ProgressMode::quiet;
   run_scenario(s, o);
   const Results r = read_results(o.out_dir + "/results.h5", true);
-  const double t_peak = nlohmann::json::parse(r.info.documents.at("peak_contact"))["time"].get<double>();
+  ASSERT_TRUE(r.info.peak_contact);
+  const double t_peak = r.info.peak_contact->time;
   ASSERT_GE(r.snapshots.size(), 3u);  // t = 0, the end, and at least the peak
   bool at_peak = false;
   for (const Snapshot& sn : r.snapshots) at_peak = at_peak || std::abs(sn.time - t_peak) < 1e-12;
