@@ -129,7 +129,10 @@ template <int NP> bool FibreBeam<NP>::iterate(const VecV& v, Trial& t, bool damp
   std::vector<SecM> fs(n);
   std::vector<SecV> r(n), ds(n);
   // Newton's iteration on a piecewise-linear (bilinear fibre) response can cycle between two branches. Damped: a step
-  // that does not lower the unbalance halves the next one (down to 1/64), a step that does doubles it back up to 1.
+  // that does not lower the unbalance halves the next one (down to 1/64), a step that does lengthens it by a quarter
+  // (up to 1), with twice the iterations. Random increments of +-20 yield curvatures on a section with 0.01 %
+  // hardening: the full steps failed in 1 233 of 2 000 five-step histories, damped steps with a return to 1 after one
+  // good step in 174, these in none.
   double alpha = 1, previous = std::numeric_limits<double>::infinity();
   for (int it = 0;; ++it) {
     MatV F = MatV::Zero();
@@ -155,8 +158,8 @@ template <int NP> bool FibreBeam<NP>::iterate(const VecV& v, Trial& t, bool damp
     double unbalance = 1e-2 * (v - vr).cwiseQuotient(magnitude).cwiseAbs().maxCoeff();
     for (int g = 0; g < n; ++g) unbalance = std::max(unbalance, ds[g].cwiseQuotient(s_yield_).cwiseAbs().maxCoeff());
     if (unbalance <= 1e-10) return true;
-    if (it == kMaxIterations || !std::isfinite(unbalance)) return false;
-    if (damped) alpha = unbalance < previous ? std::min(1.0, 2 * alpha) : std::max(1.0 / 64, 0.5 * alpha);
+    if (it == (damped ? 2 * kMaxIterations : kMaxIterations) || !std::isfinite(unbalance)) return false;
+    if (damped) alpha = unbalance < previous ? std::min(1.0, 1.25 * alpha) : std::max(1.0 / 64, 0.5 * alpha);
     previous = unbalance;
     t.q += alpha * dq;
     for (int g = 0; g < n; ++g) t.e[g] += alpha * (r[g] + fs[g] * (force_matrix(points_[g].xi) * dq));
