@@ -307,149 +307,169 @@ Range member_range(const std::vector<Panel>& panels) {
   return Range{-m, m};
 }
 
-FieldImage render_field(const std::vector<Panel>& panels, const FieldSpec& spec, const std::string& path) {
-  if (panels.empty()) throw std::runtime_error("render_field: no panel");
-  if (!valid_quantity(spec.quantity)) throw std::runtime_error("unknown field quantity '" + spec.quantity + "'");
-  FieldImage img;
-  img.path = path, img.width = spec.width, img.height = spec.height;
-  img.particles = spec.particle_range ? *spec.particle_range : particle_range(panels, spec.quantity);
-  img.members = spec.member_range ? *spec.member_range : member_range(panels);
-  const bool any_members = std::any_of(panels.begin(), panels.end(), [](const Panel& p) { return p.frame && !p.frame->members.empty(); });
-  img.peak.value = -1e300;
+namespace {
+
+// The largest particle value over the panels and where it is.
+ParticlePeak particle_peak(const std::vector<Panel>& panels, const std::string& quantity) {
+  ParticlePeak peak;
+  peak.value = -1e300;
   for (std::size_t i = 0; i < panels.size(); ++i) {
     const Snapshot& s = snap_of(panels[i]);
-    const std::vector<double> f = particle_field(s, spec.quantity);
+    const std::vector<double> f = particle_field(s, quantity);
     for (std::size_t k = 0; k < f.size(); ++k)
-      if (f[k] > img.peak.value)
-        img.peak = {f[k], {s.position[s.dim * k], s.position[s.dim * k + 1], s.dim == 3 ? s.position[s.dim * k + 2] : 0.0}, i, s.dim == 3};
+      if (f[k] > peak.value)
+        peak = {f[k], {s.position[s.dim * k], s.position[s.dim * k + 1], s.dim == 3 ? s.position[s.dim * k + 2] : 0.0}, i, s.dim == 3};
   }
-  img.clipped = img.peak.value > img.particles.hi * (1 + 1e-9) + 1e-9;
-  const int font = std::max(16, spec.width / 54);  // ~9 pt when the picture is printed 180 mm wide
-  const double right = 0.76;  // panels left of the bars
-  // The title strip holds the title (wrapped once), the members' legend line and the particle-scale line.
-  const bool wrap = spec.title.size() * 0.55 * font > 0.97 * spec.width && spec.title.find(": ") != std::string::npos;
-  const int lines = 1 + (wrap ? 1 : 0) + (any_members ? 1 : 0) + (img.clipped ? 1 : 0);
-  const double top = std::min(0.85, 1.0 - (lines * 1.3 * font + 12) / spec.height);
-  // Shared view box: all panels' particles and nodes, so the panels align. A 3D run is seen obliquely (from upstream,
-  // the side and above; x along the flow, z up) in a parallel projection.
-  const bool space = std::any_of(panels.begin(), panels.end(), [](const Panel& p) { return snap_of(p).dim == 3; });
-  const int nd = space ? 3 : 2;
+  return peak;
+}
+
+// Shared view box: all panels' particles and nodes, so the panels align (a space member's section corners too: a wide
+// wall reaches far from its centre line). A plane picture keeps room for the support symbols and the panel heading.
+struct ViewBox {
+  bool space = false;
   double lo[3] = {1e300, 1e300, 0}, hi[3] = {-1e300, -1e300, 0};
-  if (space) lo[2] = 1e300, hi[2] = -1e300;
+  double size = 0;
+};
+
+ViewBox view_box(const std::vector<Panel>& panels) {
+  ViewBox b;
+  b.space = std::any_of(panels.begin(), panels.end(), [](const Panel& p) { return snap_of(p).dim == 3; });
+  const int nd = b.space ? 3 : 2;
+  if (b.space) b.lo[2] = 1e300, b.hi[2] = -1e300;
+  auto take = [&](const auto& x, int dims) {
+    for (int d = 0; d < dims; ++d) b.lo[d] = std::min(b.lo[d], x[d]), b.hi[d] = std::max(b.hi[d], x[d]);
+  };
   for (const auto& p : panels) {
     const Snapshot& s = snap_of(p);
-    for (std::size_t k = 0; k < s.count; ++k)
-      for (int d = 0; d < nd; ++d) lo[d] = std::min(lo[d], s.position[s.dim * k + d]), hi[d] = std::max(hi[d], s.position[s.dim * k + d]);
+    for (std::size_t k = 0; k < s.count; ++k) take(&s.position[s.dim * k], nd);
     if (p.frame)
-      for (const auto& x : p.frame->nodes)
-        for (int d = 0; d < nd; ++d) lo[d] = std::min(lo[d], x[d]), hi[d] = std::max(hi[d], x[d]);
-    if (p.frame && space)  // a space member's section corners (a wide wall reaches far from its centre line)
-      for (const auto& x : section_corners(*p.frame))
-        for (int d = 0; d < 3; ++d) lo[d] = std::min(lo[d], x[d]), hi[d] = std::max(hi[d], x[d]);
+      for (const auto& x : p.frame->nodes) take(x, nd);
+    if (p.frame && b.space)
+      for (const auto& x : section_corners(*p.frame)) take(x, 3);
   }
-  const double size = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
-  if (!space) {
-    lo[1] -= 0.06 * size;  // room for the support symbols
-    hi[1] += 0.08 * size;  // and for the panel heading
+  b.size = std::max({b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]});
+  if (!b.space) {
+    b.lo[1] -= 0.06 * b.size;
+    b.hi[1] += 0.08 * b.size;
   }
-  // Deformation scale: the largest member displacement drawn as ~4 % of the picture's extent.
-  double umax = 0;
-  std::vector<FrameState> states(panels.size());
-  for (std::size_t i = 0; i < panels.size(); ++i)
-    if (panels[i].frame && !panels[i].frame->members.empty()) {
-      states[i] = panel_frame(panels[i]);
-      for (const auto& u : states[i].u) umax = std::max(umax, std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]));
-    }
-  img.deform_scale = umax > 0 ? nice_scale(0.04 * size / umax) : 0;
-  if (!spec.draw) return img;
-  auto win = Offscreen::instance().window(spec.width, spec.height);
-  auto plut = lut(img.particles, spec.quantity != "von_mises");
-  auto mlut = lut(img.members, true);
-  // The oblique view's axes: towards the camera, up and right on the screen.
-  const bool section = space && spec.section_y.has_value();
-  const double view[3] = {section ? 0.0 : -0.62, section ? -1.0 : -0.62, section ? 0.0 : 0.48}, up0[3] = {0, 0, 1};
-  double upv[3], rightv[3];
-  {
-    const double d = up0[0] * view[0] + up0[1] * view[1] + up0[2] * view[2];
-    double n = 0;
-    for (int c = 0; c < 3; ++c) upv[c] = up0[c] - d * view[c] / (view[0] * view[0] + view[1] * view[1] + view[2] * view[2]), n += upv[c] * upv[c];
-    for (double& c : upv) c /= std::sqrt(n);
-    rightv[0] = upv[1] * view[2] - upv[2] * view[1], rightv[1] = upv[2] * view[0] - upv[0] * view[2], rightv[2] = upv[0] * view[1] - upv[1] * view[0];
-    n = std::sqrt(rightv[0] * rightv[0] + rightv[1] * rightv[1] + rightv[2] * rightv[2]);
-    for (double& c : rightv) c /= n;
+  return b;
+}
+
+// The oblique view's axes: towards the camera (view), up and right on the screen. A section is seen from upstream.
+struct ViewAxes {
+  double view[3], up[3], right[3];
+};
+
+ViewAxes view_axes(bool section) {
+  ViewAxes a{{section ? 0.0 : -0.62, section ? -1.0 : -0.62, section ? 0.0 : 0.48}, {}, {}};
+  const double up0[3] = {0, 0, 1};
+  const double* view = a.view;
+  const double d = up0[0] * view[0] + up0[1] * view[1] + up0[2] * view[2];
+  double n = 0;
+  for (int c = 0; c < 3; ++c) a.up[c] = up0[c] - d * view[c] / (view[0] * view[0] + view[1] * view[1] + view[2] * view[2]), n += a.up[c] * a.up[c];
+  for (double& c : a.up) c /= std::sqrt(n);
+  double* u = a.up;
+  a.right[0] = u[1] * view[2] - u[2] * view[1], a.right[1] = u[2] * view[0] - u[0] * view[2], a.right[2] = u[0] * view[1] - u[1] * view[0];
+  n = std::sqrt(a.right[0] * a.right[0] + a.right[1] * a.right[1] + a.right[2] * a.right[2]);
+  for (double& c : a.right) c /= n;
+  return a;
+}
+
+// Where a panel's camera looks and how much it shows (half the height, m): the box's centre; in 3D the centre of its
+// corners on the screen, with a little room above for the heading.
+void panel_camera(const ViewBox& b, const ViewAxes& ax, double vw, double vh, double centre[3], double& half) {
+  centre[0] = 0.5 * (b.lo[0] + b.hi[0]), centre[1] = 0.5 * (b.lo[1] + b.hi[1]), centre[2] = 0.5 * (b.lo[2] + b.hi[2]);
+  half = 0.54 * std::max(b.hi[1] - b.lo[1], (b.hi[0] - b.lo[0]) * vh / vw);
+  if (!b.space) return;
+  double r0 = 1e300, r1 = -1e300, u0 = 1e300, u1 = -1e300;
+  for (int k = 0; k < 8; ++k) {
+    const double x[3] = {k & 1 ? b.hi[0] : b.lo[0], k & 2 ? b.hi[1] : b.lo[1], k & 4 ? b.hi[2] : b.lo[2]};
+    const double r = x[0] * ax.right[0] + x[1] * ax.right[1] + x[2] * ax.right[2], u = x[0] * ax.up[0] + x[1] * ax.up[1] + x[2] * ax.up[2];
+    r0 = std::min(r0, r), r1 = std::max(r1, r), u0 = std::min(u0, u), u1 = std::max(u1, u);
   }
-  for (std::size_t i = 0; i < panels.size(); ++i) {
-    const Panel& p = panels[i];
-    const Snapshot& s = snap_of(p);
-    auto ren = make<vtkRenderer>();
-    ren->SetViewport(right * i / panels.size(), 0, right * (i + 1) / panels.size(), top);
-    ren->SetBackground(1, 1, 1);
-    const double vw = spec.width * right / panels.size(), vh = spec.height * top;
-    double cx = 0.5 * (lo[0] + hi[0]), cy = 0.5 * (lo[1] + hi[1]), half = 0.54 * std::max(hi[1] - lo[1], (hi[0] - lo[0]) * vh / vw);
-    double centre[3] = {cx, cy, 0.5 * (lo[2] + hi[2])};
-    if (space) {  // the box's corners on the screen: their extents along right and up
-      double r0 = 1e300, r1 = -1e300, u0 = 1e300, u1 = -1e300;
-      for (int k = 0; k < 8; ++k) {
-        const double x[3] = {k & 1 ? hi[0] : lo[0], k & 2 ? hi[1] : lo[1], k & 4 ? hi[2] : lo[2]};
-        const double r = x[0] * rightv[0] + x[1] * rightv[1] + x[2] * rightv[2], u = x[0] * upv[0] + x[1] * upv[1] + x[2] * upv[2];
-        r0 = std::min(r0, r), r1 = std::max(r1, r), u0 = std::min(u0, u), u1 = std::max(u1, u);
-      }
-      const double rc = 0.5 * (r0 + r1), uc = 0.5 * (u0 + u1) + 0.04 * (u1 - u0);  // a little room above for the heading
-      const double c0[3] = {centre[0], centre[1], centre[2]};
-      const double rr = c0[0] * rightv[0] + c0[1] * rightv[1] + c0[2] * rightv[2], uu = c0[0] * upv[0] + c0[1] * upv[1] + c0[2] * upv[2];
-      for (int c = 0; c < 3; ++c) centre[c] += (rc - rr) * rightv[c] + (uc - uu) * upv[c];
-      half = 0.58 * std::max(u1 - u0, (r1 - r0) * vh / vw);
+  const double rc = 0.5 * (r0 + r1), uc = 0.5 * (u0 + u1) + 0.04 * (u1 - u0);
+  const double c0[3] = {centre[0], centre[1], centre[2]};
+  const double rr = c0[0] * ax.right[0] + c0[1] * ax.right[1] + c0[2] * ax.right[2], uu = c0[0] * ax.up[0] + c0[1] * ax.up[1] + c0[2] * ax.up[2];
+  for (int c = 0; c < 3; ++c) centre[c] += (rc - rr) * ax.right[c] + (uc - uu) * ax.up[c];
+  half = 0.58 * std::max(u1 - u0, (r1 - r0) * vh / vw);
+}
+
+// The members' centre lines, as built and deformed (displacements times the picture's scale).
+void add_member_lines(vtkRenderer* ren, const Panel& p, const FrameState& fs, double scale, bool space, double size) {
+  std::vector<std::vector<std::array<double, 3>>> deformed, initial;
+  for (const auto& m : p.frame->members) {
+    std::vector<std::array<double, 3>> d, o;
+    for (int e = 0; e <= m.count; ++e) {
+      const auto& el = p.frame->elements[m.first + std::min(e, m.count - 1)];
+      const int n = e < m.count ? el.i : el.j;
+      o.push_back(fs.x0[n]);
+      d.push_back({fs.x0[n][0] + scale * fs.u[n][0], fs.x0[n][1] + scale * fs.u[n][1], fs.x0[n][2] + scale * fs.u[n][2]});
     }
-    const double px_per_m = vh / (2 * half);
-    const auto cs = p.results->info.numbers.find("cell_size");
-    const double spacing = cs != p.results->info.numbers.end() ? 0.5 * cs->second : 0.01 * size;
-    ren->AddActor(particles_actor(s, particle_field(s, spec.quantity), plut, std::max(1.0, 1.2 * spacing * px_per_m),
-                                  section ? spec.section_y : std::nullopt, 2 * spacing));
-    if (!states[i].elements.empty()) {
-      const FrameState& fs = states[i];
-      ren->AddActor(space ? space_members_actor(fs, *p.frame, mlut, section ? spec.section_y : std::nullopt) : members_actor(fs, mlut));
-      std::vector<std::vector<std::array<double, 3>>> deformed, initial;
-      for (const auto& m : p.frame->members) {
-        std::vector<std::array<double, 3>> d, o;
-        for (int e = 0; e <= m.count; ++e) {
-          const auto& el = p.frame->elements[m.first + std::min(e, m.count - 1)];
-          const int n = e < m.count ? el.i : el.j;
-          o.push_back(fs.x0[n]);
-          d.push_back({fs.x0[n][0] + img.deform_scale * fs.u[n][0], fs.x0[n][1] + img.deform_scale * fs.u[n][1], fs.x0[n][2] + img.deform_scale * fs.u[n][2]});
-        }
-        deformed.push_back(d), initial.push_back(o);
-      }
-      ren->AddActor(lines_actor(initial, 0.45, 0.45, 0.45, 2.0f, space));
-      if (img.deform_scale > 0) ren->AddActor(lines_actor(deformed, 0.75, 0.0, 0.75, 3.0f, space));
-      ren->AddActor(supports_actor(*p.frame, 0.04 * size));
-    }
-    auto cam = ren->GetActiveCamera();
-    cam->ParallelProjectionOn();
-    if (space) {
-      cam->SetFocalPoint(centre[0], centre[1], centre[2]);
-      cam->SetPosition(centre[0] + 10 * size * view[0], centre[1] + 10 * size * view[1], centre[2] + 10 * size * view[2]);
-      cam->SetViewUp(0, 0, 1);
-    } else {
-      cam->SetFocalPoint(cx, cy, 0), cam->SetPosition(cx, cy, 10 * size), cam->SetViewUp(0, 1, 0);
-    }
-    cam->SetParallelScale(half);
-    ren->ResetCameraClippingRange();
-    auto head = make<vtkTextActor>();
-    head->SetInput(p.heading.c_str());
-    style(head->GetTextProperty(), font, true);
-    head->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-    head->SetPosition(0.03, 0.94);
-    head->GetTextProperty()->SetVerticalJustificationToTop();
-    ren->AddActor2D(head);
-    win->AddRenderer(ren);
+    deformed.push_back(d), initial.push_back(o);
   }
-  // Title strip and bar strip.
-  auto top_ren = make<vtkRenderer>();
-  top_ren->SetViewport(0, top, 1, 1);
-  top_ren->SetBackground(1, 1, 1);
+  ren->AddActor(lines_actor(initial, 0.45, 0.45, 0.45, 2.0f, space));
+  if (scale > 0) ren->AddActor(lines_actor(deformed, 0.75, 0.0, 0.75, 3.0f, space));
+  ren->AddActor(supports_actor(*p.frame, 0.04 * size));
+}
+
+struct PanelStyle {
+  const FieldSpec& spec;
+  const ViewBox& box;
+  const ViewAxes& axes;
+  vtkSmartPointer<vtkLookupTable> particles, members;
+  double right, top, scale;
+  int font;
+};
+
+// One panel: its particles coloured, its members, the camera and the heading.
+vtkSmartPointer<vtkRenderer> panel_renderer(const Panel& p, std::size_t i, std::size_t n, const FrameState& fs, const PanelStyle& st) {
+  const Snapshot& s = snap_of(p);
+  const bool space = st.box.space, section = space && st.spec.section_y.has_value();
+  auto ren = make<vtkRenderer>();
+  ren->SetViewport(st.right * i / n, 0, st.right * (i + 1) / n, st.top);
+  ren->SetBackground(1, 1, 1);
+  const double vw = st.spec.width * st.right / n, vh = st.spec.height * st.top;
+  double centre[3], half = 0;
+  panel_camera(st.box, st.axes, vw, vh, centre, half);
+  const double px_per_m = vh / (2 * half);
+  const auto cs = p.results->info.numbers.find("cell_size");
+  const double spacing = cs != p.results->info.numbers.end() ? 0.5 * cs->second : 0.01 * st.box.size;
+  const auto cut = section ? st.spec.section_y : std::nullopt;
+  ren->AddActor(particles_actor(s, particle_field(s, st.spec.quantity), st.particles, std::max(1.0, 1.2 * spacing * px_per_m), cut, 2 * spacing));
+  if (!fs.elements.empty()) {
+    ren->AddActor(space ? space_members_actor(fs, *p.frame, st.members, cut) : members_actor(fs, st.members));
+    add_member_lines(ren, p, fs, st.scale, space, st.box.size);
+  }
+  auto cam = ren->GetActiveCamera();
+  cam->ParallelProjectionOn();
+  const double size = st.box.size;
+  if (space) {
+    const double* view = st.axes.view;
+    cam->SetFocalPoint(centre[0], centre[1], centre[2]);
+    cam->SetPosition(centre[0] + 10 * size * view[0], centre[1] + 10 * size * view[1], centre[2] + 10 * size * view[2]);
+    cam->SetViewUp(0, 0, 1);
+  } else {
+    cam->SetFocalPoint(centre[0], centre[1], 0), cam->SetPosition(centre[0], centre[1], 10 * size), cam->SetViewUp(0, 1, 0);
+  }
+  cam->SetParallelScale(half);
+  ren->ResetCameraClippingRange();
+  auto head = make<vtkTextActor>();
+  head->SetInput(p.heading.c_str());
+  style(head->GetTextProperty(), st.font, true);
+  head->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  head->SetPosition(0.03, 0.94);
+  head->GetTextProperty()->SetVerticalJustificationToTop();
+  ren->AddActor2D(head);
+  return ren;
+}
+
+// The title strip: the title (wrapped at its first ": " when long), the members' legend and the particles' scale.
+vtkSmartPointer<vtkRenderer> title_renderer(const FieldSpec& spec, const FieldImage& img, bool wrap, bool any_members, double top, int font) {
+  auto ren = make<vtkRenderer>();
+  ren->SetViewport(0, top, 1, 1);
+  ren->SetBackground(1, 1, 1);
   auto title = make<vtkTextActor>();
   std::string text = spec.title;
-  // Wrap a long title at its first ": " (scenario name, then what is shown).
   if (wrap) text.replace(text.find(": "), 2, ":\n");
   if (img.deform_scale > 0 && any_members) {
     char b[160];
@@ -466,16 +486,57 @@ FieldImage render_field(const std::vector<Panel>& panels, const FieldSpec& spec,
   style(title->GetTextProperty(), font, false);
   title->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
   title->SetPosition(0.01, 0.08);
-  top_ren->AddActor2D(title);
-  win->AddRenderer(top_ren);
-  auto bar_ren = make<vtkRenderer>();
-  bar_ren->SetViewport(right, 0, 1, top);
-  bar_ren->SetBackground(1, 1, 1);
+  ren->AddActor2D(title);
+  return ren;
+}
+
+// The colour bars: particles, and members when there are any.
+vtkSmartPointer<vtkRenderer> bar_renderer(const FieldSpec& spec, const PanelStyle& st, bool any_members) {
+  auto ren = make<vtkRenderer>();
+  ren->SetViewport(st.right, 0, 1, st.top);
+  ren->SetBackground(1, 1, 1);
   std::string q = quantity_label(spec.quantity);
   if (q.size() > 10) q.replace(q.rfind(' '), 1, "\n");  // "von Mises\nstress" fits the bar's width
-  bar_ren->AddActor2D(scalar_bar(plut, "particles\n" + q + "\n[MPa]", 0.04, font));
-  if (any_members) bar_ren->AddActor2D(scalar_bar(mlut, "members\nfibre\nstress\n[MPa]", 0.54, font));
-  win->AddRenderer(bar_ren);
+  ren->AddActor2D(scalar_bar(st.particles, "particles\n" + q + "\n[MPa]", 0.04, st.font));
+  if (any_members) ren->AddActor2D(scalar_bar(st.members, "members\nfibre\nstress\n[MPa]", 0.54, st.font));
+  return ren;
+}
+
+}  // namespace
+
+FieldImage render_field(const std::vector<Panel>& panels, const FieldSpec& spec, const std::string& path) {
+  if (panels.empty()) throw std::runtime_error("render_field: no panel");
+  if (!valid_quantity(spec.quantity)) throw std::runtime_error("unknown field quantity '" + spec.quantity + "'");
+  FieldImage img;
+  img.path = path, img.width = spec.width, img.height = spec.height;
+  img.particles = spec.particle_range ? *spec.particle_range : particle_range(panels, spec.quantity);
+  img.members = spec.member_range ? *spec.member_range : member_range(panels);
+  const bool any_members = std::any_of(panels.begin(), panels.end(), [](const Panel& p) { return p.frame && !p.frame->members.empty(); });
+  img.peak = particle_peak(panels, spec.quantity);
+  img.clipped = img.peak.value > img.particles.hi * (1 + 1e-9) + 1e-9;
+  const int font = std::max(16, spec.width / 54);  // ~9 pt when the picture is printed 180 mm wide
+  const double right = 0.76;  // panels left of the bars
+  // The title strip holds the title (wrapped once), the members' legend line and the particle-scale line.
+  const bool wrap = spec.title.size() * 0.55 * font > 0.97 * spec.width && spec.title.find(": ") != std::string::npos;
+  const int lines = 1 + (wrap ? 1 : 0) + (any_members ? 1 : 0) + (img.clipped ? 1 : 0);
+  const double top = std::min(0.85, 1.0 - (lines * 1.3 * font + 12) / spec.height);
+  const ViewBox box = view_box(panels);
+  // Deformation scale: the largest member displacement drawn as ~4 % of the picture's extent.
+  double umax = 0;
+  std::vector<FrameState> states(panels.size());
+  for (std::size_t i = 0; i < panels.size(); ++i)
+    if (panels[i].frame && !panels[i].frame->members.empty()) {
+      states[i] = panel_frame(panels[i]);
+      for (const auto& u : states[i].u) umax = std::max(umax, std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]));
+    }
+  img.deform_scale = umax > 0 ? nice_scale(0.04 * box.size / umax) : 0;
+  if (!spec.draw) return img;
+  auto win = Offscreen::instance().window(spec.width, spec.height);
+  const ViewAxes axes = view_axes(box.space && spec.section_y.has_value());
+  const PanelStyle st{spec, box, axes, lut(img.particles, spec.quantity != "von_mises"), lut(img.members, true), right, top, img.deform_scale, font};
+  for (std::size_t i = 0; i < panels.size(); ++i) win->AddRenderer(panel_renderer(panels[i], i, panels.size(), states[i], st));
+  win->AddRenderer(title_renderer(spec, img, wrap, any_members, top, font));
+  win->AddRenderer(bar_renderer(spec, st, any_members));
   write_png(win, path);
   return img;
 }
