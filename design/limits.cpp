@@ -76,130 +76,154 @@ struct Reader {
   }
 };
 
+// /verdict: the level the verdict is judged on.
+void read_verdict(const Reader& r, const json& j, Limits& L) {
+  if (!j.contains("verdict")) return;
+  const json& v = j["verdict"];
+  r.keys(v, "/verdict", {"level"});
+  if (v.contains("level")) {
+    const json& l = v["level"];
+    if (!l.is_string() || (l != "both" && l != "ultimate" && l != "serviceability"))
+      r.fail("/verdict/level", &l, "\"both\", \"ultimate\" or \"serviceability\"");
+    L.verdict_level = l.get<std::string>();
+  }
+}
+
+// /foundation: friction, cohesion, bearing capacity, uplift and the stability factors.
+void read_foundation(const Reader& r, const json& j, Limits& L) {
+  if (!j.contains("foundation")) return;
+  const json& f = j["foundation"];
+  const std::string p = "/foundation";
+  r.keys(f, p, {"friction", "cohesion_Pa", "bearing_capacity_Pa", "uplift_factor", "sliding_factor_usual", "sliding_displacement_limit_m",
+                "rocking_safety_factor"});
+  FoundationLimits& k = L.foundation;
+  r.number(f, p, "friction", k.friction);
+  if (f.contains("cohesion_Pa")) {  // may be 0
+    const json& v = f["cohesion_Pa"];
+    if (!v.is_number() || !(v.get<double>() >= 0) || !std::isfinite(v.get<double>())) r.fail(p + "/cohesion_Pa", &v, "a number >= 0");
+    k.cohesion = v.get<double>();
+  }
+  r.number(f, p, "bearing_capacity_Pa", k.bearing_capacity);
+  if (f.contains("uplift_factor")) {  // may be 0 (fully drained)
+    const json& v = f["uplift_factor"];
+    if (!v.is_number() || !(v.get<double>() >= 0 && v.get<double>() <= 1)) r.fail(p + "/uplift_factor", &v, "a number in [0, 1]");
+    k.uplift_factor = v.get<double>();
+  }
+  r.number(f, p, "sliding_factor_usual", k.sliding_factor_usual);
+  r.number(f, p, "sliding_displacement_limit_m", k.sliding_displacement_limit);
+  r.number(f, p, "rocking_safety_factor", k.rocking_safety_factor);
+  if (k.friction > 2) r.fail(p + "/friction", &f["friction"], "a friction coefficient tan(phi) <= 2 (phi <= 63 deg)");
+  if (k.bearing_capacity < 1e4) r.fail(p + "/bearing_capacity_Pa", &f["bearing_capacity_Pa"], "a pressure in Pa >= 1e4 (10 kPa; kPa given?)");
+}
+
+// /grid_study: the value a grid study judges the verdict on.
+void read_grid_study(const Reader& r, const json& j, Limits& L) {
+  if (!j.contains("grid_study")) return;
+  const json& g = j["grid_study"];
+  r.keys(g, "/grid_study", {"judge_on"});
+  if (g.contains("judge_on")) {
+    const json& v = g["judge_on"];
+    if (!v.is_string() || (v != "finest" && v != "conservative_bound")) r.fail("/grid_study/judge_on", &v, "\"finest\" or \"conservative_bound\"");
+    L.grid_judge_on = v.get<std::string>();
+  }
+}
+
+// /concrete: strengths (in Pa: a value in MPa is the usual slip), resistance factors, punching patch.
+void read_concrete(const Reader& r, const json& j, Limits& L) {
+  if (!j.contains("concrete")) return;
+  const json& c = j["concrete"];
+  const std::string p = "/concrete";
+  r.keys(c, p, {"compressive_strength_Pa", "tensile_strength_Pa", "tensile_rule", "lambda", "compression_coefficient", "phi_flexure",
+                "phi_compression", "phi_shear", "shear_strength_Pa", "punching_patch_m", "strain_rate_effects"});
+  ConcreteLimits& k = L.concrete;
+  if (c.contains("strain_rate_effects")) {
+    if (!c["strain_rate_effects"].is_boolean()) r.fail(p + "/strain_rate_effects", &c["strain_rate_effects"], "true or false");
+    k.strain_rate_effects = c["strain_rate_effects"].get<bool>();
+  }
+  r.number(c, p, "compressive_strength_Pa", k.compressive_strength);
+  r.number(c, p, "tensile_strength_Pa", k.tensile_strength);
+  // Strengths in Pa: a value in MPa (28 for 28 MPa) is the usual slip.
+  r.range(c, p, "compressive_strength_Pa", k.compressive_strength, 5e6, 2e8, "a concrete f'c in Pa between 5e6 and 2e8 (28 MPa is 28e6 Pa)");
+  r.range(c, p, "tensile_strength_Pa", k.tensile_strength, 5e5, 2e7, "a concrete tensile strength in Pa between 5e5 and 2e7 (3.28 MPa is 3.28e6 Pa)");
+  if (c.contains("tensile_rule")) {
+    const json& v = c["tensile_rule"];
+    if (!v.is_string() || (v != "given" && v != "aci_rupture" && v != "aci_plain"))
+      r.fail(p + "/tensile_rule", &v, "\"given\", \"aci_plain\" or \"aci_rupture\"");
+    k.tensile_rule = v.get<std::string>();
+  }
+  r.number(c, p, "lambda", k.lambda, true);
+  r.number(c, p, "compression_coefficient", k.compression_coefficient, true);
+  r.number(c, p, "phi_flexure", k.phi_flexure, true);
+  r.number(c, p, "phi_compression", k.phi_compression, true);
+  r.number(c, p, "phi_shear", k.phi_shear, true);
+  if (c.contains("shear_strength_Pa") && !c["shear_strength_Pa"].is_null()) {
+    double v = 0;
+    r.number(c, p, "shear_strength_Pa", v);
+    k.shear_strength = v;
+  }
+  if (c.contains("punching_patch_m") && !c["punching_patch_m"].is_null()) {
+    const json& v = c["punching_patch_m"];
+    if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number() || !(v[0].get<double>() > 0) || !(v[1].get<double>() > 0))
+      r.fail(p + "/punching_patch_m", &v, "[width, height] of the contact patch, both > 0 (m)");
+    k.punching_patch_width = v[0].get<double>();
+    k.punching_patch_height = v[1].get<double>();
+  }
+}
+
+// /steel: yield strength, partial factors and the ultimate-level limits of yielding members.
+void read_steel(const Reader& r, const json& j, Limits& L) {
+  if (!j.contains("steel")) return;
+  const json& s = j["steel"];
+  r.keys(s, "/steel", {"yield_strength_Pa", "gamma_M0", "gamma_M1", "strain_limit", "residual_drift_limit", "dent_depth_limit", "buckling_curve"});
+  r.number(s, "/steel", "yield_strength_Pa", L.steel.yield_strength);
+  r.range(s, "/steel", "yield_strength_Pa", L.steel.yield_strength, 1e8, 2e9, "a steel yield strength in Pa between 1e8 and 2e9 (235 MPa is 235e6 Pa)");
+  if (s.contains("gamma_M0")) {
+    const json& v = s["gamma_M0"];
+    if (!v.is_number() || !(v.get<double>() >= 1.0) || !std::isfinite(v.get<double>())) r.fail("/steel/gamma_M0", &v, "a partial factor >= 1");
+    L.steel.gamma_M0 = v.get<double>();
+  }
+  if (s.contains("gamma_M1")) {
+    const json& v = s["gamma_M1"];
+    if (!v.is_number() || !(v.get<double>() >= 1.0) || !std::isfinite(v.get<double>())) r.fail("/steel/gamma_M1", &v, "a partial factor >= 1");
+    L.steel.gamma_M1 = v.get<double>();
+  }
+  r.number(s, "/steel", "strain_limit", L.steel.strain_limit);
+  r.range(s, "/steel", "strain_limit", L.steel.strain_limit, 1e-3, 0.2, "a strain between 0.001 and 0.2 (5 % is 0.05)");
+  r.number(s, "/steel", "residual_drift_limit", L.steel.residual_drift_limit);
+  r.range(s, "/steel", "residual_drift_limit", L.steel.residual_drift_limit, 1e-4, 0.1, "a drift ratio between 1e-4 and 0.1 (1 % is 0.01)");
+  r.number(s, "/steel", "dent_depth_limit", L.steel.dent_depth_limit);
+  r.range(s, "/steel", "dent_depth_limit", L.steel.dent_depth_limit, 1e-3, 0.5, "a dent depth over the diameter between 0.001 and 0.5 (6 % is 0.06)");
+  if (s.contains("buckling_curve")) {
+    const json& v = s["buckling_curve"];
+    if (!v.is_string() || (v != "a0" && v != "a" && v != "b" && v != "c" && v != "d")) r.fail("/steel/buckling_curve", &v, "one of \"a0\", \"a\", \"b\", \"c\", \"d\" (EN 1993-1-1 Table 6.2)");
+    L.steel.buckling_curve = v.get<std::string>();
+  }
+}
+
+// /members: which members are concrete and which steel.
+void read_member_materials(const Reader& r, const json& j, Limits& L) {
+  if (!j.contains("members")) return;
+  const json& m = j["members"];
+  if (!m.is_object()) r.fail("/members", &m, "an object {member name: \"concrete\" | \"steel\"}");
+  for (auto it = m.begin(); it != m.end(); ++it) {
+    if (!it.value().is_string() || (it.value() != "concrete" && it.value() != "steel"))
+      r.fail("/members/" + it.key(), &it.value(), "\"concrete\" or \"steel\"");
+    L.member_material[it.key()] = it.value().get<std::string>();
+  }
+}
+
 }  // namespace
 
 Limits parse_limits(const json& j, const std::string& file) {
-  Reader r{file};
+  const Reader r{file};
   Limits L;
   r.keys(j, "", {"concrete", "steel", "members", "grid_study", "foundation", "verdict"});
-  if (j.contains("verdict")) {
-    const json& v = j["verdict"];
-    r.keys(v, "/verdict", {"level"});
-    if (v.contains("level")) {
-      const json& l = v["level"];
-      if (!l.is_string() || (l != "both" && l != "ultimate" && l != "serviceability"))
-        r.fail("/verdict/level", &l, "\"both\", \"ultimate\" or \"serviceability\"");
-      L.verdict_level = l.get<std::string>();
-    }
-  }
-  if (j.contains("foundation")) {
-    const json& f = j["foundation"];
-    const std::string p = "/foundation";
-    r.keys(f, p, {"friction", "cohesion_Pa", "bearing_capacity_Pa", "uplift_factor", "sliding_factor_usual", "sliding_displacement_limit_m",
-                  "rocking_safety_factor"});
-    FoundationLimits& k = L.foundation;
-    r.number(f, p, "friction", k.friction);
-    if (f.contains("cohesion_Pa")) {  // may be 0
-      const json& v = f["cohesion_Pa"];
-      if (!v.is_number() || !(v.get<double>() >= 0) || !std::isfinite(v.get<double>())) r.fail(p + "/cohesion_Pa", &v, "a number >= 0");
-      k.cohesion = v.get<double>();
-    }
-    r.number(f, p, "bearing_capacity_Pa", k.bearing_capacity);
-    if (f.contains("uplift_factor")) {  // may be 0 (fully drained)
-      const json& v = f["uplift_factor"];
-      if (!v.is_number() || !(v.get<double>() >= 0 && v.get<double>() <= 1)) r.fail(p + "/uplift_factor", &v, "a number in [0, 1]");
-      k.uplift_factor = v.get<double>();
-    }
-    r.number(f, p, "sliding_factor_usual", k.sliding_factor_usual);
-    r.number(f, p, "sliding_displacement_limit_m", k.sliding_displacement_limit);
-    r.number(f, p, "rocking_safety_factor", k.rocking_safety_factor);
-    if (k.friction > 2) r.fail(p + "/friction", &f["friction"], "a friction coefficient tan(phi) <= 2 (phi <= 63 deg)");
-    if (k.bearing_capacity < 1e4) r.fail(p + "/bearing_capacity_Pa", &f["bearing_capacity_Pa"], "a pressure in Pa >= 1e4 (10 kPa; kPa given?)");
-  }
-  if (j.contains("grid_study")) {
-    const json& g = j["grid_study"];
-    r.keys(g, "/grid_study", {"judge_on"});
-    if (g.contains("judge_on")) {
-      const json& v = g["judge_on"];
-      if (!v.is_string() || (v != "finest" && v != "conservative_bound")) r.fail("/grid_study/judge_on", &v, "\"finest\" or \"conservative_bound\"");
-      L.grid_judge_on = v.get<std::string>();
-    }
-  }
-  if (j.contains("concrete")) {
-    const json& c = j["concrete"];
-    const std::string p = "/concrete";
-    r.keys(c, p, {"compressive_strength_Pa", "tensile_strength_Pa", "tensile_rule", "lambda", "compression_coefficient", "phi_flexure",
-                  "phi_compression", "phi_shear", "shear_strength_Pa", "punching_patch_m", "strain_rate_effects"});
-    ConcreteLimits& k = L.concrete;
-    if (c.contains("strain_rate_effects")) {
-      if (!c["strain_rate_effects"].is_boolean()) r.fail(p + "/strain_rate_effects", &c["strain_rate_effects"], "true or false");
-      k.strain_rate_effects = c["strain_rate_effects"].get<bool>();
-    }
-    r.number(c, p, "compressive_strength_Pa", k.compressive_strength);
-    r.number(c, p, "tensile_strength_Pa", k.tensile_strength);
-    // Strengths in Pa: a value in MPa (28 for 28 MPa) is the usual slip.
-    r.range(c, p, "compressive_strength_Pa", k.compressive_strength, 5e6, 2e8, "a concrete f'c in Pa between 5e6 and 2e8 (28 MPa is 28e6 Pa)");
-    r.range(c, p, "tensile_strength_Pa", k.tensile_strength, 5e5, 2e7, "a concrete tensile strength in Pa between 5e5 and 2e7 (3.28 MPa is 3.28e6 Pa)");
-    if (c.contains("tensile_rule")) {
-      const json& v = c["tensile_rule"];
-      if (!v.is_string() || (v != "given" && v != "aci_rupture" && v != "aci_plain"))
-        r.fail(p + "/tensile_rule", &v, "\"given\", \"aci_plain\" or \"aci_rupture\"");
-      k.tensile_rule = v.get<std::string>();
-    }
-    r.number(c, p, "lambda", k.lambda, true);
-    r.number(c, p, "compression_coefficient", k.compression_coefficient, true);
-    r.number(c, p, "phi_flexure", k.phi_flexure, true);
-    r.number(c, p, "phi_compression", k.phi_compression, true);
-    r.number(c, p, "phi_shear", k.phi_shear, true);
-    if (c.contains("shear_strength_Pa") && !c["shear_strength_Pa"].is_null()) {
-      double v = 0;
-      r.number(c, p, "shear_strength_Pa", v);
-      k.shear_strength = v;
-    }
-    if (c.contains("punching_patch_m") && !c["punching_patch_m"].is_null()) {
-      const json& v = c["punching_patch_m"];
-      if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number() || !(v[0].get<double>() > 0) || !(v[1].get<double>() > 0))
-        r.fail(p + "/punching_patch_m", &v, "[width, height] of the contact patch, both > 0 (m)");
-      k.punching_patch_width = v[0].get<double>();
-      k.punching_patch_height = v[1].get<double>();
-    }
-  }
-  if (j.contains("steel")) {
-    const json& s = j["steel"];
-    r.keys(s, "/steel", {"yield_strength_Pa", "gamma_M0", "gamma_M1", "strain_limit", "residual_drift_limit", "dent_depth_limit", "buckling_curve"});
-    r.number(s, "/steel", "yield_strength_Pa", L.steel.yield_strength);
-    r.range(s, "/steel", "yield_strength_Pa", L.steel.yield_strength, 1e8, 2e9, "a steel yield strength in Pa between 1e8 and 2e9 (235 MPa is 235e6 Pa)");
-    if (s.contains("gamma_M0")) {
-      const json& v = s["gamma_M0"];
-      if (!v.is_number() || !(v.get<double>() >= 1.0) || !std::isfinite(v.get<double>())) r.fail("/steel/gamma_M0", &v, "a partial factor >= 1");
-      L.steel.gamma_M0 = v.get<double>();
-    }
-    if (s.contains("gamma_M1")) {
-      const json& v = s["gamma_M1"];
-      if (!v.is_number() || !(v.get<double>() >= 1.0) || !std::isfinite(v.get<double>())) r.fail("/steel/gamma_M1", &v, "a partial factor >= 1");
-      L.steel.gamma_M1 = v.get<double>();
-    }
-    r.number(s, "/steel", "strain_limit", L.steel.strain_limit);
-    r.range(s, "/steel", "strain_limit", L.steel.strain_limit, 1e-3, 0.2, "a strain between 0.001 and 0.2 (5 % is 0.05)");
-    r.number(s, "/steel", "residual_drift_limit", L.steel.residual_drift_limit);
-    r.range(s, "/steel", "residual_drift_limit", L.steel.residual_drift_limit, 1e-4, 0.1, "a drift ratio between 1e-4 and 0.1 (1 % is 0.01)");
-    r.number(s, "/steel", "dent_depth_limit", L.steel.dent_depth_limit);
-    r.range(s, "/steel", "dent_depth_limit", L.steel.dent_depth_limit, 1e-3, 0.5, "a dent depth over the diameter between 0.001 and 0.5 (6 % is 0.06)");
-    if (s.contains("buckling_curve")) {
-      const json& v = s["buckling_curve"];
-      if (!v.is_string() || (v != "a0" && v != "a" && v != "b" && v != "c" && v != "d")) r.fail("/steel/buckling_curve", &v, "one of \"a0\", \"a\", \"b\", \"c\", \"d\" (EN 1993-1-1 Table 6.2)");
-      L.steel.buckling_curve = v.get<std::string>();
-    }
-  }
-  if (j.contains("members")) {
-    const json& m = j["members"];
-    if (!m.is_object()) r.fail("/members", &m, "an object {member name: \"concrete\" | \"steel\"}");
-    for (auto it = m.begin(); it != m.end(); ++it) {
-      if (!it.value().is_string() || (it.value() != "concrete" && it.value() != "steel"))
-        r.fail("/members/" + it.key(), &it.value(), "\"concrete\" or \"steel\"");
-      L.member_material[it.key()] = it.value().get<std::string>();
-    }
-  }
+  read_verdict(r, j, L);
+  read_foundation(r, j, L);
+  read_grid_study(r, j, L);
+  read_concrete(r, j, L);
+  read_steel(r, j, L);
+  read_member_materials(r, j, L);
   return L;
 }
 

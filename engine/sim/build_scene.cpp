@@ -202,15 +202,10 @@ template <int D> void start_geostatic(const Scenario& s, Scene<D>& sc, const Bod
   geostatic_state<D>(sc, body, earth_pressure_at_rest(m, bc.earth_pressure_coefficient), s.message_source(), path);
 }
 
-template <int D> Scene<D> build_scene(const Scenario& s) {
-  Scene<D> sc;
-  const double h = s.grid.cell_size;
-  IVec<D> cells;
-  for (int d = 0; d < D; ++d) cells[d] = static_cast<int>(std::ceil(s.grid.size[d] / h - 1e-9));
-  const bool multi = s.contact.method == ContactMethod::multi_field && s.bodies.size() > 1;
-  sc.grid = std::make_unique<Grid<D>>(vec<D>(s.grid.origin), cells, h, multi ? static_cast<int>(s.bodies.size()) : 1);
-  sc.gravity = vec<D>(s.analysis.gravity);
+namespace {
 
+// The materials' constitutive models, in the scenario's order (a body's material index is its position).
+template <int D> void add_materials(const Scenario& s, Scene<D>& sc) {
   MaterialRegistry<D> registry;
   register_materials(registry);
   for (const auto& m : s.materials) {
@@ -223,6 +218,10 @@ template <int D> Scene<D> build_scene(const Scenario& s) {
     sc.materials.push_back(registry.make(elastic, s.analysis.plane));
   }
 
+}
+
+// The bodies: seeded particles (inside the grid by half a cell), an inflow's empty body, a geostatic start.
+template <int D> void add_bodies(const Scenario& s, Scene<D>& sc, bool multi) {
   for (std::size_t b = 0; b < s.bodies.size(); ++b) {
     const BodyConfig& bc = s.bodies[b];
     int mat = 0;
@@ -259,6 +258,11 @@ template <int D> Scene<D> build_scene(const Scenario& s) {
     if (bc.geostatic) start_geostatic(s, sc, body, b);
     sc.bodies.push_back(body);
   }
+}
+
+// Plane and box walls (a plane wall on a grid line mirrors the nodes across it), with their pressure sensors.
+template <int D> void add_walls(const Scenario& s, Scene<D>& sc) {
+  const double h = s.grid.cell_size;
   for (const auto& w : s.walls) {
     Wall<D> wall;
     wall.name = w.name;
@@ -287,6 +291,10 @@ template <int D> Scene<D> build_scene(const Scenario& s) {
     VelocityRegion<D> reg{r.name, vec<D>(r.min), vec<D>(r.max), vec<D>(r.velocity), r.start, r.end};
     sc.regions.push_back(reg);
   }
+}
+
+template <int D> void set_options(const Scenario& s, Scene<D>& sc) {
+  const double h = s.grid.cell_size;
   sc.options.shape = s.mpm.shape;
   sc.options.transfer = s.mpm.transfer;
   sc.options.flip_blend = s.mpm.flip_blend;
@@ -300,18 +308,38 @@ template <int D> Scene<D> build_scene(const Scenario& s) {
   sc.options.contact_friction = s.contact.friction;
   sc.options.contact_detection = s.contact.detection;
   sc.options.cell_volume = std::pow(h, D) * (D == 2 ? s.analysis.thickness : 1.0);
-  if (s.structure.present) {
-    try {
-      if constexpr (D == 2) sc.frame = std::make_unique<Frame>(build_frame_model(s));
-      else sc.frame = std::make_unique<SpaceFrame>(build_space_frame_model(s));
-      // A built structure stands in equilibrium under its own weight at t = 0.
-      if (s.structure.self_weight && s.structure.initial_state == FrameInitialState::static_equilibrium) sc.frame->solve_static();
-    } catch (const std::invalid_argument& e) {  // e.g. a mechanism: the parser cannot see it
-      throw InputError(s.message_source(), "/structure", "", std::string("a stable frame (") + e.what() + ")");
-    }
-    sc.coupling = build_coupling(s, sc);
-    check_member_overlaps(s, sc);
+}
+
+// The members, standing under their own weight when built so, and their coupling to the bodies.
+template <int D> void add_structure(const Scenario& s, Scene<D>& sc) {
+  if (!s.structure.present) return;
+  try {
+    if constexpr (D == 2) sc.frame = std::make_unique<Frame>(build_frame_model(s));
+    else sc.frame = std::make_unique<SpaceFrame>(build_space_frame_model(s));
+    // A built structure stands in equilibrium under its own weight at t = 0.
+    if (s.structure.self_weight && s.structure.initial_state == FrameInitialState::static_equilibrium) sc.frame->solve_static();
+  } catch (const std::invalid_argument& e) {  // e.g. a mechanism: the parser cannot see it
+    throw InputError(s.message_source(), "/structure", "", std::string("a stable frame (") + e.what() + ")");
   }
+  sc.coupling = build_coupling(s, sc);
+  check_member_overlaps(s, sc);
+}
+
+}  // namespace
+
+template <int D> Scene<D> build_scene(const Scenario& s) {
+  Scene<D> sc;
+  const double h = s.grid.cell_size;
+  IVec<D> cells;
+  for (int d = 0; d < D; ++d) cells[d] = static_cast<int>(std::ceil(s.grid.size[d] / h - 1e-9));
+  const bool multi = s.contact.method == ContactMethod::multi_field && s.bodies.size() > 1;
+  sc.grid = std::make_unique<Grid<D>>(vec<D>(s.grid.origin), cells, h, multi ? static_cast<int>(s.bodies.size()) : 1);
+  sc.gravity = vec<D>(s.analysis.gravity);
+  add_materials(s, sc);
+  add_bodies(s, sc, multi);
+  add_walls(s, sc);
+  set_options(s, sc);
+  add_structure(s, sc);
   check_overlaps(s, sc);
   return sc;
 }
