@@ -334,14 +334,8 @@ void read_documents(const Reader& r, hid_t file, const std::string& path, RunInf
   }
 }
 
-Results read_file(const std::string& path, bool with_snapshots) {
-  Reader r(path);
-  Handle fapl(check_id(H5Pcreate(H5P_FILE_ACCESS), path, "cannot create property list"), H5Pclose);
-  check_ok(H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG), path, "cannot create property list");
-  Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, fapl), H5Fclose);
-  if (!file.valid()) r.error("cannot open as HDF5 (not an HDF5 file, or truncated or corrupt)");
-
-  // Identification first, so a foreign HDF5 file gets the clearest message.
+// Identification first, so a foreign HDF5 file gets the clearest message.
+void check_format(const Reader& r, hid_t file) {
   if (!r.has_attr(file, "format", "/"))
     r.error("not a damimpact results file (no 'format' attribute)");
   std::string format;
@@ -358,12 +352,10 @@ Results read_file(const std::string& path, bool with_snapshots) {
   if (version != kResultsFormatVersion)
     r.error("unsupported format_version " + std::to_string(version) + " (this build reads " +
             std::to_string(kResultsFormatVersion) + ")");
+}
 
-  Results res;
-  res.complete = r.attr_number<long long>(file, "complete", "/", H5T_NATIVE_LLONG, true) != 0;
-  RunInfo& info = res.info;
-  info.dimension =
-      static_cast<int>(r.attr_number<long long>(file, "dimension", "/", H5T_NATIVE_LLONG, true));
+// What the run was: the software, the scenario as given and as its presets expanded it, the variant.
+void read_scenario(const Reader& r, hid_t file, RunInfo& info) {
   info.software_version = r.attr_string(file, "software_version", "/");
   info.scenario_name = r.attr_string(file, "scenario_name", "/");
   info.scenario_file = r.attr_string(file, "scenario_file", "/");
@@ -380,74 +372,93 @@ Results read_file(const std::string& path, bool with_snapshots) {
     info.scenario_expanded_json = std::move(v[0]);
   }
   if (r.has_attr(file, "variant", "/")) info.variant = r.attr_string(file, "variant", "/");
-  read_documents(r, file, path, info);
-  {
-    Handle run = r.open(file, "run", "/run", H5I_GROUP);
-    std::vector<std::string> names;
-    hsize_t idx = 0;
-    auto collect = [](hid_t, const char* name, const H5A_info_t*, void* data) -> herr_t {
-      auto* v = static_cast<std::vector<std::string>*>(data);
-      if (v->size() >= kMaxStrings) return -1;
-      try {
-        v->emplace_back(name);
-      } catch (...) {  // no exception through the C library
-        return -1;
-      }
-      return 0;
-    };
-    // Native order, sorted here: as for links (children()), increasing order builds a table HDF5 1.10 mishandles.
-    check_ok(H5Aiterate2(run, H5_INDEX_NAME, H5_ITER_NATIVE, &idx, collect, &names), path,
-             "cannot list attributes of /run");
-    std::sort(names.begin(), names.end());
-    for (const std::string& name : names) {
-      Handle a = r.attr(run, name, "/run");
-      Handle type(check_id(H5Aget_type(a), path, "cannot read attribute '" + name + "' on /run"),
-                  H5Tclose);
-      const H5T_class_t cls = H5Tget_class(type);
-      if (cls == H5T_STRING)
-        info.strings[name] = r.attr_string(run, name, "/run");
-      else if (cls == H5T_FLOAT || cls == H5T_INTEGER)
-        info.numbers[name] = r.attr_number<double>(run, name, "/run", H5T_NATIVE_DOUBLE, false);
-    }
-    Handle bn = r.open(run, "body_names", "/run/body_names", H5I_DATASET);
-    info.body_names = r.strings(bn, false, "/run/body_names");
-    Handle mn = r.open(run, "material_names", "/run/material_names", H5I_DATASET);
-    info.material_names = r.strings(mn, false, "/run/material_names");
-  }
+}
 
-  // Histories are written by finish(): required in a complete file, absent from a .partial.
-  if (res.complete || r.has_link(file, "history")) {
-    Handle hist = r.open(file, "history", "/history", H5I_GROUP);
-    Handle t = r.open(hist, "time", "/history/time", H5I_DATASET);
-    const std::vector<hsize_t> dims = r.dataset_extent(t, "/history/time");
-    if (dims.size() != 1)
-      r.error("/history/time has shape " + Reader::shape_str(dims) + ", expected (n)");
-    res.time = r.read_numbers<double>(t, "/history/time", dims, H5T_NATIVE_DOUBLE, false);
-    collect_series(r, hist, "", 0, dims[0], res.series);
-    std::sort(res.series.begin(), res.series.end(),
-              [](const Series& a, const Series& b) { return a.path < b.path; });
+// /run: the run's numbers and words (attributes), and its bodies' and materials' names.
+void read_run(const Reader& r, hid_t file, const std::string& path, RunInfo& info) {
+  Handle run = r.open(file, "run", "/run", H5I_GROUP);
+  std::vector<std::string> names;
+  hsize_t idx = 0;
+  auto collect = [](hid_t, const char* name, const H5A_info_t*, void* data) -> herr_t {
+    auto* v = static_cast<std::vector<std::string>*>(data);
+    if (v->size() >= kMaxStrings) return -1;
+    try {
+      v->emplace_back(name);
+    } catch (...) {  // no exception through the C library
+      return -1;
+    }
+    return 0;
+  };
+  // Native order, sorted here: as for links (children()), increasing order builds a table HDF5 1.10 mishandles.
+  check_ok(H5Aiterate2(run, H5_INDEX_NAME, H5_ITER_NATIVE, &idx, collect, &names), path,
+           "cannot list attributes of /run");
+  std::sort(names.begin(), names.end());
+  for (const std::string& name : names) {
+    Handle a = r.attr(run, name, "/run");
+    Handle type(check_id(H5Aget_type(a), path, "cannot read attribute '" + name + "' on /run"),
+                H5Tclose);
+    const H5T_class_t cls = H5Tget_class(type);
+    if (cls == H5T_STRING)
+      info.strings[name] = r.attr_string(run, name, "/run");
+    else if (cls == H5T_FLOAT || cls == H5T_INTEGER)
+      info.numbers[name] = r.attr_number<double>(run, name, "/run", H5T_NATIVE_DOUBLE, false);
   }
+  Handle bn = r.open(run, "body_names", "/run/body_names", H5I_DATASET);
+  info.body_names = r.strings(bn, false, "/run/body_names");
+  Handle mn = r.open(run, "material_names", "/run/material_names", H5I_DATASET);
+  info.material_names = r.strings(mn, false, "/run/material_names");
+}
 
-  if (with_snapshots) {
-    Handle snaps = r.open(file, "snapshots", "/snapshots", H5I_GROUP);
-    std::vector<std::pair<unsigned long long, std::string>> order;
-    for (const std::string& name : r.children(snaps, "/snapshots")) {
-      const bool digits =
-          !name.empty() && name.size() <= 18 &&
-          std::all_of(name.begin(), name.end(), [](char c) { return c >= '0' && c <= '9'; });
-      if (!digits)
-        r.error("unexpected entry '/snapshots/" + name + "' (expected a snapshot index)");
-      order.emplace_back(std::stoull(name), name);
-    }
-    std::sort(order.begin(), order.end());
-    for (const auto& entry : order) {
-      const std::string where = "/snapshots/" + entry.second;
-      Handle g = r.open(snaps, entry.second, where, H5I_GROUP);
-      res.snapshots.push_back(read_snapshot(r, g, where));
-    }
-    // In time order: the run writes the state at the peak contact force after the periodic snapshots around it.
-    std::stable_sort(res.snapshots.begin(), res.snapshots.end(), [](const Snapshot& a, const Snapshot& b) { return a.time < b.time; });
+// Histories are written by finish(): required in a complete file, absent from a .partial.
+void read_histories(const Reader& r, hid_t file, Results& res) {
+  if (!res.complete && !r.has_link(file, "history")) return;
+  Handle hist = r.open(file, "history", "/history", H5I_GROUP);
+  Handle t = r.open(hist, "time", "/history/time", H5I_DATASET);
+  const std::vector<hsize_t> dims = r.dataset_extent(t, "/history/time");
+  if (dims.size() != 1)
+    r.error("/history/time has shape " + Reader::shape_str(dims) + ", expected (n)");
+  res.time = r.read_numbers<double>(t, "/history/time", dims, H5T_NATIVE_DOUBLE, false);
+  collect_series(r, hist, "", 0, dims[0], res.series);
+  std::sort(res.series.begin(), res.series.end(),
+            [](const Series& a, const Series& b) { return a.path < b.path; });
+}
+
+void read_snapshots(const Reader& r, hid_t file, Results& res) {
+  Handle snaps = r.open(file, "snapshots", "/snapshots", H5I_GROUP);
+  std::vector<std::pair<unsigned long long, std::string>> order;
+  for (const std::string& name : r.children(snaps, "/snapshots")) {
+    const bool digits =
+        !name.empty() && name.size() <= 18 &&
+        std::all_of(name.begin(), name.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (!digits)
+      r.error("unexpected entry '/snapshots/" + name + "' (expected a snapshot index)");
+    order.emplace_back(std::stoull(name), name);
   }
+  std::sort(order.begin(), order.end());
+  for (const auto& entry : order) {
+    const std::string where = "/snapshots/" + entry.second;
+    Handle g = r.open(snaps, entry.second, where, H5I_GROUP);
+    res.snapshots.push_back(read_snapshot(r, g, where));
+  }
+  // In time order: the run writes the state at the peak contact force after the periodic snapshots around it.
+  std::stable_sort(res.snapshots.begin(), res.snapshots.end(), [](const Snapshot& a, const Snapshot& b) { return a.time < b.time; });
+}
+
+Results read_file(const std::string& path, bool with_snapshots) {
+  Reader r(path);
+  Handle fapl(check_id(H5Pcreate(H5P_FILE_ACCESS), path, "cannot create property list"), H5Pclose);
+  check_ok(H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG), path, "cannot create property list");
+  Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, fapl), H5Fclose);
+  if (!file.valid()) r.error("cannot open as HDF5 (not an HDF5 file, or truncated or corrupt)");
+  check_format(r, file);
+  Results res;
+  res.complete = r.attr_number<long long>(file, "complete", "/", H5T_NATIVE_LLONG, true) != 0;
+  res.info.dimension = static_cast<int>(r.attr_number<long long>(file, "dimension", "/", H5T_NATIVE_LLONG, true));
+  read_scenario(r, file, res.info);
+  read_documents(r, file, path, res.info);
+  read_run(r, file, path, res.info);
+  read_histories(r, file, res);
+  if (with_snapshots) read_snapshots(r, file, res);
   return res;
 }
 
