@@ -152,6 +152,118 @@ std::vector<KernelBench> kernel_bench(const BenchOptions& o, bool progress) {
   return o.dimension == 3 ? kernel_bench_d<3>(o, progress) : kernel_bench_d<2>(o, progress);
 }
 
+namespace {
+
+// The main job: run time against error.
+void print_dam(const json& out) {
+  if (!out.contains("dam")) return;
+  const json& d = out["dam"];
+  std::printf("\nThe main job: run time against error (%s)\n", d["reference"].get<std::string>().c_str());
+  std::printf("%-12s %8s %9s %14s %14s %16s\n", "dam", "cell m", "wall s", "shear error", "moment error", "contact error");
+  auto pct = [](const json& e) { return e.is_number() ? std::to_string(100 * e.get<double>()).substr(0, 5) + " %" : std::string("n/a"); };
+  for (const auto& p : d["points"])
+    std::printf("%-12s %8.4f %9.2f %14s %14s %16s%s\n", p["group"].get<std::string>().c_str(), p["cell_size"].get<double>(),
+                p["wall_seconds"].get<double>(), pct(p["base_shear_error"]).c_str(), pct(p["base_moment_error"]).c_str(),
+                pct(p["contact_force_error"]).c_str(), p["front"].get<bool>() ? "  (front)" : "");
+  for (const char* g : {"bare", "with buffer"})
+    for (const char* k : {"base_shear", "base_moment", "contact_force"})
+      std::printf("  %s, %s: %s\n", g, k, d[g][k]["statement"].get<std::string>().c_str());
+}
+
+void print_small(const json& out) {
+  if (!out.contains("small")) return;
+  const json& sm = out["small"];
+  std::printf("\nSmall scenes against the kernel (1 thread; kernel: %ld particles, %.1f ns per particle-step)\n",
+              sm["kernel_particles"].get<long>(), sm["kernel_ns_per_particle_step"].get<double>());
+  for (const auto& v : sm["variants"]) {
+    std::printf("%s at h %g m: %.0f particles, %.0f steps, loop %.2f s, %.1f ns per particle-step = %.2f x kernel\n",
+                v["variant"].get<std::string>().c_str(), v["cell_size"].get<double>(), v["particles"].get<double>(), v["steps"].get<double>(), v["loop_seconds"].get<double>(), v["ns_per_particle_step"].get<double>(),
+                v["ratio_to_kernel"].get<double>());
+    for (const auto& [k, ns] : v["phases_ns"].items()) std::printf("  %-24s %8.1f ns\n", k.c_str(), ns.get<double>());
+    std::printf("  rigid constraint passes per step: %.1f\n", v["rigid_passes_per_step"].get<double>());
+  }
+}
+
+void print_kernel(const std::vector<KernelBench>& results, const BenchOptions& o) {
+  if (results.empty()) return;
+  std::printf("\nMPM kernel throughput (%dD, linear elastic, %ld particles, median of %d x %d steps)\n", o.dimension, o.particles, o.repeats, o.steps);
+  std::printf("particle arrays: %.0f bytes per particle\n", results.front().bytes_per_particle);
+  std::printf("%-9s %-9s %7s %12s %14s %10s %8s\n", "shape", "transfer", "threads", "s/step", "M updates/s", "speed-up", "spread");
+  for (const auto& b : results) {
+    double one = 0;
+    for (const auto& c : results)
+      if (c.shape == b.shape && c.transfer == b.transfer && c.threads == 1) one = c.seconds_per_step;
+    std::printf("%-9s %-9s %7d %12.4f %14.2f %10.2f %7.0f%%\n", b.shape.c_str(), b.transfer.c_str(), b.threads, b.seconds_per_step,
+                b.updates_per_second / 1e6, one > 0 ? one / b.seconds_per_step : 0.0, 100 * b.spread);
+  }
+}
+
+void print_a5(const json& out) {
+  if (!out.contains("a5")) return;
+  const json& a = out["a5"];
+  std::printf("\nLin & Yang verification 1: error (NRMS vs %s) against wall time; * = Pareto front\n", a["reference"].get<std::string>().c_str());
+  std::printf("%-15s %8s %-17s %10s %10s\n", "frame", "elements", "time step", "error", "wall s");
+  for (const auto& p : a["points"])
+    std::printf("%-15s %8d %-17s %10.4f %10.3f %s%s\n", p["integrator"].get<std::string>().c_str(), p["elements"].get<int>(),
+                p["time_step"].get<std::string>().c_str(), p["error"].get<double>(), p["wall_seconds"].get<double>(), p["front"].get<bool>() ? "*" : "",
+                p["paper_setup"].get<bool>() ? "  (paper set-up)" : "");
+  std::printf("paper set-up %.3f s, fastest as accurate (%s, %d elements, %s) %.3f s (medians of 3): speed-up %.1fx\n",
+              a["paper_wall_median_s"].get<double>(), a["fastest_as_accurate"]["integrator"].get<std::string>().c_str(),
+              a["fastest_as_accurate"]["elements"].get<int>(), a["fastest_as_accurate"]["time_step"].get<std::string>().c_str(),
+              a["fastest_wall_median_s"].get<double>(), a["speed_up"].get<double>());
+}
+
+void print_a6(const json& out) {
+  if (!out.contains("a6")) return;
+  std::printf("\nLin & Yang verification 2, beam-column members: wall time vs depth (median of 3)\n%8s %10s %8s %12s\n", "h/L", "wall s", "steps", "proj. iter.");
+  for (const auto& r : out["a6"]["rows"])
+    std::printf("%8.3f %10.3f %8ld %12.0f\n", r["h_over_L"].get<double>(), r["wall_seconds"].get<double>(), r["steps"].get<long>(),
+                r["projection_iterations_max"].get<double>());
+  std::printf("ratio h/L 0.025 : 0.2 = %.2f\n", out["a6"]["ratio_slender_to_thick"].get<double>());
+  std::printf("\nLin & Yang verification 2 at h/L 0.025: error against wall time (reference: %s), Pareto front\n%-9s %4s %8s %-16s %10s %10s\n",
+              out["a6"]["reference"].get<std::string>().c_str(), "frame", "el.", "cell m", "time step", "NRMS err", "wall s");
+  std::vector<const json*> front;
+  for (const auto& p : out["a6"]["points"])
+    if (p["front"].get<bool>()) front.push_back(&p);
+  std::sort(front.begin(), front.end(), [](const json* a, const json* b) { return (*a)["wall_seconds"] < (*b)["wall_seconds"]; });
+  for (const json* p : front)
+    std::printf("%-9s %4d %8.4f %-16s %10.4f %10.3f\n", (*p)["integrator"].get<std::string>().c_str(), (*p)["elements"].get<int>(),
+                (*p)["cell_size"].get<double>(), (*p)["time_step"].get<std::string>().c_str(), (*p)["error"].get<double>(),
+                (*p)["wall_seconds"].get<double>());
+}
+
+// The bar and the colliding disks: the Pareto front of error against wall time.
+void print_fronts(const json& out) {
+  for (const char* c : {"bar", "disks"}) {
+    if (!out.contains(c)) continue;
+    std::printf("\n%s: error (%s) against wall time, Pareto front only (all points: --json)\n", c, out[c]["reference"].get<std::string>().c_str());
+    std::vector<const json*> front;
+    for (const auto& p : out[c]["points"])
+      if (p["front"].get<bool>()) front.push_back(&p);
+    std::sort(front.begin(), front.end(), [](const json* a, const json* b) { return (*a)["wall_seconds"] < (*b)["wall_seconds"]; });
+    for (const json* p : front)
+      std::printf("%-22s h %-7g %s error %.3e  wall %.3f s\n", (*p)["group"].get<std::string>().c_str(), (*p)["cell_size"].get<double>(),
+                  p->contains("cfl") ? ("cfl " + std::to_string((*p)["cfl"].get<double>()).substr(0, 3)).c_str() : "", (*p)["error"].get<double>(),
+                  (*p)["wall_seconds"].get<double>());
+  }
+}
+
+void print_skip(const json& out) {
+  if (!out.contains("skip")) return;
+  const json& s = out["skip"];
+  std::printf("\nSkip what a scene does not need (medians of 3)\n");
+  std::printf("frame on the dam: Newmark %ld steps %.2f s, explicit %ld steps %.2f s (x%.1f); peak base shear differs by %.2f %%\n",
+              s["implicit_frame"]["newmark_steps"].get<long>(), s["implicit_frame"]["newmark_wall_s"].get<double>(),
+              s["implicit_frame"]["explicit_steps"].get<long>(), s["implicit_frame"]["explicit_wall_s"].get<double>(),
+              s["implicit_frame"]["wall_ratio_explicit_to_newmark"].get<double>(), 100 * s["implicit_frame"]["peak_difference"].get<double>());
+  std::printf("files: no snapshots %.2f s, 15 snapshots + .vtu %.2f s (ratio %.3f)\n", s["output_cost"]["no_snapshots_wall_s"].get<double>(),
+              s["output_cost"]["snapshots_every_10ms_wall_s"].get<double>(), s["output_cost"]["ratio"].get<double>());
+  std::printf("100 k-particle block: idle frame out of reach x%.3f per step, grid 10x wider and taller x%.3f per step\n",
+              s["block"]["idle_frame_ratio"].get<double>(), s["block"]["grid_10x_ratio"].get<double>());
+}
+
+}  // namespace
+
 int bench_main(const std::vector<std::string>& cases, bool as_json, bool quick, BenchOptions o) {
   const std::vector<std::string> all = {"kernel", "a5", "a6", "bar", "disks", "skip", "dam", "small"};
   for (const auto& c : cases)
@@ -186,97 +298,13 @@ int bench_main(const std::vector<std::string>& cases, bool as_json, bool quick, 
     std::cout << out.dump(1) << "\n";
     return 0;
   }
-  if (out.contains("dam")) {
-    const json& d = out["dam"];
-    std::printf("\nThe main job: run time against error (%s)\n", d["reference"].get<std::string>().c_str());
-    std::printf("%-12s %8s %9s %14s %14s %16s\n", "dam", "cell m", "wall s", "shear error", "moment error", "contact error");
-    auto pct = [](const json& e) { return e.is_number() ? std::to_string(100 * e.get<double>()).substr(0, 5) + " %" : std::string("n/a"); };
-    for (const auto& p : d["points"])
-      std::printf("%-12s %8.4f %9.2f %14s %14s %16s%s\n", p["group"].get<std::string>().c_str(), p["cell_size"].get<double>(),
-                  p["wall_seconds"].get<double>(), pct(p["base_shear_error"]).c_str(), pct(p["base_moment_error"]).c_str(),
-                  pct(p["contact_force_error"]).c_str(), p["front"].get<bool>() ? "  (front)" : "");
-    for (const char* g : {"bare", "with buffer"})
-      for (const char* k : {"base_shear", "base_moment", "contact_force"})
-        std::printf("  %s, %s: %s\n", g, k, d[g][k]["statement"].get<std::string>().c_str());
-  }
-  if (out.contains("small")) {
-    const json& sm = out["small"];
-    std::printf("\nSmall scenes against the kernel (1 thread; kernel: %ld particles, %.1f ns per particle-step)\n",
-                sm["kernel_particles"].get<long>(), sm["kernel_ns_per_particle_step"].get<double>());
-    for (const auto& v : sm["variants"]) {
-      std::printf("%s at h %g m: %.0f particles, %.0f steps, loop %.2f s, %.1f ns per particle-step = %.2f x kernel\n",
-                  v["variant"].get<std::string>().c_str(), v["cell_size"].get<double>(), v["particles"].get<double>(), v["steps"].get<double>(), v["loop_seconds"].get<double>(), v["ns_per_particle_step"].get<double>(),
-                  v["ratio_to_kernel"].get<double>());
-      for (const auto& [k, ns] : v["phases_ns"].items()) std::printf("  %-24s %8.1f ns\n", k.c_str(), ns.get<double>());
-      std::printf("  rigid constraint passes per step: %.1f\n", v["rigid_passes_per_step"].get<double>());
-    }
-  }
-  if (!results.empty()) {
-    std::printf("\nMPM kernel throughput (%dD, linear elastic, %ld particles, median of %d x %d steps)\n", o.dimension, o.particles, o.repeats, o.steps);
-    std::printf("particle arrays: %.0f bytes per particle\n", results.front().bytes_per_particle);
-    std::printf("%-9s %-9s %7s %12s %14s %10s %8s\n", "shape", "transfer", "threads", "s/step", "M updates/s", "speed-up", "spread");
-    for (const auto& b : results) {
-      double one = 0;
-      for (const auto& c : results)
-        if (c.shape == b.shape && c.transfer == b.transfer && c.threads == 1) one = c.seconds_per_step;
-      std::printf("%-9s %-9s %7d %12.4f %14.2f %10.2f %7.0f%%\n", b.shape.c_str(), b.transfer.c_str(), b.threads, b.seconds_per_step,
-                  b.updates_per_second / 1e6, one > 0 ? one / b.seconds_per_step : 0.0, 100 * b.spread);
-    }
-  }
-  if (out.contains("a5")) {
-    const json& a = out["a5"];
-    std::printf("\nLin & Yang verification 1: error (NRMS vs %s) against wall time; * = Pareto front\n", a["reference"].get<std::string>().c_str());
-    std::printf("%-15s %8s %-17s %10s %10s\n", "frame", "elements", "time step", "error", "wall s");
-    for (const auto& p : a["points"])
-      std::printf("%-15s %8d %-17s %10.4f %10.3f %s%s\n", p["integrator"].get<std::string>().c_str(), p["elements"].get<int>(),
-                  p["time_step"].get<std::string>().c_str(), p["error"].get<double>(), p["wall_seconds"].get<double>(), p["front"].get<bool>() ? "*" : "",
-                  p["paper_setup"].get<bool>() ? "  (paper set-up)" : "");
-    std::printf("paper set-up %.3f s, fastest as accurate (%s, %d elements, %s) %.3f s (medians of 3): speed-up %.1fx\n",
-                a["paper_wall_median_s"].get<double>(), a["fastest_as_accurate"]["integrator"].get<std::string>().c_str(),
-                a["fastest_as_accurate"]["elements"].get<int>(), a["fastest_as_accurate"]["time_step"].get<std::string>().c_str(),
-                a["fastest_wall_median_s"].get<double>(), a["speed_up"].get<double>());
-  }
-  if (out.contains("a6")) {
-    std::printf("\nLin & Yang verification 2, beam-column members: wall time vs depth (median of 3)\n%8s %10s %8s %12s\n", "h/L", "wall s", "steps", "proj. iter.");
-    for (const auto& r : out["a6"]["rows"])
-      std::printf("%8.3f %10.3f %8ld %12.0f\n", r["h_over_L"].get<double>(), r["wall_seconds"].get<double>(), r["steps"].get<long>(),
-                  r["projection_iterations_max"].get<double>());
-    std::printf("ratio h/L 0.025 : 0.2 = %.2f\n", out["a6"]["ratio_slender_to_thick"].get<double>());
-    std::printf("\nLin & Yang verification 2 at h/L 0.025: error against wall time (reference: %s), Pareto front\n%-9s %4s %8s %-16s %10s %10s\n",
-                out["a6"]["reference"].get<std::string>().c_str(), "frame", "el.", "cell m", "time step", "NRMS err", "wall s");
-    std::vector<const json*> front;
-    for (const auto& p : out["a6"]["points"])
-      if (p["front"].get<bool>()) front.push_back(&p);
-    std::sort(front.begin(), front.end(), [](const json* a, const json* b) { return (*a)["wall_seconds"] < (*b)["wall_seconds"]; });
-    for (const json* p : front)
-      std::printf("%-9s %4d %8.4f %-16s %10.4f %10.3f\n", (*p)["integrator"].get<std::string>().c_str(), (*p)["elements"].get<int>(),
-                  (*p)["cell_size"].get<double>(), (*p)["time_step"].get<std::string>().c_str(), (*p)["error"].get<double>(),
-                  (*p)["wall_seconds"].get<double>());
-  }
-  for (const char* c : {"bar", "disks"}) {
-    if (!out.contains(c)) continue;
-    std::printf("\n%s: error (%s) against wall time, Pareto front only (all points: --json)\n", c, out[c]["reference"].get<std::string>().c_str());
-    std::vector<const json*> front;
-    for (const auto& p : out[c]["points"])
-      if (p["front"].get<bool>()) front.push_back(&p);
-    std::sort(front.begin(), front.end(), [](const json* a, const json* b) { return (*a)["wall_seconds"] < (*b)["wall_seconds"]; });
-    for (const json* p : front)
-      std::printf("%-22s h %-7g %s error %.3e  wall %.3f s\n", (*p)["group"].get<std::string>().c_str(), (*p)["cell_size"].get<double>(),
-                  p->contains("cfl") ? ("cfl " + std::to_string((*p)["cfl"].get<double>()).substr(0, 3)).c_str() : "", (*p)["error"].get<double>(),
-                  (*p)["wall_seconds"].get<double>());
-  }
-  if (out.contains("skip")) {
-    const json& s = out["skip"];
-    std::printf("\nSkip what a scene does not need (medians of 3)\n");
-    std::printf("frame on the dam: Newmark %ld steps %.2f s, explicit %ld steps %.2f s (x%.1f); peak base shear differs by %.2f %%\n",
-                s["implicit_frame"]["newmark_steps"].get<long>(), s["implicit_frame"]["newmark_wall_s"].get<double>(),
-                s["implicit_frame"]["explicit_steps"].get<long>(), s["implicit_frame"]["explicit_wall_s"].get<double>(),
-                s["implicit_frame"]["wall_ratio_explicit_to_newmark"].get<double>(), 100 * s["implicit_frame"]["peak_difference"].get<double>());
-    std::printf("files: no snapshots %.2f s, 15 snapshots + .vtu %.2f s (ratio %.3f)\n", s["output_cost"]["no_snapshots_wall_s"].get<double>(),
-                s["output_cost"]["snapshots_every_10ms_wall_s"].get<double>(), s["output_cost"]["ratio"].get<double>());
-    std::printf("100 k-particle block: idle frame out of reach x%.3f per step, grid 10x wider and taller x%.3f per step\n",
-                s["block"]["idle_frame_ratio"].get<double>(), s["block"]["grid_10x_ratio"].get<double>());
-  }
+  print_dam(out);
+  print_small(out);
+  print_kernel(results, o);
+  print_a5(out);
+  print_a6(out);
+  print_fronts(out);
+  print_skip(out);
   return 0;
 }
 
