@@ -43,32 +43,48 @@ struct Table {
 constexpr double kG = 9.81;
 constexpr double kAssumedFrictionDeg = 30;  // ASTRA's cushion friction angle when the basis gives none
 
-void boulder_rows(const DesignBasis& basis, int dimension, Table& t) {
-  const DamBasis& dam = basis.dam;
-  const BoulderBasis& rock = *basis.boulder;
-  const bool buffer = basis.buffer.has_value();
-  const double E = dam.youngs_modulus_Pa, nu = is_set(dam.poisson_ratio) ? dam.poisson_ratio : 0.2, H = dam.height_m;
-  const double W = dam.width_m;
-  const double m = rock.mass_kg, v = rock.speed_m_s, D = rock.diameter_m, r = 0.5 * D;
-  const double Er = rock.youngs_modulus_Pa, nur = is_set(rock.poisson_ratio) ? rock.poisson_ratio : 0.25;
-  const double a = std::min(rock.impact_height_m, H);
-  const std::string mv = fmt("m = %.4g kg, v = %.3g m/s", m, v);
-  double kb = 0, tb = 0, Eb = 0;  // buffer layer under the boulder's projected area pi D^2 / 4 (docs/design-checks.md)
-  if (buffer) {
-    Eb = basis.buffer->youngs_modulus_Pa, tb = basis.buffer->thickness_m;
-    kb = sdof::buffer_layer_stiffness(Eb, std::numbers::pi * D * D / 4, tb);
+// What every boulder estimate reads: the dam, the rock, the buffer layer under the boulder's projected area
+// pi D^2 / 4 (docs/design-checks.md).
+struct BoulderCase {
+  const DesignBasis& basis;
+  const DamBasis& dam;
+  const BoulderBasis& rock;
+  bool buffer;
+  double E, nu, H, W, m, v, D, r, Er, nur, a;
+  std::string mv;
+  double kb = 0, tb = 0, Eb = 0;
+  double nu_c;  // Poisson's ratio of what the rock strikes: the buffer, or the bare face
+
+  explicit BoulderCase(const DesignBasis& b)
+      : basis(b), dam(b.dam), rock(*b.boulder), buffer(b.buffer.has_value()), E(dam.youngs_modulus_Pa),
+        nu(is_set(dam.poisson_ratio) ? dam.poisson_ratio : 0.2), H(dam.height_m), W(dam.width_m), m(rock.mass_kg), v(rock.speed_m_s),
+        D(rock.diameter_m), r(0.5 * D), Er(rock.youngs_modulus_Pa), nur(is_set(rock.poisson_ratio) ? rock.poisson_ratio : 0.25),
+        a(std::min(rock.impact_height_m, H)), mv(fmt("m = %.4g kg, v = %.3g m/s", m, v)) {
+    if (buffer) {
+      Eb = b.buffer->youngs_modulus_Pa, tb = b.buffer->thickness_m;
+      kb = sdof::buffer_layer_stiffness(Eb, std::numbers::pi * D * D / 4, tb);
+    }
+    nu_c = buffer ? b.buffer->poisson_ratio : nu;
   }
-  // Lin, Cheng & Tuan eqs. (21)-(23): the dam as a cantilever SDOF struck by the boulder's impulse.
+};
+
+// Lin, Cheng & Tuan eqs. (21)-(23): the dam as a cantilever SDOF struck by the boulder's impulse. Returns the struck
+// section's second moment of area.
+double sdof_row(const BoulderCase& c, Table& t) {
+  const DamBasis& dam = c.dam;
+  const bool buffer = c.buffer;
+  const double E = c.E, H = c.H, W = c.W, m = c.m, v = c.v, kb = c.kb;
+  const std::string& mv = c.mv;
   double I = 0;
   const char* sdof_formula = buffer ? "F_T = m v ω, ω = √(k_eff / M), k_eff = 1/(1/k + 1/k_b), k = 3EI/H³, M = ρAH/2, k_b = E_b (πD²/4) / t_b"
                                     : "F_T = m v ω_n, ω_n = √(k / M), k = 3EI/H³, M = ρAH/2 (mean section)";
   if (dam.type == DamKind::concrete_gravity) {
     const auto sec = sdof::tapered_rectangular_section(W, dam.crest_thickness_m, dam.base_thickness_m);
     I = sec.second_moment_m4;
-    const auto c = sdof::cantilever_sdof(E, dam.density_kg_m3, sec, H);
-    const auto res = buffer ? sdof::buffered_boulder_on_dam(m, v, c.effective_mass_kg, c.stiffness_N_per_m, kb)
-                            : sdof::boulder_on_dam(m, v, c.effective_mass_kg, c.stiffness_N_per_m);
-    std::string p = mv + fmt(", k = %.3g N/m, M = %.4g kg", c.stiffness_N_per_m, c.effective_mass_kg);
+    const auto cant = sdof::cantilever_sdof(E, dam.density_kg_m3, sec, H);
+    const auto res = buffer ? sdof::buffered_boulder_on_dam(m, v, cant.effective_mass_kg, cant.stiffness_N_per_m, kb)
+                            : sdof::boulder_on_dam(m, v, cant.effective_mass_kg, cant.stiffness_N_per_m);
+    std::string p = mv + fmt(", k = %.3g N/m, M = %.4g kg", cant.stiffness_N_per_m, cant.effective_mass_kg);
     if (buffer) p += fmt(", k_b = %.3g N/m", kb);
     t.add("sdof_base_force", "SDOF peak base force (Lin, Cheng & Tuan)", sdof_formula, "Lin, Cheng & Tuan eqs. (21)-(23)", "peak_base_shear", p,
           res.peak_base_force_N);
@@ -78,8 +94,15 @@ void boulder_rows(const DesignBasis& basis, int dimension, Table& t) {
     t.not_applicable("sdof_base_force", "SDOF peak base force (Lin, Cheng & Tuan)", sdof_formula, "Lin, Cheng & Tuan eqs. (21)-(23)",
                      "peak_base_shear", "written for a solid gravity dam as one cantilever; a steel open dam is a frame of columns");
   }
-  // EN 1991-1-7 C.2.1 eq. (C.1) takes k as the impacting object's stiffness on a rigid structure; here its form is used
-  // as a spring-mass estimate with the struck member's stiffness at the impact height a (a rock is far stiffer).
+  return I;
+}
+
+// EN 1991-1-7 C.2.1 eq. (C.1) takes k as the impacting object's stiffness on a rigid structure; here its form is used
+// as a spring-mass estimate with the struck member's stiffness at the impact height a (a rock is far stiffer).
+void en1991_row(const BoulderCase& c, double I, Table& t) {
+  const bool buffer = c.buffer;
+  const double E = c.E, a = c.a, m = c.m, v = c.v, kb = c.kb;
+  const std::string& mv = c.mv;
   double k = 3 * E * I / (a * a * a);
   if (buffer) k = sdof::series_stiffness(k, kb);
   const auto en = sdof::en1991_hard_impact(v, m, k);
@@ -87,7 +110,13 @@ void boulder_rows(const DesignBasis& basis, int dimension, Table& t) {
         buffer ? "F = v √(k m), k = 1/(1/(3EI/a³) + 1/k_b)" : "F = v √(k m), k = 3EI/a³", "EN 1991-1-7 Annex C.2.1 eq. (C.1), k of the struck member",
         "peak_contact_force", mv + fmt(", a = %.3g m, k = %.3g N/m", a, k), en.peak_force_N)
       .note = fmt("pulse %.3g ms", en.duration_s * 1e3);
-  // Hertz and GEO's reduced Hertz: a boulder on the bare, rigid face.
+}
+
+// Hertz and GEO's reduced Hertz: a boulder on the bare, rigid face.
+void hertz_rows(const BoulderCase& c, int dimension, Table& t) {
+  const bool buffer = c.buffer;
+  const double m = c.m, v = c.v, r = c.r, Er = c.Er, nur = c.nur, E = c.E, nu = c.nu;
+  const std::string& mv = c.mv;
   const char* hz_formula = "F = (4/3) E* R^½ δ^{3/2}, δ = (15 m v² / (16 E* R^½))^{2/5}";
   const char* geo_formula = "F = K_c 4000 v^1.2 r² kN";
   if (!buffer) {
@@ -103,11 +132,16 @@ void boulder_rows(const DesignBasis& basis, int dimension, Table& t) {
     t.not_applicable("hertz", "Hertz sphere on an elastic half-space", hz_formula, "Johnson (1985) Contact Mechanics ch. 11", "peak_contact_force", why);
     t.not_applicable("geo_hertz", "GEO Report 270 reduced Hertz", geo_formula, "Kwan (2012) GEO Report 270", "peak_contact_force", why);
   }
-  // Japan Road Association (2000): Hertz-type, with the Lame constant of what is struck (the buffer, or the bare face).
+}
+
+// Japan Road Association (2000): Hertz-type, with the Lame constant of what is struck (the buffer, or the bare face).
+void japanese_row(const BoulderCase& c, Table& t) {
+  const bool buffer = c.buffer;
+  const double m = c.m, v = c.v, E = c.E, Eb = c.Eb, nu_c = c.nu_c;
+  const DamBasis& dam = c.dam;
   const double Hf = v * v / (2 * kG);
   const char* jp_formula = "P = 2.108 W^{2/3} λ^{2/5} H^{3/5} (kN, kN/m², m), W = m g, H = v²/(2g)";
   const char* jp_source = "Japan Road Association (2000) Rockfall Countermeasure Handbook";
-  const double nu_c = buffer ? basis.buffer->poisson_ratio : nu;
   if (std::isnan(nu_c)) {
     t.not_applicable("japanese_rockfall", "Japanese rock-fall formula", jp_formula, jp_source, "peak_contact_force",
                      "the design basis has no tyre_buffer/poisson_ratio (results written before it was recorded)");
@@ -124,7 +158,13 @@ void boulder_rows(const DesignBasis& basis, int dimension, Table& t) {
           fmt("W = %.4g kN, λ = %.3g kN/m², H = %.3g m", m * kG / 1e3, lam / 1e3, Hf), sdof::japanese_rockfall_force_N(m, lam, Hf, kG))
         .note = buffer ? "λ of the buffer; half-space form (no thin-cushion factor)" : "λ of the bare concrete face (rigid rock on the dam)";
   }
-  // ASTRA 12006: a granular cushion on a gallery roof.
+}
+
+// ASTRA 12006: a granular cushion on a gallery roof.
+void astra_row(const BoulderCase& c, Table& t) {
+  const bool buffer = c.buffer;
+  const double m = c.m, v = c.v, r = c.r, Eb = c.Eb, tb = c.tb, nu_c = c.nu_c;
+  const DesignBasis& basis = c.basis;
   const char* as_formula = "F = 2.8 e^-0.5 r^0.7 M_E^0.4 tan φ (m v²/2)^0.6 (kN, m, kN/m², kJ)";
   const char* as_source = "ASTRA 12006 (2008)";
   if (!buffer) {
@@ -142,6 +182,15 @@ void boulder_rows(const DesignBasis& basis, int dimension, Table& t) {
         .note = std::string("calibrated on gravel cushions, a tyre buffer is outside that range; M_E taken as the buffer's constrained modulus") +
                 (given ? "" : fmt("; φ = %.0f° assumed (no tyre_buffer/friction_angle_deg)", kAssumedFrictionDeg));
   }
+}
+
+void boulder_rows(const DesignBasis& basis, int dimension, Table& t) {
+  const BoulderCase c(basis);
+  const double I = sdof_row(c, t);
+  en1991_row(c, I, t);
+  hertz_rows(c, dimension, t);
+  japanese_row(c, t);
+  astra_row(c, t);
 }
 
 // The debris modulus up to which the snout's peak was measured not to depend on E (the bundled surge: +-5 % for
