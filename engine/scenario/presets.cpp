@@ -111,6 +111,72 @@ void read_standing_loads(Obj& o, DamPreset& d) {
   if (!o.documenting() && d.water_height > d.height) o.fail("water/height", nullptr, "water no higher than the dam crest (" + std::to_string(d.height) + " m)");
 }
 
+// A concrete gravity dam: its section, the model, the concrete and what stands behind it.
+void read_concrete_dam(Obj& o, DamPreset& d) {
+  o.number("crest_thickness", d.crest, positive("m", "thickness at the crest, along the flow", true));
+  o.number("base_thickness", d.base_thickness, positive("m", "thickness at the base, >= crest_thickness", true));
+  o.choice<std::string>("sloped_face", d.sloped_face, {{"downstream", "downstream"}, {"upstream", "upstream"}, {"both", "both"}},
+                        Spec{.doc = "which face is battered: downstream (vertical upstream face), upstream, or both (symmetric)"});
+  o.choice<std::string>("model", d.model, {{"members", "members"}, {"continuum", "continuum"}},
+                        Spec{.doc = "members: one tapered beam-column member fixed at the base (Lin & Yang 2024; stresses from N and M); "
+                                    "continuum: an MPM body stuck to the ground along its base (for comparison)"});
+  d.concrete = material_object(o, "concrete", json{{"model", "linear_elastic"}, {"density", 2400}, {"youngs_modulus", 25e9}, {"poisson_ratio", 0.2}},
+                               "concrete (Lin, Cheng & Tuan use E 25 GPa, rho 2300)", "concrete");
+  plausible(o, "concrete", d.concrete, "concrete", 5e9, 1e11, 1500, 3500);
+  if (!o.documenting() && d.base_thickness < d.crest)
+    o.fail("base_thickness", nullptr, "a base thickness >= crest_thickness = " + std::to_string(d.crest) + " m");
+  read_standing_loads(o, d);
+}
+
+// A steel open dam: rows, levels and bracing of pipes, the member model and the steel.
+void read_steel_dam(Obj& o, DamPreset& d) {
+  o.integer("rows", d.rows, Spec{.doc = "rows of columns along the flow (the upstream row is hit)", .min = 1, .max = 10});
+  o.number("row_spacing", d.row_spacing, positive("m", "distance between rows along the flow; default height / 2"));
+  o.integer("levels", d.levels, Spec{.doc = "beam levels between the rows, evenly spaced up to the crest", .min = 1, .max = 20});
+  o.boolean("bracing", d.bracing, Spec{.doc = "one diagonal per panel, from the foot of the downstream column to the head of the upstream one"});
+  o.integer("columns", d.columns, Spec{.doc = "3D (analysis.dimension 3): columns in each row across the channel, `width` apart, tied by beams "
+                                              "across at every level; default 3", .min = 1, .max = 20});
+  Obj c = o.object("column", "column pipe section");
+  c.number("diameter", d.column_d, positive("m", "outer diameter D", true));
+  c.number("wall_thickness", d.column_t, positive("m", "wall thickness t <= D/2", true));
+  c.finish();
+  Obj b = o.object("beam", "beam and brace pipe section; default: the column's");
+  b.number("diameter", d.beam_d, positive("m", "outer diameter D"));
+  b.number("wall_thickness", d.beam_t, positive("m", "wall thickness t <= D/2"));
+  b.finish();
+  // Checked here, at the key the user wrote (the member sections the presets build check it again, at their paths).
+  auto pipe_wall = [](Obj& sec, double D, double t) {
+    if (sec.documenting() || !(D > 0) || !(t > 0.5 * D)) return;
+    std::ostringstream half;
+    half << 0.5 * D;
+    const json v = t;
+    sec.fail("wall_thickness", &v, "a wall thickness <= diameter / 2 = " + half.str() + " m");
+  };
+  pipe_wall(c, d.column_d, d.column_t);
+  if (!o.documenting() && d.row_spacing > 0 && d.column_d > 0 && d.rows > 1 && !(d.row_spacing > d.column_d)) {
+    const json v = d.row_spacing;
+    o.fail("row_spacing", &v, "a row spacing larger than the column diameter " + json(d.column_d).dump() + " m (the rows would overlap)");
+  }
+  if (d.beam_t > 0) pipe_wall(b, d.beam_d > 0 ? d.beam_d : d.column_d, d.beam_t);
+  o.choice<std::string>("member_model", d.member_model, {{"plastic", "plastic"}, {"elastic", "elastic"}},
+                        Spec{.doc = "the members: plastic (the default: elastic_plastic steel, force-based fibre beam-columns that yield "
+                                    "and absorb the boulder's energy; a slit dam is sized to) or elastic (linear elastic members: the "
+                                    "serviceability level, or a comparison)"});
+  d.steel = material_object(o, "steel", json{{"model", "elastic_plastic"}, {"density", 7850}, {"youngs_modulus", 205e9}, {"poisson_ratio", 0.3},
+                                             {"yield_strength", 355e6}, {"hardening_ratio", 0.01}},
+                            "steel (S355 by default: f_y 355 MPa, EN 10025-2; the design checks take this f_y)", "steel");
+  plausible(o, "steel", d.steel, "steel", 1e11, 3e11, 7000, 8500);
+  if (d.member_model == "plastic" && !o.documenting() && !o.given("damping_model")) d.damping_model = "mass";
+  if (d.member_model == "elastic" && d.steel.value("model", "") == "elastic_plastic") {
+    d.steel["model"] = "linear_elastic";
+    d.steel.erase("hardening_ratio");
+    d.steel_yield = d.steel.value("yield_strength", 355e6);
+    d.steel.erase("yield_strength");
+  } else {
+    d.steel_yield = d.steel.value("yield_strength", 0.0);
+  }
+}
+
 void read_dam(Obj o, DamPreset& d) {
   o.string("type", d.type, Spec{.doc = "concrete_gravity (a tapered concrete wall) | steel_open (a frame of steel pipes: columns in rows "
                                        "along the flow, beams between them)", .required = true});
@@ -143,69 +209,9 @@ void read_dam(Obj o, DamPreset& d) {
                         Spec{.doc = "the members' beam theory: timoshenko (shear deformation and rotary inertia; the default for "
                                     "concrete_gravity, whose section is a sizeable fraction of its height) or euler_bernoulli (the "
                                     "default for steel_open's slender pipes)"});
-  if (o.when("type", d.type, "concrete_gravity")) {
-    o.number("crest_thickness", d.crest, positive("m", "thickness at the crest, along the flow", true));
-    o.number("base_thickness", d.base_thickness, positive("m", "thickness at the base, >= crest_thickness", true));
-    o.choice<std::string>("sloped_face", d.sloped_face, {{"downstream", "downstream"}, {"upstream", "upstream"}, {"both", "both"}},
-                          Spec{.doc = "which face is battered: downstream (vertical upstream face), upstream, or both (symmetric)"});
-    o.choice<std::string>("model", d.model, {{"members", "members"}, {"continuum", "continuum"}},
-                          Spec{.doc = "members: one tapered beam-column member fixed at the base (Lin & Yang 2024; stresses from N and M); "
-                                      "continuum: an MPM body stuck to the ground along its base (for comparison)"});
-    d.concrete = material_object(o, "concrete", json{{"model", "linear_elastic"}, {"density", 2400}, {"youngs_modulus", 25e9}, {"poisson_ratio", 0.2}},
-                                 "concrete (Lin, Cheng & Tuan use E 25 GPa, rho 2300)", "concrete");
-    plausible(o, "concrete", d.concrete, "concrete", 5e9, 1e11, 1500, 3500);
-    if (!o.documenting() && d.base_thickness < d.crest)
-      o.fail("base_thickness", nullptr, "a base thickness >= crest_thickness = " + std::to_string(d.crest) + " m");
-    read_standing_loads(o, d);
-  }
+  if (o.when("type", d.type, "concrete_gravity")) read_concrete_dam(o, d);
   o.end_when();
-  if (o.when("type", d.type, "steel_open")) {
-    o.integer("rows", d.rows, Spec{.doc = "rows of columns along the flow (the upstream row is hit)", .min = 1, .max = 10});
-    o.number("row_spacing", d.row_spacing, positive("m", "distance between rows along the flow; default height / 2"));
-    o.integer("levels", d.levels, Spec{.doc = "beam levels between the rows, evenly spaced up to the crest", .min = 1, .max = 20});
-    o.boolean("bracing", d.bracing, Spec{.doc = "one diagonal per panel, from the foot of the downstream column to the head of the upstream one"});
-    o.integer("columns", d.columns, Spec{.doc = "3D (analysis.dimension 3): columns in each row across the channel, `width` apart, tied by beams "
-                                                "across at every level; default 3", .min = 1, .max = 20});
-    Obj c = o.object("column", "column pipe section");
-    c.number("diameter", d.column_d, positive("m", "outer diameter D", true));
-    c.number("wall_thickness", d.column_t, positive("m", "wall thickness t <= D/2", true));
-    c.finish();
-    Obj b = o.object("beam", "beam and brace pipe section; default: the column's");
-    b.number("diameter", d.beam_d, positive("m", "outer diameter D"));
-    b.number("wall_thickness", d.beam_t, positive("m", "wall thickness t <= D/2"));
-    b.finish();
-    // Checked here, at the key the user wrote (the member sections the presets build check it again, at their paths).
-    auto pipe_wall = [](Obj& sec, double D, double t) {
-      if (sec.documenting() || !(D > 0) || !(t > 0.5 * D)) return;
-      std::ostringstream half;
-      half << 0.5 * D;
-      const json v = t;
-      sec.fail("wall_thickness", &v, "a wall thickness <= diameter / 2 = " + half.str() + " m");
-    };
-    pipe_wall(c, d.column_d, d.column_t);
-    if (!o.documenting() && d.row_spacing > 0 && d.column_d > 0 && d.rows > 1 && !(d.row_spacing > d.column_d)) {
-      const json v = d.row_spacing;
-      o.fail("row_spacing", &v, "a row spacing larger than the column diameter " + json(d.column_d).dump() + " m (the rows would overlap)");
-    }
-    if (d.beam_t > 0) pipe_wall(b, d.beam_d > 0 ? d.beam_d : d.column_d, d.beam_t);
-    o.choice<std::string>("member_model", d.member_model, {{"plastic", "plastic"}, {"elastic", "elastic"}},
-                          Spec{.doc = "the members: plastic (the default: elastic_plastic steel, force-based fibre beam-columns that yield "
-                                      "and absorb the boulder's energy; a slit dam is sized to) or elastic (linear elastic members: the "
-                                      "serviceability level, or a comparison)"});
-    d.steel = material_object(o, "steel", json{{"model", "elastic_plastic"}, {"density", 7850}, {"youngs_modulus", 205e9}, {"poisson_ratio", 0.3},
-                                               {"yield_strength", 355e6}, {"hardening_ratio", 0.01}},
-                              "steel (S355 by default: f_y 355 MPa, EN 10025-2; the design checks take this f_y)", "steel");
-    plausible(o, "steel", d.steel, "steel", 1e11, 3e11, 7000, 8500);
-    if (d.member_model == "plastic" && !o.documenting() && !o.given("damping_model")) d.damping_model = "mass";
-    if (d.member_model == "elastic" && d.steel.value("model", "") == "elastic_plastic") {
-      d.steel["model"] = "linear_elastic";
-      d.steel.erase("hardening_ratio");
-      d.steel_yield = d.steel.value("yield_strength", 355e6);
-      d.steel.erase("yield_strength");
-    } else {
-      d.steel_yield = d.steel.value("yield_strength", 0.0);
-    }
-  }
+  if (o.when("type", d.type, "steel_open")) read_steel_dam(o, d);
   o.end_when();
   o.finish();
 }
