@@ -87,6 +87,83 @@ void read_grid(Obj o, GridConfig& g) {
   o.finish();
 }
 
+// Newtonian and Bingham fluids: weak compressibility, viscosity, volume relaxation.
+void read_fluid(Obj& o, MaterialConfig& m) {
+  o.number("bulk_modulus", m.bulk_modulus, positive("Pa", "bulk modulus K of the weakly compressible fluid: p = K (1/J - 1) >= 0, "
+                                                          "J = V/V0 (Monaghan 1994, gamma = 1); sound speed c = sqrt(K/density) "
+                                                          "sets the time step; take c >= 10x the fastest flow speed (about 1 % density error)", true));
+  o.number("viscosity", m.viscosity, positive("Pa s", "dynamic (plastic, for bingham) viscosity mu: deviatoric stress s = 2 mu D'; "
+                                                     "a large viscosity lowers the time step to about cfl h^2 density / (8/3 d mu) in d dimensions", true));
+  o.number("volume_relaxation", m.volume_relaxation,
+           Spec{.doc = "0 (default): the volume ratio J follows the velocity gradient alone. n > 0: each step J also relaxes "
+                       "towards the space the particles fill on the grid (their reference volumes at the nodes against the "
+                       "nodes' space in front of the walls) over n transits of sound across a cell (100 is a fair choice): a "
+                       "stopped or splashing stream then cannot pack more mass than its space holds (without it, 1.3-2.8x "
+                       "near a wall), but the fluid reads its density low within a cell or two of a free surface or of "
+                       "another body and carries less pressure there (docs/verification.md)",
+                .min = 0});
+}
+
+// Members' steel: yield strength and hardening.
+void read_member_steel(Obj& o, MaterialConfig& m) {
+  o.number("yield_strength", m.yield_strength,
+           Spec{.unit = "Pa", .doc = "yield strength f_y of the steel (S235: 235e6, S355: 355e6; EN 10025-2)", .min = 1e8, .max = 2e9,
+                .required = true});
+  o.number("hardening_ratio", m.hardening_ratio,
+           Spec{.doc = "post-yield modulus over E (linear kinematic hardening); the default 0.01 is the E/100 strain-hardening slope "
+                       "of EN 1993-1-5 Annex C.6(2); 0 = perfectly plastic", .min = 0, .max = 0.5});
+}
+
+// Bingham fluids: yield stress and its regularisation.
+void read_bingham(Obj& o, MaterialConfig& m) {
+  o.number("yield_stress", m.yield_stress, Spec{.unit = "Pa", .doc = "Bingham yield stress tau_y: shear stress tau = tau_y + mu gamma_dot "
+                                                                      "in flow", .min = 0, .required = true});
+  o.number("regularisation_rate", m.regularisation_rate,
+           positive("1/s", "Papanastasiou (1987) regularisation, 1/m: tau = mu gamma_dot + tau_y (1 - exp(-gamma_dot / rate)); below "
+                           "yield the material creeps at about this shear rate, as a fluid of viscosity mu + tau_y / rate, which "
+                           "also bounds the time step to about cfl h^2 density / (8/3 d (mu + tau_y / rate)) in d dimensions: a "
+                           "larger rate runs faster but creeps more"));
+}
+
+// Elastic solids' Kelvin-Voigt damping.
+void read_solid_damping(Obj& o, MaterialConfig& m) {
+  o.number("damping_ratio", m.damping_ratio, Spec{.doc = "viscous (Kelvin-Voigt, stiffness-proportional) damping ratio zeta reached "
+                                                          "at damping_frequency: sigma_v = beta C:D, beta = zeta / (pi f); 0 = elastic",
+                                                  .min = 0, .max = 1});
+  o.number("damping_frequency", m.damping_frequency, Spec{.unit = "Hz", .doc = "frequency f at which the damping ratio holds (zeta grows "
+                                                                               "with frequency as in Rayleigh beta damping); required with a damping ratio",
+                                                          .min = 0, .min_open = true});
+  if (!o.documenting() && m.damping_ratio > 0 && !(m.damping_frequency > 0))
+    o.fail("damping_frequency", nullptr, "a frequency > 0 (Hz) with damping_ratio " + std::to_string(m.damping_ratio));
+}
+
+// Drucker-Prager: Mohr-Coulomb strength and dilation.
+void read_drucker_prager(Obj& o, MaterialConfig& m) {
+  o.number("cohesion", m.cohesion, Spec{.unit = "Pa", .doc = "cohesion c (Mohr-Coulomb)", .min = 0});
+  o.number("friction_angle", m.friction_angle, Spec{.unit = "deg", .doc = "internal friction angle phi", .min = 0, .max = 70, .required = true});
+  o.number("dilation_angle", m.dilation_angle, Spec{.unit = "deg", .doc = "dilation angle psi (0: no plastic volume change), at most phi",
+                                                    .min = 0, .max = 70});
+  if (!o.documenting() && m.dilation_angle > m.friction_angle)
+    o.fail("dilation_angle", nullptr, "a dilation angle <= friction_angle (" + std::to_string(m.friction_angle) + " deg)");
+}
+
+// mu(I) dense granular flow.
+void read_mu_i(Obj& o, MaterialConfig& m) {
+  o.number("mu_s", m.mu_s, Spec{.doc = "static friction coefficient mu_s = tan(theta_1): q = mu(I) p with q = sqrt(J2)", .min = 0, .min_open = true, .required = true});
+  o.number("mu_2", m.mu_2, Spec{.doc = "limiting friction coefficient mu_2 = tan(theta_2) at large I, greater than mu_s", .min = 0, .min_open = true, .required = true});
+  o.number("I0", m.inertial_I0, Spec{.doc = "inertial number scale I0 of mu(I) = mu_s + (mu_2 - mu_s) / (I0 / I + 1)", .min = 0, .min_open = true, .required = true});
+  o.number("grain_diameter", m.grain_diameter, positive("m", "grain diameter d in I = gamma_dot d / sqrt(p / grain_density)", true));
+  o.number("grain_density", m.grain_density, positive("kg/m^3", "density of the grains rho_s in I (default 2650)"));
+  o.number("regularisation_alpha", m.regularisation_alpha,
+           Spec{.doc = "alpha of Barker & Gray's (2017) partial regularisation: below I_N1, where mu(I) is ill posed, mu = sqrt(alpha / "
+                       "ln(A / I)), joined continuously at I_N1; the material then creeps below mu_s instead of standing rigid "
+                       "(default 1.9; 0 = Jop's law unregularised)",
+                .min = 0});
+  if (!o.documenting() && !(m.mu_2 > m.mu_s)) {
+    const nlohmann::json v = m.mu_2;
+    o.fail("mu_2", &v, "a limiting friction mu_2 greater than mu_s (" + std::to_string(m.mu_s) + ")");
+  }
+}
 
 void read_material(Obj& o, MaterialConfig& m) {
   o.string("name", m.name, Spec{.doc = "name that bodies refer to", .required = true});
@@ -109,77 +186,17 @@ void read_material(Obj& o, MaterialConfig& m) {
     o.number("poisson_ratio", m.poisson_ratio, Spec{.doc = "Poisson's ratio", .min = -1, .max = 0.5, .min_open = true, .max_open = true, .required = true});
   }
   o.end_when();
-  if (when_any(o, "model", m.model, {"newtonian", "bingham"})) {
-    o.number("bulk_modulus", m.bulk_modulus, positive("Pa", "bulk modulus K of the weakly compressible fluid: p = K (1/J - 1) >= 0, "
-                                                            "J = V/V0 (Monaghan 1994, gamma = 1); sound speed c = sqrt(K/density) "
-                                                            "sets the time step; take c >= 10x the fastest flow speed (about 1 % density error)", true));
-    o.number("viscosity", m.viscosity, positive("Pa s", "dynamic (plastic, for bingham) viscosity mu: deviatoric stress s = 2 mu D'; "
-                                                       "a large viscosity lowers the time step to about cfl h^2 density / (8/3 d mu) in d dimensions", true));
-    o.number("volume_relaxation", m.volume_relaxation,
-             Spec{.doc = "0 (default): the volume ratio J follows the velocity gradient alone. n > 0: each step J also relaxes "
-                         "towards the space the particles fill on the grid (their reference volumes at the nodes against the "
-                         "nodes' space in front of the walls) over n transits of sound across a cell (100 is a fair choice): a "
-                         "stopped or splashing stream then cannot pack more mass than its space holds (without it, 1.3-2.8x "
-                         "near a wall), but the fluid reads its density low within a cell or two of a free surface or of "
-                         "another body and carries less pressure there (docs/verification.md)",
-                  .min = 0});
-  }
+  if (when_any(o, "model", m.model, {"newtonian", "bingham"})) read_fluid(o, m);
   o.end_when();
-  if (o.when("model", m.model, "elastic_plastic")) {
-    o.number("yield_strength", m.yield_strength,
-             Spec{.unit = "Pa", .doc = "yield strength f_y of the steel (S235: 235e6, S355: 355e6; EN 10025-2)", .min = 1e8, .max = 2e9,
-                  .required = true});
-    o.number("hardening_ratio", m.hardening_ratio,
-             Spec{.doc = "post-yield modulus over E (linear kinematic hardening); the default 0.01 is the E/100 strain-hardening slope "
-                         "of EN 1993-1-5 Annex C.6(2); 0 = perfectly plastic", .min = 0, .max = 0.5});
-  }
+  if (o.when("model", m.model, "elastic_plastic")) read_member_steel(o, m);
   o.end_when();
-  if (o.when("model", m.model, "bingham")) {
-    o.number("yield_stress", m.yield_stress, Spec{.unit = "Pa", .doc = "Bingham yield stress tau_y: shear stress tau = tau_y + mu gamma_dot "
-                                                                        "in flow", .min = 0, .required = true});
-    o.number("regularisation_rate", m.regularisation_rate,
-             positive("1/s", "Papanastasiou (1987) regularisation, 1/m: tau = mu gamma_dot + tau_y (1 - exp(-gamma_dot / rate)); below "
-                             "yield the material creeps at about this shear rate, as a fluid of viscosity mu + tau_y / rate, which "
-                             "also bounds the time step to about cfl h^2 density / (8/3 d (mu + tau_y / rate)) in d dimensions: a "
-                             "larger rate runs faster but creeps more"));
-  }
+  if (o.when("model", m.model, "bingham")) read_bingham(o, m);
   o.end_when();
-  if (when_any(o, "model", m.model, {"linear_elastic", "neo_hookean"})) {
-    o.number("damping_ratio", m.damping_ratio, Spec{.doc = "viscous (Kelvin-Voigt, stiffness-proportional) damping ratio zeta reached "
-                                                            "at damping_frequency: sigma_v = beta C:D, beta = zeta / (pi f); 0 = elastic",
-                                                    .min = 0, .max = 1});
-    o.number("damping_frequency", m.damping_frequency, Spec{.unit = "Hz", .doc = "frequency f at which the damping ratio holds (zeta grows "
-                                                                                 "with frequency as in Rayleigh beta damping); required with a damping ratio",
-                                                            .min = 0, .min_open = true});
-    if (!o.documenting() && m.damping_ratio > 0 && !(m.damping_frequency > 0))
-      o.fail("damping_frequency", nullptr, "a frequency > 0 (Hz) with damping_ratio " + std::to_string(m.damping_ratio));
-  }
+  if (when_any(o, "model", m.model, {"linear_elastic", "neo_hookean"})) read_solid_damping(o, m);
   o.end_when();
-  if (o.when("model", m.model, "drucker_prager")) {
-    o.number("cohesion", m.cohesion, Spec{.unit = "Pa", .doc = "cohesion c (Mohr-Coulomb)", .min = 0});
-    o.number("friction_angle", m.friction_angle, Spec{.unit = "deg", .doc = "internal friction angle phi", .min = 0, .max = 70, .required = true});
-    o.number("dilation_angle", m.dilation_angle, Spec{.unit = "deg", .doc = "dilation angle psi (0: no plastic volume change), at most phi",
-                                                      .min = 0, .max = 70});
-    if (!o.documenting() && m.dilation_angle > m.friction_angle)
-      o.fail("dilation_angle", nullptr, "a dilation angle <= friction_angle (" + std::to_string(m.friction_angle) + " deg)");
-  }
+  if (o.when("model", m.model, "drucker_prager")) read_drucker_prager(o, m);
   o.end_when();
-  if (o.when("model", m.model, "mu_i")) {
-    o.number("mu_s", m.mu_s, Spec{.doc = "static friction coefficient mu_s = tan(theta_1): q = mu(I) p with q = sqrt(J2)", .min = 0, .min_open = true, .required = true});
-    o.number("mu_2", m.mu_2, Spec{.doc = "limiting friction coefficient mu_2 = tan(theta_2) at large I, greater than mu_s", .min = 0, .min_open = true, .required = true});
-    o.number("I0", m.inertial_I0, Spec{.doc = "inertial number scale I0 of mu(I) = mu_s + (mu_2 - mu_s) / (I0 / I + 1)", .min = 0, .min_open = true, .required = true});
-    o.number("grain_diameter", m.grain_diameter, positive("m", "grain diameter d in I = gamma_dot d / sqrt(p / grain_density)", true));
-    o.number("grain_density", m.grain_density, positive("kg/m^3", "density of the grains rho_s in I (default 2650)"));
-    o.number("regularisation_alpha", m.regularisation_alpha,
-             Spec{.doc = "alpha of Barker & Gray's (2017) partial regularisation: below I_N1, where mu(I) is ill posed, mu = sqrt(alpha / "
-                         "ln(A / I)), joined continuously at I_N1; the material then creeps below mu_s instead of standing rigid "
-                         "(default 1.9; 0 = Jop's law unregularised)",
-                  .min = 0});
-    if (!o.documenting() && !(m.mu_2 > m.mu_s)) {
-      const nlohmann::json v = m.mu_2;
-      o.fail("mu_2", &v, "a limiting friction mu_2 greater than mu_s (" + std::to_string(m.mu_s) + ")");
-    }
-  }
+  if (o.when("model", m.model, "mu_i")) read_mu_i(o, m);
   o.end_when();
 }
 
