@@ -138,76 +138,113 @@ void prepare_solid_check(const SolidCheckConfig& c) {
   }
 }
 
+namespace {
+
+// A point or patch load case on the upstream face (in 2D a patch is its vertical profile over the plane-strain width).
+void given_load(const Model& m, const SolidCheckConfig& c, const SolidLoadConfig& l, Eigen::VectorXd& f) {
+  const int dim = m.mesh.dim;
+  const double across = l.across >= 0 ? l.across : 0.5 * c.width;
+  if (l.type == "point") {
+    Eigen::VectorXd F = Eigen::VectorXd::Zero(dim);
+    F[0] = l.force;
+    add_point_load(m.mesh, nearest_face_node(m.mesh, Face::upstream, across, l.height), F, f);
+  } else if (dim == 3) {
+    PatchLoad p;
+    p.centre_y_m = across, p.centre_z_m = l.height, p.width_m = l.patch_width, p.height_m = l.patch_height;
+    p.total_force_N = l.force;
+    p.shape = l.shape == "uniform" ? PatchShape::uniform : PatchShape::pyramid;
+    add_patch_load(m.mesh, p, f);
+  } else {
+    const double h = 0.5 * l.patch_height, W = c.width;
+    if (l.shape == "uniform")
+      add_pressure_profile(m.mesh, m.mat, Face::upstream, {l.height - h, l.height + h}, {l.force / (W * 2 * h), l.force / (W * 2 * h)}, f);
+    else
+      add_pressure_profile(m.mesh, m.mat, Face::upstream, {l.height - h, l.height, l.height + h}, {0.0, l.force / (W * h), 0.0}, f);
+  }
+}
+
+// The simulation's contact loads at their peak on one member, binned by height into a pressure profile on the face;
+// in 3D turned about its centroid into a round patch with the simulation's resultant (or spread uniformly across).
+void simulation_load(const Scenario& s, const Model& m, const SolidLoadConfig& l, std::size_t i, const PeakContact* contact, json& entry,
+                     Eigen::VectorXd& f) {
+  const SolidCheckConfig& c = s.solid_check;
+  if (!contact)
+    throw InputError(s.message_source(), "/solid_check/loads/" + std::to_string(i) + "/type", "\"simulation\"",
+                     "a run in which the members were touched (no contact loads were recorded)");
+  const std::string member = l.member.empty() ? s.structure.members.front().name : l.member;
+  double resultant = 0;
+  const auto [z, q] = contact_profile(*contact, member, s.grid.cell_size, c.width, c.height, resultant);
+  entry["time_s"] = contact->time;
+  entry["member"] = member;
+  entry["profile"] = {{"height_m", z}, {"pressure_Pa", q}};
+  if (z.size() < 2 || !(std::abs(resultant) > 0)) {
+    entry["note"] = "no horizontal contact load on the member at the governing instant";
+  } else if (m.mesh.dim == 2 || l.spread == "uniform") {
+    add_pressure_profile(m.mesh, m.mat, Face::upstream, z, q, f);
+  } else {  // a round patch: the vertical profile, symmetrised about its centroid, turned about it
+    const double across = l.across >= 0 ? l.across : 0.5 * c.width;
+    double zc = 0, sum = 0;
+    for (std::size_t k = 0; k < z.size(); ++k) zc += q[k] * z[k], sum += q[k];
+    zc /= sum;
+    FaceTraction t;
+    t.q_Pa = [&, zc](double y, double zz) {
+      const double r = std::hypot(y - across, zz - zc);
+      return 0.5 * (piecewise_linear(z, q, zc + r) + piecewise_linear(z, q, zc - r));
+    };
+    t.gauss_per_direction = 4;
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(f.size());
+    const FaceLoadReport rep = add_face_traction(m.mesh, m.mat, t, g);
+    f += g * (resultant / rep.resultant_N);  // same resultant as the simulation
+  }
+}
+
+// A load case's answer: its resultant, stress peaks, base reactions and largest displacement.
+void record_case(const Model& m, const Eigen::VectorXd& f, const StaticSolution& sol, const StressField& field, json& entry) {
+  const int dim = m.mesh.dim;
+  double fx = 0;
+  for (int n = 0; n < m.mesh.n_nodes(); ++n) fx += f[dim * n];
+  double rmax = 0, umax = 0;
+  for (int n : m.base) rmax = std::max(rmax, sol.reaction.segment(dim * n, dim).norm());
+  for (int n = 0; n < m.mesh.n_nodes(); ++n) umax = std::max(umax, sol.u.segment(dim * n, dim).norm());
+  const Eigen::VectorXd total = total_reaction(m.mesh, sol.reaction, m.base);
+  entry["load_resultant_N"] = fx;
+  entry["peaks"] = stress_peaks(m, field);
+  entry["max_nodal_base_reaction_N"] = rmax;
+  entry["total_base_reaction_N"] = std::vector<double>(total.data(), total.data() + total.size());
+  entry["max_displacement_m"] = umax;
+}
+
+// The mesh and the model's description, for the pictures.
+json solid_field(const Model& m, const json& axes, const json& field_cases) {
+  const int dim = m.mesh.dim;
+  json nodes = json::array(), elements = json::array();
+  for (int n = 0; n < m.mesh.n_nodes(); ++n)
+    for (int d = 0; d < dim; ++d) nodes.push_back(sig6(m.mesh.nodes(n, d)));
+  for (int e = 0; e < m.mesh.n_elements(); ++e)
+    for (int c2 = 0; c2 < m.mesh.nodes_per_element(); ++c2) elements.push_back(m.mesh.elements(e, c2));
+  return {{"dim", dim}, {"nodes_per_element", m.mesh.nodes_per_element()}, {"axes", axes}, {"nodes_m", nodes},
+          {"elements", elements}, {"cases", field_cases}};
+}
+
+}  // namespace
+
 SolidCheckDocuments run_solid_check(const Scenario& s, const PeakContact* contact) {
   const SolidCheckConfig& c = s.solid_check;
   const std::shared_ptr<const Factorised> fm = factorised(c);
   const Model& m = fm->m;
-  const StaticSolver& solver = fm->solver;
   const int dim = m.mesh.dim;
   json cases = json::array(), field_cases = json::array();
   for (std::size_t i = 0; i < c.loads.size(); ++i) {
     const SolidLoadConfig& l = c.loads[i];
     Eigen::VectorXd f = Eigen::VectorXd::Zero(m.mesh.n_dofs());
     json entry{{"name", l.name}, {"type", l.type}};
-    const double across = l.across >= 0 ? l.across : 0.5 * c.width;
-    if (l.type == "point") {
-      Eigen::VectorXd F = Eigen::VectorXd::Zero(dim);
-      F[0] = l.force;
-      add_point_load(m.mesh, nearest_face_node(m.mesh, Face::upstream, across, l.height), F, f);
-    } else if (l.type == "patch" && dim == 3) {
-      PatchLoad p;
-      p.centre_y_m = across, p.centre_z_m = l.height, p.width_m = l.patch_width, p.height_m = l.patch_height;
-      p.total_force_N = l.force;
-      p.shape = l.shape == "uniform" ? PatchShape::uniform : PatchShape::pyramid;
-      add_patch_load(m.mesh, p, f);
-    } else if (l.type == "patch") {  // 2D: the patch's vertical profile over the plane-strain width
-      const double h = 0.5 * l.patch_height, W = c.width;
-      if (l.shape == "uniform")
-        add_pressure_profile(m.mesh, m.mat, Face::upstream, {l.height - h, l.height + h}, {l.force / (W * 2 * h), l.force / (W * 2 * h)}, f);
-      else
-        add_pressure_profile(m.mesh, m.mat, Face::upstream, {l.height - h, l.height, l.height + h}, {0.0, l.force / (W * h), 0.0}, f);
-    } else {
-      if (!contact)
-        throw InputError(s.message_source(), "/solid_check/loads/" + std::to_string(i) + "/type", "\"simulation\"",
-                         "a run in which the members were touched (no contact loads were recorded)");
-      const std::string member = l.member.empty() ? s.structure.members.front().name : l.member;
-      double resultant = 0;
-      const auto [z, q] = contact_profile(*contact, member, s.grid.cell_size, c.width, c.height, resultant);
-      entry["time_s"] = contact->time;
-      entry["member"] = member;
-      entry["profile"] = {{"height_m", z}, {"pressure_Pa", q}};
-      if (z.size() < 2 || !(std::abs(resultant) > 0)) {
-        entry["note"] = "no horizontal contact load on the member at the governing instant";
-      } else if (dim == 2 || l.spread == "uniform") {
-        add_pressure_profile(m.mesh, m.mat, Face::upstream, z, q, f);
-      } else {  // a round patch: the vertical profile, symmetrised about its centroid, turned about it
-        double zc = 0, sum = 0;
-        for (std::size_t k = 0; k < z.size(); ++k) zc += q[k] * z[k], sum += q[k];
-        zc /= sum;
-        FaceTraction t;
-        t.q_Pa = [&, zc](double y, double zz) {
-          const double r = std::hypot(y - across, zz - zc);
-          return 0.5 * (piecewise_linear(z, q, zc + r) + piecewise_linear(z, q, zc - r));
-        };
-        t.gauss_per_direction = 4;
-        Eigen::VectorXd g = Eigen::VectorXd::Zero(f.size());
-        const FaceLoadReport rep = add_face_traction(m.mesh, m.mat, t, g);
-        f += g * (resultant / rep.resultant_N);  // same resultant as the simulation
-      }
-    }
-    const StaticSolution sol = solver.solve(f);
-    double fx = 0;
-    for (int n = 0; n < m.mesh.n_nodes(); ++n) fx += f[dim * n];
-    double rmax = 0, umax = 0;
-    for (int n : m.base) rmax = std::max(rmax, sol.reaction.segment(dim * n, dim).norm());
-    for (int n = 0; n < m.mesh.n_nodes(); ++n) umax = std::max(umax, sol.u.segment(dim * n, dim).norm());
-    const Eigen::VectorXd total = total_reaction(m.mesh, sol.reaction, m.base);
-    entry["load_resultant_N"] = fx;
+    if (l.type == "point" || l.type == "patch")
+      given_load(m, c, l, f);
+    else
+      simulation_load(s, m, l, i, contact, entry, f);
+    const StaticSolution sol = fm->solver.solve(f);
     const StressField field = recover_stress(m.mesh, m.mat, sol.u);
-    entry["peaks"] = stress_peaks(m, field);
-    entry["max_nodal_base_reaction_N"] = rmax;
-    entry["total_base_reaction_N"] = std::vector<double>(total.data(), total.data() + total.size());
-    entry["max_displacement_m"] = umax;
+    record_case(m, f, sol, field, entry);
     cases.push_back(entry);
     field_cases.push_back(field_case(l.name, sol.u, field));
   }
@@ -215,14 +252,7 @@ SolidCheckDocuments run_solid_check(const Scenario& s, const PeakContact* contac
              {"height_m", c.height}, {"crest_thickness_m", c.crest_thickness}, {"base_thickness_m", c.base_thickness},
              {"width_m", c.width}, {"sloped_face", c.sloped_face}, {"youngs_modulus_Pa", c.youngs_modulus}, {"poisson_ratio", c.poisson_ratio},
              {"axes", dim == 3 ? "x through the thickness (downstream), y across the face, z up" : "x through the thickness (downstream), z up"}};
-  json nodes = json::array(), elements = json::array();
-  for (int n = 0; n < m.mesh.n_nodes(); ++n)
-    for (int d = 0; d < dim; ++d) nodes.push_back(sig6(m.mesh.nodes(n, d)));
-  for (int e = 0; e < m.mesh.n_elements(); ++e)
-    for (int c2 = 0; c2 < m.mesh.nodes_per_element(); ++c2) elements.push_back(m.mesh.elements(e, c2));
-  json field{{"dim", dim}, {"nodes_per_element", m.mesh.nodes_per_element()}, {"axes", model["axes"]}, {"nodes_m", nodes},
-             {"elements", elements}, {"cases", field_cases}};
-  return {json{{"model", model}, {"cases", cases}}.dump(), field.dump()};
+  return {json{{"model", model}, {"cases", cases}}.dump(), solid_field(m, model["axes"], field_cases).dump()};
 }
 
 }  // namespace dmi
