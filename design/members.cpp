@@ -301,6 +301,83 @@ void space_member(const Results& r, const Series& ef, const FrameInfo& f, const 
 
 }  // namespace
 
+namespace {
+
+// A member's stations: its element ends, with their place and the section depth there.
+std::vector<Station> stations_of(const FrameInfo& f, const FrameInfo::Member& m) {
+  std::vector<Station> out;
+  for (int k = 0; k <= m.count; ++k) {
+    const auto& el = f.elements[m.first + std::min(k, m.count - 1)];
+    const auto& x = f.nodes[k < m.count ? el.i : el.j];
+    Station st;
+    st.position = k < m.count ? el.s0 : el.s1, st.s_m = st.position * m.length, st.x = x[0], st.y = x[1], st.z = x[2];
+    st.depth = el.section.depth(k < m.count ? el.s0 : el.s1);
+    out.push_back(st);
+  }
+  return out;
+}
+
+// A plane member's envelopes and checks over the histories: every element end at every sample, the persistent
+// situation at t = 0 (concrete), the section class of a steel pipe.
+void plane_member(const Results& r, const Series& ef_series, const FrameInfo& f, const FrameInfo::Member& m, const Limits& L,
+                  const StrainRate& rate, MemberEnvelope& env) {
+  const Series* ef = &ef_series;
+  const ConcreteLimits& C = L.concrete;
+  const SteelLimits& S = L.steel;
+  const bool steel = m.cls == "steel";
+  const bool pipe = f.elements[m.first].section.kind() == SectionKind::pipe;
+  const double D = f.elements[m.first].section.depth(0), t_w = f.elements[m.first].section.wall_thickness();
+  // Capacities that do not vary in time (docs/design-checks.md).
+  const Check tension = proto("concrete_flexural_tension", "flexural tension", env, "Pa", "sigma_t = N/A + |M| c/I <= phi_f f_t",
+                              "f_t: Lin, Cheng & Tuan, Table 1 or ACI 318-19 14.5.2.1 / 19.2.3.1 by tensile_rule; phi: ACI 318-19 21.2.1");
+  const Check compr = proto("concrete_compression", "compression", env, "Pa", "|sigma_c| = |N/A - |M| c/I| <= phi_c alpha f'c",
+                            "elastic fibre stress limit alpha f'c (alpha 0.85, ACI 318-19 22.2.2.4.1); phi: ACI 318-19 21.2.1");
+  const Check shear_c = C.shear_strength ? proto("concrete_shear", "shear stress", env, "Pa", "tau = k V/A <= phi_v tau_lim", "user shear limit")
+                                         : proto("concrete_shear", "one-way shear", env, "N", "V <= phi_v 0.11 lambda sqrt(f'c) b h",
+                                                 "ACI 318-19 Table 14.5.5.1(a)");
+  const Check elastic = proto("steel_elastic_stress", "extreme-fibre stress", env, "Pa", "|N|/A + |M|/W_el <= f_y / gamma_M0",
+                              "EN 1993-1-1 6.2.1(5)");
+  const Check mises = proto("steel_von_mises", "von Mises stress", env, "Pa", "sqrt(sigma^2 + 3 tau^2) <= f_y / gamma_M0", "EN 1993-1-1 6.2.1(5) eq. 6.1");
+  const Check inter = proto("steel_interaction", "axial + bending resistance", env, "-", "|N|/N_Rd + |M|/M_Rd <= 1, M_Rd = W_pl (class 1-2) or W_el (3) f_y/gamma_M0",
+                            "EN 1993-1-1 6.2.1(7) eq. 6.2, 6.2.5 eqs. 6.13-6.14");
+  const Check shear_s = proto("steel_shear", "shear resistance", env, "N", "V <= A_v f_y / (sqrt 3 gamma_M0), A_v = 2A/pi (CHS)",
+                              "EN 1993-1-1 6.2.6 eq. 6.18, 6.2.6(3)(g)");
+  const std::map<std::string, const Check*> protos{{tension.id, &tension}, {compr.id, &compr}, {shear_c.id, &shear_c}, {elastic.id, &elastic},
+                                                   {mises.id, &mises}, {inter.id, &inter}, {shear_s.id, &shear_s}};
+  CheckTracker tracker, at_rest;
+  tracker.rate = rate;
+  for (std::size_t k = 0; k < r.time.size(); ++k) {
+    const double t = r.time[k];
+    for (int e = 0; e < m.count; ++e) {
+      const auto& el = f.elements[m.first + e];
+      const double* row = &ef->data[k * ef->components.size() + 6 * (m.first + e)];
+      for (int end = 0; end < 2; ++end) {
+        Station& st = env.stations[e + end];
+        const SectionForces sf{row[3 * end], row[3 * end + 1], row[3 * end + 2]};
+        const double s = end == 0 ? el.s0 : el.s1;
+        const FibreStresses fs = fibre_stresses(el.section, s, sf);
+        st.N_max.max(sf.N, t), st.N_min.min(sf.N, t), st.V_abs.max(std::abs(sf.V), t);
+        st.M_max.max(sf.M, t), st.M_min.min(sf.M, t);
+        st.sigma_tension.max(std::max(fs.sigma_top, fs.sigma_bottom), t);
+        st.sigma_compression.min(std::min(fs.sigma_top, fs.sigma_bottom), t);
+        st.tau.max(fs.tau_max, t), st.von_mises.max(fs.von_mises_max, t);
+        for (const Demand& d : plane_demands(el.section, s, sf, fs, steel, L)) tracker.consider(*protos.at(d.id), d.demand, d.capacity, st, t);
+        if (k > 0 || steel) continue;
+        for (bool relieving : {true, false}) {
+          const SectionForces pf = persistent_forces(sf, relieving);
+          for (const Demand& d : plane_demands(el.section, s, pf, fibre_stresses(el.section, s, pf), steel, L))
+            if (relieved_by_compression(d.id) == relieving) at_rest.consider(persistent_proto(*protos.at(d.id)), d.demand, d.capacity, st, t);
+        }
+      }
+    }
+  }
+  env.checks = tracker.result();
+  for (const Check& c : at_rest.result()) env.checks.push_back(c);
+  if (steel && pipe) env.checks.push_back(section_class(env, D, t_w, S));
+}
+
+}  // namespace
+
 std::vector<MemberEnvelope> member_envelopes(const Results& r, const FrameInfo& f, const Limits& L, const std::string& where) {
   // The strain-rate factors count the rise from the start of the contact pulse (none without contact).
   const Contact contact_pulse = contact(r);
@@ -313,75 +390,15 @@ std::vector<MemberEnvelope> member_envelopes(const Results& r, const FrameInfo& 
   if (ef->components.size() != per * f.elements.size())
     throw std::runtime_error(where + ": frame/end_forces has " + std::to_string(ef->components.size()) + " columns, expected " + std::to_string(per) +
                              " x " + std::to_string(f.elements.size()) + " elements");
-  const ConcreteLimits& C = L.concrete;
-  const SteelLimits& S = L.steel;
   for (const auto& m : f.members) {
     MemberEnvelope env;
     env.dim = f.dim, env.name = m.name, env.cls = m.cls, env.length = m.length, env.plastic = m.plastic;
-    for (int k = 0; k <= m.count; ++k) {
-      const auto& el = f.elements[m.first + std::min(k, m.count - 1)];
-      const auto& x = f.nodes[k < m.count ? el.i : el.j];
-      Station st;
-      st.position = k < m.count ? el.s0 : el.s1, st.s_m = st.position * m.length, st.x = x[0], st.y = x[1], st.z = x[2];
-      st.depth = el.section.depth(k < m.count ? el.s0 : el.s1);
-      env.stations.push_back(st);
-    }
+    env.stations = stations_of(f, m);
     const StrainRate rate{L.concrete.strain_rate_effects && m.cls == "concrete", load_start, f.elements[m.first].E};
-    if (f.dim == 3) {
+    if (f.dim == 3)
       space_member(r, *ef, f, m, L, rate, env);
-      out.push_back(std::move(env));
-      continue;
-    }
-    const bool steel = m.cls == "steel";
-    const bool pipe = f.elements[m.first].section.kind() == SectionKind::pipe;
-    const double D = f.elements[m.first].section.depth(0), t_w = f.elements[m.first].section.wall_thickness();
-    // Capacities that do not vary in time (docs/design-checks.md).
-    const Check tension = proto("concrete_flexural_tension", "flexural tension", env, "Pa", "sigma_t = N/A + |M| c/I <= phi_f f_t",
-                                "f_t: Lin, Cheng & Tuan, Table 1 or ACI 318-19 14.5.2.1 / 19.2.3.1 by tensile_rule; phi: ACI 318-19 21.2.1");
-    const Check compr = proto("concrete_compression", "compression", env, "Pa", "|sigma_c| = |N/A - |M| c/I| <= phi_c alpha f'c",
-                              "elastic fibre stress limit alpha f'c (alpha 0.85, ACI 318-19 22.2.2.4.1); phi: ACI 318-19 21.2.1");
-    const Check shear_c = C.shear_strength ? proto("concrete_shear", "shear stress", env, "Pa", "tau = k V/A <= phi_v tau_lim", "user shear limit")
-                                           : proto("concrete_shear", "one-way shear", env, "N", "V <= phi_v 0.11 lambda sqrt(f'c) b h",
-                                                   "ACI 318-19 Table 14.5.5.1(a)");
-    const Check elastic = proto("steel_elastic_stress", "extreme-fibre stress", env, "Pa", "|N|/A + |M|/W_el <= f_y / gamma_M0",
-                                "EN 1993-1-1 6.2.1(5)");
-    const Check mises = proto("steel_von_mises", "von Mises stress", env, "Pa", "sqrt(sigma^2 + 3 tau^2) <= f_y / gamma_M0", "EN 1993-1-1 6.2.1(5) eq. 6.1");
-    const Check inter = proto("steel_interaction", "axial + bending resistance", env, "-", "|N|/N_Rd + |M|/M_Rd <= 1, M_Rd = W_pl (class 1-2) or W_el (3) f_y/gamma_M0",
-                              "EN 1993-1-1 6.2.1(7) eq. 6.2, 6.2.5 eqs. 6.13-6.14");
-    const Check shear_s = proto("steel_shear", "shear resistance", env, "N", "V <= A_v f_y / (sqrt 3 gamma_M0), A_v = 2A/pi (CHS)",
-                                "EN 1993-1-1 6.2.6 eq. 6.18, 6.2.6(3)(g)");
-    const std::map<std::string, const Check*> protos{{tension.id, &tension}, {compr.id, &compr}, {shear_c.id, &shear_c}, {elastic.id, &elastic},
-                                                     {mises.id, &mises}, {inter.id, &inter}, {shear_s.id, &shear_s}};
-    CheckTracker tracker, at_rest;
-    tracker.rate = rate;
-    for (std::size_t k = 0; k < r.time.size(); ++k) {
-      const double t = r.time[k];
-      for (int e = 0; e < m.count; ++e) {
-        const auto& el = f.elements[m.first + e];
-        const double* row = &ef->data[k * ef->components.size() + 6 * (m.first + e)];
-        for (int end = 0; end < 2; ++end) {
-          Station& st = env.stations[e + end];
-          const SectionForces sf{row[3 * end], row[3 * end + 1], row[3 * end + 2]};
-          const double s = end == 0 ? el.s0 : el.s1;
-          const FibreStresses fs = fibre_stresses(el.section, s, sf);
-          st.N_max.max(sf.N, t), st.N_min.min(sf.N, t), st.V_abs.max(std::abs(sf.V), t);
-          st.M_max.max(sf.M, t), st.M_min.min(sf.M, t);
-          st.sigma_tension.max(std::max(fs.sigma_top, fs.sigma_bottom), t);
-          st.sigma_compression.min(std::min(fs.sigma_top, fs.sigma_bottom), t);
-          st.tau.max(fs.tau_max, t), st.von_mises.max(fs.von_mises_max, t);
-          for (const Demand& d : plane_demands(el.section, s, sf, fs, steel, L)) tracker.consider(*protos.at(d.id), d.demand, d.capacity, st, t);
-          if (k > 0 || steel) continue;
-          for (bool relieving : {true, false}) {
-            const SectionForces pf = persistent_forces(sf, relieving);
-            for (const Demand& d : plane_demands(el.section, s, pf, fibre_stresses(el.section, s, pf), steel, L))
-              if (relieved_by_compression(d.id) == relieving) at_rest.consider(persistent_proto(*protos.at(d.id)), d.demand, d.capacity, st, t);
-          }
-        }
-      }
-    }
-    env.checks = tracker.result();
-    for (const Check& c : at_rest.result()) env.checks.push_back(c);
-    if (steel && pipe) env.checks.push_back(section_class(env, D, t_w, S));
+    else
+      plane_member(r, *ef, f, m, L, rate, env);
     out.push_back(std::move(env));
   }
   return out;
