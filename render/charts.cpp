@@ -105,6 +105,80 @@ Curve limit_line(const std::string& label, double value, double a, double b, boo
   return c;
 }
 
+namespace {
+
+// The curves with two or more points, each a table of (x, y) on the chart (log10 on a log axis, where it is positive);
+// the tables are returned to outlive the rendering.
+std::vector<vtkSmartPointer<vtkTable>> add_curves(vtkChartXY* chart, const ChartSpec& spec) {
+  std::vector<vtkSmartPointer<vtkTable>> tables;
+  for (const auto& c : spec.curves) {
+    if (c.x.size() < 2) continue;
+    auto t = vtkSmartPointer<vtkTable>::New();
+    auto x = vtkSmartPointer<vtkDoubleArray>::New();
+    auto y = vtkSmartPointer<vtkDoubleArray>::New();
+    x->SetName("x"), y->SetName(c.label.c_str());
+    for (std::size_t k = 0; k < c.x.size(); ++k) {
+      if ((spec.log_x && !(c.x[k] > 0)) || (spec.log_y && !(c.y[k] > 0))) continue;  // not on a log axis
+      x->InsertNextValue(spec.log_x ? std::log10(c.x[k]) : c.x[k]), y->InsertNextValue(spec.log_y ? std::log10(c.y[k]) : c.y[k]);
+    }
+    t->AddColumn(x), t->AddColumn(y);
+    vtkPlot* p = chart->AddPlot(c.points ? vtkChart::POINTS : vtkChart::LINE);
+    p->SetInputData(t, 0, 1);
+    p->SetColor(c.color[0], c.color[1], c.color[2], 255);
+    p->SetWidth(c.width);
+    p->SetLabel(c.label);
+    if (c.dashed) p->GetPen()->SetLineType(vtkPen::DASH_LINE);
+    if (!c.points)
+      if (auto* pp = vtkPlotPoints::SafeDownCast(p)) pp->SetMarkerStyle(vtkPlotPoints::NONE);  // no raster sprites in the SVG
+    tables.push_back(t);
+  }
+  return tables;
+}
+
+// The axes' ranges: every curve's points (up to x_max), on nice ticks or decades.
+void set_ranges(vtkAxis* bottom, vtkAxis* left, const ChartSpec& spec) {
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  for (const auto& c : spec.curves)
+    for (std::size_t k = 0; k < c.x.size(); ++k) {
+      if (spec.x_max > 0 && c.x[k] > spec.x_max) continue;
+      if ((spec.log_x && !(c.x[k] > 0)) || (spec.log_y && !(c.y[k] > 0))) continue;
+      const double x = spec.log_x ? std::log10(c.x[k]) : c.x[k], y = spec.log_y ? std::log10(c.y[k]) : c.y[k];
+      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    }
+  if (spec.log_x) log_axis(bottom, x0, x1);
+  else nice_axis(bottom, x0, x1, 8, spec.x_tight);
+  if (spec.log_y) log_axis(left, y0, y1);
+  else nice_axis(left, y0, y1, 6);
+}
+
+// The same chart as vector graphics (GL2PS): lines and text stay sharp in the PDF.
+void write_svg(vtkRenderWindow* win, const std::string& svg_path) {
+  const std::string base = svg_path.substr(0, svg_path.size() - 4);
+  auto ex = vtkSmartPointer<vtkGL2PSExporter>::New();
+  ex->SetRenderWindow(win);
+  ex->SetFileFormatToSVG();
+  ex->SetFilePrefix((base + ".tmp").c_str());
+  ex->CompressOff();
+  ex->SetSortToOff();
+  ex->DrawBackgroundOn();  // the OpenGL2 backend draws it in any case
+  ex->TextAsPathOff();
+  {
+    // GL2PS prints a warning on stderr for the background, a raster layer it cannot embed without libpng support
+    // (Debian's build); the page behind the chart is white, so nothing is lost. fd 2 is pointed away meanwhile.
+    std::fflush(stderr);
+    const int saved = dup(2), null = open("/dev/null", O_WRONLY);
+    if (null >= 0) dup2(null, 2), close(null);
+    ex->Write();
+    std::fflush(stderr);
+    if (saved >= 0) dup2(saved, 2), close(saved);
+  }
+  std::error_code ec;
+  std::filesystem::rename(base + ".tmp.svg", svg_path, ec);
+  if (ec) throw std::runtime_error(svg_path + ": cannot write the SVG (" + ec.message() + ")");
+}
+
+}  // namespace
+
 void render_chart(const ChartSpec& spec, const std::string& path) {
   bool any = false;
   for (const auto& c : spec.curves) any = any || c.x.size() >= 2;
@@ -130,71 +204,15 @@ void render_chart(const ChartSpec& spec, const std::string& path) {
     font(a->GetLabelProperties(), fs);
     a->GetGridPen()->SetColor(220, 220, 220);
   }
-  std::vector<vtkSmartPointer<vtkTable>> tables;
-  for (const auto& c : spec.curves) {
-    if (c.x.size() < 2) continue;
-    auto t = vtkSmartPointer<vtkTable>::New();
-    auto x = vtkSmartPointer<vtkDoubleArray>::New();
-    auto y = vtkSmartPointer<vtkDoubleArray>::New();
-    x->SetName("x"), y->SetName(c.label.c_str());
-    for (std::size_t k = 0; k < c.x.size(); ++k) {
-      if ((spec.log_x && !(c.x[k] > 0)) || (spec.log_y && !(c.y[k] > 0))) continue;  // not on a log axis
-      x->InsertNextValue(spec.log_x ? std::log10(c.x[k]) : c.x[k]), y->InsertNextValue(spec.log_y ? std::log10(c.y[k]) : c.y[k]);
-    }
-    t->AddColumn(x), t->AddColumn(y);
-    vtkPlot* p = chart->AddPlot(c.points ? vtkChart::POINTS : vtkChart::LINE);
-    p->SetInputData(t, 0, 1);
-    p->SetColor(c.color[0], c.color[1], c.color[2], 255);
-    p->SetWidth(c.width);
-    p->SetLabel(c.label);
-    if (c.dashed) p->GetPen()->SetLineType(vtkPen::DASH_LINE);
-    if (!c.points)
-      if (auto* pp = vtkPlotPoints::SafeDownCast(p)) pp->SetMarkerStyle(vtkPlotPoints::NONE);  // no raster sprites in the SVG
-    tables.push_back(t);
-  }
-  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-  for (const auto& c : spec.curves)
-    for (std::size_t k = 0; k < c.x.size(); ++k) {
-      if (spec.x_max > 0 && c.x[k] > spec.x_max) continue;
-      if ((spec.log_x && !(c.x[k] > 0)) || (spec.log_y && !(c.y[k] > 0))) continue;
-      const double x = spec.log_x ? std::log10(c.x[k]) : c.x[k], y = spec.log_y ? std::log10(c.y[k]) : c.y[k];
-      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
-    }
-  if (spec.log_x) log_axis(bottom, x0, x1);
-  else nice_axis(bottom, x0, x1, 8, spec.x_tight);
-  if (spec.log_y) log_axis(left, y0, y1);
-  else nice_axis(left, y0, y1, 6);
+  const auto tables = add_curves(chart, spec);
+  set_ranges(bottom, left, spec);
   chart->SetShowLegend(true);
   font(chart->GetLegend()->GetLabelProperties(), fs);
   chart->GetLegend()->SetInline(true);
   chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
   chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
   write_png(win, path);
-  if (!spec.svg_path.empty()) {
-    // The same chart as vector graphics (GL2PS): lines and text stay sharp in the PDF.
-    const std::string base = spec.svg_path.substr(0, spec.svg_path.size() - 4);
-    auto ex = vtkSmartPointer<vtkGL2PSExporter>::New();
-    ex->SetRenderWindow(win);
-    ex->SetFileFormatToSVG();
-    ex->SetFilePrefix((base + ".tmp").c_str());
-    ex->CompressOff();
-    ex->SetSortToOff();
-    ex->DrawBackgroundOn();  // the OpenGL2 backend draws it in any case
-    ex->TextAsPathOff();
-    {
-      // GL2PS prints a warning on stderr for the background, a raster layer it cannot embed without libpng support
-      // (Debian's build); the page behind the chart is white, so nothing is lost. fd 2 is pointed away meanwhile.
-      std::fflush(stderr);
-      const int saved = dup(2), null = open("/dev/null", O_WRONLY);
-      if (null >= 0) dup2(null, 2), close(null);
-      ex->Write();
-      std::fflush(stderr);
-      if (saved >= 0) dup2(saved, 2), close(saved);
-    }
-    std::error_code ec;
-    std::filesystem::rename(base + ".tmp.svg", spec.svg_path, ec);
-    if (ec) throw std::runtime_error(spec.svg_path + ": cannot write the SVG (" + ec.message() + ")");
-  }
+  if (!spec.svg_path.empty()) write_svg(win, spec.svg_path);
 }
 
 }  // namespace dmi::render
