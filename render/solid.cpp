@@ -137,6 +137,81 @@ void section_camera(vtkRenderer* ren, const double b[6]) {
 
 }  // namespace
 
+namespace {
+
+// Left: the body's surface (3D, oblique, from upstream) or the section (2D), von Mises.
+vtkSmartPointer<vtkRenderer> surface_renderer(const Field& f, vtkUnstructuredGrid* vm_grid, vtkLookupTable* vm_lut, const double b[6],
+                                              double split, double top, int font) {
+  auto left = make<vtkRenderer>();
+  left->SetViewport(0, 0, split, top), left->SetBackground(1, 1, 1);
+  if (f.dim == 3) {
+    auto surf = make<vtkDataSetSurfaceFilter>();
+    surf->SetInputData(vm_grid);
+    left->AddActor(coloured(surf->GetOutputPort(), nullptr, vm_lut));
+    const double H = b[5] - b[4], cx = 0.5 * (b[0] + b[1]), cy = 0.5 * (b[2] + b[3]), cz = 0.5 * (b[4] + b[5]);
+    auto cam = left->GetActiveCamera();
+    cam->SetFocalPoint(cx, cy, cz), cam->SetPosition(cx - 2.2 * H, cy - 1.6 * H, cz + 1.2 * H), cam->SetViewUp(0, 0, 1);
+    left->ResetCamera();
+    cam->Zoom(0.85);
+    cam->Elevation(-4);  // the body a little lower, below the heading
+    heading(left, "von Mises, upstream face from above", font);
+  } else {
+    left->AddActor(coloured(nullptr, vm_grid, vm_lut));
+    section_camera(left, b);
+    heading(left, "von Mises, section", font);
+  }
+  return left;
+}
+
+// Right: the vertical section under the load (3D: the plane y = y of the largest principal tension), max principal.
+vtkSmartPointer<vtkRenderer> section_renderer(const Field& f, vtkUnstructuredGrid* s1_grid, vtkLookupTable* s1_lut, const double b[6],
+                                              double section_y, double split, double top, int font) {
+  auto right = make<vtkRenderer>();
+  right->SetViewport(split, 0, 2 * split, top), right->SetBackground(1, 1, 1);
+  if (f.dim == 3) {
+    auto plane = make<vtkPlane>();
+    plane->SetOrigin(0, section_y, 0), plane->SetNormal(0, 1, 0);
+    auto cut = make<vtkCutter>();
+    cut->SetCutFunction(plane);
+    cut->SetInputData(s1_grid);
+    auto m = make<vtkPolyDataMapper>();
+    m->SetInputConnection(cut->GetOutputPort());
+    m->SetLookupTable(s1_lut), m->UseLookupTableScalarRangeOn(), m->InterpolateScalarsBeforeMappingOn();
+    auto a = make<vtkActor>();
+    a->SetMapper(m);
+    a->GetProperty()->SetAmbient(1.0), a->GetProperty()->SetDiffuse(0.0);
+    right->AddActor(a);
+    char h[96];
+    std::snprintf(h, sizeof h, "max principal, mid-width section y = %.2f m", section_y);
+    heading(right, h, font);
+  } else {
+    right->AddActor(coloured(nullptr, s1_grid, s1_lut));
+    heading(right, "max principal, section", font);
+  }
+  section_camera(right, b);
+  return right;
+}
+
+// The title strip: the run's title (wrapped at its first ": "), the load case and the peaks.
+vtkSmartPointer<vtkRenderer> solid_title(const SolidPicture& pic, const std::string& title, double top, int font) {
+  auto strip = make<vtkRenderer>();
+  strip->SetViewport(0, top, 1, 1), strip->SetBackground(1, 1, 1);
+  char line[256];
+  std::snprintf(line, sizeof line, "\nload case '%s'\nvon Mises up to %.3g MPa; principal tension up to %.3g MPa at (%.2f, %.2f, %.2f) m",
+                pic.case_name.c_str(), pic.von_mises_max / 1e6, pic.principal_max / 1e6, pic.principal_at[0], pic.principal_at[1], pic.principal_at[2]);
+  auto t = make<vtkTextActor>();
+  std::string text = title;
+  if (const auto k = text.find(": "); k != std::string::npos) text.replace(k, 2, ":\n");
+  t->SetInput((text + line).c_str());
+  style(t->GetTextProperty(), font, false);
+  t->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  t->SetPosition(0.01, 0.08);
+  strip->AddActor2D(t);
+  return strip;
+}
+
+}  // namespace
+
 std::optional<SolidPicture> render_solid(const Results& r, const std::string& title, const std::string& path, int width, int height, bool draw) {
   if (!r.info.documents.count("solid_field")) return std::nullopt;
   const Field f = read_field(r);
@@ -164,71 +239,15 @@ std::optional<SolidPicture> render_solid(const Results& r, const std::string& ti
   auto vm_grid = grid_of(f, f.vm), s1_grid = grid_of(f, f.s1);
   double b[6];
   vm_grid->GetBounds(b);
-  // Left: the body's surface (3D, oblique, from upstream) or the section (2D), von Mises.
-  auto left = make<vtkRenderer>();
-  left->SetViewport(0, 0, split, top), left->SetBackground(1, 1, 1);
-  if (f.dim == 3) {
-    auto surf = make<vtkDataSetSurfaceFilter>();
-    surf->SetInputData(vm_grid);
-    left->AddActor(coloured(surf->GetOutputPort(), nullptr, vm_lut));
-    const double H = b[5] - b[4], cx = 0.5 * (b[0] + b[1]), cy = 0.5 * (b[2] + b[3]), cz = 0.5 * (b[4] + b[5]);
-    auto cam = left->GetActiveCamera();
-    cam->SetFocalPoint(cx, cy, cz), cam->SetPosition(cx - 2.2 * H, cy - 1.6 * H, cz + 1.2 * H), cam->SetViewUp(0, 0, 1);
-    left->ResetCamera();
-    cam->Zoom(0.85);
-    cam->Elevation(-4);  // the body a little lower, below the heading
-    heading(left, "von Mises, upstream face from above", font);
-  } else {
-    left->AddActor(coloured(nullptr, vm_grid, vm_lut));
-    section_camera(left, b);
-    heading(left, "von Mises, section", font);
-  }
-  win->AddRenderer(left);
-  // Right: the vertical section under the load (3D: the plane y = y of the largest principal tension), max principal.
-  auto right = make<vtkRenderer>();
-  right->SetViewport(split, 0, 2 * split, top), right->SetBackground(1, 1, 1);
-  if (f.dim == 3) {
-    auto plane = make<vtkPlane>();
-    plane->SetOrigin(0, pic.section_y, 0), plane->SetNormal(0, 1, 0);
-    auto cut = make<vtkCutter>();
-    cut->SetCutFunction(plane);
-    cut->SetInputData(s1_grid);
-    auto m = make<vtkPolyDataMapper>();
-    m->SetInputConnection(cut->GetOutputPort());
-    m->SetLookupTable(s1_lut), m->UseLookupTableScalarRangeOn(), m->InterpolateScalarsBeforeMappingOn();
-    auto a = make<vtkActor>();
-    a->SetMapper(m);
-    a->GetProperty()->SetAmbient(1.0), a->GetProperty()->SetDiffuse(0.0);
-    right->AddActor(a);
-    char h[96];
-    std::snprintf(h, sizeof h, "max principal, mid-width section y = %.2f m", pic.section_y);
-    heading(right, h, font);
-  } else {
-    right->AddActor(coloured(nullptr, s1_grid, s1_lut));
-    heading(right, "max principal, section", font);
-  }
-  section_camera(right, b);
-  win->AddRenderer(right);
+  win->AddRenderer(surface_renderer(f, vm_grid, vm_lut, b, split, top, font));
+  win->AddRenderer(section_renderer(f, s1_grid, s1_lut, b, pic.section_y, split, top, font));
   // Bars and title.
   auto bars = make<vtkRenderer>();
   bars->SetViewport(2 * split, 0, 1, top), bars->SetBackground(1, 1, 1);
   bars->AddActor2D(scalar_bar(vm_lut, "von\nMises\n[MPa]", 0.04, font));
   bars->AddActor2D(scalar_bar(s1_lut, "max\nprincipal\n[MPa]", 0.54, font));
   win->AddRenderer(bars);
-  auto strip = make<vtkRenderer>();
-  strip->SetViewport(0, top, 1, 1), strip->SetBackground(1, 1, 1);
-  char line[256];
-  std::snprintf(line, sizeof line, "\nload case '%s'\nvon Mises up to %.3g MPa; principal tension up to %.3g MPa at (%.2f, %.2f, %.2f) m",
-                f.name.c_str(), pic.von_mises_max / 1e6, pic.principal_max / 1e6, pic.principal_at[0], pic.principal_at[1], pic.principal_at[2]);
-  auto t = make<vtkTextActor>();
-  std::string text = title;
-  if (const auto k = text.find(": "); k != std::string::npos) text.replace(k, 2, ":\n");
-  t->SetInput((text + line).c_str());
-  style(t->GetTextProperty(), font, false);
-  t->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  t->SetPosition(0.01, 0.08);
-  strip->AddActor2D(t);
-  win->AddRenderer(strip);
+  win->AddRenderer(solid_title(pic, title, top, font));
   write_png(win, path);
   return pic;
 }
