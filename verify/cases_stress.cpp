@@ -435,43 +435,40 @@ std::vector<CaseResult> grid_lines_linear() {
   return stamp(r, timer.seconds());
 }
 
-std::vector<CaseResult> grid_edges() {
-  const CaseTimer timer;
-  const std::string c = "grid_edges";
-  std::vector<CaseResult> r;
-  // a) translation on grid lines (linear shapes: grid_lines_linear).
-  on_grid_lines(r, c, {{"gimp", "flip", "usl"}, {"gimp", "apic", "usl"}, {"bspline2", "flip", "usl"}, {"bspline2", "apic", "usl"}});
-  // b) free fall across many cells.
-  {
-    const Attempt a = attempt(example_scenario("free_fall.json", {{"/grid/origin", J::array({0.0, -5.0})}, {"/grid/size", J::array({1.0, 6.0})},
-                                                                  {"/analysis/end_time", 1.0}}));
+// b) free fall across many cells.
+void free_fall_across_cells(const std::string& c, std::vector<CaseResult>& r) {
+  const Attempt a = attempt(example_scenario("free_fall.json", {{"/grid/origin", J::array({0.0, -5.0})}, {"/grid/size", J::array({1.0, 6.0})},
+                                                                {"/analysis/end_time", 1.0}}));
+  if (!a.ok) {
+    r.push_back(run_failed(c, "free fall 1 s", a.error));
+  } else {
+    const double t = a.out.results.time.back(), g = 9.81;
+    const double drop = -last(series(a.out.results, "probes/disk/displacement"), 1);
+    detail("  grid_edges free fall: drop %.6f m (%.1f cells) vs %.6f m\n", drop, drop / 0.05, 0.5 * g * t * t);
+    r.push_back(metric(c, "free fall across 98 cells: centroid drop", "m", drop, 0.5 * g * t * t, 0.003));
+  }
+}
+
+// c) one cell from every grid edge.
+void bar_one_cell_from_edges(const std::string& c, std::vector<CaseResult>& r) {
+  auto period = [&](const Overrides& ov, const std::string& tag) {
+    const Attempt a = attempt(example_scenario("bar_free_free.json", ov));
     if (!a.ok) {
-      r.push_back(run_failed(c, "free fall 1 s", a.error));
-    } else {
-      const double t = a.out.results.time.back(), g = 9.81;
-      const double drop = -last(series(a.out.results, "probes/disk/displacement"), 1);
-      detail("  grid_edges free fall: drop %.6f m (%.1f cells) vs %.6f m\n", drop, drop / 0.05, 0.5 * g * t * t);
-      r.push_back(metric(c, "free fall across 98 cells: centroid drop", "m", drop, 0.5 * g * t * t, 0.003));
+      r.push_back(run_failed(c, tag, a.error));
+      return nan_v;
     }
-  }
-  // c) one cell from every grid edge.
-  {
-    auto period = [&](const Overrides& ov, const std::string& tag) {
-      const Attempt a = attempt(example_scenario("bar_free_free.json", ov));
-      if (!a.ok) {
-        r.push_back(run_failed(c, tag, a.error));
-        return nan_v;
-      }
-      const auto z = zero_crossings(a.out.results.time, series(a.out.results, "probes/end/velocity"), 0);
-      return z.size() >= 3 ? z[2] - z[0] : nan_v;
-    };
-    const double roomy = period({}, "bar, example grid");
-    const double tight = period({{"/grid/origin", J::array({-0.5, -0.5})}, {"/grid/size", J::array({51.0, 2.0})}}, "bar, one-cell margin");
-    detail("  grid_edges bar: period %.9f s (one-cell margin) vs %.9f s (example grid)\n", tight, roomy);
-    r.push_back(metric(c, "bar one cell from every edge: period", "s", tight, 10.0, 1e-3));
-    r.push_back(metric(c, "bar one cell from every edge: period / period on the example grid", "-", tight, roomy, 1e-9));
-  }
-  // d) a lone particle, and sparse disks.
+    const auto z = zero_crossings(a.out.results.time, series(a.out.results, "probes/end/velocity"), 0);
+    return z.size() >= 3 ? z[2] - z[0] : nan_v;
+  };
+  const double roomy = period({}, "bar, example grid");
+  const double tight = period({{"/grid/origin", J::array({-0.5, -0.5})}, {"/grid/size", J::array({51.0, 2.0})}}, "bar, one-cell margin");
+  detail("  grid_edges bar: period %.9f s (one-cell margin) vs %.9f s (example grid)\n", tight, roomy);
+  r.push_back(metric(c, "bar one cell from every edge: period", "s", tight, 10.0, 1e-3));
+  r.push_back(metric(c, "bar one cell from every edge: period / period on the example grid", "-", tight, roomy, 1e-9));
+}
+
+// d) a lone particle in free flight.
+void lone_particles(const std::string& c, std::vector<CaseResult>& r) {
   for (const Scheme& sc : kLoneSchemes) {
     const J v0 = J::array({3.0, 5.0});
     const Overrides ov = {{"/mpm", J{{"shape_function", sc.shape}, {"transfer", sc.transfer}, {"stress_update", sc.update}}},
@@ -500,6 +497,10 @@ std::vector<CaseResult> grid_edges() {
     r.push_back(metric(c, tag + ": horizontal travel / v0x t (24 cells)", "-", xerr, 0.0, 1e-9, false));
     r.push_back(metric(c, tag + ": max von Mises (free flight)", "Pa", vm, 0.0, 1e-3, false));
   }
+}
+
+// d) sparse disks colliding: momentum and energy at one particle per cell.
+void sparse_disks(const std::string& c, std::vector<CaseResult>& r) {
   for (const Scheme& sc : kLoneSchemes) {
     const std::string tag = "disks at 1 particle per cell, h 1/20 m, " + scheme_name(sc);
     const Attempt a = attempt(example_scenario("colliding_disks.json", {{"/mpm/shape_function", sc.shape}, {"/mpm/transfer", sc.transfer},
@@ -523,6 +524,18 @@ std::vector<CaseResult> grid_edges() {
     r.push_back(metric(c, tag + ": momentum / sum m|v|", "-", p, 0.0, 1e-12, false));
     r.push_back(bound_metric(c, tag + ": energy gain / E0 (must be < 0.01)", "-", gain, 0.01, false));
   }
+}
+
+std::vector<CaseResult> grid_edges() {
+  const CaseTimer timer;
+  const std::string c = "grid_edges";
+  std::vector<CaseResult> r;
+  // a) translation on grid lines (linear shapes: grid_lines_linear).
+  on_grid_lines(r, c, {{"gimp", "flip", "usl"}, {"gimp", "apic", "usl"}, {"bspline2", "flip", "usl"}, {"bspline2", "apic", "usl"}});
+  free_fall_across_cells(c, r);
+  bar_one_cell_from_edges(c, r);
+  lone_particles(c, r);
+  sparse_disks(c, r);
   return stamp(r, timer.seconds());
 }
 
