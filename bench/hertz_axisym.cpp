@@ -79,8 +79,9 @@ struct Result {
   int dofs;
 };
 
-// Quasi-static sphere under a uniform downward body force b (N/m^3) on the flat z = 0.
-Result solve(const Mesh& m, double R, double E, double nu, double F) {
+// The axisymmetric stiffness (4-node rings, 2 x 2 Gauss points; strains rr, zz, tt, rz) and the consistent nodal
+// weights of a unit downward body force; `volume` is the sphere's.
+Eigen::SparseMatrix<double> stiffness(const Mesh& m, double E, double nu, Eigen::VectorXd& vol_z, double& volume) {
   const int n = static_cast<int>(m.r.size()), N = 2 * n;
   Eigen::Matrix4d D = Eigen::Matrix4d::Zero();  // (rr, zz, tt, rz)
   const double c = E / ((1 + nu) * (1 - 2 * nu));
@@ -89,8 +90,8 @@ Result solve(const Mesh& m, double R, double E, double nu, double F) {
   D(3, 3) = c * (1 - 2 * nu) / 2;
   const double gp = 1.0 / std::sqrt(3.0);
   std::vector<Eigen::Triplet<double>> trip;
-  Eigen::VectorXd vol_z = Eigen::VectorXd::Zero(N);  // consistent nodal weights of a unit downward body force
-  double volume = 0;
+  vol_z = Eigen::VectorXd::Zero(N);
+  volume = 0;
   for (const auto& e : m.q) {
     Eigen::Matrix<double, 8, 8> ke = Eigen::Matrix<double, 8, 8>::Zero();
     for (double xi : {-gp, gp})
@@ -132,6 +133,16 @@ Result solve(const Mesh& m, double R, double E, double nu, double F) {
   }
   Eigen::SparseMatrix<double> K(N, N);
   K.setFromTriplets(trip.begin(), trip.end());
+  return K;
+}
+
+// Quasi-static sphere under a uniform downward body force b (N/m^3) on the flat z = 0: the active set of surface nodes
+// held on the plane (penalty), iterated until no node is pulled or penetrates.
+Result solve(const Mesh& m, double R, double E, double nu, double F) {
+  const int n = static_cast<int>(m.r.size()), N = 2 * n;
+  Eigen::VectorXd vol_z;
+  double volume = 0;
+  const Eigen::SparseMatrix<double> K = stiffness(m, E, nu, vol_z, volume);
   const double big = 1e8 * E * R;
   std::vector<int> fixed_r;  // axis
   for (int i = 0; i < n; ++i)
