@@ -140,6 +140,96 @@ template <int D> MemberContact<D>::MemberContact(const Grid<D>& g) {
 }
 
 // Every active node within reach (section reach + decay layer) of an element, with its nearest element.
+// Lower bounds on a node's distance to an element's surface without projecting. The curve lies in the hull of its
+// Bezier points P0..P3, and every hull point is within dev = max(dist(P1, chord), dist(P2, chord)) of the chord
+// segment P0P3 (distance to a convex set is convex), so |x - curve| >= |x - chord| - dev. A rectangle's depth axis
+// gives a sharper bound: the surface's e2(xi) lies in the plane of the curve's e2 and the tangent, so e3(xi) = t x e2(xi)
+// is normal to the curve's e2, and along u = e2 every section point lies within a of the centre-line, which lies
+// within the Bezier points' extent [u_lo, u_hi]: |x - surface| >= dist(u.x, [u_lo, u_hi]) - a. What it culls (the
+// nodes in front of a wide member's face) is exactly what the projection would have rejected.
+template <int D> struct SurfaceBound {
+  Vec<D> q0, ch;
+  double ch2 = 0, dev = 0, hd_max = 0;
+  bool by_depth = false;
+  Vec<D> u = Vec<D>::Zero();
+  double u_lo = 0, u_hi = 0, a_max = 0;
+
+  SurfaceBound(const CurveOf<D>& c, const MemberSectionShape& shape, double reach) : hd_max(reach) {
+    q0 = c.point(0);
+    const Vec<D> q3 = c.point(1), q1 = q0 + c.d1(0) / 3, q2 = q3 - c.d1(1) / 3;
+    ch = q3 - q0;
+    ch2 = ch.squaredNorm();
+    dev = std::max(chord_distance(q1), chord_distance(q2));
+    if constexpr (D == 3) {
+      by_depth = !shape.round;
+      a_max = std::max(shape.a0, shape.a1);
+      u = c.e2.normalized();
+      u_lo = std::min({u.dot(q0), u.dot(q1), u.dot(q2), u.dot(q3)});
+      u_hi = std::max({u.dot(q0), u.dot(q1), u.dot(q2), u.dot(q3)});
+    }
+  }
+  double chord_distance(const Vec<D>& x) const {
+    const double t = ch2 > 0 ? std::clamp((x - q0).dot(ch) / ch2, 0.0, 1.0) : 0.0;
+    return (x - q0 - t * ch).norm();
+  }
+  double lower(const Vec<D>& x) const {
+    double r_low = chord_distance(x) - dev - hd_max;
+    if constexpr (D == 3)
+      if (by_depth) {
+        const double ux = u.dot(x);
+        r_low = std::max(r_low, std::max({0.0, ux - u_hi, u_lo - ux}) - a_max);
+      }
+    return r_low;
+  }
+};
+
+namespace {
+
+// The box of nodes that can hold mass: the occupied tiles' reach.
+template <int D> void occupied_box(const Grid<D>& g, IVec<D>& lo_out, IVec<D>& hi_out) {
+  lo_out = g.nodes(), hi_out = IVec<D>::Constant(-1);
+  for (Index t : g.occupied()) {
+    IVec<D> lo, hi;
+    g.tile_nodes(t, lo, hi);
+    lo_out = lo_out.cwiseMin(lo), hi_out = hi_out.cwiseMax(hi);
+  }
+}
+
+}  // namespace
+
+// A node near element e: projected on its curve unless a bound shows it no nearer than the free zone's edge ln or the
+// surface it already has; kept as a candidate when its surface distance is below ln and the nearest so far (surface,
+// not centre-line: joints of unequal depth).
+template <int D> void MemberContact<D>::consider_node(const Scene<D>& s, int e, const SurfaceBound<D>& bound, Index id, double ln) {
+  const Grid<D>& g = *s.grid;
+  bool has_mass = false;
+  for (int f : s.coupling.fields) has_mass = has_mass || g.m[f * g.nnodes() + id] > 0;
+  if (!has_mass) return;
+  const Vec<D> x = g.node_pos(id);
+  int& k = slot_[id];
+  const double r_low = bound.lower(x);
+  if (r_low >= ln || (k >= 0 && r_low >= cand_[k].surface)) return;
+  const CurveOf<D>& c = curves_[e];
+  const Projection pr = project_on_curve(c, x);
+  ++stats_.candidates;
+  stats_.projection_iterations += pr.iterations;
+  stats_.max_projection_iterations = std::max(stats_.max_projection_iterations, pr.iterations);
+  double r = 0;
+  if constexpr (D == 2) {
+    r = std::sqrt(pr.dist2) - s.frame->half_depth(e, pr.xi);
+  } else {
+    Vec3 n0;
+    r = space_distance(space_surface(c, shapes_[e], pr.xi, x, c.point(pr.xi)), g.h(), n0);
+  }
+  if (r >= ln) return;  // free zone whichever side the material is on (node distance)
+  if (k < 0) {
+    k = static_cast<int>(cand_.size());
+    cand_.push_back(Candidate{id, e, pr.xi, pr.dist2, r, c.point(pr.xi)});
+  } else if (r < cand_[k].surface) {
+    cand_[k] = Candidate{id, e, pr.xi, pr.dist2, r, c.point(pr.xi)};
+  }
+}
+
 template <int D> void MemberContact<D>::find_candidates(const Scene<D>& s) {
   const Grid<D>& g = *s.grid;
   const FrameOf<D>& fr = *s.frame;
@@ -147,48 +237,18 @@ template <int D> void MemberContact<D>::find_candidates(const Scene<D>& s) {
   const double ln = member_contact_layer(s.coupling, g.h());
   for (const Candidate& c : cand_) slot_[c.node] = -1;
   cand_.clear();
-  // Nodes that can hold mass: the box of the occupied tiles' reach.
-  IVec<D> occ_lo = g.nodes(), occ_hi = IVec<D>::Constant(-1);
-  for (Index t : g.occupied()) {
-    IVec<D> lo, hi;
-    g.tile_nodes(t, lo, hi);
-    occ_lo = occ_lo.cwiseMin(lo), occ_hi = occ_hi.cwiseMax(hi);
-  }
+  IVec<D> occ_lo, occ_hi;
+  occupied_box(g, occ_lo, occ_hi);
   curves_.resize(static_cast<std::size_t>(fr.nelements()));
   shapes_.resize(static_cast<std::size_t>(fr.nelements()));
   for (int e = 0; e < fr.nelements(); ++e) {
     curves_[e] = fr.curve(e);
     shapes_[e] = shape_of(fr, e);
-    const CurveOf<D>& c = curves_[e];
     Vec<D> lo, hi;
-    curve_box(c, lo, hi);
+    curve_box(curves_[e], lo, hi);
     const double hd_max = section_reach<D>(shapes_[e]);  // sections taper linearly
     const double reach = hd_max + ln + 1e-9 * g.h();
-    // Lower bound on a node's distance to the curve without projecting: the curve lies in the hull of its Bezier
-    // points P0..P3, and every hull point is within dev = max(dist(P1, chord), dist(P2, chord)) of the chord
-    // segment P0P3 (distance to a convex set is convex), so |x - curve| >= |x - chord| - dev.
-    const Vec<D> q0 = c.point(0), q3 = c.point(1), q1 = q0 + c.d1(0) / 3, q2 = q3 - c.d1(1) / 3;
-    const Vec<D> ch = q3 - q0;
-    const double ch2 = ch.squaredNorm();
-    auto seg_dist = [&](const Vec<D>& x) {
-      const double t = ch2 > 0 ? std::clamp((x - q0).dot(ch) / ch2, 0.0, 1.0) : 0.0;
-      return (x - q0 - t * ch).norm();
-    };
-    const double dev = std::max(seg_dist(q1), seg_dist(q2));
-    // A rectangle's depth axis gives a sharper bound: the surface's e2(xi) lies in the plane of the curve's e2 and the
-    // tangent, so e3(xi) = t x e2(xi) is normal to the curve's e2, and along u = e2 every section point lies within a of
-    // the centre-line, which lies within the Bezier points' extent [u_lo, u_hi]: |x - surface| >= dist(u.x, [u_lo, u_hi]) - a.
-    // What it culls (the nodes in front of a wide member's face) is exactly what the projection would have rejected.
-    double u_lo = 0, u_hi = 0, a_max = 0;
-    Vec<D> u = Vec<D>::Zero();
-    bool by_depth = false;
-    if constexpr (D == 3) {
-      by_depth = !shapes_[e].round;
-      a_max = std::max(shapes_[e].a0, shapes_[e].a1);
-      u = c.e2.normalized();
-      u_lo = std::min({u.dot(q0), u.dot(q1), u.dot(q2), u.dot(q3)});
-      u_hi = std::max({u.dot(q0), u.dot(q1), u.dot(q2), u.dot(q3)});
-    }
+    const SurfaceBound<D> bound(curves_[e], shapes_[e], hd_max);
     IVec<D> a, b;
     bool empty = false;
     for (int d = 0; d < D; ++d) {
@@ -198,38 +258,7 @@ template <int D> void MemberContact<D>::find_candidates(const Scene<D>& s) {
     }
     if (empty) continue;
     any_node_in_box<D>(a, b, [&](const IVec<D>& ijk) {
-      const Index id = g.node_id(ijk);
-      bool has_mass = false;
-      for (int f : s.coupling.fields) has_mass = has_mass || g.m[f * g.nnodes() + id] > 0;
-      if (!has_mass) return false;
-      const Vec<D> x = g.node_pos(id);
-      int& k = slot_[id];
-      // Exact skips: r >= ln (free zone), or no nearer than the surface this node already has.
-      double r_low = seg_dist(x) - dev - hd_max;
-      if constexpr (D == 3)
-        if (by_depth) {
-          const double ux = u.dot(x);
-          r_low = std::max(r_low, std::max({0.0, ux - u_hi, u_lo - ux}) - a_max);
-        }
-      if (r_low >= ln || (k >= 0 && r_low >= cand_[k].surface)) return false;
-      const Projection pr = project_on_curve(c, x);
-      ++stats_.candidates;
-      stats_.projection_iterations += pr.iterations;
-      stats_.max_projection_iterations = std::max(stats_.max_projection_iterations, pr.iterations);
-      double r = 0;
-      if constexpr (D == 2) {
-        r = std::sqrt(pr.dist2) - fr.half_depth(e, pr.xi);
-      } else {
-        Vec3 n0;
-        r = space_distance(space_surface(c, shapes_[e], pr.xi, x, c.point(pr.xi)), g.h(), n0);
-      }
-      if (r >= ln) return false;  // free zone whichever side the material is on (node distance)
-      if (k < 0) {
-        k = static_cast<int>(cand_.size());
-        cand_.push_back(Candidate{id, e, pr.xi, pr.dist2, r, c.point(pr.xi)});
-      } else if (r < cand_[k].surface) {  // nearest surface, not centre-line (joints of unequal depth)
-        cand_[k] = Candidate{id, e, pr.xi, pr.dist2, r, c.point(pr.xi)};
-      }
+      consider_node(s, e, bound, g.node_id(ijk), ln);
       return false;
     });
   }

@@ -98,6 +98,9 @@ inline bool member_contact_needs_touch(const MemberCoupling& c, bool bonded) {
 // Each element's bounding box in its present shape (the deformed centre-line's Bezier hull grown by the section's reach).
 template <int D> std::vector<std::array<Vec<D>, 2>> member_bounds(const FrameOf<D>& fr);
 
+// Lower bounds on a node's distance to an element's surface, without projecting (member_contact.cpp).
+template <int D> struct SurfaceBound;
+
 template <int D> class MemberContact {
  public:
   explicit MemberContact(const Grid<D>& g);
@@ -153,6 +156,7 @@ template <int D> class MemberContact {
     Vec<D> xm;       // projection point on the centre-line
   };
   void find_candidates(const Scene<D>& s);
+  void consider_node(const Scene<D>& s, int e, const SurfaceBound<D>& bound, Index id, double ln);
   void mass_positions(const Scene<D>& s, const TransferKernels<D>& kernels);
   void touching(const Scene<D>& s);
   void boundary_forces(Scene<D>& s, double dt);
