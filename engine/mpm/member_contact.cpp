@@ -355,91 +355,110 @@ template <int D> void MemberContact<D>::apply(Scene<D>& s, const TransferKernels
 }
 
 // f_bc of eqs. (19)-(21) on the candidate nodes, the reactions on the frame and the held masses.
-template <int D> void MemberContact<D>::boundary_forces(Scene<D>& s, double dt) {
+// A candidate node's geometry this step: its position, the member's velocity and spin at the projection (a scalar in
+// 2D, a vector in 3D), the outward normal from the centre-line towards the node (3D: of the section's surface there)
+// and the half-depth.
+template <int D> struct NodeGeometry {
+  Vec<D> x, vc, n0;
+  std::conditional_t<D == 2, double, Vec3> omega;
+  double hm = 0;
+  [[maybe_unused]] SpaceSurface surf;
+};
+
+template <int D> NodeGeometry<D> MemberContact<D>::geometry(const Scene<D>& s, const Candidate& c) const {
+  const FrameOf<D>& fr = *s.frame;
+  const Grid<D>& g = *s.grid;
+  NodeGeometry<D> geo;
+  geo.x = g.node_pos(c.node);
+  const CurveOf<D>& curve = curves_[c.element];
+  geo.vc = fr.velocity_at(c.element, c.xi);
+  geo.omega = fr.angular_velocity_at(c.element, c.xi);
+  if constexpr (D == 2) {
+    geo.hm = fr.half_depth(c.element, c.xi);
+    geo.n0 = outward_normal(curve, c.xi, geo.x, c.xm, std::sqrt(c.dist2), g.h());
+  } else {
+    geo.surf = space_surface(curve, shapes_[c.element], c.xi, geo.x, c.xm);
+    space_distance(geo.surf, g.h(), geo.n0);
+  }
+  return geo;
+}
+
+// Stage 1 at one node-field pair (Lin & Yang 2024 eqs. 19-25): the boundary force that gives the held material the
+// member surface's velocity, weighted by q, its reaction and the held mass on the member.
+template <int D> void MemberContact<D>::load_field(Scene<D>& s, const Candidate& c, const NodeGeometry<D>& geo, int f, double dt) {
   FrameOf<D>& fr = *s.frame;
   Grid<D>& g = *s.grid;
   const MemberCoupling& opt = s.coupling;
   const double ln = opt.decay_scale * g.h();
-  const Index nn = g.nnodes();
+  const Index k = f * g.nnodes() + c.node;
+  const double m = g.m[k];
+  if (!(m > 0)) return;
+  const Vec<D>& x = geo.x;
+  double hm = geo.hm;
+  // Orientation by the mass-weighted particle position the node sees, eqs. (24)-(25); a node inside a
+  // rectangular section takes the face the material lies beyond.
+  const Vec<D> xbar = mx_[k] / m;
+  Vec<D> n = (xbar - c.xm).dot(geo.n0) >= 0 ? geo.n0 : Vec<D>(-geo.n0);
+  if constexpr (D == 3)
+    if (!geo.surf.round && c.surface < 0) n = face_towards(geo.surf, xbar, c.xm);
+  // Bodies bonded to the members (a tyre buffer fixed on the dam face) stick whatever the mode, and are
+  // held from the node distance: measured from x-bar the bond peeled (the held mass sagged, q fell).
+  const bool bonded = std::find(opt.bonded_fields.begin(), opt.bonded_fields.end(), f) != opt.bonded_fields.end();
+  const MemberContactMode mode = bonded ? MemberContactMode::stick : opt.mode;
+  const bool node_distance = bonded || opt.distance == DistanceKind::node;
+  // The surface point x^M + arm supporting n, the distance to its tangent plane (eq. 23) and its velocity:
+  // centre-line velocity plus omega x arm, so the material is held where the reaction acts (its power then
+  // matches the frame's, moment included).
+  Vec<D> arm, vstar;
+  double r = 0;
+  if constexpr (D == 2) {
+    arm = hm * n;
+    r = ((node_distance ? x : xbar) - c.xm).dot(n) - hm;
+    vstar = geo.vc + geo.omega * hm * Vec2(-n.y(), n.x());
+  } else {
+    arm = space_arm(geo.surf, n);
+    r = ((node_distance ? x : xbar) - c.xm - arm).dot(n);
+    hm = arm.dot(n);  // the section's extent along n, for the weight's band
+    vstar = geo.vc + geo.omega.cross(arm);
+  }
+  double q = weight(opt.decay, r, ln, hm, held_flag_[k] != 0, mode == MemberContactMode::stick);
+  // Surface detection: a node is taken only when engaged by particles touching the member, among those within
+  // l_n / 2 of its surface on either side (as a rigid wall: a face between grid lines acts at the nearest node
+  // row). Unilateral contact keeps it while touched; stuck material keeps it while in the release band.
+  if (member_contact_detects_touch(opt, bonded)) {
+    const bool taken = touch_.engaged(k) && (q > 0 || r <= 0.5 * ln * (1 + 1e-9));
+    const bool kept = mode == MemberContactMode::stick && held_flag_[k] && q > 0;
+    q = taken || kept ? 1.0 : 0.0;
+  }
+  if (q == 0) return;
+  loaded_.push_back(Loaded{k, n, vstar, q, mode, false});
+  Vec<D> fv = -g.f[k] + (m * vstar - g.p[k]) / dt;  // eq. (20)
+  if (mode != MemberContactMode::stick) {
+    const double fn = fv.dot(n);
+    if (fn <= 0) return;  // separating: no force, eq. (21)
+    Vec<D> ft = fv - fn * n;
+    ft = mode == MemberContactMode::friction ? coulomb_projection(ft, opt.friction * fn) : Vec<D>(Vec<D>::Zero());
+    fv = fn * n + ft;
+  }
+  const Vec<D> fbc = q * fv;  // eq. (19)
+  g.f[k] += fbc;
+  // Reaction on the member at the surface point: force plus the moment of the offset.
+  const Vec<D> F = -fbc;
+  if constexpr (D == 2) fr.add_point_load(c.element, c.xi, F, arm.x() * F.y() - arm.y() * F.x());
+  else fr.add_point_load(c.element, c.xi, F, arm.cross(F));
+  // The held material moves with the member: its mass joins the frame's inertia for the step
+  // (all directions when stuck, the normal one when sliding).
+  fr.add_point_mass(c.element, c.xi, q * m * (mode == MemberContactMode::stick ? Mat<D>(Mat<D>::Identity()) : Mat<D>(n * n.transpose())), arm);
+  force_ += F;
+  loaded_.back().pressed = true;
+  loads_.push_back(ContactLoadOf<D>{c.element, c.xi, c.xm + arm, F});
+  ++stats_.loaded;
+}
+
+template <int D> void MemberContact<D>::boundary_forces(Scene<D>& s, double dt) {
   for (const Candidate& c : cand_) {
-    const Vec<D> x = g.node_pos(c.node);
-    const CurveOf<D>& curve = curves_[c.element];
-    const Vec<D> vc = fr.velocity_at(c.element, c.xi);
-    const auto omega = fr.angular_velocity_at(c.element, c.xi);  // rad/s: a scalar in 2D, a vector in 3D
-    // From the centre-line towards the node; in 3D the section's surface geometry at the node.
-    Vec<D> n0;
-    double hm = 0;
-    [[maybe_unused]] SpaceSurface surf;
-    if constexpr (D == 2) {
-      hm = fr.half_depth(c.element, c.xi);
-      n0 = outward_normal(curve, c.xi, x, c.xm, std::sqrt(c.dist2), g.h());
-    } else {
-      surf = space_surface(curve, shapes_[c.element], c.xi, x, c.xm);
-      space_distance(surf, g.h(), n0);
-    }
-    for (int f : opt.fields) {
-      const Index k = f * nn + c.node;
-      const double m = g.m[k];
-      if (!(m > 0)) continue;
-      // Orientation by the mass-weighted particle position the node sees, eqs. (24)-(25); a node inside a
-      // rectangular section takes the face the material lies beyond.
-      const Vec<D> xbar = mx_[k] / m;
-      Vec<D> n = (xbar - c.xm).dot(n0) >= 0 ? n0 : Vec<D>(-n0);
-      if constexpr (D == 3)
-        if (!surf.round && c.surface < 0) n = face_towards(surf, xbar, c.xm);
-      // Bodies bonded to the members (a tyre buffer fixed on the dam face) stick whatever the mode, and are
-      // held from the node distance: measured from x-bar the bond peeled (the held mass sagged, q fell).
-      const bool bonded = std::find(opt.bonded_fields.begin(), opt.bonded_fields.end(), f) != opt.bonded_fields.end();
-      const MemberContactMode mode = bonded ? MemberContactMode::stick : opt.mode;
-      const bool node_distance = bonded || opt.distance == DistanceKind::node;
-      // The surface point x^M + arm supporting n, the distance to its tangent plane (eq. 23) and its velocity:
-      // centre-line velocity plus omega x arm, so the material is held where the reaction acts (its power then
-      // matches the frame's, moment included).
-      Vec<D> arm, vstar;
-      double r = 0;
-      if constexpr (D == 2) {
-        arm = hm * n;
-        r = ((node_distance ? x : xbar) - c.xm).dot(n) - hm;
-        vstar = vc + omega * hm * Vec2(-n.y(), n.x());
-      } else {
-        arm = space_arm(surf, n);
-        r = ((node_distance ? x : xbar) - c.xm - arm).dot(n);
-        hm = arm.dot(n);  // the section's extent along n, for the weight's band
-        vstar = vc + omega.cross(arm);
-      }
-      double q = weight(opt.decay, r, ln, hm, held_flag_[k] != 0, mode == MemberContactMode::stick);
-      // Surface detection: a node is taken only when engaged by particles touching the member, among those within
-      // l_n / 2 of its surface on either side (as a rigid wall: a face between grid lines acts at the nearest node
-      // row). Unilateral contact keeps it while touched; stuck material keeps it while in the release band.
-      if (member_contact_detects_touch(opt, bonded)) {
-        const bool taken = touch_.engaged(k) && (q > 0 || r <= 0.5 * ln * (1 + 1e-9));
-        const bool kept = mode == MemberContactMode::stick && held_flag_[k] && q > 0;
-        q = taken || kept ? 1.0 : 0.0;
-      }
-      if (q == 0) continue;
-      loaded_.push_back(Loaded{k, n, vstar, q, mode, false});
-      Vec<D> fv = -g.f[k] + (m * vstar - g.p[k]) / dt;  // eq. (20)
-      if (mode != MemberContactMode::stick) {
-        const double fn = fv.dot(n);
-        if (fn <= 0) continue;  // separating: no force, eq. (21)
-        Vec<D> ft = fv - fn * n;
-        ft = mode == MemberContactMode::friction ? coulomb_projection(ft, opt.friction * fn) : Vec<D>(Vec<D>::Zero());
-        fv = fn * n + ft;
-      }
-      const Vec<D> fbc = q * fv;  // eq. (19)
-      g.f[k] += fbc;
-      // Reaction on the member at the surface point: force plus the moment of the offset.
-      const Vec<D> F = -fbc;
-      if constexpr (D == 2) fr.add_point_load(c.element, c.xi, F, arm.x() * F.y() - arm.y() * F.x());
-      else fr.add_point_load(c.element, c.xi, F, arm.cross(F));
-      // The held material moves with the member: its mass joins the frame's inertia for the step
-      // (all directions when stuck, the normal one when sliding).
-      fr.add_point_mass(c.element, c.xi, q * m * (mode == MemberContactMode::stick ? Mat<D>(Mat<D>::Identity()) : Mat<D>(n * n.transpose())), arm);
-      force_ += F;
-      loaded_.back().pressed = true;
-      loads_.push_back(ContactLoadOf<D>{c.element, c.xi, c.xm + arm, F});
-      ++stats_.loaded;
-    }
+    const NodeGeometry<D> geo = geometry(s, c);
+    for (int f : s.coupling.fields) load_field(s, c, geo, f, dt);
   }
 }
 

@@ -100,6 +100,8 @@ template <int D> std::vector<std::array<Vec<D>, 2>> member_bounds(const FrameOf<
 
 // Lower bounds on a node's distance to an element's surface, without projecting (member_contact.cpp).
 template <int D> struct SurfaceBound;
+// A candidate node's geometry this step (member_contact.cpp).
+template <int D> struct NodeGeometry;
 
 template <int D> class MemberContact {
  public:
@@ -160,6 +162,8 @@ template <int D> class MemberContact {
   void mass_positions(const Scene<D>& s, const TransferKernels<D>& kernels);
   void touching(const Scene<D>& s);
   void boundary_forces(Scene<D>& s, double dt);
+  NodeGeometry<D> geometry(const Scene<D>& s, const Candidate& c) const;
+  void load_field(Scene<D>& s, const Candidate& c, const NodeGeometry<D>& geo, int f, double dt);
   struct Loaded {  // a node-field pair that received a boundary force this step
     Index k;        // field * nnodes + node
     Vec<D> n, vstar;
