@@ -117,40 +117,109 @@ template <int D, class St> struct NodeDistances {
   }
 };
 
+// What a particle brings to every node of its stencil: m_p, m_p v_p, m_p C_p (APIC), -V_p sigma_p (force) and its
+// in-plane volume (contact).
+template <int D> struct ScatterParticle {
+  double mp = 0, mv[D] = {}, mC[D][D] = {}, s[D][D] = {}, vip = 0;
+};
+
+// One row of the stencil without the affine term: the weights factor as w_x(a) W(r), so the row's factors once, then
+// two products a node.
+template <int D, class St>
+[[gnu::always_inline]] inline void scatter_row_factored(const ScatterCtx<D>& c, const St& st, int r, Index row, const ScatterParticle<D>& p) {
+  constexpr int RC = kRecord<D>;
+  const double W = st.W[r], mW = p.mp * W;
+  double pW[D], fx[D], fo[D];
+  for (int k = 0; k < D; ++k) {
+    pW[k] = W * p.mv[k];
+    fx[k] = W * p.s[k][0];
+    fo[k] = 0;
+    for (int d = 1; d < D; ++d) fo[k] += p.s[k][d] * st.dW[d - 1][r];
+  }
+  for (int a = 0; a < St::K; ++a) {
+    const Index id = row + a;
+    const double wa = st.w[0][a], da = st.dwx[a];
+    c.gm[id] += wa * mW;
+    double* rec = c.pf + RC * id;
+    for (int k = 0; k < D; ++k) rec[k] += wa * pW[k];
+    for (int k = 0; k < D; ++k) rec[D + k] += da * fx[k] + wa * fo[k];
+  }
+}
+
+// One row node by node: mass, momentum (APIC: m_p C_p (x_i - x_p), its part along the axes other than x once per row),
+// force, and for contact the mass gradient and volume.
+template <int D, class St, class Scheme, class Fill, class Dist>
+[[gnu::always_inline]] inline void scatter_row_nodes(const ScatterCtx<D>& c, const St& st, int r, Index row, const ScatterParticle<D>& p,
+                                                     [[maybe_unused]] const Dist& dist) {
+  constexpr int RC = kRecord<D>;
+  [[maybe_unused]] double crow[D];
+  if constexpr (Scheme::affine)
+    for (int k = 0; k < D; ++k) {
+      crow[k] = 0;
+      for (int d = 1; d < D; ++d) crow[k] += p.mC[k][d] * dist.row[d - 1][r];
+    }
+  for (int a = 0; a < St::K; ++a) {
+    const Index id = row + a;
+    const double N = st.w[0][a] * st.W[r];
+    double dN[D];
+    dN[0] = st.dwx[a] * st.W[r];
+    for (int d = 1; d < D; ++d) dN[d] = st.w[0][a] * st.dW[d - 1][r];
+    double pm[D];
+    for (int k = 0; k < D; ++k) pm[k] = N * p.mv[k];
+    if constexpr (Scheme::affine)
+      for (int k = 0; k < D; ++k) pm[k] += N * (p.mC[k][0] * dist.x[a] + crow[k]);
+    if constexpr (Fill::force) {
+      c.gm[id] += N * p.mp;
+      double* rec = c.pf + RC * id;
+      for (int k = 0; k < D; ++k) rec[k] += pm[k];
+      for (int k = 0; k < D; ++k) {
+        double f = 0;
+        for (int j = 0; j < D; ++j) f += p.s[k][j] * dN[j];
+        rec[D + k] += f;
+      }
+    } else {
+      for (int k = 0; k < D; ++k) c.gp[D * id + k] += pm[k];
+    }
+    if constexpr (Fill::contact) {
+      for (int k = 0; k < D; ++k) c.gg[D * id + k] += p.mp * dN[k];
+      c.gvol[id] += N * p.vip;
+    }
+  }
+}
+
 // P2G (Lin & Yang 2024, eqs. 5-8) of the particles order[q0 .. q1): m_i += N m_p, p_i += N m_p (v_p + C_p (x_i - x_p)),
 // f_i += -V_p sigma_p grad N (gravity m_i g is added when the records are unpacked); contact: grad m_i += m_p grad N,
 // vol_i += N V_in-plane.
 template <int D, class Shape, class Scheme, class Fill, bool SIMD>
 inline void scatter_range(const ScatterCtx<D> c, Index q0, Index q1) {
   using St = Stencil<D, Shape>;
-  constexpr int K = St::K, R = St::R, RC = kRecord<D>;
+  constexpr int R = St::R, RC = kRecord<D>;
   Index rowoff[R];
   c.g.template row_offsets<St>(rowoff);
   for (Index q = q0; q < q1; ++q) {
     const Index i = c.order[q];
     St st;
     st.compute(c.x[i], c.half[i], c.g.origin, c.g.ih);
-    const double mp = c.mass[i];
-    double mv[D];
-    for (int k = 0; k < D; ++k) mv[k] = mp * c.v[i][k];
-    [[maybe_unused]] double mC[D][D], s[D][D], vip = 0;
+    ScatterParticle<D> p;
+    p.mp = c.mass[i];
+    for (int k = 0; k < D; ++k) p.mv[k] = p.mp * c.v[i][k];
     if constexpr (Scheme::affine)
       for (int k = 0; k < D; ++k)
-        for (int j = 0; j < D; ++j) mC[k][j] = mp * c.C[i](k, j);
+        for (int j = 0; j < D; ++j) p.mC[k][j] = p.mp * c.C[i](k, j);
     if constexpr (Fill::force) {
       const double vol = c.vol[i];
       for (int k = 0; k < D; ++k)
-        for (int j = 0; j < D; ++j) s[k][j] = -vol * c.stress[i](k, j);
+        for (int j = 0; j < D; ++j) p.s[k][j] = -vol * c.stress[i](k, j);
     }
     // In-plane volume for the contact fill test: plane-stress thinning (F_zz) must not switch contact off, since the
     // cell volume it is compared with has the initial thickness.
-    if constexpr (Fill::contact) vip = c.vol0[i] * c.F[i].determinant();
+    if constexpr (Fill::contact) p.vip = c.vol0[i] * c.F[i].determinant();
     const Index node0 = c.bodies[c.body[i]].field * c.g.nn + c.g.base_id(st);
 #ifdef DMI_HAVE_AVX2_K3
-    if constexpr (SIMD && D == 2 && K == 3 && !Scheme::affine && Fill::force) {
-      scatter_k3_avx(c.pf, c.gm, node0, c.g.stride[1], st.w[0], st.dw[0], st.w[1], st.dw[1], c.g.ih, mp, c.v[i].data(), c.vol[i], c.stress[i].data());
+    if constexpr (SIMD && D == 2 && St::K == 3 && !Scheme::affine && Fill::force) {
+      scatter_k3_avx(c.pf, c.gm, node0, c.g.stride[1], st.w[0], st.dw[0], st.w[1], st.dw[1], c.g.ih, p.mp, c.v[i].data(), c.vol[i], c.stress[i].data());
       if constexpr (Fill::contact)
-        scatter_grad_k3_avx(c.gg, c.gvol, node0, c.g.stride[1], st.w[0], st.dw[0], st.w[1], st.dw[1], c.g.ih, mp, vip);
+        scatter_grad_k3_avx(c.gg, c.gvol, node0, c.g.stride[1], st.w[0], st.dw[0], st.w[1], st.dw[1], c.g.ih, p.mp, p.vip);
       continue;
     }
 #endif
@@ -167,60 +236,10 @@ inline void scatter_range(const ScatterCtx<D> c, Index q0, Index q1) {
         __builtin_prefetch(c.gg + D * (row + kNodeAhead), 1);
         __builtin_prefetch(c.gvol + row + kNodeAhead, 1);
       }
-      // APIC: m_p C_p (x_i - x_p), its part along the axes other than x once per row.
-      [[maybe_unused]] double crow[D];
-      if constexpr (Scheme::affine)
-        for (int k = 0; k < D; ++k) {
-          crow[k] = 0;
-          for (int d = 1; d < D; ++d) crow[k] += mC[k][d] * dist.row[d - 1][r];
-        }
-      // Without the affine term the weights factor as w_x(a) W(r): the row's factors once, then two products a node.
-      if constexpr (!Scheme::affine && Fill::force && !Fill::contact) {
-        const double W = st.W[r], mW = mp * W;
-        double pW[D], fx[D], fo[D];
-        for (int k = 0; k < D; ++k) {
-          pW[k] = W * mv[k];
-          fx[k] = W * s[k][0];
-          fo[k] = 0;
-          for (int d = 1; d < D; ++d) fo[k] += s[k][d] * st.dW[d - 1][r];
-        }
-        for (int a = 0; a < K; ++a) {
-          const Index id = row + a;
-          const double wa = st.w[0][a], da = st.dwx[a];
-          c.gm[id] += wa * mW;
-          double* rec = c.pf + RC * id;
-          for (int k = 0; k < D; ++k) rec[k] += wa * pW[k];
-          for (int k = 0; k < D; ++k) rec[D + k] += da * fx[k] + wa * fo[k];
-        }
-        continue;
-      }
-      for (int a = 0; a < K; ++a) {
-        const Index id = row + a;
-        const double N = st.w[0][a] * st.W[r];
-        double dN[D];
-        dN[0] = st.dwx[a] * st.W[r];
-        for (int d = 1; d < D; ++d) dN[d] = st.w[0][a] * st.dW[d - 1][r];
-        double p[D];
-        for (int k = 0; k < D; ++k) p[k] = N * mv[k];
-        if constexpr (Scheme::affine)
-          for (int k = 0; k < D; ++k) p[k] += N * (mC[k][0] * dist.x[a] + crow[k]);
-        if constexpr (Fill::force) {
-          c.gm[id] += N * mp;
-          double* rec = c.pf + RC * id;
-          for (int k = 0; k < D; ++k) rec[k] += p[k];
-          for (int k = 0; k < D; ++k) {
-            double f = 0;
-            for (int j = 0; j < D; ++j) f += s[k][j] * dN[j];
-            rec[D + k] += f;
-          }
-        } else {
-          for (int k = 0; k < D; ++k) c.gp[D * id + k] += p[k];
-        }
-        if constexpr (Fill::contact) {
-          for (int k = 0; k < D; ++k) c.gg[D * id + k] += mp * dN[k];
-          c.gvol[id] += N * vip;
-        }
-      }
+      if constexpr (!Scheme::affine && Fill::force && !Fill::contact)
+        scatter_row_factored<D, St>(c, st, r, row, p);
+      else
+        scatter_row_nodes<D, St, Scheme, Fill>(c, st, r, row, p, dist);
     }
   }
 }
