@@ -218,7 +218,7 @@ void require_documents(const Results& r, const std::string& where) {
   const json sc = json::parse(text, nullptr, false);
   if (sc.is_discarded() || !sc.is_object()) throw std::runtime_error(where + ": /scenario is not a JSON object; nothing to check");
   const json* members = sc.contains("structure") && sc["structure"].is_object() && sc["structure"].contains("members") ? &sc["structure"]["members"] : nullptr;
-  if (members && members->is_array() && !members->empty() && !r.info.documents.count("structure"))
+  if (members && members->is_array() && !members->empty() && !r.info.structure)
     throw std::runtime_error(where + ": /documents/structure is missing although the scenario has " + std::to_string(members->size()) +
                              " member(s): the file is incomplete or altered; nothing to check");
   if (sc.contains("solid_check") && !r.info.documents.count("solid_check"))
@@ -235,7 +235,6 @@ json design_run(const Results& r, const Limits& limits, const std::string& where
   if (basis && is_set(basis->dam.yield_strength_Pa)) L.steel.yield_strength = basis->dam.yield_strength_Pa;
   json run{{"results_file", where}, {"scenario_name", r.info.scenario_name}, {"variant", r.info.variant}};
   std::vector<Check> checks;
-  const json structure = parse_document(r, "structure", where);
   std::vector<MemberEnvelope> members;
   Contact c = contact(r);
   run["members"] = json::array();
@@ -243,8 +242,8 @@ json design_run(const Results& r, const Limits& limits, const std::string& where
   run["base_total"] = nullptr;
   double base_shear = 0, base_shear_time = -1;
   std::optional<FrameInfo> frame;
-  if (!structure.is_null()) {
-    const FrameInfo& f = frame.emplace(parse_structure(structure.dump(), where, L));
+  if (r.info.structure) {
+    const FrameInfo& f = frame.emplace(frame_info(*r.info.structure, where, L));
     if (!(basis && is_set(basis->dam.yield_strength_Pa)))  // else the f_y its plastic members yielded at
       for (const auto& e : f.elements)
         if (e.yield_strength > 0) {

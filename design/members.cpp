@@ -34,55 +34,37 @@ std::string classify(const std::string& member, const std::string& material, con
   return sec.kind() == SectionKind::pipe || E >= 100e9 ? "steel" : "concrete";
 }
 
-Section section_of(const json& s) {
-  const std::string kind = s.at("kind");
-  if (kind == "pipe") return Section::pipe(s.at("diameter_m"), s.at("wall_thickness_m"));
-  const double b = s.at("width_m"), h0 = s.at("depth_start_m"), h1 = s.at("depth_end_m");
-  return kind == "tapered_rectangle" ? Section::tapered(b, h0, h1) : Section::rectangle(b, h0);
+Section section_of(const SectionRecord& s) {
+  if (s.kind == "pipe") return Section::pipe(s.diameter_m, s.wall_thickness_m);
+  return s.kind == "tapered_rectangle" ? Section::tapered(s.width_m, s.depth_start_m, s.depth_end_m) : Section::rectangle(s.width_m, s.depth_start_m);
 }
 
 }  // namespace
 
-FrameInfo parse_structure(const std::string& doc, const std::string& where, const Limits& L) {
+FrameInfo frame_info(const StructureRecord& st, const std::string& where, const Limits& L) {
   FrameInfo f;
-  try {
-    const json j = json::parse(doc);
-    f.dim = j.value("dimension", 2);
-    if (f.dim != 2 && f.dim != 3) throw std::out_of_range("dimension " + std::to_string(f.dim) + " (2 or 3)");
-    for (const auto& n : j.at("nodes_m")) {
-      if (n.size() != std::size_t(f.dim)) throw std::out_of_range("a node with " + std::to_string(n.size()) + " coordinates");
-      f.nodes.push_back({n.at(0).get<double>(), n.at(1).get<double>(), f.dim == 3 ? n.at(2).get<double>() : 0.0});
-    }
-    for (const auto& e : j.at("elements")) {
-      FrameInfo::Element el;
-      el.member = e.at("member"), el.i = e.at("i"), el.j = e.at("j"), el.s0 = e.at("s0"), el.s1 = e.at("s1"), el.E = e.at("youngs_modulus_Pa");
-      el.section = section_of(e.at("section"));
-      el.yield_strength = e.value("yield_strength_Pa", 0.0);
-      if (f.dim == 3) el.e2 = {e.at("e2").at(0).get<double>(), e.at("e2").at(1).get<double>(), e.at("e2").at(2).get<double>()};
-      if (el.i < 0 || el.j < 0 || el.i >= int(f.nodes.size()) || el.j >= int(f.nodes.size())) throw std::out_of_range("element node index");
-      f.elements.push_back(el);
-    }
-    for (const auto& m : j.at("members")) {
-      FrameInfo::Member mb;
-      mb.name = m.at("name"), mb.material = m.at("material"), mb.first = m.at("first_element"), mb.count = m.at("elements");
-      if (mb.first < 0 || mb.count < 1 || mb.first + mb.count > int(f.elements.size())) throw std::out_of_range("member element range");
-      const auto& a = f.nodes[f.elements[mb.first].i];
-      const auto& b = f.nodes[f.elements[mb.first + mb.count - 1].j];
-      mb.length = std::sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) + (b[2] - a[2]) * (b[2] - a[2]));
-      const auto& e0 = f.elements[mb.first];
-      mb.cls = classify(mb.name, mb.material, e0.section, e0.E, L);
-      mb.plastic = e0.yield_strength > 0;
-      f.members.push_back(mb);
-    }
-    for (const auto& s : j.at("supports")) {
-      f.supports.push_back({s.at("node"), s.at("series"), s.at("node_index")});
-      if (f.supports.back().node_index < 0 || f.supports.back().node_index >= int(f.nodes.size())) throw std::out_of_range("support node index");
-    }
-    for (const auto& e : f.elements)
-      if (!(e.s0 >= 0 && e.s0 < e.s1 && e.s1 <= 1)) throw std::out_of_range("element span s0, s1 outside 0 <= s0 < s1 <= 1");
-  } catch (const std::exception& e) {
-    throw std::runtime_error(where + ": /documents/structure is malformed (" + e.what() + ")");
+  f.dim = st.dimension;
+  for (const auto& n : st.nodes_m) f.nodes.push_back({n[0], n[1], f.dim == 3 ? n[2] : 0.0});
+  for (const ElementRecord& e : st.elements) {
+    FrameInfo::Element el;
+    el.member = e.member, el.i = e.i, el.j = e.j, el.s0 = e.s0, el.s1 = e.s1, el.E = e.youngs_modulus_Pa;
+    el.section = section_of(e.section);
+    el.yield_strength = e.yield_strength_Pa;
+    if (f.dim == 3) el.e2 = e.e2;
+    f.elements.push_back(el);
   }
+  for (const MemberRecord& m : st.members) {
+    FrameInfo::Member mb;
+    mb.name = m.name, mb.material = m.material, mb.first = m.first_element, mb.count = m.elements;
+    const auto& a = f.nodes[f.elements[mb.first].i];
+    const auto& b = f.nodes[f.elements[mb.first + mb.count - 1].j];
+    mb.length = std::sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) + (b[2] - a[2]) * (b[2] - a[2]));
+    const auto& e0 = f.elements[mb.first];
+    mb.cls = classify(mb.name, mb.material, e0.section, e0.E, L);
+    mb.plastic = e0.yield_strength > 0;
+    f.members.push_back(mb);
+  }
+  for (const SupportRecord& s : st.supports) f.supports.push_back({s.node, s.series, s.node_index});
   for (const auto& entry : L.member_material) {  // not a structured binding: clang < 16 cannot capture one (fuzz build)
     const std::string& name = entry.first;
     if (std::none_of(f.members.begin(), f.members.end(), [&](const FrameInfo::Member& m) { return m.name == name; }))

@@ -40,8 +40,9 @@ struct FrameInfo {
   std::vector<Support> supports;
 };
 
-// Parses the structure document; `where` (the results file) names errors (std::runtime_error).
-FrameInfo parse_structure(const std::string& doc, const std::string& where, const Limits& limits);
+// The frame of the run's structure record, its members classed concrete or steel by the limits; `where` (the results
+// file) names errors (std::runtime_error: the limits name a member the structure does not have).
+FrameInfo frame_info(const StructureRecord& structure, const std::string& where, const Limits& limits);
 
 // The largest (or smallest) value of a quantity over time and where/when it occurred.
 struct Extreme {

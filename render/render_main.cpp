@@ -46,9 +46,9 @@ std::vector<RunData> load_runs(const std::string& out_dir, json& design_doc) {
       throw InputError(e.what());
     }
     r.variant = r.results.info.variant.empty() ? variant : r.results.info.variant;
-    if (const auto it = r.results.info.documents.find("structure"); it != r.results.info.documents.end()) {
+    if (r.results.info.structure) {
       try {
-        r.frame = design::parse_structure(it->second, r.file, design::Limits{});
+        r.frame = design::frame_info(*r.results.info.structure, r.file, design::Limits{});
       } catch (const std::exception& e) {
         throw InputError(e.what());
       }

@@ -9,6 +9,7 @@
 
 #include "core/design_basis.hpp"
 #include "core/peak_contact.hpp"
+#include "core/structure_record.hpp"
 
 namespace dmi {
 
@@ -56,8 +57,8 @@ struct RunInfo {
   std::map<std::string, std::string> strings;  // e.g. "shape_function", "transfer", "status"
   std::optional<DesignBasis> design_basis;  // /documents/design_basis: what the presets described (checks, estimates)
   std::optional<PeakContact> peak_contact;  // /documents/peak_contact: members touched in the run
-  // The other JSON documents (/documents/<name>): e.g. "structure" (the frame), "solid_check" (solid-FE checks);
-  // docs/results.md.
+  std::optional<StructureRecord> structure;  // /documents/structure: the members as built
+  // The other JSON documents (/documents/<name>): e.g. "face_profile", "solid_check" (solid-FE checks); docs/results.md.
   std::map<std::string, std::string> documents;
 };
 

@@ -16,6 +16,7 @@
 
 #include "engine/common/json_input.hpp"
 #include "engine/io/peak_contact_json.hpp"
+#include "engine/io/structure_json.hpp"
 #include "engine/scenario/design_basis_json.hpp"
 
 namespace dmi {
@@ -322,6 +323,15 @@ void read_documents(const Reader& r, hid_t file, const std::string& path, RunInf
       check_json_structure(it->second, "/documents/peak_contact");
       const nlohmann::json j = nlohmann::json::parse(it->second, nullptr, false);
       info.peak_contact = peak_contact_from_json(j, "/documents/peak_contact");
+    } catch (const std::exception& e) {
+      r.error(e.what());
+    }
+    info.documents.erase(it);
+  }
+  if (const auto it = info.documents.find("structure"); it != info.documents.end()) {  // a typed record
+    try {
+      check_json_structure(it->second, "/documents/structure");
+      info.structure = structure_from_json(nlohmann::json::parse(it->second, nullptr, false), "/documents/structure");
     } catch (const std::exception& e) {
       r.error(e.what());
     }

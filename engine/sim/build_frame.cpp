@@ -4,7 +4,6 @@
 #include <map>
 #include <type_traits>
 
-#include <nlohmann/json.hpp>
 
 namespace dmi {
 namespace {
@@ -178,54 +177,49 @@ namespace dmi {
 // The frame as design/ needs it (docs/results.md, /documents/structure): geometry, sections and
 // materials of every element, members and supports, so results.h5 alone answers "which section
 // carried these forces" without the scenario parser. A space frame adds each element's depth axis e2.
-template <class F> std::string structure_document(const Scenario& s, const F& frame) {
-  using nlohmann::json;
+template <class F> StructureRecord structure_record(const Scenario& s, const F& frame) {
   const auto& fm = frame.model();
   constexpr bool space = std::is_same_v<F, SpaceFrame>;
   constexpr int D = space ? 3 : 2;
-  json nodes = json::array(), names = json::array(), elements = json::array(), members = json::array(), supports = json::array();
+  StructureRecord r;
+  r.dimension = D;
   for (std::size_t k = 0; k < fm.nodes.size(); ++k) {
-    nodes.push_back(std::vector<double>(fm.nodes[k].data(), fm.nodes[k].data() + D));
-    names.push_back(k < s.structure.nodes.size() ? s.structure.nodes[k].name : "");
+    r.nodes_m.emplace_back(fm.nodes[k].data(), fm.nodes[k].data() + D);
+    r.node_names.push_back(k < s.structure.nodes.size() ? s.structure.nodes[k].name : "");
   }
   for (std::size_t k = 0; k < fm.elements.size(); ++k) {
     const auto& e = fm.elements[k];
     const Section& c = e.section;
-    json sec{{"kind", c.kind() == SectionKind::pipe ? "pipe" : c.kind() == SectionKind::tapered_rectangle ? "tapered_rectangle" : "rectangle"}};
-    if (c.kind() == SectionKind::pipe) {
-      sec["diameter_m"] = c.depth(0);
-      sec["wall_thickness_m"] = c.wall_thickness();
-    } else {
-      sec["width_m"] = c.width(0);
-      sec["depth_start_m"] = c.depth(0);
-      sec["depth_end_m"] = c.depth(1);
-    }
-    elements.push_back({{"member", e.member}, {"i", e.i}, {"j", e.j}, {"s0", e.s0}, {"s1", e.s1}, {"section", sec},
-                        {"youngs_modulus_Pa", e.E}, {"poisson_ratio", e.nu}, {"density_kg_m3", e.rho}});
-    if (e.steel.fy > 0) {
-      elements.back()["yield_strength_Pa"] = e.steel.fy;
-      elements.back()["hardening_ratio"] = e.steel.hardening;
-    }
+    ElementRecord el;
+    el.member = e.member, el.i = e.i, el.j = e.j, el.s0 = e.s0, el.s1 = e.s1;
+    el.section.kind = c.kind() == SectionKind::pipe ? "pipe" : c.kind() == SectionKind::tapered_rectangle ? "tapered_rectangle" : "rectangle";
+    if (c.kind() == SectionKind::pipe)
+      el.section.diameter_m = c.depth(0), el.section.wall_thickness_m = c.wall_thickness();
+    else
+      el.section.width_m = c.width(0), el.section.depth_start_m = c.depth(0), el.section.depth_end_m = c.depth(1);
+    el.youngs_modulus_Pa = e.E, el.poisson_ratio = e.nu, el.density_kg_m3 = e.rho;
+    if (e.steel.fy > 0) el.yield_strength_Pa = e.steel.fy, el.hardening_ratio = e.steel.hardening;
     if constexpr (space) {
       const Eigen::Matrix3d a = frame.axes(static_cast<int>(k));
-      elements.back()["e2"] = {a(1, 0), a(1, 1), a(1, 2)};
+      el.e2 = {a(1, 0), a(1, 1), a(1, 2)};
     }
+    r.elements.push_back(el);
   }
   for (std::size_t k = 0; k < fm.members.size(); ++k) {
     const auto& m = fm.members[k];
-    members.push_back({{"name", m.name}, {"material", s.structure.members[k].material}, {"first_element", m.first_element}, {"elements", m.elements}});
+    r.members.push_back({m.name, s.structure.members[k].material, m.first_element, m.elements});
   }
   for (std::size_t k = 0; k < fm.supports.size(); ++k) {
     const auto& d = fm.supports[k];
-    supports.push_back({{"node", s.structure.supports[k].node}, {"node_index", d.node}, {"type", s.structure.supports[k].type},
-                        {"fixed", std::vector<bool>(d.fixed, d.fixed + 3 * (D - 1))}, {"series", "supports/" + s.structure.supports[k].node + "/reaction"}});
+    const std::string& node = s.structure.supports[k].node;
+    r.supports.push_back({node, s.structure.supports[k].type, "supports/" + node + "/reaction", d.node, std::vector<bool>(d.fixed, d.fixed + 3 * (D - 1))});
   }
-  return json{{"dimension", D}, {"nodes_m", nodes}, {"node_names", names}, {"elements", elements}, {"members", members}, {"supports", supports},
-              {"gravity_m_s2", std::vector<double>(fm.gravity.data(), fm.gravity.data() + D)}, {"plane_thickness_m", s.analysis.thickness}}
-      .dump();
+  r.gravity_m_s2.assign(fm.gravity.data(), fm.gravity.data() + D);
+  r.plane_thickness_m = s.analysis.thickness;
+  return r;
 }
 
-template std::string structure_document(const Scenario&, const Frame&);
-template std::string structure_document(const Scenario&, const SpaceFrame&);
+template StructureRecord structure_record(const Scenario&, const Frame&);
+template StructureRecord structure_record(const Scenario&, const SpaceFrame&);
 
 }  // namespace dmi

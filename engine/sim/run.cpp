@@ -416,7 +416,7 @@ template <int D> class RunDriver {
   void record_structure() {
     const auto* frame = solver_.scene().frame.get();
     if (!frame) return;
-    info_.documents["structure"] = structure_document(s_, *frame);
+    info_.structure = structure_record(s_, *frame);
     info_.peak_contact = rec_.peak_contact(*frame);
     if (const std::string face = rec_.face_profile_document(); !face.empty()) info_.documents["face_profile"] = face;
   }

@@ -6,6 +6,7 @@
 #include "design/design.hpp"
 #include "design/loads.hpp"
 #include "design/members.hpp"
+#include "engine/io/structure_json.hpp"
 
 using namespace dmi::design;
 using nlohmann::json;
@@ -39,7 +40,7 @@ dmi::Results results(const json& st) {
   r.complete = true;
   r.info.scenario_name = "hand";
   r.info.scenario_json = json{{"name", "hand"}, {"structure", {{"members", json::array({json::object()})}}}}.dump();  // what the file says it ran
-  r.info.documents["structure"] = st.dump();
+  r.info.structure = dmi::structure_from_json(st, "hand.h5");
   r.time = {0.0, 0.1, 0.2};
   std::vector<std::string> c;
   for (int e = 0; e < 2; ++e)
@@ -69,7 +70,7 @@ TEST(DesignEnvelope, ConcreteMemberStationsAndChecksByHand) {
   Limits L;
   L.concrete.strain_rate_effects = false;  // the static envelope by hand (the strain-rate factors: test_strain_rate.cpp)
   const dmi::Results r = results(structure(kRect, "concrete"));
-  const FrameInfo f = parse_structure(r.info.documents.at("structure"), "hand.h5", L);
+  const FrameInfo f = frame_info(*r.info.structure, "hand.h5", L);
   ASSERT_EQ(f.members.size(), 1u);
   EXPECT_EQ(f.members[0].cls, "concrete");
   EXPECT_DOUBLE_EQ(f.members[0].length, 2.0);
@@ -125,7 +126,7 @@ TEST(DesignEnvelope, SteelPipeChecksByHand) {
   L.steel.yield_strength = 355e6;
   const json pipe{{"kind", "pipe"}, {"diameter_m", 0.5}, {"wall_thickness_m", 0.02}};
   const dmi::Results r = results(structure(pipe, "steel"));
-  const FrameInfo f = parse_structure(r.info.documents.at("structure"), "hand.h5", L);
+  const FrameInfo f = frame_info(*r.info.structure, "hand.h5", L);
   EXPECT_EQ(f.members[0].cls, "steel");
   const auto env = member_envelopes(r, f, L, "hand.h5");
   const auto& ch = env[0].checks;
@@ -140,12 +141,12 @@ TEST(DesignEnvelope, SteelPipeChecksByHand) {
   EXPECT_TRUE(cls.passed);
   // The limits may call it concrete instead (e.g. a concrete-filled pipe checked as plain concrete).
   L.member_material["dam"] = "concrete";
-  EXPECT_EQ(parse_structure(r.info.documents.at("structure"), "hand.h5", L).members[0].cls, "concrete");
+  EXPECT_EQ(frame_info(*r.info.structure, "hand.h5", L).members[0].cls, "concrete");
 }
 
 TEST(DesignEnvelope, ReactionTotalsAboutTheSupportCentroidAndContactPulse) {
   const dmi::Results r = results(structure(kRect, "concrete", true));
-  const FrameInfo f = parse_structure(r.info.documents.at("structure"), "hand.h5", Limits{});
+  const FrameInfo f = frame_info(*r.info.structure, "hand.h5", Limits{});
   const Reactions re = reactions(r, f, "hand.h5");
   ASSERT_EQ(re.supports.size(), 2u);
   EXPECT_DOUBLE_EQ(re.about[1], 1.0);  // centroid of (0,0) and (0,2)

@@ -9,6 +9,7 @@
 #include "design/design.hpp"
 #include "design/loads.hpp"
 #include "design/members.hpp"
+#include "engine/io/structure_json.hpp"
 
 using namespace dmi::design;
 using nlohmann::json;
@@ -40,7 +41,7 @@ dmi::Results results(const json& st, const std::array<double, 6>& fi) {
   r.complete = true;
   r.info.scenario_name = "hand";
   r.info.scenario_json = json{{"name", "hand"}, {"analysis", {{"dimension", 3}}}, {"structure", {{"members", json::array({json::object()})}}}}.dump();
-  r.info.documents["structure"] = st.dump();
+  r.info.structure = dmi::structure_from_json(st, "hand.h5");
   r.time = {0.0, 0.1};
   std::vector<std::string> c;
   for (const char* end : {"_i", "_j"})
@@ -71,7 +72,7 @@ TEST(SpaceDesign, SteelPipeBiaxialBendingTorsionAndShearByHand) {
   L.steel.yield_strength = 355e6;
   const json pipe{{"kind", "pipe"}, {"diameter_m", 0.5}, {"wall_thickness_m", 0.02}};
   const dmi::Results r = results(structure(pipe, "steel"), {-200e3, 300e3, 400e3, 50e3, 180e3, 240e3});
-  const FrameInfo f = parse_structure(r.info.documents.at("structure"), "hand.h5", L);
+  const FrameInfo f = frame_info(*r.info.structure, "hand.h5", L);
   ASSERT_EQ(f.dim, 3);
   const auto env = member_envelopes(r, f, L, "hand.h5");
   const auto& ch = env[0].checks;
@@ -114,7 +115,7 @@ TEST(SpaceDesign, ConcreteRectangleBiaxialCornerStressAndTorsionByHand) {
   L.concrete.strain_rate_effects = false;  // the static envelope by hand (the strain-rate factors: test_strain_rate.cpp)
   const json rect{{"kind", "rectangle"}, {"width_m", 2.0}, {"depth_start_m", 1.0}, {"depth_end_m", 1.0}};
   const dmi::Results r = results(structure(rect, "concrete"), {-100e3, 60e3, 80e3, 0.0, 200e3, 150e3});
-  const FrameInfo f = parse_structure(r.info.documents.at("structure"), "hand.h5", L);
+  const FrameInfo f = frame_info(*r.info.structure, "hand.h5", L);
   const auto ch = member_envelopes(r, f, L, "hand.h5")[0].checks;
   // Corner: -0.05 + 150e3 0.5 / (1/6) + 200e3 1 / (2/3) = -0.05 + 0.45 + 0.30 = 0.70 MPa; compression -0.80 MPa.
   EXPECT_NEAR(find(ch, "concrete_flexural_tension").demand, 0.70e6, 1e-3);
@@ -127,7 +128,7 @@ TEST(SpaceDesign, ConcreteRectangleBiaxialCornerStressAndTorsionByHand) {
   // Pure torsion T = 100 kN m: tau_max = T / (alpha b t^2), alpha = 0.246 for b/t = 2 (Timoshenko & Goodier 1970,
   // sec. 109 table, three digits): 0.2033 MPa, the principal tension of pure shear.
   const dmi::Results rt = results(structure(rect, "concrete"), {0, 0, 0, 100e3, 0, 0});
-  const auto ct = member_envelopes(rt, parse_structure(rt.info.documents.at("structure"), "hand.h5", L), L, "hand.h5")[0].checks;
+  const auto ct = member_envelopes(rt, frame_info(*rt.info.structure, "hand.h5", L), L, "hand.h5")[0].checks;
   EXPECT_NEAR(find(ct, "concrete_principal_tension").demand / (100e3 / (0.246 * 2 * 1)), 1.0, 2.5e-3);
   EXPECT_NEAR(find(ct, "concrete_flexural_tension").demand, 0.0, 1e-9);
 }
@@ -135,7 +136,7 @@ TEST(SpaceDesign, ConcreteRectangleBiaxialCornerStressAndTorsionByHand) {
 TEST(SpaceDesign, ReactionTotalsAboutTheSupportCentroidInThreeDimensions) {
   const json pipe{{"kind", "pipe"}, {"diameter_m", 0.5}, {"wall_thickness_m", 0.02}};
   const dmi::Results r = results(structure(pipe, "steel"), {0, 0, 0, 0, 0, 0});
-  const FrameInfo f = parse_structure(r.info.documents.at("structure"), "hand.h5", Limits{});
+  const FrameInfo f = frame_info(*r.info.structure, "hand.h5", Limits{});
   const Reactions re = reactions(r, f, "hand.h5");
   EXPECT_DOUBLE_EQ(re.about[0], 1.0);
   // F = (20, 0, 0) kN; M about (1, 0, 0): b's own 3 + (-1, 0, 0) x (10, 0, 5) + (1, 0, 0) x (10, 0, -5) = 3 + 5 + 5 = 13 kN m about y.

@@ -1,0 +1,99 @@
+#include "engine/io/structure_json.hpp"
+
+#include <stdexcept>
+
+namespace dmi {
+namespace {
+
+using nlohmann::json;
+
+json section_json(const SectionRecord& c) {
+  json sec{{"kind", c.kind}};
+  if (c.kind == "pipe") {
+    sec["diameter_m"] = c.diameter_m;
+    sec["wall_thickness_m"] = c.wall_thickness_m;
+  } else {
+    sec["width_m"] = c.width_m;
+    sec["depth_start_m"] = c.depth_start_m;
+    sec["depth_end_m"] = c.depth_end_m;
+  }
+  return sec;
+}
+
+SectionRecord section_from(const json& s) {
+  SectionRecord c;
+  c.kind = s.at("kind").get<std::string>();
+  if (c.kind == "pipe") {
+    c.diameter_m = s.at("diameter_m"), c.wall_thickness_m = s.at("wall_thickness_m");
+  } else if (c.kind == "rectangle" || c.kind == "tapered_rectangle") {
+    c.width_m = s.at("width_m"), c.depth_start_m = s.at("depth_start_m"), c.depth_end_m = s.at("depth_end_m");
+  } else {
+    throw std::out_of_range("section kind '" + c.kind + "'");
+  }
+  return c;
+}
+
+ElementRecord element_from(const json& e, int dim, std::size_t nodes) {
+  ElementRecord el;
+  el.member = e.at("member"), el.i = e.at("i"), el.j = e.at("j"), el.s0 = e.at("s0"), el.s1 = e.at("s1");
+  el.section = section_from(e.at("section"));
+  el.youngs_modulus_Pa = e.at("youngs_modulus_Pa"), el.poisson_ratio = e.value("poisson_ratio", 0.0), el.density_kg_m3 = e.value("density_kg_m3", 0.0);
+  el.yield_strength_Pa = e.value("yield_strength_Pa", 0.0), el.hardening_ratio = e.value("hardening_ratio", 0.0);
+  if (dim == 3) el.e2 = {e.at("e2").at(0).get<double>(), e.at("e2").at(1).get<double>(), e.at("e2").at(2).get<double>()};
+  if (el.i < 0 || el.j < 0 || el.i >= int(nodes) || el.j >= int(nodes)) throw std::out_of_range("element node index");
+  if (!(el.s0 >= 0 && el.s0 < el.s1 && el.s1 <= 1)) throw std::out_of_range("element span s0, s1 outside 0 <= s0 < s1 <= 1");
+  return el;
+}
+
+}  // namespace
+
+json structure_to_json(const StructureRecord& s) {
+  json elements = json::array(), members = json::array(), supports = json::array();
+  for (const ElementRecord& e : s.elements) {
+    elements.push_back({{"member", e.member}, {"i", e.i}, {"j", e.j}, {"s0", e.s0}, {"s1", e.s1}, {"section", section_json(e.section)},
+                        {"youngs_modulus_Pa", e.youngs_modulus_Pa}, {"poisson_ratio", e.poisson_ratio}, {"density_kg_m3", e.density_kg_m3}});
+    if (e.yield_strength_Pa > 0) {
+      elements.back()["yield_strength_Pa"] = e.yield_strength_Pa;
+      elements.back()["hardening_ratio"] = e.hardening_ratio;
+    }
+    if (s.dimension == 3) elements.back()["e2"] = e.e2;
+  }
+  for (const MemberRecord& m : s.members)
+    members.push_back({{"name", m.name}, {"material", m.material}, {"first_element", m.first_element}, {"elements", m.elements}});
+  for (const SupportRecord& d : s.supports)
+    supports.push_back({{"node", d.node}, {"node_index", d.node_index}, {"type", d.type}, {"fixed", d.fixed}, {"series", d.series}});
+  return {{"dimension", s.dimension}, {"nodes_m", s.nodes_m}, {"node_names", s.node_names}, {"elements", elements}, {"members", members},
+          {"supports", supports}, {"gravity_m_s2", s.gravity_m_s2}, {"plane_thickness_m", s.plane_thickness_m}};
+}
+
+StructureRecord structure_from_json(const json& j, const std::string& where) {
+  try {
+    StructureRecord s;
+    s.dimension = j.value("dimension", 2);
+    if (s.dimension != 2 && s.dimension != 3) throw std::out_of_range("dimension " + std::to_string(s.dimension) + " (2 or 3)");
+    for (const auto& n : j.at("nodes_m")) {
+      if (n.size() != std::size_t(s.dimension)) throw std::out_of_range("a node with " + std::to_string(n.size()) + " coordinates");
+      s.nodes_m.push_back(n.get<std::vector<double>>());
+    }
+    s.node_names = j.value("node_names", std::vector<std::string>(s.nodes_m.size()));
+    for (const auto& e : j.at("elements")) s.elements.push_back(element_from(e, s.dimension, s.nodes_m.size()));
+    for (const auto& m : j.at("members")) {
+      MemberRecord mb{m.at("name"), m.at("material"), m.at("first_element"), m.at("elements")};
+      if (mb.first_element < 0 || mb.elements < 1 || mb.first_element + mb.elements > int(s.elements.size()))
+        throw std::out_of_range("member element range");
+      s.members.push_back(mb);
+    }
+    for (const auto& d : j.at("supports")) {
+      SupportRecord sp{d.at("node"), d.value("type", std::string()), d.at("series"), d.at("node_index"), d.value("fixed", std::vector<bool>())};
+      if (sp.node_index < 0 || sp.node_index >= int(s.nodes_m.size())) throw std::out_of_range("support node index");
+      s.supports.push_back(sp);
+    }
+    s.gravity_m_s2 = j.value("gravity_m_s2", std::vector<double>(s.dimension, 0.0));
+    s.plane_thickness_m = j.value("plane_thickness_m", 1.0);
+    return s;
+  } catch (const std::exception& e) {
+    throw std::runtime_error(where + " is malformed (" + e.what() + ")");
+  }
+}
+
+}  // namespace dmi
