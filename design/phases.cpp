@@ -44,14 +44,13 @@ std::optional<DebrisPhases> debris_phases(const std::vector<double>& t, const st
 // profile carrying more than 5 % of the largest mean pressure there, and the hydrostatic load of a fluid of the
 // debris' density that high, rho g h_d^2 w / 2 (K = 1: the upper bound of a granular deposit's earth pressure).
 // Null without a face profile.
-json deposit_load(const Results& r, double rho, double w) {
+json deposit_load(const Results& r, double rho) {
   const Series* p = r.find("face/pressure");
-  const auto doc = r.info.documents.find("face_profile");
-  if (!p || doc == r.info.documents.end() || r.time.size() < 2) return nullptr;
-  const json d = json::parse(doc->second, nullptr, false);
+  const auto& d = r.info.face_profile;
+  if (!p || !d || r.time.size() < 2) return nullptr;
   const std::size_t nb = p->components.size();
-  if (d.is_discarded() || !d.contains("bins") || d["bins"].size() != nb) return nullptr;
-  const double width = d.value("width", w);  // the face's: the one its pressures were measured over
+  if (d->bins.size() != nb) return nullptr;
+  const double width = d->width;  // the face's: the one its pressures were measured over
   std::vector<double> mean(nb, 0.0);
   const double tail = r.time.back() - 0.1 * (r.time.back() - r.time.front());
   double span = 0;
@@ -65,9 +64,9 @@ json deposit_load(const Results& r, double rho, double w) {
   if (!(span > 0) || !(top > 0)) return nullptr;
   double height = 0, measured = 0;
   for (std::size_t b = 0; b < nb; ++b) {
-    const json& bin = d["bins"][b];
-    const double from = bin["from"].get<double>(), to = bin["to"].get<double>();
-    if (mean[b] > 0.05 * top) height = std::max(height, bin.value("height_to", to));  // above the foot, not along the face
+    const FaceBin& bin = d->bins[b];
+    const double from = bin.from, to = bin.to;
+    if (mean[b] > 0.05 * top) height = std::max(height, bin.height_to);  // above the foot, not along the face
     measured += mean[b] / span * (to - from) * width;
   }
   return json{{"height_m", height}, {"hydrostatic_N", 0.5 * rho * 9.81 * height * height * width}, {"face_resultant_N", measured}};
@@ -90,7 +89,7 @@ json debris_phases(const Results& r, const DesignBasis& basis) {
                 {"source", "Cui, Zeng & Lei (2015): alpha = 5.3 Fr^-1.5 for a viscous debris flow in a flume (depth 7.2-11.2 cm, "
                            "speed 2.4-5.2 m/s, Fr about 2.3-6.2); read second-hand, not checked against the paper"}};
   out["geo"] = {{"alpha", 2.5}, {"force_N", 2.5 * p->flux_N}, {"source", "Kwan (2012), GEO Report 270: alpha = 2.5 for a rigid barrier"}};
-  out["deposit"] = deposit_load(r, rho, w);
+  out["deposit"] = deposit_load(r, rho);
   return out;
 }
 

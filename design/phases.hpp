@@ -29,8 +29,9 @@ struct DebrisPhases {
 std::optional<DebrisPhases> debris_phases(const std::vector<double>& t, const std::vector<double>& F, double flux_N, double passage_s);
 
 // The deposit at rest against the face over the last 10 % of the run (face/pressure and /documents/face_profile):
-// {height_m, hydrostatic_N = rho g h_d^2 w / 2, face_resultant_N}; null without a face profile.
-nlohmann::json deposit_load(const Results& r, double rho, double w);
+// {height_m, hydrostatic_N = rho g h_d^2 w / 2 (w the face profile's width), face_resultant_N}; null without a face
+// profile.
+nlohmann::json deposit_load(const Results& r, double rho);
 
 // From a results file: the contact history and the design basis' surge (density, depth, speed, length, width).
 // Null when the basis has no debris surge or the file no contact history.

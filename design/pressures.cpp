@@ -7,11 +7,10 @@ namespace dmi::design {
 using json = nlohmann::json;
 
 json face_profile(const Results& r, const std::string& where) {
-  const auto doc = r.info.documents.find("face_profile");
+  const auto& d = r.info.face_profile;
   const Series *p = r.find("face/pressure"), *R = r.find("face/resultant"), *z = r.find("face/height");
-  if (doc == r.info.documents.end() || !p || !R || !z) return nullptr;
-  const json d = json::parse(doc->second, nullptr, false);
-  if (d.is_discarded() || !d.contains("bins") || !d["bins"].is_array() || d["bins"].size() != p->components.size())
+  if (!d || !p || !R || !z) return nullptr;
+  if (d->bins.size() != p->components.size())
     throw std::runtime_error(where + ": /documents/face_profile does not match the history face/pressure; the file is altered");
   std::size_t best = 0, peak = 0;
   double moment = -1, peak_R = -1;
@@ -23,12 +22,12 @@ json face_profile(const Results& r, const std::string& where) {
   json positions = json::array(), lengths = json::array(), pressure = json::array();
   const std::size_t nb = p->components.size();
   for (std::size_t b = 0; b < nb; ++b) {
-    const double from = d["bins"][b].at("from").get<double>(), to = d["bins"][b].at("to").get<double>();
+    const double from = d->bins[b].from, to = d->bins[b].to;
     positions.push_back(0.5 * (from + to));
     lengths.push_back(to - from);
     pressure.push_back(p->data[best * nb + b]);
   }
-  return json{{"members", d.at("members")}, {"direction", d.at("direction")}, {"width_m", d.at("width")}, {"positions_m", positions},
+  return json{{"members", d->members}, {"direction", d->direction}, {"width_m", d->width}, {"positions_m", positions},
               {"lengths_m", lengths}, {"time_s", r.time.at(best)}, {"pressure_Pa", pressure}, {"resultant_N", R->data[best]},
               {"height_m", z->data[best]}, {"moment_N_m", moment}, {"peak_resultant_N", peak_R}, {"peak_resultant_time_s", r.time.at(peak)}};
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/design_basis.hpp"
+#include "core/face_profile.hpp"
 #include "core/peak_contact.hpp"
 #include "core/structure_record.hpp"
 
@@ -58,7 +59,8 @@ struct RunInfo {
   std::optional<DesignBasis> design_basis;  // /documents/design_basis: what the presets described (checks, estimates)
   std::optional<PeakContact> peak_contact;  // /documents/peak_contact: members touched in the run
   std::optional<StructureRecord> structure;  // /documents/structure: the members as built
-  // The other JSON documents (/documents/<name>): e.g. "face_profile", "solid_check" (solid-FE checks); docs/results.md.
+  std::optional<FaceProfileRecord> face_profile;  // /documents/face_profile: the struck face's bins
+  // The other JSON documents (/documents/<name>): "solid_check" (solid-FE checks), "solid_field"; docs/results.md.
   std::map<std::string, std::string> documents;
 };
 

@@ -15,8 +15,7 @@
 #include "engine/io/results_writer.hpp"
 
 #include "engine/common/json_input.hpp"
-#include "engine/io/peak_contact_json.hpp"
-#include "engine/io/structure_json.hpp"
+#include "engine/io/records_json.hpp"
 #include "engine/scenario/design_basis_json.hpp"
 
 namespace dmi {
@@ -318,25 +317,22 @@ void read_documents(const Reader& r, hid_t file, const std::string& path, RunInf
       info.documents[name] = std::move(v[0]);
     }
   }
-  if (const auto it = info.documents.find("peak_contact"); it != info.documents.end()) {  // a typed record
+  // The typed records: a malformed one is a damaged file.
+  auto typed = [&](const char* name, auto read, auto& into) {
+    const auto it = info.documents.find(name);
+    if (it == info.documents.end()) return;
+    const std::string where = std::string("/documents/") + name;
     try {
-      check_json_structure(it->second, "/documents/peak_contact");
-      const nlohmann::json j = nlohmann::json::parse(it->second, nullptr, false);
-      info.peak_contact = peak_contact_from_json(j, "/documents/peak_contact");
+      check_json_structure(it->second, where);
+      into = read(nlohmann::json::parse(it->second, nullptr, false), where);
     } catch (const std::exception& e) {
       r.error(e.what());
     }
     info.documents.erase(it);
-  }
-  if (const auto it = info.documents.find("structure"); it != info.documents.end()) {  // a typed record
-    try {
-      check_json_structure(it->second, "/documents/structure");
-      info.structure = structure_from_json(nlohmann::json::parse(it->second, nullptr, false), "/documents/structure");
-    } catch (const std::exception& e) {
-      r.error(e.what());
-    }
-    info.documents.erase(it);
-  }
+  };
+  typed("peak_contact", peak_contact_from_json, info.peak_contact);
+  typed("structure", structure_from_json, info.structure);
+  typed("face_profile", face_profile_from_json, info.face_profile);
   if (const auto it = info.documents.find("design_basis"); it != info.documents.end()) {  // validated: InputError naming the key
     check_json_structure(it->second, path + ": /documents/design_basis");
     info.design_basis = design_basis_from_json(nlohmann::json::parse(it->second), path, "/documents/design_basis");

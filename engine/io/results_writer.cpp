@@ -18,8 +18,7 @@
 // HDF5 1.8 (libver bounds V18), whose metadata is checksummed.
 #include "engine/io/results_writer.hpp"
 
-#include "engine/io/peak_contact_json.hpp"
-#include "engine/io/structure_json.hpp"
+#include "engine/io/records_json.hpp"
 #include "engine/scenario/design_basis_json.hpp"
 
 #include <algorithm>
@@ -223,6 +222,7 @@ struct ResultsWriter::Impl {
     if (info.peak_contact) documents["peak_contact"] = peak_contact_to_json(*info.peak_contact).dump();
     if (info.design_basis) documents["design_basis"] = design_basis_to_json(*info.design_basis).dump();
     if (info.structure) documents["structure"] = structure_to_json(*info.structure).dump();
+    if (info.face_profile) documents["face_profile"] = face_profile_to_json(*info.face_profile).dump();
     if (!documents.empty()) {
       Handle docs(check_id(H5Gcreate2(file, "documents", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), f, "cannot create group /documents"),
                   H5Gclose);

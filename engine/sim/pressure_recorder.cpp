@@ -1,6 +1,5 @@
 #include "engine/sim/pressure_recorder.hpp"
 
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -128,14 +127,14 @@ template <int D> void PressureRecorder<D>::sample(std::vector<Series>& out, std:
   moment_ = 0;
 }
 
-template <int D> std::string PressureRecorder<D>::face_document() const {
-  if (bins_.empty()) return "";
-  nlohmann::json bins = nlohmann::json::array();
-  for (const Bin& b : bins_)
-    bins.push_back({{"member", b.member}, {"element", b.element}, {"from", b.from}, {"to", b.to}, {"height_from", b.height_from}, {"height_to", b.height_to}});
-  return nlohmann::json{{"members", face_members_}, {"direction", std::vector<double>(direction_.data(), direction_.data() + D)},
-                        {"width", width_}, {"bins", bins}, {"units", {{"from", "m"}, {"to", "m"}, {"height_from", "m"}, {"height_to", "m"}, {"width", "m"}}}}
-      .dump();
+template <int D> std::optional<FaceProfileRecord> PressureRecorder<D>::face_profile() const {
+  if (bins_.empty()) return std::nullopt;
+  FaceProfileRecord f;
+  f.members = face_members_;
+  f.direction.assign(direction_.data(), direction_.data() + D);
+  f.width = width_;
+  for (const Bin& b : bins_) f.bins.push_back({b.member, b.element, b.from, b.to, b.height_from, b.height_to});
+  return f;
 }
 
 template <int D> void PressureRecorder<D>::save_state(StateWriter& w) const {

@@ -3,6 +3,7 @@
 // resultant and the resultant's position along the face). Interval means, like the wall forces: the impulse over the
 // steps since the last sample, divided by the elapsed time.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,8 +22,9 @@ template <int D> class PressureRecorder {
   void accumulate(const Solver<D>& solver, double dt);
   // Writes one row to the series add_series appended, starting at out[k]; advances k; clears the interval.
   void sample(std::vector<Series>& out, std::size_t& k, double elapsed);
-  // JSON document "face_profile": the face's members, load direction, width and each bin's span along the face; "" if none.
-  std::string face_document() const;
+  // The face's members, load direction, width and each bin's span along the face (core/face_profile.hpp); none if the
+  // scenario has no face profile.
+  std::optional<FaceProfileRecord> face_profile() const;
   void save_state(StateWriter& w) const;
   void load_state(StateReader& r);
 

@@ -32,8 +32,8 @@ template <int D> class Recorder {
   // The members' contact loads at the step with the largest total contact force (core/peak_contact.hpp); none if
   // the members were never touched.
   std::optional<PeakContact> peak_contact(const FrameOf<D>& f) const;
-  // JSON document "face_profile" (engine/sim/pressure_recorder.hpp); "" if the scenario has none.
-  std::string face_profile_document() const { return pressures_.face_document(); }
+  // The face profile's record (engine/sim/pressure_recorder.hpp); none if the scenario has none.
+  std::optional<FaceProfileRecord> face_profile() const { return pressures_.face_profile(); }
   // Histories so far and the interval accumulators, for checkpoints (the series layout comes from the scenario).
   void save_state(StateWriter& w) const;
   void load_state(StateReader& r);

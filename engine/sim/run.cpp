@@ -418,7 +418,7 @@ template <int D> class RunDriver {
     if (!frame) return;
     info_.structure = structure_record(s_, *frame);
     info_.peak_contact = rec_.peak_contact(*frame);
-    if (const std::string face = rec_.face_profile_document(); !face.empty()) info_.documents["face_profile"] = face;
+    info_.face_profile = rec_.face_profile();
   }
 
   void record_solver_stats() {

@@ -61,14 +61,13 @@ TEST(DebrisPhases, DepositAgainstTheFaceByHand) {
   Series p{"face/pressure", "Pa", {"bin0", "bin1", "bin2"}, {}};
   for (int k = 0; k <= 10; ++k) p.data.insert(p.data.end(), {k == 10 ? 1000.0 : 0.0, k == 10 ? 500.0 : 0.0, k == 10 ? 10.0 : 99.0});
   r.series.push_back(p);
-  r.info.documents["face_profile"] =
-      R"({"width": 2, "bins": [{"from": 0, "to": 1}, {"from": 1, "to": 2}, {"from": 2, "to": 3}]})";
-  const nlohmann::json d = deposit_load(r, 2000, 2);
+  r.info.face_profile = FaceProfileRecord{{"dam"}, {1, 0}, 2, {{"dam", 0, 0, 1, 0, 1}, {"dam", 1, 1, 2, 1, 2}, {"dam", 2, 2, 3, 2, 3}}};
+  const nlohmann::json d = deposit_load(r, 2000);
   EXPECT_DOUBLE_EQ(d["height_m"].get<double>(), 2.0);
   EXPECT_NEAR(d["hydrostatic_N"].get<double>(), 78480.0, 1e-9);
   EXPECT_NEAR(d["face_resultant_N"].get<double>(), 3020.0, 1e-9);
-  r.info.documents.clear();
-  EXPECT_TRUE(deposit_load(r, 2000, 2).is_null());
+  r.info.face_profile.reset();
+  EXPECT_TRUE(deposit_load(r, 2000).is_null());
 }
 
 }  // namespace

@@ -15,8 +15,7 @@ TEST(Pressures, FaceProfileAtTheLargestMomentByHand) {
   r.series.push_back(Series{"face/resultant", "N", {"value"}, {0, 10, 8}});
   r.series.push_back(Series{"face/height", "m", {"value"}, {0, 1, 2}});
   r.series.push_back(Series{"sensors/a/pressure", "Pa", {"value"}, {1, 5, 2}});
-  r.info.documents["face_profile"] =
-      R"({"members": ["dam"], "direction": [1, 0], "width": 2, "bins": [{"from": 0, "to": 1.5}, {"from": 1.5, "to": 3}]})";
+  r.info.face_profile = FaceProfileRecord{{"dam"}, {1, 0}, 2, {{"dam", 0, 0, 1.5, 0, 1.5}, {"dam", 1, 1.5, 3, 1.5, 3}}};
   const nlohmann::json f = face_profile(r, "hand.h5");
   EXPECT_DOUBLE_EQ(f["time_s"].get<double>(), 2.0);
   EXPECT_DOUBLE_EQ(f["moment_N_m"].get<double>(), 16.0);
@@ -30,8 +29,8 @@ TEST(Pressures, FaceProfileAtTheLargestMomentByHand) {
   EXPECT_DOUBLE_EQ(s[0]["peak_pressure_Pa"].get<double>(), 5.0);
   EXPECT_DOUBLE_EQ(s[0]["peak_time_s"].get<double>(), 1.0);
   EXPECT_NEAR(s[0]["mean_pressure_Pa"].get<double>(), 8.0 / 3.0, 1e-12);
-  r.info.documents["face_profile"] = R"({"bins": []})";
-  EXPECT_THROW(face_profile(r, "hand.h5"), std::runtime_error);  // the document does not match the history
+  r.info.face_profile->bins.clear();
+  EXPECT_THROW(face_profile(r, "hand.h5"), std::runtime_error);  // the record does not match the history
 }
 
 }  // namespace

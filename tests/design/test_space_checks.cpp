@@ -9,7 +9,7 @@
 #include "design/design.hpp"
 #include "design/loads.hpp"
 #include "design/members.hpp"
-#include "engine/io/structure_json.hpp"
+#include "engine/io/records_json.hpp"
 
 using namespace dmi::design;
 using nlohmann::json;

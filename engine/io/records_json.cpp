@@ -1,8 +1,29 @@
-#include "engine/io/structure_json.hpp"
+#include "engine/io/records_json.hpp"
 
 #include <stdexcept>
 
 namespace dmi {
+
+nlohmann::json peak_contact_to_json(const PeakContact& p) {
+  nlohmann::json loads = nlohmann::json::array();
+  for (const ContactLoadAt& l : p.loads) loads.push_back({{"member", l.member}, {"position", l.position}, {"point", l.point}, {"force", l.force}});
+  return {{"time", p.time}, {"total_force", p.total_force}, {"units", {{"time", "s"}, {"point", "m"}, {"force", "N"}}}, {"loads", loads}};
+}
+
+PeakContact peak_contact_from_json(const nlohmann::json& j, const std::string& where) {
+  try {
+    PeakContact p;
+    p.time = j.at("time").get<double>();
+    p.total_force = j.at("total_force").get<std::vector<double>>();
+    for (const auto& l : j.at("loads"))
+      p.loads.push_back({l.at("member").get<std::string>(), l.at("position").get<double>(), l.at("point").get<std::vector<double>>(),
+                         l.at("force").get<std::vector<double>>()});
+    return p;
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(where + " is malformed (" + std::string(e.what()) + ")");
+  }
+}
+
 namespace {
 
 using nlohmann::json;
@@ -93,6 +114,30 @@ StructureRecord structure_from_json(const json& j, const std::string& where) {
     return s;
   } catch (const std::exception& e) {
     throw std::runtime_error(where + " is malformed (" + e.what() + ")");
+  }
+}
+
+
+nlohmann::json face_profile_to_json(const FaceProfileRecord& f) {
+  nlohmann::json bins = nlohmann::json::array();
+  for (const FaceBin& b : f.bins)
+    bins.push_back({{"member", b.member}, {"element", b.element}, {"from", b.from}, {"to", b.to}, {"height_from", b.height_from}, {"height_to", b.height_to}});
+  return {{"members", f.members}, {"direction", f.direction}, {"width", f.width}, {"bins", bins},
+          {"units", {{"from", "m"}, {"to", "m"}, {"height_from", "m"}, {"height_to", "m"}, {"width", "m"}}}};
+}
+
+FaceProfileRecord face_profile_from_json(const nlohmann::json& j, const std::string& where) {
+  try {
+    FaceProfileRecord f;
+    f.members = j.at("members").get<std::vector<std::string>>();
+    f.direction = j.at("direction").get<std::vector<double>>();
+    f.width = j.at("width").get<double>();
+    for (const auto& b : j.at("bins"))
+      f.bins.push_back({b.at("member").get<std::string>(), b.at("element").get<int>(), b.at("from").get<double>(), b.at("to").get<double>(),
+                        b.at("height_from").get<double>(), b.at("height_to").get<double>()});
+    return f;
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(where + " is malformed (" + std::string(e.what()) + ")");
   }
 }
 

@@ -1,0 +1,26 @@
+// The run's typed records as results.h5 stores them, under /documents: the peak contact (core/peak_contact.hpp), the
+// structure as built (core/structure_record.hpp) and the struck face's profile (core/face_profile.hpp).
+#pragma once
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "core/face_profile.hpp"
+#include "core/peak_contact.hpp"
+#include "core/structure_record.hpp"
+
+namespace dmi {
+
+// The readers throw std::runtime_error naming `where` when j is not such a document.
+nlohmann::json peak_contact_to_json(const PeakContact& p);
+PeakContact peak_contact_from_json(const nlohmann::json& j, const std::string& where);
+
+// Validated on reading: dimension 2 or 3, node indices and element ranges inside the frame, element spans within
+// 0 <= s0 < s1 <= 1.
+nlohmann::json structure_to_json(const StructureRecord& s);
+StructureRecord structure_from_json(const nlohmann::json& j, const std::string& where);
+
+nlohmann::json face_profile_to_json(const FaceProfileRecord& f);
+FaceProfileRecord face_profile_from_json(const nlohmann::json& j, const std::string& where);
+
+}  // namespace dmi
