@@ -48,8 +48,7 @@ template <int D> struct Particles {
 
   // new[i] = old[perm[i]] for every field; perm keeps each body inside its index range. Each field is gathered into
   // one reused scratch buffer and copied back: a fresh array per field (32 MB for 1 M particles' matrices, above
-  // malloc's mmap threshold) was mapped and faulted in page by page at every reordering (perf: 5-8 % of a step in the
-  // kernel's page-fault and clear-page paths).
+  // malloc's mmap threshold) would be mapped and faulted in page by page at every reordering.
   void permute(const std::vector<Index>& perm) {
     const Index n = static_cast<Index>(perm.size());
     auto apply = [&](auto& v) {

@@ -12,7 +12,7 @@ template <int D> using IVec = Eigen::Matrix<int, D, 1>;
 using Index = std::int64_t;
 
 // Loops shorter than this run on one thread: waking OpenMP threads costs ~10-50 us per parallel
-// region, more than a small loop's work (a 200-particle run was 10x slower in parallel).
+// region, more than a small loop's work.
 constexpr Index kParallelMin = 4096;
 
 // A run with fewer particles than this steps on one thread whatever -t says: its loops above kParallelMin (grid nodes,

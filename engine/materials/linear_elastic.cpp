@@ -69,7 +69,7 @@ template <int D> class LinearElastic final : public Material<D> {
   void update(Particles<D>& p, Index begin, Index end, double dt) override {
     const double lam = lambda_in_, mu = el_.mu, lam3 = el_.lambda, beta = beta_;
     const bool strain2d = D == 2 && plane_ == Plane::strain;
-    if (D == 2 && beta == 0) {  // the common case in scalars (perf: Eigen's 2x2 W s - s W stalled on a store-forward)
+    if (D == 2 && beta == 0) {  // the common case in scalars: Eigen's 2x2 W s - s W stalls on a store-forward
       update2d(p, begin, end, dt, lam, mu, strain2d ? lam3 : 0.0);
       return;
     }
@@ -103,9 +103,8 @@ template <int D> class LinearElastic final : public Material<D> {
   static void update2d(Particles<D>& p, Index begin, Index end, double dt, double lam, double mu, double lam_zz) {
     if constexpr (D == 2) {
       parallel_for(begin, end, [&](Index i) {
-        // Software prefetch 16 particles ahead of the arrays the chunk's gather did not touch (perf: 39 % of this
-        // loop's samples waited on one stress load). Kernel bench, 1 thread, A/B 4 rounds: 12.3-13.9 -> 13.3-14.5 M/s.
-        // The same for G2P's own particle arrays (x, v, F, L) made it 3 % slower: not done.
+        // Software prefetch 16 particles ahead of the arrays the chunk's gather did not touch (the loop otherwise waits
+        // on the stress loads; docs/performance.md).
         __builtin_prefetch(p.stress.data() + i + 16, 1);
         __builtin_prefetch(p.vol.data() + i + 16, 1);
         __builtin_prefetch(p.vol0.data() + i + 16);

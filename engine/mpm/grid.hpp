@@ -4,7 +4,7 @@
 // layout: array index = field * nnodes + node.
 // Particles are binned into tiles of T^D cells. A binning stays valid while every particle lies within kMargin cells
 // of its tile (outgrown() says when not), so most steps only zero P2G's sums (clear_sums()) and keep the tile order,
-// the scatter's runs and the active nodes: binning was 15 % of a 1 M-particle step (docs/performance.md). A tile's
+// the scatter's runs and the active nodes (docs/performance.md). A tile's
 // particles therefore reach the nodes [T t - 1 - kMargin, T t + T + 1 + kMargin] (tile_nodes).
 // The scatter's work items are runs of occupied tiles in one colour: a run's particles are contiguous in the tile
 // order, and same-colour runs are 3 T cells apart, wider than any reach (3 T - 1 - kMargin > T + 1 + kMargin), so a

@@ -17,8 +17,8 @@
 namespace dmi {
 
 template <int D> Solver<D>::Solver(Scene<D> scene) : scene_(std::move(scene)) {
-  // With linear weights D_p = diag(f(1-f) h^2) vanishes at nodes and APIC blew up in every variant
-  // tried; the parser refuses the pair with a message, this guards programmatic scenes.
+  // With linear weights D_p = diag(f(1-f) h^2) vanishes at nodes and APIC's C_p = B_p D_p^-1 is undefined; the
+  // parser refuses the pair with a message, this guards programmatic scenes.
   if (scene_.options.shape == ShapeKind::linear && scene_.options.transfer == TransferKind::apic)
     throw std::invalid_argument("APIC transfer needs gimp or bspline2 shape functions, not linear");
   kernels_ = make_transfer_kernels<D>(scene_.options.shape);
@@ -160,7 +160,7 @@ template <int D> void Solver<D>::particles_to_grid() { kernels_->p2g(scene_, fal
 
 // Reorders each body's particles into the tile order of the last binning (a stable counting sort by tile,
 // so particles of one tile sit together in memory): the scatter then reads the particle arrays almost
-// sequentially instead of jumping across them (perf: the first particle load was 16 % of P2G). Bodies keep
+// sequentially instead of jumping across them. Bodies keep
 // their index ranges; materials follow the permutation; Particles::slot keeps creation order for outputs.
 template <int D> void Solver<D>::sort_particles() {
   Particles<D>& P = scene_.particles;

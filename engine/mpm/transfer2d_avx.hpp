@@ -1,7 +1,7 @@
 // AVX2 forms of the 2D FLIP scatter and gather for 3-node stencils (quadratic B-splines, uGIMP): the same equations
 // as the generic loops of transfer_kernels.hpp (Lin & Yang 2024, eqs. 5-8 and 13-14) with 4-wide vectors: a node's (px, py, fx, fy)
-// record is one aligned vector in the scatter, and (v^L, v^L - v) of a node one aligned record in the gather (perf: the
-// scalar loops spilled their operands to the stack and spent their time in loads and stores). Sums are the same terms
+// record is one aligned vector in the scatter, and (v^L, v^L - v) of a node one aligned record in the gather (the
+// scalar loops spill their operands to the stack). Sums are the same terms
 // in the same node order; rounding differs from the scalar loops by FMA contraction and by FLIP's increment summed as
 // sum N (v^L - v) rather than sum N v^L - sum N v. No access reaches past a row's third node
 // (prefetches may: they never fault).

@@ -1,7 +1,7 @@
 // The particle <-> grid transfers, written once for 2D and 3D (the equations are stated in transfer.hpp): the stencil
 // walked row by row along x (shape.hpp's Stencil), loops over D with compile-time bounds, node fields through raw
-// pointers, and the AVX2 3 x 3 kernels (transfer2d_avx.hpp) as a leaf for the 2D FLIP case. Eigen's small products were
-// not inlined in the hot loops (perf: 8 % of a step in one outer product alone), hence plain arrays. Each node still
+// pointers, and the AVX2 3 x 3 kernels (transfer2d_avx.hpp) as a leaf for the 2D FLIP case. Eigen's small products are
+// not inlined in the hot loops, hence plain arrays. Each node still
 // receives its contributions in particle order, so sums do not depend on the thread count.
 #pragma once
 #include <algorithm>
@@ -47,8 +47,8 @@ struct GatherKinematics {
 };
 
 // The grid as the kernels see it, by value: inside an OpenMP region shared variables are reached through a pointer,
-// and every store through the node pointers could alias them, so the compiler reloaded h, the origin, the strides...
-// after each store (perf: stack reloads in the hottest lines). A by-value copy cannot alias.
+// and every store through the node pointers could alias them, so the compiler would reload h, the origin, the
+// strides... after each store. A by-value copy cannot alias.
 template <int D> struct GridView {
   Vec<D> origin;
   double h, ih;
@@ -425,9 +425,8 @@ template <int D, class Shape, class Scheme, class Mode, bool SIMD> inline int ga
         const double xr = (c.x[i][k] - c.g.origin[k]) * c.g.ih;
         if (!(xr >= c.g.lo[k] && xr < c.g.hi[k])) bad = 1;
       }
-      // L and F through their column-major storage in scalars: a copy of F as a Mat went through the stack as small
-      // stores read back by one wide load, which cannot be forwarded (perf: 22 % of G2P's samples on the next
-      // instruction in 2D). F <- (I + dt L) F.
+      // L and F through their column-major storage in scalars: a copy of F as a Mat goes through the stack as small
+      // stores read back by one wide load, which cannot be forwarded. F <- (I + dt L) F.
       double* Lp = c.L[i].data();
       double* Fp = c.F[i].data();
       double f[D][D];
