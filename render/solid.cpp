@@ -6,7 +6,6 @@
 #include <stdexcept>
 #include <vector>
 
-#include <nlohmann/json.hpp>
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCellType.h>
@@ -30,21 +29,9 @@ namespace dmi::render {
 
 namespace {
 
-using nlohmann::json;
 template <class T> vtkSmartPointer<T> make() { return vtkSmartPointer<T>::New(); }
 
-std::vector<double> numbers(const json& j, const char* key, std::size_t n, const std::string& where) {
-  if (!j.contains(key) || !j[key].is_array() || j[key].size() != n)
-    throw std::runtime_error(where + ": /documents/solid_field " + key + " is missing or has the wrong length (expected " + std::to_string(n) + ")");
-  std::vector<double> v;
-  v.reserve(n);
-  for (const auto& x : j[key]) {
-    if (!x.is_number() || !std::isfinite(x.get<double>())) throw std::runtime_error(where + ": /documents/solid_field " + key + " holds a value that is not a finite number");
-    v.push_back(x.get<double>());
-  }
-  return v;
-}
-
+// The case the picture shows (the one with the largest principal tension) over the mesh.
 struct Field {
   int dim = 3, npe = 8;
   std::size_t nn = 0;
@@ -54,32 +41,13 @@ struct Field {
   std::vector<double> vm, s1;
 };
 
-Field read_field(const Results& r) {
-  const std::string where = r.info.scenario_name.empty() ? "results" : r.info.scenario_name;
+Field read_field(const SolidFieldRecord& d) {
   Field f;
-  json d;
-  try {
-    d = json::parse(r.info.documents.at("solid_field"));
-    f.dim = d.at("dim").get<int>(), f.npe = d.at("nodes_per_element").get<int>();
-  } catch (const std::exception& e) {
-    throw std::runtime_error(where + ": /documents/solid_field is malformed (" + std::string(e.what()) + ")");
-  }
-  if (!((f.dim == 3 && f.npe == 8) || (f.dim == 2 && f.npe == 4))) throw std::runtime_error(where + ": /documents/solid_field: dim and nodes_per_element do not match");
-  if (!d.contains("nodes_m") || !d["nodes_m"].is_array() || d["nodes_m"].size() % f.dim) throw std::runtime_error(where + ": /documents/solid_field nodes_m is malformed");
-  f.nn = d["nodes_m"].size() / f.dim;
-  f.x = numbers(d, "nodes_m", f.nn * f.dim, where);
-  const std::vector<double> c = numbers(d, "elements", d.contains("elements") && d["elements"].is_array() ? d["elements"].size() : 0, where);
-  if (c.empty() || c.size() % f.npe) throw std::runtime_error(where + ": /documents/solid_field elements is malformed");
-  for (double id : c) {
-    if (!(id >= 0 && id < static_cast<double>(f.nn))) throw std::runtime_error(where + ": /documents/solid_field elements refers to a node that does not exist");
-    f.conn.push_back(static_cast<long>(id));
-  }
-  if (!d.contains("cases") || !d["cases"].is_array() || d["cases"].empty()) throw std::runtime_error(where + ": /documents/solid_field has no cases");
+  f.dim = d.dim, f.npe = d.nodes_per_element, f.nn = d.nodes(), f.x = d.nodes_m, f.conn = d.elements;
   double best = -1e300;
-  for (const auto& k : d["cases"]) {
-    std::vector<double> s1 = numbers(k, "max_principal_Pa", f.nn, where);
-    const double m = *std::max_element(s1.begin(), s1.end());
-    if (m > best) best = m, f.s1 = std::move(s1), f.vm = numbers(k, "von_mises_Pa", f.nn, where), f.name = k.value("name", "");
+  for (const SolidFieldCase& k : d.cases) {
+    const double m = *std::max_element(k.max_principal_Pa.begin(), k.max_principal_Pa.end());
+    if (m > best) best = m, f.s1 = k.max_principal_Pa, f.vm = k.von_mises_Pa, f.name = k.name;
   }
   return f;
 }
@@ -213,8 +181,8 @@ vtkSmartPointer<vtkRenderer> solid_title(const SolidPicture& pic, const std::str
 }  // namespace
 
 std::optional<SolidPicture> render_solid(const Results& r, const std::string& title, const std::string& path, int width, int height, bool draw) {
-  if (!r.info.documents.count("solid_field")) return std::nullopt;
-  const Field f = read_field(r);
+  if (!r.info.solid_field) return std::nullopt;
+  const Field f = read_field(*r.info.solid_field);
   SolidPicture pic;
   pic.path = path, pic.case_name = f.name, pic.width = width, pic.height = height;
   const auto k1 = static_cast<std::size_t>(std::max_element(f.s1.begin(), f.s1.end()) - f.s1.begin());

@@ -1,5 +1,6 @@
 #include "engine/io/records_json.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace dmi {
@@ -137,6 +138,46 @@ FaceProfileRecord face_profile_from_json(const nlohmann::json& j, const std::str
                         b.at("height_from").get<double>(), b.at("height_to").get<double>()});
     return f;
   } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(where + " is malformed (" + std::string(e.what()) + ")");
+  }
+}
+
+nlohmann::json solid_field_to_json(const SolidFieldRecord& f) {
+  nlohmann::json cases = nlohmann::json::array();
+  for (const SolidFieldCase& c : f.cases)
+    cases.push_back({{"name", c.name}, {"von_mises_Pa", c.von_mises_Pa}, {"max_principal_Pa", c.max_principal_Pa}, {"displacement_m", c.displacement_m}});
+  return {{"dim", f.dim}, {"nodes_per_element", f.nodes_per_element}, {"axes", f.axes}, {"nodes_m", f.nodes_m}, {"elements", f.elements},
+          {"cases", cases}};
+}
+
+SolidFieldRecord solid_field_from_json(const nlohmann::json& j, const std::string& where) {
+  auto finite = [](const std::vector<double>& v) {
+    for (double x : v)
+      if (!std::isfinite(x)) return false;
+    return true;
+  };
+  try {
+    SolidFieldRecord f;
+    f.dim = j.at("dim").get<int>(), f.nodes_per_element = j.at("nodes_per_element").get<int>();
+    if (!((f.dim == 3 && f.nodes_per_element == 8) || (f.dim == 2 && f.nodes_per_element == 4)))
+      throw std::out_of_range("dim and nodes_per_element do not match");
+    f.axes = j.value("axes", std::string());
+    f.nodes_m = j.at("nodes_m").get<std::vector<double>>();
+    if (f.nodes_m.empty() || f.nodes_m.size() % f.dim || !finite(f.nodes_m)) throw std::out_of_range("nodes_m");
+    f.elements = j.at("elements").get<std::vector<long>>();
+    if (f.elements.empty() || f.elements.size() % f.nodes_per_element) throw std::out_of_range("elements");
+    for (long id : f.elements)
+      if (id < 0 || id >= static_cast<long>(f.nodes())) throw std::out_of_range("elements refers to a node that does not exist");
+    for (const auto& c : j.at("cases")) {
+      SolidFieldCase k{c.value("name", std::string()), c.at("von_mises_Pa").get<std::vector<double>>(),
+                       c.at("max_principal_Pa").get<std::vector<double>>(), c.value("displacement_m", std::vector<double>())};
+      if (k.von_mises_Pa.size() != f.nodes() || k.max_principal_Pa.size() != f.nodes() || !finite(k.von_mises_Pa) || !finite(k.max_principal_Pa))
+        throw std::out_of_range("case '" + k.name + "': a stress per node, finite");
+      f.cases.push_back(std::move(k));
+    }
+    if (f.cases.empty()) throw std::out_of_range("no cases");
+    return f;
+  } catch (const std::exception& e) {
     throw std::runtime_error(where + " is malformed (" + std::string(e.what()) + ")");
   }
 }

@@ -1,5 +1,6 @@
 // The run's typed records as results.h5 stores them, under /documents: the peak contact (core/peak_contact.hpp), the
-// structure as built (core/structure_record.hpp) and the struck face's profile (core/face_profile.hpp).
+// structure as built (core/structure_record.hpp), the struck face's profile (core/face_profile.hpp) and the solid
+// check's field (core/solid_field.hpp).
 #pragma once
 #include <string>
 
@@ -7,6 +8,7 @@
 
 #include "core/face_profile.hpp"
 #include "core/peak_contact.hpp"
+#include "core/solid_field.hpp"
 #include "core/structure_record.hpp"
 
 namespace dmi {
@@ -22,5 +24,10 @@ StructureRecord structure_from_json(const nlohmann::json& j, const std::string& 
 
 nlohmann::json face_profile_to_json(const FaceProfileRecord& f);
 FaceProfileRecord face_profile_from_json(const nlohmann::json& j, const std::string& where);
+
+// Validated on reading: hex8 in 3D or quad4 in 2D, whole nodes and elements, corners that exist, at least one case,
+// every case's stresses one finite value per node.
+nlohmann::json solid_field_to_json(const SolidFieldRecord& f);
+SolidFieldRecord solid_field_from_json(const nlohmann::json& j, const std::string& where);
 
 }  // namespace dmi

@@ -122,11 +122,13 @@ double sig6(double v) {
   return std::round(v * p) / p;
 }
 
-json field_case(const std::string& name, const Eigen::VectorXd& u, const StressField& field) {
-  json vm = json::array(), s1 = json::array(), du = json::array();
-  for (const Stress6& st : field.nodal) vm.push_back(sig6(measure(st, Measure::von_mises))), s1.push_back(sig6(measure(st, Measure::max_principal)));
-  for (Eigen::Index k = 0; k < u.size(); ++k) du.push_back(sig6(u[k]));
-  return json{{"name", name}, {"von_mises_Pa", vm}, {"max_principal_Pa", s1}, {"displacement_m", du}};
+SolidFieldCase field_case(const std::string& name, const Eigen::VectorXd& u, const StressField& field) {
+  SolidFieldCase c;
+  c.name = name;
+  for (const Stress6& st : field.nodal)
+    c.von_mises_Pa.push_back(sig6(measure(st, Measure::von_mises))), c.max_principal_Pa.push_back(sig6(measure(st, Measure::max_principal)));
+  for (Eigen::Index k = 0; k < u.size(); ++k) c.displacement_m.push_back(sig6(u[k]));
+  return c;
 }
 
 }  // namespace
@@ -214,16 +216,16 @@ void record_case(const Model& m, const Eigen::VectorXd& f, const StaticSolution&
   entry["max_displacement_m"] = umax;
 }
 
-// The mesh and the model's description, for the pictures.
-json solid_field(const Model& m, const json& axes, const json& field_cases) {
-  const int dim = m.mesh.dim;
-  json nodes = json::array(), elements = json::array();
+// The mesh and the load cases' fields, for the pictures.
+SolidFieldRecord solid_field(const Model& m, const std::string& axes, std::vector<SolidFieldCase> cases) {
+  SolidFieldRecord f;
+  f.dim = m.mesh.dim, f.nodes_per_element = m.mesh.nodes_per_element(), f.axes = axes;
   for (int n = 0; n < m.mesh.n_nodes(); ++n)
-    for (int d = 0; d < dim; ++d) nodes.push_back(sig6(m.mesh.nodes(n, d)));
+    for (int d = 0; d < f.dim; ++d) f.nodes_m.push_back(sig6(m.mesh.nodes(n, d)));
   for (int e = 0; e < m.mesh.n_elements(); ++e)
-    for (int c2 = 0; c2 < m.mesh.nodes_per_element(); ++c2) elements.push_back(m.mesh.elements(e, c2));
-  return {{"dim", dim}, {"nodes_per_element", m.mesh.nodes_per_element()}, {"axes", axes}, {"nodes_m", nodes},
-          {"elements", elements}, {"cases", field_cases}};
+    for (int c2 = 0; c2 < m.mesh.nodes_per_element(); ++c2) f.elements.push_back(m.mesh.elements(e, c2));
+  f.cases = std::move(cases);
+  return f;
 }
 
 }  // namespace
@@ -233,7 +235,8 @@ SolidCheckDocuments run_solid_check(const Scenario& s, const PeakContact* contac
   const std::shared_ptr<const Factorised> fm = factorised(c);
   const Model& m = fm->m;
   const int dim = m.mesh.dim;
-  json cases = json::array(), field_cases = json::array();
+  json cases = json::array();
+  std::vector<SolidFieldCase> field_cases;
   for (std::size_t i = 0; i < c.loads.size(); ++i) {
     const SolidLoadConfig& l = c.loads[i];
     Eigen::VectorXd f = Eigen::VectorXd::Zero(m.mesh.n_dofs());
@@ -252,7 +255,7 @@ SolidCheckDocuments run_solid_check(const Scenario& s, const PeakContact* contac
              {"height_m", c.height}, {"crest_thickness_m", c.crest_thickness}, {"base_thickness_m", c.base_thickness},
              {"width_m", c.width}, {"sloped_face", c.sloped_face}, {"youngs_modulus_Pa", c.youngs_modulus}, {"poisson_ratio", c.poisson_ratio},
              {"axes", dim == 3 ? "x through the thickness (downstream), y across the face, z up" : "x through the thickness (downstream), z up"}};
-  return {json{{"model", model}, {"cases", cases}}.dump(), solid_field(m, model["axes"], field_cases).dump()};
+  return {json{{"model", model}, {"cases", cases}}.dump(), solid_field(m, model["axes"].get<std::string>(), std::move(field_cases))};
 }
 
 }  // namespace dmi

@@ -13,14 +13,14 @@
 #include <string>
 
 #include "core/peak_contact.hpp"
+#include "core/solid_field.hpp"
 #include "engine/scenario/config.hpp"
 
 namespace dmi {
 
 struct SolidCheckDocuments {
-  std::string check;  // "solid_check": the peaks per case (design checks read this)
-  std::string field;  // "solid_field": the mesh (nodes, VTK-ordered corners) and per case the nodal von Mises, max
-                      // principal stress and displacement, 6 significant digits (the pictures read this)
+  std::string check;       // "solid_check": the peaks per case (design checks read this)
+  SolidFieldRecord field;  // the mesh and per case the nodal fields (core/solid_field.hpp; the pictures read this)
 };
 
 // peak_contact: the run's contact loads at their peak (null when the members were never touched). Throws InputError

@@ -28,6 +28,7 @@
 #include "render/render_main.hpp"
 #include "render/report.hpp"
 #include "render/solid.hpp"
+#include "engine/io/records_json.hpp"
 #include "engine/scenario/sha256.hpp"
 
 namespace fs = std::filesystem;
@@ -427,18 +428,16 @@ TEST(RenderSolid, TableOnePictureStatesThePeaksOfTheCheck) {
   EXPECT_NEAR(pic->principal_max / best, 1.0, 1e-5);  // the field holds 6 significant digits
   EXPECT_NEAR(pic->von_mises_max / vm, 1.0, 1e-5);
   EXPECT_NEAR(pic->section_y, 1.0, 1e-9);  // the 2 m face's middle
-  // A non-finite stress (written as null) is an error naming the document, never a picture.
-  json field = json::parse(runs[0].results.info.documents.at("solid_field"));
+  // A non-finite stress (written as null) is refused when the file is read, naming the document: never a picture.
+  json field = dmi::solid_field_to_json(*runs[0].results.info.solid_field);
   field["cases"][0]["von_mises_Pa"][5] = nullptr;
-  runs[0].results.info.documents["solid_field"] = field.dump();
   try {
-    dmi::render::render_solid(runs[0].results, "bad", (d / "bad.png").string(), 600, 300);
-    ADD_FAILURE() << "a damaged field was drawn";
+    dmi::solid_field_from_json(field, "/documents/solid_field");
+    ADD_FAILURE() << "a damaged field was read";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("/documents/solid_field von_mises_Pa"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("/documents/solid_field is malformed"), std::string::npos) << e.what();
   }
-  EXPECT_FALSE(fs::exists(d / "bad.png"));
-  runs[0].results.info.documents.erase("solid_field");
+  runs[0].results.info.solid_field.reset();
   EXPECT_FALSE(dmi::render::render_solid(runs[0].results, "none", (d / "none.png").string()).has_value());
   fs::remove_all(d);
 }
