@@ -51,6 +51,14 @@ struct Reader {
   [[noreturn]] void fail(const std::string& path, const json* v, const std::string& expected) const {
     throw InputError(file, path, v ? v->dump() : "", expected);
   }
+  // A word among `options`, when given; `expected` says which in the message.
+  void choice(const json& o, const std::string& path, const char* key, const std::set<std::string>& options, const std::string& expected,
+              std::string& out) const {
+    if (!o.contains(key)) return;
+    const json& v = o[key];
+    if (!v.is_string() || !options.count(v.get<std::string>())) fail(path + "/" + key, &v, expected);
+    out = v.get<std::string>();
+  }
   void keys(const json& o, const std::string& path, const std::set<std::string>& allowed) const {
     if (!o.is_object()) fail(path, &o, "an object");
     for (auto it = o.begin(); it != o.end(); ++it)
@@ -81,12 +89,7 @@ void read_verdict(const Reader& r, const json& j, Limits& L) {
   if (!j.contains("verdict")) return;
   const json& v = j["verdict"];
   r.keys(v, "/verdict", {"level"});
-  if (v.contains("level")) {
-    const json& l = v["level"];
-    if (!l.is_string() || (l != "both" && l != "ultimate" && l != "serviceability"))
-      r.fail("/verdict/level", &l, "\"both\", \"ultimate\" or \"serviceability\"");
-    L.verdict_level = l.get<std::string>();
-  }
+  r.choice(v, "/verdict", "level", {"both", "ultimate", "serviceability"}, "\"both\", \"ultimate\" or \"serviceability\"", L.verdict_level);
 }
 
 // /foundation: friction, cohesion, bearing capacity, uplift and the stability factors.
@@ -121,11 +124,7 @@ void read_grid_study(const Reader& r, const json& j, Limits& L) {
   if (!j.contains("grid_study")) return;
   const json& g = j["grid_study"];
   r.keys(g, "/grid_study", {"judge_on"});
-  if (g.contains("judge_on")) {
-    const json& v = g["judge_on"];
-    if (!v.is_string() || (v != "finest" && v != "conservative_bound")) r.fail("/grid_study/judge_on", &v, "\"finest\" or \"conservative_bound\"");
-    L.grid_judge_on = v.get<std::string>();
-  }
+  r.choice(g, "/grid_study", "judge_on", {"finest", "conservative_bound"}, "\"finest\" or \"conservative_bound\"", L.grid_judge_on);
 }
 
 // /concrete: strengths (in Pa: a value in MPa is the usual slip), resistance factors, punching patch.
@@ -145,12 +144,7 @@ void read_concrete(const Reader& r, const json& j, Limits& L) {
   // Strengths in Pa: a value in MPa (28 for 28 MPa) is the usual slip.
   r.range(c, p, "compressive_strength_Pa", k.compressive_strength, 5e6, 2e8, "a concrete f'c in Pa between 5e6 and 2e8 (28 MPa is 28e6 Pa)");
   r.range(c, p, "tensile_strength_Pa", k.tensile_strength, 5e5, 2e7, "a concrete tensile strength in Pa between 5e5 and 2e7 (3.28 MPa is 3.28e6 Pa)");
-  if (c.contains("tensile_rule")) {
-    const json& v = c["tensile_rule"];
-    if (!v.is_string() || (v != "given" && v != "aci_rupture" && v != "aci_plain"))
-      r.fail(p + "/tensile_rule", &v, "\"given\", \"aci_plain\" or \"aci_rupture\"");
-    k.tensile_rule = v.get<std::string>();
-  }
+  r.choice(c, p, "tensile_rule", {"given", "aci_rupture", "aci_plain"}, "\"given\", \"aci_plain\" or \"aci_rupture\"", k.tensile_rule);
   r.number(c, p, "lambda", k.lambda, true);
   r.number(c, p, "compression_coefficient", k.compression_coefficient, true);
   r.number(c, p, "phi_flexure", k.phi_flexure, true);
@@ -193,11 +187,8 @@ void read_steel(const Reader& r, const json& j, Limits& L) {
   r.range(s, "/steel", "residual_drift_limit", L.steel.residual_drift_limit, 1e-4, 0.1, "a drift ratio between 1e-4 and 0.1 (1 % is 0.01)");
   r.number(s, "/steel", "dent_depth_limit", L.steel.dent_depth_limit);
   r.range(s, "/steel", "dent_depth_limit", L.steel.dent_depth_limit, 1e-3, 0.5, "a dent depth over the diameter between 0.001 and 0.5 (6 % is 0.06)");
-  if (s.contains("buckling_curve")) {
-    const json& v = s["buckling_curve"];
-    if (!v.is_string() || (v != "a0" && v != "a" && v != "b" && v != "c" && v != "d")) r.fail("/steel/buckling_curve", &v, "one of \"a0\", \"a\", \"b\", \"c\", \"d\" (EN 1993-1-1 Table 6.2)");
-    L.steel.buckling_curve = v.get<std::string>();
-  }
+  r.choice(s, "/steel", "buckling_curve", {"a0", "a", "b", "c", "d"}, "one of \"a0\", \"a\", \"b\", \"c\", \"d\" (EN 1993-1-1 Table 6.2)",
+           L.steel.buckling_curve);
 }
 
 // /members: which members are concrete and which steel.
