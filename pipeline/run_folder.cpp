@@ -14,8 +14,12 @@ RunState run_state(const fs::path& dir) {
 
 bool holds_run_of(const fs::path& dir, const Scenario& s) {
   if (run_state(dir) != RunState::complete) return false;
-  const RunInfo info = read_results((dir / "results.h5").string(), false).info;
-  return scenario_identity(info.scenario_json, info.scenario_expanded_json, info.variant) == scenario_identity(s);
+  try {
+    const RunInfo info = read_results((dir / "results.h5").string(), false).info;
+    return scenario_identity(info.scenario_json, info.scenario_expanded_json, info.variant) == scenario_identity(s);
+  } catch (const std::exception&) {  // a damaged file holds no run
+    return false;
+  }
 }
 
 }  // namespace dmi::pipeline

@@ -13,7 +13,8 @@ enum class RunState { absent, interrupted, complete };
 
 RunState run_state(const std::filesystem::path& dir);
 
-// The folder holds a complete run of the scenario (engine/scenario/identity.hpp: the same low-level scenario and variant).
+// The folder holds a complete, readable run of the scenario (engine/scenario/identity.hpp: the same low-level scenario
+// and variant).
 bool holds_run_of(const std::filesystem::path& dir, const Scenario& s);
 
 }  // namespace dmi::pipeline

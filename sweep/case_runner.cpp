@@ -128,13 +128,6 @@ json run_case(const SweepSpec& spec, std::size_t k, const SweepOptions& o) {
     const fs::path scen = dir / "scenario.json";
     if (read_text(scen) != text) render::write_text_atomic(scen.string(), text);
     const auto variants = parse_scenario_variants(text, scen.string());
-    std::vector<std::string> written;
-    bool reused = true;
-    for (const auto& v : variants) {
-      const fs::path vd = v.label.empty() ? dir : dir / v.label;
-      reused = reused && pipeline::holds_run_of(vd, v.scenario);
-      written.push_back((vd / "results.h5").string());
-    }
     double sim_wall = 0;
     if (spec.grid_ratio > 0) {  // the case at three cell sizes: grid uncertainty of its governing numbers
       const double h = common_cell_size(variants, scen.string());
@@ -152,6 +145,13 @@ json run_case(const SweepSpec& spec, std::size_t k, const SweepOptions& o) {
       if (o.case_reports) row["report"] = fs::relative(render::report_main(dir.string(), {"von_mises", true, o.pdf, o.software_version}).html, o.out_dir).string();
       row["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       return row;
+    }
+    std::vector<std::string> written;
+    bool reused = true;
+    for (const auto& v : variants) {
+      const fs::path vd = v.label.empty() ? dir : dir / v.label;
+      reused = reused && pipeline::holds_run_of(vd, v.scenario);
+      written.push_back((vd / "results.h5").string());
     }
     if (reused) {  // resumable: a finished case is kept (its scenario unchanged)
       for (const auto& w : written) sim_wall += read_results(w, false).info.numbers.at("wall_seconds");

@@ -16,11 +16,17 @@ PeakContact peak_contact_from_json(const nlohmann::json& j, const std::string& w
     PeakContact p;
     p.time = j.at("time").get<double>();
     p.total_force = j.at("total_force").get<std::vector<double>>();
-    for (const auto& l : j.at("loads"))
+    const std::size_t dim = p.total_force.size();
+    if (dim != 2 && dim != 3) throw std::out_of_range("total_force has " + std::to_string(dim) + " components (2 or 3)");
+    if (!j.at("loads").is_array()) throw std::out_of_range("loads is not an array");
+    for (const auto& l : j.at("loads")) {
       p.loads.push_back({l.at("member").get<std::string>(), l.at("position").get<double>(), l.at("point").get<std::vector<double>>(),
                          l.at("force").get<std::vector<double>>()});
+      if (p.loads.back().point.size() != dim || p.loads.back().force.size() != dim)
+        throw std::out_of_range("a load's point or force without " + std::to_string(dim) + " components");
+    }
     return p;
-  } catch (const nlohmann::json::exception& e) {
+  } catch (const std::exception& e) {
     throw std::runtime_error(where + " is malformed (" + std::string(e.what()) + ")");
   }
 }
@@ -55,9 +61,16 @@ SectionRecord section_from(const json& s) {
   return c;
 }
 
+// An index: a whole number, not a number rounded or a boolean taken for one.
+int index_at(const json& o, const char* key) {
+  const json& v = o.at(key);
+  if (!v.is_number_integer()) throw std::out_of_range(std::string(key) + " is not a whole number");
+  return v.get<int>();
+}
+
 ElementRecord element_from(const json& e, int dim, std::size_t nodes) {
   ElementRecord el;
-  el.member = e.at("member"), el.i = e.at("i"), el.j = e.at("j"), el.s0 = e.at("s0"), el.s1 = e.at("s1");
+  el.member = index_at(e, "member"), el.i = index_at(e, "i"), el.j = index_at(e, "j"), el.s0 = e.at("s0"), el.s1 = e.at("s1");
   el.section = section_from(e.at("section"));
   el.youngs_modulus_Pa = e.at("youngs_modulus_Pa"), el.poisson_ratio = e.value("poisson_ratio", 0.0), el.density_kg_m3 = e.value("density_kg_m3", 0.0);
   el.yield_strength_Pa = e.value("yield_strength_Pa", 0.0), el.hardening_ratio = e.value("hardening_ratio", 0.0);
@@ -98,19 +111,25 @@ StructureRecord structure_from_json(const json& j, const std::string& where) {
       s.nodes_m.push_back(n.get<std::vector<double>>());
     }
     s.node_names = j.value("node_names", std::vector<std::string>(s.nodes_m.size()));
+    if (s.node_names.size() != s.nodes_m.size()) throw std::out_of_range("node_names and nodes_m differ in length");
     for (const auto& e : j.at("elements")) s.elements.push_back(element_from(e, s.dimension, s.nodes_m.size()));
     for (const auto& m : j.at("members")) {
-      MemberRecord mb{m.at("name"), m.at("material"), m.at("first_element"), m.at("elements")};
+      MemberRecord mb{m.at("name"), m.at("material"), index_at(m, "first_element"), index_at(m, "elements")};
       if (mb.first_element < 0 || mb.elements < 1 || mb.first_element + mb.elements > int(s.elements.size()))
         throw std::out_of_range("member element range");
       s.members.push_back(mb);
     }
     for (const auto& d : j.at("supports")) {
-      SupportRecord sp{d.at("node"), d.value("type", std::string()), d.at("series"), d.at("node_index"), d.value("fixed", std::vector<bool>())};
+      SupportRecord sp{d.at("node"), d.value("type", std::string()), d.at("series"), index_at(d, "node_index"),
+                       d.value("fixed", std::vector<bool>(3 * (s.dimension - 1), false))};
       if (sp.node_index < 0 || sp.node_index >= int(s.nodes_m.size())) throw std::out_of_range("support node index");
+      if (sp.fixed.size() != std::size_t(3 * (s.dimension - 1))) throw std::out_of_range("a support's fixed DOFs");
       s.supports.push_back(sp);
     }
+    for (const ElementRecord& e : s.elements)
+      if (e.member < 0 || e.member >= int(s.members.size())) throw std::out_of_range("element member index");
     s.gravity_m_s2 = j.value("gravity_m_s2", std::vector<double>(s.dimension, 0.0));
+    if (s.gravity_m_s2.size() != std::size_t(s.dimension)) throw std::out_of_range("gravity_m_s2");
     s.plane_thickness_m = j.value("plane_thickness_m", 1.0);
     return s;
   } catch (const std::exception& e) {
@@ -132,12 +151,16 @@ FaceProfileRecord face_profile_from_json(const nlohmann::json& j, const std::str
     FaceProfileRecord f;
     f.members = j.at("members").get<std::vector<std::string>>();
     f.direction = j.at("direction").get<std::vector<double>>();
+    if (f.direction.size() != 2 && f.direction.size() != 3) throw std::out_of_range("direction");
     f.width = j.at("width").get<double>();
-    for (const auto& b : j.at("bins"))
-      f.bins.push_back({b.at("member").get<std::string>(), b.at("element").get<int>(), b.at("from").get<double>(), b.at("to").get<double>(),
-                        b.at("height_from").get<double>(), b.at("height_to").get<double>()});
+    if (!j.at("bins").is_array()) throw std::out_of_range("bins is not an array");
+    for (const auto& b : j.at("bins")) {
+      const double from = b.at("from").get<double>(), to = b.at("to").get<double>();
+      // A face written before heights were recorded stands vertical: its height is its span along the face.
+      f.bins.push_back({b.at("member").get<std::string>(), index_at(b, "element"), from, to, b.value("height_from", from), b.value("height_to", to)});
+    }
     return f;
-  } catch (const nlohmann::json::exception& e) {
+  } catch (const std::exception& e) {
     throw std::runtime_error(where + " is malformed (" + std::string(e.what()) + ")");
   }
 }

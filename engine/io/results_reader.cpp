@@ -336,7 +336,9 @@ void read_documents(const Reader& r, hid_t file, const std::string& path, RunInf
   typed("solid_field", solid_field_from_json, info.solid_field);
   if (const auto it = info.documents.find("design_basis"); it != info.documents.end()) {  // validated: InputError naming the key
     check_json_structure(it->second, path + ": /documents/design_basis");
-    info.design_basis = design_basis_from_json(nlohmann::json::parse(it->second), path, "/documents/design_basis");
+    const nlohmann::json j = nlohmann::json::parse(it->second, nullptr, false);
+    if (j.is_discarded()) r.error("/documents/design_basis is not valid JSON");
+    info.design_basis = design_basis_from_json(j, path, "/documents/design_basis");
     info.documents.erase(it);
   }
 }

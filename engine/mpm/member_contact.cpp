@@ -139,7 +139,6 @@ template <int D> MemberContact<D>::MemberContact(const Grid<D>& g) {
   mx_.assign(static_cast<std::size_t>(g.nnodes() * g.nfields()), Vec<D>::Zero());
 }
 
-// Every active node within reach (section reach + decay layer) of an element, with its nearest element.
 // Lower bounds on a node's distance to an element's surface without projecting. The curve lies in the hull of its
 // Bezier points P0..P3, and every hull point is within dev = max(dist(P1, chord), dist(P2, chord)) of the chord
 // segment P0P3 (distance to a convex set is convex), so |x - curve| >= |x - chord| - dev. A rectangle's depth axis
@@ -154,7 +153,7 @@ template <int D> struct SurfaceBound {
   Vec<D> u = Vec<D>::Zero();
   double u_lo = 0, u_hi = 0, a_max = 0;
 
-  SurfaceBound(const CurveOf<D>& c, const MemberSectionShape& shape, double reach) : hd_max(reach) {
+  SurfaceBound(const CurveOf<D>& c, const MemberSectionShape& shape, double section_reach) : hd_max(section_reach) {
     q0 = c.point(0);
     const Vec<D> q3 = c.point(1), q1 = q0 + c.d1(0) / 3, q2 = q3 - c.d1(1) / 3;
     ch = q3 - q0;
@@ -230,6 +229,7 @@ template <int D> void MemberContact<D>::consider_node(const Scene<D>& s, int e, 
   }
 }
 
+// Every active node within reach (section reach + decay layer) of an element, with its nearest element.
 template <int D> void MemberContact<D>::find_candidates(const Scene<D>& s) {
   const Grid<D>& g = *s.grid;
   const FrameOf<D>& fr = *s.frame;
@@ -354,7 +354,6 @@ template <int D> void MemberContact<D>::apply(Scene<D>& s, const TransferKernels
   }
 }
 
-// f_bc of eqs. (19)-(21) on the candidate nodes, the reactions on the frame and the held masses.
 // A candidate node's geometry this step: its position, the member's velocity and spin at the projection (a scalar in
 // 2D, a vector in 3D), the outward normal from the centre-line towards the node (3D: of the section's surface there)
 // and the half-depth.
@@ -455,6 +454,7 @@ template <int D> void MemberContact<D>::load_field(Scene<D>& s, const Candidate&
   ++stats_.loaded;
 }
 
+// f_bc of eqs. (19)-(21) on the candidate nodes, the reactions on the frame and the held masses.
 template <int D> void MemberContact<D>::boundary_forces(Scene<D>& s, double dt) {
   for (const Candidate& c : cand_) {
     const NodeGeometry<D> geo = geometry(s, c);

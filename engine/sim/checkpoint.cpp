@@ -12,7 +12,9 @@
 
 namespace dmi {
 namespace {
-constexpr char kMagic[8] = {'D', 'M', 'I', 'C', 'K', 'P', 'T', 'A'};  // 2: particles carry their surface reach; 3: member contact's loaded nodes, the viscous factor; 4: its unknowns; 5: bodies' ranges, inflows; 6: the viscous state without a factor; 7: bodies rigid for the moment, the rigid states whole; 8: the particles' tiles (the binning kept between steps); 9: the rigid_when_free bodies' last gaps; A: fluids' volume relaxation energy
+// The last character is the layout's version: raised whenever what a checkpoint holds, or its scenario fingerprint,
+// changes, so that an older checkpoint is refused as such.
+constexpr char kMagic[8] = {'D', 'M', 'I', 'C', 'K', 'P', 'T', 'B'};
 }
 
 std::uint64_t fnv1a(const std::string& bytes, std::uint64_t h) {

@@ -76,7 +76,8 @@ TEST(FibreBeam, StateConvergesUnderLargeReversingIncrements) {
   for (int history = 0; history < 50; ++history) {
     FibreBeam<1> b(Section::rectangle(h, h), 0, 1, L, law, 5);
     for (int step = 0; step < 5; ++step) {
-      FibreBeam<1>::VecV v(unit() * 1e-3 * L, unit() * 20 * ky * L, unit() * 20 * ky * L), q;
+      const double axial = unit() * 1e-3 * L, theta_i = unit() * 20 * ky * L, theta_j = unit() * 20 * ky * L;  // in this order
+      FibreBeam<1>::VecV v(axial, theta_i, theta_j), q;
       ASSERT_NO_THROW(b.respond(v, q, nullptr)) << "history " << history << ", step " << step;
       b.commit(v);
       const double hardening = 2 * law.hardening * law.E * b.record().peak_strain / law.fy;
