@@ -3,6 +3,7 @@
 #include "design/plastic_checks.hpp"
 
 #include "engine/common/json_input.hpp"
+#include "engine/io/records_json.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -95,50 +96,34 @@ json contact_json(const Contact& c) {
               {"loaded_time_s", c.loaded_time_s}, {"threshold", "5 % of the peak"}};
 }
 
-json parse_document(const Results& r, const char* name, const std::string& where) {
-  const auto it = r.info.documents.find(name);
-  if (it == r.info.documents.end()) return nullptr;
-  check_json_structure(it->second, where + ": /documents/" + name);
-  try {
-    return json::parse(it->second);
-  } catch (const json::exception& e) {
-    throw std::runtime_error(where + ": /documents/" + name + " is not valid JSON (" + e.what() + ")");
-  }
-}
-
 // Solid-FE peaks (Lin, Cheng & Tuan, Table 1) and their concrete checks: max principal vs phi_f f_t, min principal vs phi_c alpha f'c.
-json solid_part(const json& doc, const Limits& L, std::vector<Check>& checks, const std::string& where) {
-  if (doc.is_null()) return nullptr;
+json solid_part(const std::optional<SolidCheckRecord>& doc, const Limits& L, std::vector<Check>& checks) {
+  if (!doc) return nullptr;
+  const json record = solid_check_to_json(*doc);  // design.json repeats the model and each case's Gauss-point peaks
   json cases = json::array();
-  try {
-    for (const auto& c : doc.at("cases")) {
-      const json& pk = c.at("peaks");
-      json e{{"name", c.at("name")}, {"type", c.at("type")}, {"load_resultant_N", c.value("load_resultant_N", 0.0)},
-             {"von_mises", pk.at("von_mises").at("gauss")}, {"max_principal", pk.at("max_principal").at("gauss")},
-             {"min_principal", pk.at("min_principal").at("gauss")}, {"max_nodal_base_reaction_N", c.value("max_nodal_base_reaction_N", 0.0)},
-             {"max_displacement_m", c.value("max_displacement_m", 0.0)}};
-      cases.push_back(e);
-      auto add = [&](const char* id, const char* title, double demand, double cap, const json& loc, const char* formula, const char* src) {
-        Check k;
-        k.id = id, k.title = title, k.member = "solid: " + c.at("name").get<std::string>(), k.material = "concrete", k.unit = "Pa";
-        k.level = "information";  // a linear stress under the contact patch: singular under a point load, local
-        k.demand = demand, k.capacity = cap, k.formula = formula, k.source = src;
-        k.x_m = loc.at(0), k.y_m = loc.size() > 2 ? loc.at(2).get<double>() : loc.at(1).get<double>();
-        if (c.contains("time_s")) k.time_s = c["time_s"];
-        k.finish();
-        checks.push_back(k);
-      };
-      const json& mx = pk.at("max_principal").at("gauss");
-      const json& mn = pk.at("min_principal").at("gauss");
-      add("solid_principal_tension", "principal tension", std::max(0.0, mx.at("value_Pa").get<double>()), L.concrete.tensile_capacity(),
-          mx.at("location_m"), "sigma_1 <= phi_f f_t", "Lin, Cheng & Tuan, Table 1; ACI 318-19 21.2.1");
-      add("solid_principal_compression", "principal compression", std::max(0.0, -mn.at("value_Pa").get<double>()),
-          L.concrete.compressive_capacity(), mn.at("location_m"), "|sigma_3| <= phi_c alpha f'c", "ACI 318-19 21.2.1, 22.2.2.4.1");
-    }
-  } catch (const json::exception& e) {
-    throw std::runtime_error(where + ": /documents/solid_check is malformed (" + std::string(e.what()) + ")");
+  for (const SolidCase& c : doc->cases) {
+    const json& pk = record["cases"][cases.size()]["peaks"];
+    cases.push_back({{"name", c.name}, {"type", c.type}, {"load_resultant_N", c.load_resultant_N}, {"von_mises", pk["von_mises"]["gauss"]},
+                     {"max_principal", pk["max_principal"]["gauss"]}, {"min_principal", pk["min_principal"]["gauss"]},
+                     {"max_nodal_base_reaction_N", c.max_nodal_base_reaction_N}, {"max_displacement_m", c.max_displacement_m}});
+    auto add = [&](const char* id, const char* title, double demand, double cap, const std::vector<double>& loc, const char* formula, const char* src) {
+      Check k;
+      k.id = id, k.title = title, k.member = "solid: " + c.name, k.material = "concrete", k.unit = "Pa";
+      k.level = "information";  // a linear stress under the contact patch: singular under a point load, local
+      k.demand = demand, k.capacity = cap, k.formula = formula, k.source = src;
+      k.x_m = loc.at(0), k.y_m = loc.size() > 2 ? loc.at(2) : loc.at(1);
+      if (c.time_s) k.time_s = *c.time_s;
+      k.finish();
+      checks.push_back(k);
+    };
+    const SolidPeak& mx = c.peaks.at("max_principal").at("gauss");
+    const SolidPeak& mn = c.peaks.at("min_principal").at("gauss");
+    add("solid_principal_tension", "principal tension", std::max(0.0, mx.value_Pa), L.concrete.tensile_capacity(), mx.location_m,
+        "sigma_1 <= phi_f f_t", "Lin, Cheng & Tuan, Table 1; ACI 318-19 21.2.1");
+    add("solid_principal_compression", "principal compression", std::max(0.0, -mn.value_Pa), L.concrete.compressive_capacity(), mn.location_m,
+        "|sigma_3| <= phi_c alpha f'c", "ACI 318-19 21.2.1, 22.2.2.4.1");
   }
-  return json{{"model", doc.value("model", json::object())}, {"cases", cases}};
+  return json{{"model", record["model"]}, {"cases", cases}};
 }
 
 double norm(const std::vector<double>& v) {
@@ -221,7 +206,7 @@ void require_documents(const Results& r, const std::string& where) {
   if (members && members->is_array() && !members->empty() && !r.info.structure)
     throw std::runtime_error(where + ": /documents/structure is missing although the scenario has " + std::to_string(members->size()) +
                              " member(s): the file is incomplete or altered; nothing to check");
-  if (sc.contains("solid_check") && !r.info.documents.count("solid_check"))
+  if (sc.contains("solid_check") && !r.info.solid_check)
     throw std::runtime_error(where + ": /documents/solid_check is missing although the scenario has a solid_check: the file is incomplete or altered; nothing to check");
 }
 
@@ -267,7 +252,7 @@ json design_run(const Results& r, const Limits& limits, const std::string& where
   }
   run["contact"] = contact_json(c);
   punching(r.info.peak_contact, members, L, checks);
-  run["solid"] = solid_part(parse_document(r, "solid_check", where), L, checks, where);
+  run["solid"] = solid_part(r.info.solid_check, L, checks);
   run["plastic"] = frame ? plastic_part(r, *frame, members, basis, c, L.steel, checks, where) : json(nullptr);
   run["steel_yield_strength_Pa"] = L.steel.yield_strength;
   json est = json::array();

@@ -165,6 +165,67 @@ FaceProfileRecord face_profile_from_json(const nlohmann::json& j, const std::str
   }
 }
 
+nlohmann::json solid_check_to_json(const SolidCheckRecord& c) {
+  const SolidModel& m = c.model;
+  const nlohmann::json model{{"element", m.element}, {"cells", m.cells}, {"nodes", m.nodes}, {"elements", m.elements}, {"height_m", m.height_m},
+                             {"crest_thickness_m", m.crest_thickness_m}, {"base_thickness_m", m.base_thickness_m}, {"width_m", m.width_m},
+                             {"sloped_face", m.sloped_face}, {"youngs_modulus_Pa", m.youngs_modulus_Pa}, {"poisson_ratio", m.poisson_ratio},
+                             {"axes", m.axes}};
+  nlohmann::json cases = nlohmann::json::array();
+  for (const SolidCase& k : c.cases) {
+    nlohmann::json e{{"name", k.name}, {"type", k.type}};
+    if (k.time_s) e["time_s"] = *k.time_s;
+    if (!k.member.empty()) e["member"] = k.member;
+    if (k.profile) e["profile"] = {{"height_m", k.profile->height_m}, {"pressure_Pa", k.profile->pressure_Pa}};
+    if (!k.note.empty()) e["note"] = k.note;
+    e["load_resultant_N"] = k.load_resultant_N;
+    nlohmann::json peaks = nlohmann::json::object();
+    for (const auto& [measure, at] : k.peaks)
+      for (const auto& [where, p] : at) peaks[measure][where] = {{"value_Pa", p.value_Pa}, {"location_m", p.location_m}};
+    e["peaks"] = peaks;
+    e["max_nodal_base_reaction_N"] = k.max_nodal_base_reaction_N;
+    e["total_base_reaction_N"] = k.total_base_reaction_N;
+    e["max_displacement_m"] = k.max_displacement_m;
+    cases.push_back(e);
+  }
+  return {{"model", model}, {"cases", cases}};
+}
+
+SolidCheckRecord solid_check_from_json(const nlohmann::json& j, const std::string& where) {
+  try {
+    SolidCheckRecord c;
+    const nlohmann::json& m = j.at("model");
+    SolidModel& sm = c.model;
+    sm.element = m.at("element").get<std::string>(), sm.sloped_face = m.value("sloped_face", std::string()), sm.axes = m.value("axes", std::string());
+    sm.cells = m.at("cells").get<std::vector<int>>(), sm.nodes = index_at(m, "nodes"), sm.elements = index_at(m, "elements");
+    sm.height_m = m.at("height_m"), sm.crest_thickness_m = m.at("crest_thickness_m"), sm.base_thickness_m = m.at("base_thickness_m");
+    sm.width_m = m.at("width_m"), sm.youngs_modulus_Pa = m.at("youngs_modulus_Pa"), sm.poisson_ratio = m.at("poisson_ratio");
+    if (!j.at("cases").is_array()) throw std::out_of_range("cases is not an array");
+    for (const auto& e : j.at("cases")) {
+      SolidCase k;
+      k.name = e.at("name").get<std::string>(), k.type = e.at("type").get<std::string>();
+      if (e.contains("time_s")) k.time_s = e.at("time_s").get<double>();
+      k.member = e.value("member", std::string()), k.note = e.value("note", std::string());
+      if (e.contains("profile"))
+        k.profile = SolidProfile{e["profile"].at("height_m").get<std::vector<double>>(), e["profile"].at("pressure_Pa").get<std::vector<double>>()};
+      k.load_resultant_N = e.at("load_resultant_N"), k.max_nodal_base_reaction_N = e.at("max_nodal_base_reaction_N");
+      k.max_displacement_m = e.at("max_displacement_m"), k.total_base_reaction_N = e.at("total_base_reaction_N").get<std::vector<double>>();
+      for (const auto& [measure, at] : e.at("peaks").items())
+        for (const auto& [place, p] : at.items()) {
+          SolidPeak pk{p.at("value_Pa").get<double>(), p.at("location_m").get<std::vector<double>>()};
+          if (pk.location_m.size() != 2 && pk.location_m.size() != 3) throw std::out_of_range("a peak's location");
+          k.peaks[measure][place] = pk;
+        }
+      for (const char* measure : {"von_mises", "max_principal", "min_principal"})
+        if (!k.peaks[measure].count("gauss")) throw std::out_of_range("case '" + k.name + "' has no " + measure + " peak at the Gauss points");
+      c.cases.push_back(std::move(k));
+    }
+    return c;
+  } catch (const std::exception& e) {
+    throw std::runtime_error(where + " is malformed (" + std::string(e.what()) + ")");
+  }
+}
+
 nlohmann::json solid_field_to_json(const SolidFieldRecord& f) {
   nlohmann::json cases = nlohmann::json::array();
   for (const SolidFieldCase& c : f.cases)

@@ -1,6 +1,6 @@
 // The run's typed records as results.h5 stores them, under /documents: the peak contact (core/peak_contact.hpp), the
 // structure as built (core/structure_record.hpp), the struck face's profile (core/face_profile.hpp) and the solid
-// check's field (core/solid_field.hpp).
+// check's answer and field (core/solid_check.hpp, core/solid_field.hpp).
 #pragma once
 #include <string>
 
@@ -8,6 +8,7 @@
 
 #include "core/face_profile.hpp"
 #include "core/peak_contact.hpp"
+#include "core/solid_check.hpp"
 #include "core/solid_field.hpp"
 #include "core/structure_record.hpp"
 
@@ -27,6 +28,10 @@ FaceProfileRecord face_profile_from_json(const nlohmann::json& j, const std::str
 
 // Validated on reading: hex8 in 3D or quad4 in 2D, whole nodes and elements, corners that exist, at least one case,
 // every case's stresses one finite value per node.
+// Validated on reading: every case's peaks present with their places.
+nlohmann::json solid_check_to_json(const SolidCheckRecord& c);
+SolidCheckRecord solid_check_from_json(const nlohmann::json& j, const std::string& where);
+
 nlohmann::json solid_field_to_json(const SolidFieldRecord& f);
 SolidFieldRecord solid_field_from_json(const nlohmann::json& j, const std::string& where);
 

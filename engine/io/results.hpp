@@ -10,6 +10,7 @@
 #include "core/design_basis.hpp"
 #include "core/face_profile.hpp"
 #include "core/peak_contact.hpp"
+#include "core/solid_check.hpp"
 #include "core/solid_field.hpp"
 #include "core/structure_record.hpp"
 
@@ -61,8 +62,9 @@ struct RunInfo {
   std::optional<PeakContact> peak_contact;  // /documents/peak_contact: members touched in the run
   std::optional<StructureRecord> structure;  // /documents/structure: the members as built
   std::optional<FaceProfileRecord> face_profile;  // /documents/face_profile: the struck face's bins
+  std::optional<SolidCheckRecord> solid_check;    // /documents/solid_check: the solid check's peaks per case
   std::optional<SolidFieldRecord> solid_field;    // /documents/solid_field: the solid check's mesh and fields
-  // The other JSON documents (/documents/<name>): "solid_check" (the solid-FE checks' peaks); docs/results.md.
+  // Any other document under /documents, as its text (a file written by a later version); docs/results.md.
   std::map<std::string, std::string> documents;
 };
 

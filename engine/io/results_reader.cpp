@@ -333,6 +333,7 @@ void read_documents(const Reader& r, hid_t file, const std::string& path, RunInf
   typed("peak_contact", peak_contact_from_json, info.peak_contact);
   typed("structure", structure_from_json, info.structure);
   typed("face_profile", face_profile_from_json, info.face_profile);
+  typed("solid_check", solid_check_from_json, info.solid_check);
   typed("solid_field", solid_field_from_json, info.solid_field);
   if (const auto it = info.documents.find("design_basis"); it != info.documents.end()) {  // validated: InputError naming the key
     check_json_structure(it->second, path + ": /documents/design_basis");

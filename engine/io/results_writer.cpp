@@ -223,6 +223,7 @@ struct ResultsWriter::Impl {
     if (info.design_basis) documents["design_basis"] = design_basis_to_json(*info.design_basis).dump();
     if (info.structure) documents["structure"] = structure_to_json(*info.structure).dump();
     if (info.face_profile) documents["face_profile"] = face_profile_to_json(*info.face_profile).dump();
+    if (info.solid_check) documents["solid_check"] = solid_check_to_json(*info.solid_check).dump();
     if (info.solid_field) documents["solid_field"] = solid_field_to_json(*info.solid_field).dump();
     if (!documents.empty()) {
       Handle docs(check_id(H5Gcreate2(file, "documents", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), f, "cannot create group /documents"),

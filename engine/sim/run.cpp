@@ -395,7 +395,7 @@ template <int D> class RunDriver {
     if (s_.solid_check.present) {
       const auto t1 = Clock::now();
       auto docs = run_solid_check(s_, info_.peak_contact ? &*info_.peak_contact : nullptr);
-      info_.documents["solid_check"] = std::move(docs.check), info_.solid_field = std::move(docs.field);
+      info_.solid_check = std::move(docs.check), info_.solid_field = std::move(docs.field);
       info_.numbers["solid_check_seconds"] = std::chrono::duration<double>(Clock::now() - t1).count();
     }
     info_.strings["status"] = "complete";
@@ -487,7 +487,7 @@ RunOutput run_solid_only(const Scenario& s, const RunOptions& o) {
   RunInfo info = make_info(s, o);
   RunOutput out;
   auto docs = run_solid_check(s, nullptr);
-  info.documents["solid_check"] = std::move(docs.check), info.solid_field = std::move(docs.field);
+  info.solid_check = std::move(docs.check), info.solid_field = std::move(docs.field);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   info.numbers["steps"] = 0;
   info.numbers["wall_seconds"] = wall;

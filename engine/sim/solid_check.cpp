@@ -76,15 +76,15 @@ std::pair<std::vector<double>, std::vector<double>> contact_profile(const PeakCo
   return {z, q};
 }
 
-json stress_peaks(const Model& m, const StressField& field) {
-  json out = json::object();
+std::map<std::string, std::map<std::string, SolidPeak>> stress_peaks(const Model& m, const StressField& field) {
+  std::map<std::string, std::map<std::string, SolidPeak>> out;
   const std::vector<Measure> ms = {Measure::von_mises, Measure::max_principal, Measure::min_principal, Measure::max_shear};
   const char* keys[] = {"von_mises", "max_principal", "min_principal", "max_shear"};
   for (const auto& [loc, where] : {std::pair{Location::gauss, "gauss"}, std::pair{Location::centroid, "centroid"}, std::pair{Location::node, "node"}}) {
     const std::vector<Peak> pk = peaks(field, ms, loc);
     for (std::size_t k = 0; k < ms.size(); ++k) {
       const Eigen::VectorXd x = point_coordinates(m.mesh, loc, pk[k].index);
-      out[keys[k]][where] = {{"value_Pa", measure(field.at(loc)[pk[k].index], ms[k])}, {"location_m", std::vector<double>(x.data(), x.data() + x.size())}};
+      out[keys[k]][where] = {measure(field.at(loc)[pk[k].index], ms[k]), std::vector<double>(x.data(), x.data() + x.size())};
     }
   }
   return out;
@@ -167,7 +167,7 @@ void given_load(const Model& m, const SolidCheckConfig& c, const SolidLoadConfig
 
 // The simulation's contact loads at their peak on one member, binned by height into a pressure profile on the face;
 // in 3D turned about its centroid into a round patch with the simulation's resultant (or spread uniformly across).
-void simulation_load(const Scenario& s, const Model& m, const SolidLoadConfig& l, std::size_t i, const PeakContact* contact, json& entry,
+void simulation_load(const Scenario& s, const Model& m, const SolidLoadConfig& l, std::size_t i, const PeakContact* contact, SolidCase& entry,
                      Eigen::VectorXd& f) {
   const SolidCheckConfig& c = s.solid_check;
   if (!contact)
@@ -176,11 +176,11 @@ void simulation_load(const Scenario& s, const Model& m, const SolidLoadConfig& l
   const std::string member = l.member.empty() ? s.structure.members.front().name : l.member;
   double resultant = 0;
   const auto [z, q] = contact_profile(*contact, member, s.grid.cell_size, c.width, c.height, resultant);
-  entry["time_s"] = contact->time;
-  entry["member"] = member;
-  entry["profile"] = {{"height_m", z}, {"pressure_Pa", q}};
+  entry.time_s = contact->time;
+  entry.member = member;
+  entry.profile = SolidProfile{z, q};
   if (z.size() < 2 || !(std::abs(resultant) > 0)) {
-    entry["note"] = "no horizontal contact load on the member at the governing instant";
+    entry.note = "no horizontal contact load on the member at the governing instant";
   } else if (m.mesh.dim == 2 || l.spread == "uniform") {
     add_pressure_profile(m.mesh, m.mat, Face::upstream, z, q, f);
   } else {  // a round patch: the vertical profile, symmetrised about its centroid, turned about it
@@ -201,7 +201,7 @@ void simulation_load(const Scenario& s, const Model& m, const SolidLoadConfig& l
 }
 
 // A load case's answer: its resultant, stress peaks, base reactions and largest displacement.
-void record_case(const Model& m, const Eigen::VectorXd& f, const StaticSolution& sol, const StressField& field, json& entry) {
+void record_case(const Model& m, const Eigen::VectorXd& f, const StaticSolution& sol, const StressField& field, SolidCase& entry) {
   const int dim = m.mesh.dim;
   double fx = 0;
   for (int n = 0; n < m.mesh.n_nodes(); ++n) fx += f[dim * n];
@@ -209,11 +209,11 @@ void record_case(const Model& m, const Eigen::VectorXd& f, const StaticSolution&
   for (int n : m.base) rmax = std::max(rmax, sol.reaction.segment(dim * n, dim).norm());
   for (int n = 0; n < m.mesh.n_nodes(); ++n) umax = std::max(umax, sol.u.segment(dim * n, dim).norm());
   const Eigen::VectorXd total = total_reaction(m.mesh, sol.reaction, m.base);
-  entry["load_resultant_N"] = fx;
-  entry["peaks"] = stress_peaks(m, field);
-  entry["max_nodal_base_reaction_N"] = rmax;
-  entry["total_base_reaction_N"] = std::vector<double>(total.data(), total.data() + total.size());
-  entry["max_displacement_m"] = umax;
+  entry.load_resultant_N = fx;
+  entry.peaks = stress_peaks(m, field);
+  entry.max_nodal_base_reaction_N = rmax;
+  entry.total_base_reaction_N.assign(total.data(), total.data() + total.size());
+  entry.max_displacement_m = umax;
 }
 
 // The mesh and the load cases' fields, for the pictures.
@@ -235,12 +235,13 @@ SolidCheckDocuments run_solid_check(const Scenario& s, const PeakContact* contac
   const std::shared_ptr<const Factorised> fm = factorised(c);
   const Model& m = fm->m;
   const int dim = m.mesh.dim;
-  json cases = json::array();
+  SolidCheckRecord check;
   std::vector<SolidFieldCase> field_cases;
   for (std::size_t i = 0; i < c.loads.size(); ++i) {
     const SolidLoadConfig& l = c.loads[i];
     Eigen::VectorXd f = Eigen::VectorXd::Zero(m.mesh.n_dofs());
-    json entry{{"name", l.name}, {"type", l.type}};
+    SolidCase entry;
+    entry.name = l.name, entry.type = l.type;
     if (l.type == "point" || l.type == "patch")
       given_load(m, c, l, f);
     else
@@ -248,14 +249,16 @@ SolidCheckDocuments run_solid_check(const Scenario& s, const PeakContact* contac
     const StaticSolution sol = fm->solver.solve(f);
     const StressField field = recover_stress(m.mesh, m.mat, sol.u);
     record_case(m, f, sol, field, entry);
-    cases.push_back(entry);
+    check.cases.push_back(std::move(entry));
     field_cases.push_back(field_case(l.name, sol.u, field));
   }
-  json model{{"element", c.element}, {"cells", c.cells}, {"nodes", m.mesh.n_nodes()}, {"elements", m.mesh.n_elements()},
-             {"height_m", c.height}, {"crest_thickness_m", c.crest_thickness}, {"base_thickness_m", c.base_thickness},
-             {"width_m", c.width}, {"sloped_face", c.sloped_face}, {"youngs_modulus_Pa", c.youngs_modulus}, {"poisson_ratio", c.poisson_ratio},
-             {"axes", dim == 3 ? "x through the thickness (downstream), y across the face, z up" : "x through the thickness (downstream), z up"}};
-  return {json{{"model", model}, {"cases", cases}}.dump(), solid_field(m, model["axes"].get<std::string>(), std::move(field_cases))};
+  SolidModel& model = check.model;
+  model.element = c.element, model.cells = c.cells, model.nodes = m.mesh.n_nodes(), model.elements = m.mesh.n_elements();
+  model.height_m = c.height, model.crest_thickness_m = c.crest_thickness, model.base_thickness_m = c.base_thickness, model.width_m = c.width;
+  model.sloped_face = c.sloped_face, model.youngs_modulus_Pa = c.youngs_modulus, model.poisson_ratio = c.poisson_ratio;
+  model.axes = dim == 3 ? "x through the thickness (downstream), y across the face, z up" : "x through the thickness (downstream), z up";
+  SolidFieldRecord field = solid_field(m, model.axes, std::move(field_cases));
+  return {std::move(check), std::move(field)};
 }
 
 }  // namespace dmi

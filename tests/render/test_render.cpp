@@ -416,13 +416,13 @@ TEST(RenderSolid, TableOnePictureStatesThePeaksOfTheCheck) {
   EXPECT_EQ(p.w, 1200);
   EXPECT_EQ(p.h, 600);
   EXPECT_GT(p.colours, 100u);
-  // The case drawn is the one of largest nodal principal tension; its peaks agree with the solid_check document.
-  const json check = json::parse(runs[0].results.info.documents.at("solid_check"));
+  // The case drawn is the one of largest nodal principal tension; its peaks agree with the solid check record.
+  ASSERT_TRUE(runs[0].results.info.solid_check);
   double best = -1, vm = 0;
   std::string name;
-  for (const auto& c : check["cases"]) {
-    const double s1 = c["peaks"]["max_principal"]["node"]["value_Pa"];
-    if (s1 > best) best = s1, vm = c["peaks"]["von_mises"]["node"]["value_Pa"], name = c["name"];
+  for (const auto& c : runs[0].results.info.solid_check->cases) {
+    const double s1 = c.peaks.at("max_principal").at("node").value_Pa;
+    if (s1 > best) best = s1, vm = c.peaks.at("von_mises").at("node").value_Pa, name = c.name;
   }
   EXPECT_EQ(pic->case_name, name);
   EXPECT_NEAR(pic->principal_max / best, 1.0, 1e-5);  // the field holds 6 significant digits

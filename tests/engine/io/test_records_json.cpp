@@ -68,5 +68,19 @@ TEST(RecordsJson, FaceWithoutHeightsStandsVertical) {
   EXPECT_TRUE(refused([&] { face_profile_from_json(bad, "/documents/x"); }));
 }
 
+TEST(RecordsJson, SolidCheckNeedsItsGaussPointPeaks) {
+  SolidCheckRecord c;
+  c.model.element = "quad4", c.model.cells = {4, 8};
+  SolidCase k;
+  k.name = "impact", k.type = "point", k.total_base_reaction_N = {1, 0};
+  for (const char* m : {"von_mises", "max_principal", "min_principal"}) k.peaks[m]["gauss"] = {1e6, {0.1, 0.2}};
+  c.cases = {k};
+  const json good = solid_check_to_json(c);
+  EXPECT_EQ(solid_check_from_json(good, "/documents/x").cases.at(0).peaks.at("max_principal").at("gauss").value_Pa, 1e6);
+  json bad = good;
+  bad["cases"][0]["peaks"].erase("min_principal");
+  EXPECT_TRUE(refused([&] { solid_check_from_json(bad, "/documents/x"); }));
+}
+
 }  // namespace
 }  // namespace dmi
