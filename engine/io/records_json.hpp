@@ -1,6 +1,6 @@
 // The run's typed records as results.h5 stores them, under /documents: the peak contact (core/peak_contact.hpp), the
 // structure as built (core/structure_record.hpp), the struck face's profile (core/face_profile.hpp) and the solid
-// check's answer and field (core/solid_check.hpp, core/solid_field.hpp).
+// check's answer and field (core/solid_check_record.hpp, core/solid_field.hpp).
 #pragma once
 #include <string>
 
@@ -8,7 +8,7 @@
 
 #include "core/face_profile.hpp"
 #include "core/peak_contact.hpp"
-#include "core/solid_check.hpp"
+#include "core/solid_check_record.hpp"
 #include "core/solid_field.hpp"
 #include "core/structure_record.hpp"
 

@@ -10,7 +10,7 @@
 #include "core/design_basis.hpp"
 #include "core/face_profile.hpp"
 #include "core/peak_contact.hpp"
-#include "core/solid_check.hpp"
+#include "core/solid_check_record.hpp"
 #include "core/solid_field.hpp"
 #include "core/structure_record.hpp"
 

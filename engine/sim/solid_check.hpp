@@ -13,14 +13,14 @@
 #include <string>
 
 #include "core/peak_contact.hpp"
-#include "core/solid_check.hpp"
+#include "core/solid_check_record.hpp"
 #include "core/solid_field.hpp"
 #include "engine/scenario/config.hpp"
 
 namespace dmi {
 
 struct SolidCheckDocuments {
-  SolidCheckRecord check;  // the model and the peaks per case (core/solid_check.hpp; the design checks read this)
+  SolidCheckRecord check;  // the model and the peaks per case (core/solid_check_record.hpp; the design checks read this)
   SolidFieldRecord field;  // the mesh and per case the nodal fields (core/solid_field.hpp; the pictures read this)
 };
 
