@@ -41,10 +41,10 @@ void print_grid_study(const nlohmann::json& fine) {
 // Restarted, every level continues from its own checkpoints (or keeps its complete results), variant by variant as
 // simulate() decides; a level with nothing to resume (it never started: the levels run in turn on one core, coarsest
 // first) starts afresh. Only a study with nothing to resume at any level is refused, as a run is.
-void check_study_resumable(const SimulateRequest& r) {
-  bool any = resumable(r, r.out);
+void check_study_resumable(const SimulateRequest& r, const std::vector<ScenarioVariant>& variants) {
+  bool any = resumable(variants, r.out);
   if (const fs::path levels = fs::path(r.out) / "grid_study"; fs::is_directory(levels))
-    for (const auto& e : fs::directory_iterator(levels)) any = any || (e.is_directory() && resumable(r, e.path().string()));
+    for (const auto& e : fs::directory_iterator(levels)) any = any || (e.is_directory() && resumable(variants, e.path().string()));
   if (!any)
     throw InputError(r.out + ": --restart: no checkpoint.dmi to continue from at any level of the grid study (it finished or was never "
                      "started here); run without --restart to start afresh");
@@ -74,13 +74,13 @@ int grid_study_chain(const ChainRequest& c) {
                 "(particles ~ h^-%d, steps ~ h^-1: the coarser runs cost %.2f and %.2f of it)%s\n",
                 h[0], h[1], h[2], ratio, 1 + c1 + c2, h[0], dim, c1, c2,
                 overlap ? "; the coarser two run beside it at low priority, on the cores it leaves idle" : "");
-  if (rq.restart.restart) check_study_resumable(rq);
+  if (rq.restart.restart) check_study_resumable(rq, variants);
   // --stop-after counts the finest level's steps only.
   const auto level_run = [&](const std::string& scen, const std::string& dir, int g) {
     std::vector<std::string> written;
     SimulateRequest lr = rq;
     lr.file = scen, lr.out = dir, lr.quiet = rq.quiet || g > 0;
-    lr.restart.restart = rq.restart.restart && resumable(lr, dir);
+    lr.restart.restart = rq.restart.restart && resumable(variants, dir);  // every level has the same variants
     if (g > 0) lr.restart.stop_after = 0;
     simulate(lr, &written);
     return written;

@@ -66,8 +66,7 @@ ProgressMode progress_mode(bool quiet, const std::string& p) {
   return ProgressMode::automatic;
 }
 
-bool resumable(const SimulateRequest& r, const std::string& dir) {
-  const std::vector<ScenarioVariant> variants = load_scenario_variants(r.file);
+bool resumable(const std::vector<ScenarioVariant>& variants, const std::string& dir) {
   return std::any_of(variants.begin(), variants.end(), [&](const ScenarioVariant& v) { return run_state(variant_dir(dir, v)) != RunState::absent; });
 }
 

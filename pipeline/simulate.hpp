@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/scenario/scenario.hpp"
 #include "engine/sim/progress.hpp"
 
 namespace dmi::pipeline {
@@ -30,7 +31,7 @@ ProgressMode progress_mode(bool quiet, const std::string& progress);
 // files. Throws InputError (bad scenario, --restart with nothing to resume, a kept result of another scenario).
 void simulate(const SimulateRequest& r, std::vector<std::string>* written = nullptr);
 
-// Whether --restart finds anything to resume for the variants of a scenario in dir.
-bool resumable(const SimulateRequest& r, const std::string& dir);
+// Whether --restart finds anything to resume for these variants in dir.
+bool resumable(const std::vector<ScenarioVariant>& variants, const std::string& dir);
 
 }  // namespace dmi::pipeline
