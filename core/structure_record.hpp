@@ -9,9 +9,10 @@
 namespace dmi {
 
 struct SectionRecord {
-  std::string kind;  // rectangle | tapered_rectangle | pipe
-  double diameter_m = 0, wall_thickness_m = 0;                // pipe
-  double width_m = 0, depth_start_m = 0, depth_end_m = 0;     // rectangles
+  std::string kind;  // rectangle | tapered_rectangle | pipe | box | i_section
+  double diameter_m = 0, wall_thickness_m = 0;                // pipe (box: wall_thickness_m)
+  double width_m = 0, depth_start_m = 0, depth_end_m = 0;     // rectangles, box, i_section (width: the flanges')
+  double flange_thickness_m = 0, web_thickness_m = 0;         // i_section
 };
 
 struct ElementRecord {

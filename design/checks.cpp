@@ -1,6 +1,7 @@
 #include "design/checks.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -67,6 +68,53 @@ double chs_torsion_resistance(double D, double t, double fy_Pa, double gamma_M0)
 double chs_shear_resistance_with_torsion(double T, double D, double t, double fy_Pa, double gamma_M0) {
   // tau_t,Ed / (f_y / (sqrt 3 gamma_M0)) = (|T| / W_t) / (T_Rd / W_t) = |T| / T_Rd
   return std::max(0.0, 1 - std::abs(T) / chs_torsion_resistance(D, t, fy_Pa, gamma_M0)) * chs_shear_resistance(D, t, fy_Pa, gamma_M0);
+}
+
+namespace {
+struct Plate {
+  double ratio, class1, class2, class3;  // c/t and its limits over eps
+};
+// The two plates that govern a box or I section's class (flanges in compression, webs in bending).
+std::array<Plate, 2> flanged_plates(const Section& s) {
+  const double b = s.width(0), h = s.depth(0), tf = s.wall_thickness(), tw = s.web_thickness();
+  if (s.kind() == SectionKind::box) return {Plate{(b - 3 * tf) / tf, 33, 38, 42}, Plate{(h - 3 * tw) / tw, 72, 83, 124}};
+  return {Plate{0.5 * (b - tw) / tf, 9, 10, 14}, Plate{(h - 2 * tf) / tw, 72, 83, 124}};
+}
+}  // namespace
+
+double flanged_class_ratio(const Section& s, double fy_Pa, int cls) {
+  const double eps = std::sqrt(235e6 / fy_Pa);
+  double r = 0;
+  for (const Plate& p : flanged_plates(s)) r = std::max(r, p.ratio / ((cls == 1 ? p.class1 : cls == 2 ? p.class2 : p.class3) * eps));
+  return r;
+}
+
+int flanged_class(const Section& s, double fy_Pa) {
+  const double eps = std::sqrt(235e6 / fy_Pa);
+  int c = 1;
+  for (const Plate& p : flanged_plates(s))
+    c = std::max(c, p.ratio <= p.class1 * eps ? 1 : p.ratio <= p.class2 * eps ? 2 : p.ratio <= p.class3 * eps ? 3 : 4);
+  return c;
+}
+
+double flanged_interaction(double N, double in_plane, double out_of_plane, const Section& s, double fy_Pa, double gamma_M0) {
+  const double f = fy_Pa / gamma_M0;
+  const bool plastic = flanged_class(s, fy_Pa) <= 2;
+  const double Wz = plastic ? s.plastic_modulus(0) : s.inertia(0) / s.half_depth(0);
+  const double Wy = plastic ? s.plastic_modulus_y(0) : s.inertia_y(0) / (0.5 * s.width(0));
+  return std::abs(N) / (s.area(0) * f) + std::abs(in_plane) / (Wz * f) + std::abs(out_of_plane) / (Wy * f);
+}
+
+double flanged_shear_resistance(const Section& s, bool along_web, double fy_Pa, double gamma_M0) {
+  const double b = s.width(0), h = s.depth(0), A = s.area(0);
+  double Av = 0;
+  if (s.kind() == SectionKind::box) Av = A * (along_web ? h : b) / (b + h);
+  else Av = along_web ? (h - 2 * s.wall_thickness()) * s.web_thickness() : 2 * b * s.wall_thickness();
+  return Av * fy_Pa / std::sqrt(3.0) / gamma_M0;
+}
+
+double flanged_torsion_resistance(const Section& s, double fy_Pa, double gamma_M0) {
+  return s.torsion_modulus(0) * fy_Pa / std::sqrt(3.0) / gamma_M0;
 }
 
 double buckling_imperfection(const std::string& curve) {

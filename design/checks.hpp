@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/structure/section.hpp"
+
 namespace dmi::design {
 
 // One check. utilisation = demand / capacity; passed when utilisation <= 1.
@@ -78,6 +80,24 @@ double chs_torsion_resistance(double D, double t, double fy_Pa, double gamma_M0)
 // Shear resistance of a structural hollow section under torsion, EN 1993-1-1 6.2.7(9) eq. 6.28:
 // V_pl,T,Rd = [1 - tau_t,Ed / (f_y / (sqrt 3 gamma_M0))] V_pl,Rd, tau_t,Ed = |T| / W_t (not below 0), N.
 double chs_shear_resistance_with_torsion(double T, double D, double t, double fy_Pa, double gamma_M0);
+
+// --- Steel box and I sections (EN 1993-1-1; square corners, no root fillets) ------------------------------------------
+// The section's plates against the class-3 limits of Table 5.2 (eps = sqrt(235 / f_y[MPa])), the flanges in compression
+// and the webs in bending: a box's walls as internal parts, c = b - 3t and h - 3t (the Table's note for RHS), 42 eps and
+// 124 eps; an I's outstand flanges c = (b - t_w) / 2 over t_f, 14 eps, and its web c = h - 2 t_f over t_w, 124 eps. The
+// largest ratio of a plate's c/t to its limit for class `cls` (1, 2 or 3; <= 1: that class or better), the limits of
+// classes 1 and 2 box 33 / 38 eps and 72 / 83 eps, I 9 / 10 eps and 72 / 83 eps; and the class (1 to 4).
+double flanged_class_ratio(const Section& s, double fy_Pa, int cls);
+int flanged_class(const Section& s, double fy_Pa);
+// Linear interaction N_Ed / N_Rd + M_y'Ed / M_y',Rd + M_z'Ed / M_z',Rd (EN 1993-1-1 6.2.1(7) eq. 6.2), the moment
+// resistances plastic for class 1-2 and elastic for class 3 (6.2.5(2)): `in_plane` the moment in the plane of the web(s),
+// `out_of_plane` the other (0 in a plane frame).
+double flanged_interaction(double N, double in_plane, double out_of_plane, const Section& s, double fy_Pa, double gamma_M0);
+// Plastic shear resistance A_v f_y / (sqrt 3 gamma_M0) (eq. 6.18), A_v along the web(s) A h / (b + h) (box, 6.2.6(3)(c))
+// or h_w t_w (I, (d)), across them A b / (b + h) (box) or the flanges 2 b t_f (I), N.
+double flanged_shear_resistance(const Section& s, bool along_web, double fy_Pa, double gamma_M0);
+// St Venant torsional resistance W_t f_y / (sqrt 3 gamma_M0) (6.2.7, elastic), W_t of the section (Bredt's for a box), N m.
+double flanged_torsion_resistance(const Section& s, double fy_Pa, double gamma_M0);
 
 // --- Steel members that yield (EN 1993-1-1 6.3; DNV-RP-C204) -------------------------------------------------------
 // Imperfection factor alpha of a buckling curve a0, a, b, c, d (EN 1993-1-1 Table 6.1: 0.13, 0.21, 0.34, 0.49, 0.76).

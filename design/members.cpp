@@ -36,6 +36,8 @@ std::string classify(const std::string& member, const std::string& material, con
 
 Section section_of(const SectionRecord& s) {
   if (s.kind == "pipe") return Section::pipe(s.diameter_m, s.wall_thickness_m);
+  if (s.kind == "box") return Section::box(s.width_m, s.depth_start_m, s.wall_thickness_m);
+  if (s.kind == "i_section") return Section::i_section(s.width_m, s.depth_start_m, s.flange_thickness_m, s.web_thickness_m);
   return s.kind == "tapered_rectangle" ? Section::tapered(s.width_m, s.depth_start_m, s.depth_end_m) : Section::rectangle(s.width_m, s.depth_start_m);
 }
 
@@ -98,6 +100,11 @@ std::vector<Demand> space_demands(const Section& sec, double s, const SpaceSecti
     out.push_back({"steel_interaction", chs_interaction(sf.N, M, D, t, S.yield_strength, S.gamma_M0), 1.0});
     out.push_back({"steel_shear", V, chs_shear_resistance_with_torsion(sf.T, D, t, S.yield_strength, S.gamma_M0)});
     out.push_back({"steel_torsion", std::abs(sf.T), chs_torsion_resistance(D, t, S.yield_strength, S.gamma_M0)});
+  } else if (sec.thin_walled()) {  // box and I: the web(s) along y', the moment Mz in their plane
+    const double fy = S.yield_strength, g = S.gamma_M0;
+    out.push_back({"steel_interaction", flanged_interaction(sf.N, sf.Mz, sf.My, sec, fy, g), 1.0});
+    out.push_back({"steel_shear", std::max(std::abs(sf.Vy) / flanged_shear_resistance(sec, true, fy, g), std::abs(sf.Vz) / flanged_shear_resistance(sec, false, fy, g)), 1.0});
+    out.push_back({"steel_torsion", std::abs(sf.T), flanged_torsion_resistance(sec, fy, g)});
   }
   return out;
 }
@@ -119,6 +126,9 @@ std::vector<Demand> plane_demands(const Section& sec, double s, const SectionFor
     const double D = sec.depth(s), t = sec.wall_thickness();
     out.push_back({"steel_interaction", chs_interaction(sf.N, sf.M, D, t, S.yield_strength, S.gamma_M0), 1.0});
     out.push_back({"steel_shear", std::abs(sf.V), chs_shear_resistance(D, t, S.yield_strength, S.gamma_M0)});
+  } else if (sec.thin_walled()) {
+    out.push_back({"steel_interaction", flanged_interaction(sf.N, sf.M, 0, sec, S.yield_strength, S.gamma_M0), 1.0});
+    out.push_back({"steel_shear", std::abs(sf.V), flanged_shear_resistance(sec, true, S.yield_strength, S.gamma_M0)});
   }
   return out;
 }
@@ -205,6 +215,18 @@ Check proto(const std::string& id, const std::string& title, const MemberEnvelop
 }
 
 // Local buckling: the section class of a CHS from D/t (time-independent).
+// A box or I section's plates against the class-3 limits.
+Check flanged_section_class(const MemberEnvelope& env, const Section& sec, const SteelLimits& S) {
+  Check c = proto("steel_section_class", "local buckling (class <= 3)", env, "-",
+                  "largest c/t of flanges (compression) and webs (bending) over its class-3 limit <= 1: box 42 eps and 124 eps, "
+                  "I outstand 14 eps and web 124 eps, eps = sqrt(235/f_y[MPa])",
+                  "EN 1993-1-1 Table 5.2 (sheets 1-2)");
+  c.demand = flanged_class_ratio(sec, S.yield_strength, 3), c.capacity = 1;
+  c.title += ": class " + std::to_string(flanged_class(sec, S.yield_strength));
+  c.finish();
+  return c;
+}
+
 Check section_class(const MemberEnvelope& env, double D, double t_w, const SteelLimits& S) {
   Check c = proto("steel_section_class", "local buckling (class <= 3)", env, "-", "D/t <= 90 eps^2, eps^2 = 235/f_y[MPa]",
                   "EN 1993-1-1 Table 5.2 (sheet 3)");
@@ -220,6 +242,7 @@ void space_member(const Results& r, const Series& ef, const FrameInfo& f, const 
                   MemberEnvelope& env) {
   const bool steel = m.cls == "steel";
   const bool pipe = f.elements[m.first].section.kind() == SectionKind::pipe;
+  const bool flanged = f.elements[m.first].section.thin_walled() && !pipe;  // box or I
   const double D = f.elements[m.first].section.depth(0), t_w = f.elements[m.first].section.wall_thickness();
   const SteelLimits& S = L.steel;
   const Check tension = proto("concrete_flexural_tension", "flexural tension (biaxial)", env, "Pa",
@@ -238,13 +261,22 @@ void space_member(const Results& r, const Series& ef, const FrameInfo& f, const 
                               "EN 1993-1-1 6.2.1(5)");
   const Check mises = proto("steel_von_mises", "von Mises stress (with torsion)", env, "Pa", "sqrt(sigma^2 + 3 tau^2) <= f_y / gamma_M0, tau = T/W_t + shear flow",
                             "EN 1993-1-1 6.2.1(5) eq. 6.1");
-  const Check inter = proto("steel_interaction", "axial + bending resistance", env, "-",
-                            "|N|/N_Rd + |(My, Mz)|/M_Rd <= 1, M_Rd = W_pl (class 1-2) or W_el (3) f_y/gamma_M0 (a CHS bends about the resultant's axis)",
-                            "EN 1993-1-1 6.2.1(7) eq. 6.2, 6.2.5 eqs. 6.13-6.14");
-  const Check shear_s = proto("steel_shear", "shear resistance with torsion", env, "N",
-                              "|(Vy, Vz)| <= V_pl,T,Rd = [1 - tau_t,Ed / (f_y / (sqrt 3 gamma_M0))] A_v f_y / (sqrt 3 gamma_M0), A_v = 2A/pi",
-                              "EN 1993-1-1 6.2.6 eq. 6.18, 6.2.6(3)(g), 6.2.7(9) eq. 6.28");
-  const Check torsion = proto("steel_torsion", "torsional resistance", env, "N m", "|T| <= T_Rd = W_t f_y / (sqrt 3 gamma_M0), W_t = J / (D/2)",
+  const Check inter = flanged ? proto("steel_interaction", "axial + biaxial bending resistance", env, "-",
+                                      "|N|/N_Rd + |Mz|/M_z,Rd + |My|/M_y,Rd <= 1, M_Rd = W_pl (class 1-2) or W_el (3) f_y/gamma_M0 about each axis",
+                                      "EN 1993-1-1 6.2.1(7) eq. 6.2, 6.2.5 eqs. 6.13-6.14")
+                              : proto("steel_interaction", "axial + bending resistance", env, "-",
+                                      "|N|/N_Rd + |(My, Mz)|/M_Rd <= 1, M_Rd = W_pl (class 1-2) or W_el (3) f_y/gamma_M0 (a CHS bends about the resultant's axis)",
+                                      "EN 1993-1-1 6.2.1(7) eq. 6.2, 6.2.5 eqs. 6.13-6.14");
+  const Check shear_s = flanged ? proto("steel_shear", "shear resistance, each axis", env, "-",
+                                        "max(|Vy|/V_y,Rd, |Vz|/V_z,Rd) <= 1, V_Rd = A_v f_y / (sqrt 3 gamma_M0), A_v along the web(s) A h/(b + h) (box) "
+                                        "or h_w t_w (I), across A b/(b + h) (box) or 2 b t_f (I)",
+                                        "EN 1993-1-1 6.2.6 eq. 6.18, 6.2.6(3)(c)-(d)")
+                                : proto("steel_shear", "shear resistance with torsion", env, "N",
+                                        "|(Vy, Vz)| <= V_pl,T,Rd = [1 - tau_t,Ed / (f_y / (sqrt 3 gamma_M0))] A_v f_y / (sqrt 3 gamma_M0), A_v = 2A/pi",
+                                        "EN 1993-1-1 6.2.6 eq. 6.18, 6.2.6(3)(g), 6.2.7(9) eq. 6.28");
+  const Check torsion = proto("steel_torsion", "torsional resistance", env, "N m",
+                              flanged ? "|T| <= T_Rd = W_t f_y / (sqrt 3 gamma_M0), W_t = 2 A_m t (box, Bredt) or J / t_max (I)"
+                                      : "|T| <= T_Rd = W_t f_y / (sqrt 3 gamma_M0), W_t = J / (D/2)",
                               "EN 1993-1-1 6.2.7(1) eq. 6.23 (elastic St Venant resistance)");
   const std::map<std::string, const Check*> protos{{tension.id, &tension}, {compr.id, &compr}, {principal.id, &principal}, {shear_c.id, &shear_c},
                                                    {elastic.id, &elastic}, {mises.id, &mises}, {inter.id, &inter}, {shear_s.id, &shear_s},
@@ -279,6 +311,7 @@ void space_member(const Results& r, const Series& ef, const FrameInfo& f, const 
   env.checks = tracker.result();
   for (const Check& c : at_rest.result()) env.checks.push_back(c);
   if (steel && pipe) env.checks.push_back(section_class(env, D, t_w, S));
+  if (steel && flanged) env.checks.push_back(flanged_section_class(env, f.elements[m.first].section, S));
 }
 
 }  // namespace
@@ -308,6 +341,7 @@ void plane_member(const Results& r, const Series& ef_series, const FrameInfo& f,
   const SteelLimits& S = L.steel;
   const bool steel = m.cls == "steel";
   const bool pipe = f.elements[m.first].section.kind() == SectionKind::pipe;
+  const bool flanged = f.elements[m.first].section.thin_walled() && !pipe;  // box or I
   const double D = f.elements[m.first].section.depth(0), t_w = f.elements[m.first].section.wall_thickness();
   // Capacities that do not vary in time (docs/design-checks.md).
   const Check tension = proto("concrete_flexural_tension", "flexural tension", env, "Pa", "sigma_t = N/A + |M| c/I <= phi_f f_t",
@@ -322,8 +356,10 @@ void plane_member(const Results& r, const Series& ef_series, const FrameInfo& f,
   const Check mises = proto("steel_von_mises", "von Mises stress", env, "Pa", "sqrt(sigma^2 + 3 tau^2) <= f_y / gamma_M0", "EN 1993-1-1 6.2.1(5) eq. 6.1");
   const Check inter = proto("steel_interaction", "axial + bending resistance", env, "-", "|N|/N_Rd + |M|/M_Rd <= 1, M_Rd = W_pl (class 1-2) or W_el (3) f_y/gamma_M0",
                             "EN 1993-1-1 6.2.1(7) eq. 6.2, 6.2.5 eqs. 6.13-6.14");
-  const Check shear_s = proto("steel_shear", "shear resistance", env, "N", "V <= A_v f_y / (sqrt 3 gamma_M0), A_v = 2A/pi (CHS)",
-                              "EN 1993-1-1 6.2.6 eq. 6.18, 6.2.6(3)(g)");
+  const Check shear_s = proto("steel_shear", "shear resistance", env, "N",
+                              flanged ? "V <= A_v f_y / (sqrt 3 gamma_M0), A_v = A h/(b + h) (box) or h_w t_w (I)"
+                                      : "V <= A_v f_y / (sqrt 3 gamma_M0), A_v = 2A/pi (CHS)",
+                              flanged ? "EN 1993-1-1 6.2.6 eq. 6.18, 6.2.6(3)(c)-(d)" : "EN 1993-1-1 6.2.6 eq. 6.18, 6.2.6(3)(g)");
   const std::map<std::string, const Check*> protos{{tension.id, &tension}, {compr.id, &compr}, {shear_c.id, &shear_c}, {elastic.id, &elastic},
                                                    {mises.id, &mises}, {inter.id, &inter}, {shear_s.id, &shear_s}};
   CheckTracker tracker, at_rest;
@@ -356,6 +392,7 @@ void plane_member(const Results& r, const Series& ef_series, const FrameInfo& f,
   env.checks = tracker.result();
   for (const Check& c : at_rest.result()) env.checks.push_back(c);
   if (steel && pipe) env.checks.push_back(section_class(env, D, t_w, S));
+  if (steel && flanged) env.checks.push_back(flanged_section_class(env, f.elements[m.first].section, S));
 }
 
 }  // namespace

@@ -73,7 +73,9 @@ Check buckling_check(const FrameInfo& f, const FrameInfo::Member& m, const Membe
   const FrameInfo::Element& e = f.elements[m.first];
   const Section& sec = e.section;
   const double A = sec.area(0), I = sec.kind() == SectionKind::pipe ? sec.inertia(0) : std::min(sec.inertia(0), sec.inertia_y(0));
-  const std::string curve = sec.kind() == SectionKind::pipe ? S.buckling_curve : "c";  // solid sections: curve c (Table 6.2)
+  // Pipes: the limits' curve; solid, box and I sections curve c (Table 6.2: solid, cold-formed or welded box, welded I
+  // about z-z), about the weaker axis.
+  const std::string curve = sec.kind() == SectionKind::pipe ? S.buckling_curve : "c";
   Check c = base_check("steel_flexural_buckling", "flexural buckling, L_cr = L (curve " + curve + ")", m.name, "N",
                        "N_Ed <= chi A f_y / gamma_M1, chi from lambda = sqrt(A f_y / N_cr), N_cr = pi^2 E I / L^2",
                        "EN 1993-1-1 6.3.1, eqs. 6.46-6.50, Tables 6.1-6.2");
@@ -96,6 +98,7 @@ json residual_drift(const Results& r, const FrameInfo& f, const std::optional<De
   double top = -INFINITY, bottom = INFINITY;
   for (const auto& n : f.nodes) top = std::max(top, n[up]), bottom = std::min(bottom, n[up]);
   const double height = basis && is_set(basis->dam.height_m) ? basis->dam.height_m : top - bottom;
+  if (!(height > 0)) return nullptr;  // a frame without height (a horizontal member) has no drift
   const auto p1 = r.info.numbers.find("frame_period_1");
   const double window = p1 != r.info.numbers.end() ? p1->second : 0.1 * (r.time.back() - r.time.front());
   Residual worst;
@@ -191,6 +194,13 @@ json plastic_part(const Results& r, const FrameInfo& f, const std::vector<Member
       Check cls = base_check("steel_hinge_class", "class 1 where it yields", m.name, "-", "D/t <= 50 eps^2, eps^2 = 235/f_y[MPa]",
                              "EN 1993-1-1 5.6(2) and Table 5.2 (sheet 3)");
       cls.demand = sec.depth(0) / sec.wall_thickness(), cls.capacity = 50 * 235e6 / S.yield_strength;
+      cls.finish();
+      checks.push_back(cls);
+    } else if (p.yielded && sec.thin_walled()) {
+      Check cls = base_check("steel_hinge_class", "class 1 where it yields", m.name, "-",
+                             "largest c/t of flanges and webs over its class-1 limit <= 1: box 33 eps and 72 eps, I outstand 9 eps and web 72 eps",
+                             "EN 1993-1-1 5.6(2) and Table 5.2 (sheets 1-2)");
+      cls.demand = flanged_class_ratio(sec, S.yield_strength, 1), cls.capacity = 1;
       cls.finish();
       checks.push_back(cls);
     }

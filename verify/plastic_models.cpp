@@ -66,6 +66,10 @@ double rectangle_moment_ratio(double b, double h, double r) {
   return moment_ratio(Section::rectangle(b, h), 355e6 / (kE * 0.5 * h), 355e6 * b * h * h / 4, r);
 }
 
+double section_moment_ratio(const Section& s, double r) {
+  return moment_ratio(s, 355e6 / (kE * s.half_depth(0)), 355e6 * s.plastic_modulus(0), r);
+}
+
 double pipe_moment_ratio(double D, double t, double r) {
   const double d = D - 2 * t;
   return moment_ratio(Section::pipe(D, t), 355e6 / (kE * 0.5 * D), 355e6 * (D * D * D - d * d * d) / 6, r);
@@ -172,6 +176,7 @@ ParkesResult parkes_cantilever(double gamma, double energy_ratio, int n, double 
   f.set_velocity(v);
   ParkesResult out;
   out.kinetic = 0.5 * G * V0 * V0;
+  out.elastic_at_collapse = Mp * Mp * L / (6 * EI);
   const double g = gamma;
   out.rigid_plastic = g * G * V0 * V0 * L / (3 * Mp) * (2 * std::log(1 + 1 / (2 * g)) + 1 / (1 + 2 * g));
   // Time: the rigid-plastic response ends at t = G V0 L / (M_p) (1 + ...) ~ twice its first phase; run to 4 times the
@@ -187,6 +192,48 @@ ParkesResult parkes_cantilever(double gamma, double energy_ratio, int n, double 
   }
   out.computed = sum / count;
   out.plastic_work = f.plastic_work();
+  return out;
+}
+
+double SwayHistory::peak() const { return sway.empty() ? NAN : *std::max_element(sway.begin(), sway.end()); }
+
+double SwayHistory::residual(double period) const {
+  double hi = -INFINITY, lo = INFINITY;
+  for (std::size_t k = 0; k < t.size(); ++k)
+    if (t[k] >= t.back() - 1.5 * period) hi = std::max(hi, sway[k]), lo = std::min(lo, sway[k]);
+  return 0.5 * (hi + lo);
+}
+
+SwayHistory cantilever_pulse_sway(const CantileverPulse& p, int n) {
+  FrameModel fm;
+  const Section section = Section::rectangle(p.b, p.d);
+  for (int k = 0; k <= n; ++k) fm.nodes.push_back(Vec2(p.L * k / n, 0));
+  fm.nodes.push_back(Vec2(p.L + p.block_length, 0));
+  for (int k = 0; k < n; ++k) {
+    FrameElementDef e = element(k, k + 1, section, p.fy, 0, p.hardening);
+    e.E = p.E, e.nu = p.nu, e.rho = p.rho, e.steel.E = p.E;
+    fm.elements.push_back(e);
+  }
+  FrameElementDef block = element(n, n + 1, section, 0, 1);  // elastic
+  block.E = p.E, block.nu = p.nu, block.rho = p.block_density(), block.steel = SteelLaw{};
+  fm.elements.push_back(block);
+  fm.members = {{"cantilever", 0, n}, {"block", n, 1}};
+  fix(fm, 0, true, true, true);
+  fm.integrator = FrameIntegrator::newmark;
+  fm.transform = FrameTransform::corotational;
+  fm.mass = MassMatrix::consistent;
+  Frame f(fm);
+  SwayHistory out;
+  out.period = 2 * std::numbers::pi / f.natural_frequencies(1).front();
+  const int steps = static_cast<int>(std::lround(p.duration / p.dt));
+  for (int s = 1; s <= steps; ++s) {
+    const double t = s * p.dt;
+    f.clear_loads();
+    // The push at the step's end (Newmark), across the block (-y'), per metre of it.
+    f.add_distributed_load(n, Vec2(0, -p.load_factor(t) * p.peak_force / p.block_length));
+    f.advance(p.dt);
+    out.t.push_back(t), out.sway.push_back(-f.displacement()(3 * n + 1));
+  }
   return out;
 }
 

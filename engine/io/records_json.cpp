@@ -45,6 +45,8 @@ json section_json(const SectionRecord& c) {
     sec["depth_start_m"] = c.depth_start_m;
     sec["depth_end_m"] = c.depth_end_m;
   }
+  if (c.kind == "box") sec["wall_thickness_m"] = c.wall_thickness_m;
+  if (c.kind == "i_section") sec["flange_thickness_m"] = c.flange_thickness_m, sec["web_thickness_m"] = c.web_thickness_m;
   return sec;
 }
 
@@ -53,8 +55,10 @@ SectionRecord section_from(const json& s) {
   c.kind = s.at("kind").get<std::string>();
   if (c.kind == "pipe") {
     c.diameter_m = s.at("diameter_m"), c.wall_thickness_m = s.at("wall_thickness_m");
-  } else if (c.kind == "rectangle" || c.kind == "tapered_rectangle") {
+  } else if (c.kind == "rectangle" || c.kind == "tapered_rectangle" || c.kind == "box" || c.kind == "i_section") {
     c.width_m = s.at("width_m"), c.depth_start_m = s.at("depth_start_m"), c.depth_end_m = s.at("depth_end_m");
+    if (c.kind == "box") c.wall_thickness_m = s.at("wall_thickness_m");
+    if (c.kind == "i_section") c.flange_thickness_m = s.at("flange_thickness_m"), c.web_thickness_m = s.at("web_thickness_m");
   } else {
     throw std::out_of_range("section kind '" + c.kind + "'");
   }

@@ -113,10 +113,11 @@ enum class FrameIntegratorKind { explicit_euler, newmark };
 enum class FrameInitialState { static_equilibrium, unloaded };
 
 struct SectionConfig {
-  std::string type;                                  // rectangle | pipe | tapered_rectangle
-  double width = 0, depth = 0;                       // m (rectangle; tapered: width)
+  std::string type;                                  // rectangle | pipe | tapered_rectangle | box | i_section
+  double width = 0, depth = 0;                       // m (rectangle, box, i_section: flange width; tapered: width)
   double depth_start = 0, depth_end = 0;             // m (tapered_rectangle)
-  double diameter = 0, wall_thickness = 0;           // m (pipe)
+  double diameter = 0, wall_thickness = 0;           // m (pipe; box: wall)
+  double flange_thickness = 0, web_thickness = 0;    // m (i_section)
 };
 
 struct FrameNodeConfig {

@@ -23,9 +23,10 @@ using schema::nonneg;
 
 void read_section(Obj o, SectionConfig& c) {
   o.string("type", c.type, Spec{.doc = "rectangle (solid, width x depth) | pipe (circular hollow section) | "
-                                       "tapered_rectangle (solid, depth linear from the start to the end node)", .required = true});
-  if (!o.documenting() && c.type != "rectangle" && c.type != "pipe" && c.type != "tapered_rectangle")
-    o.fail("type", nullptr, "rectangle, pipe or tapered_rectangle (got '" + c.type + "')");
+                                       "tapered_rectangle (solid, depth linear from the start to the end node) | box (rectangular hollow "
+                                       "section) | i_section (I or H section, its web in the plane of bending)", .required = true});
+  if (!o.documenting() && c.type != "rectangle" && c.type != "pipe" && c.type != "tapered_rectangle" && c.type != "box" && c.type != "i_section")
+    o.fail("type", nullptr, "rectangle, pipe, tapered_rectangle, box or i_section (got '" + c.type + "')");
   if (o.when("type", c.type, "rectangle")) {
     o.number("width", c.width, positive("m", "out-of-plane width b", true));
     o.number("depth", c.depth, positive("m", "in-plane depth h; the member surfaces are h/2 from the centre line (Lin & Yang 2024 eq. 23)", true));
@@ -40,6 +41,19 @@ void read_section(Obj o, SectionConfig& c) {
     o.number("width", c.width, positive("m", "out-of-plane width b (constant)", true));
     o.number("depth_start", c.depth_start, positive("m", "in-plane depth at the start node", true));
     o.number("depth_end", c.depth_end, positive("m", "in-plane depth at the end node", true));
+  }
+  o.end_when();
+  if (o.when("type", c.type, "box")) {
+    o.number("width", c.width, positive("m", "outer width b (out of plane; 3D: along e3)", true));
+    o.number("depth", c.depth, positive("m", "outer depth h (in-plane; 3D: along e2)", true));
+    o.number("wall_thickness", c.wall_thickness, positive("m", "wall thickness t, the same all round, below half the width and the depth", true));
+  }
+  o.end_when();
+  if (o.when("type", c.type, "i_section")) {
+    o.number("width", c.width, positive("m", "flange width b (out of plane; 3D: along e3)", true));
+    o.number("depth", c.depth, positive("m", "overall depth h (in-plane, along the web; 3D: along e2)", true));
+    o.number("flange_thickness", c.flange_thickness, positive("m", "flange thickness t_f, below half the depth", true));
+    o.number("web_thickness", c.web_thickness, positive("m", "web thickness t_w, below the flange width", true));
   }
   o.end_when();
   o.finish();

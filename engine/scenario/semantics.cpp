@@ -145,6 +145,15 @@ void check_member(const Scenario& s, const std::string& file, const MemberConfig
   if (c.type == "pipe" && c.wall_thickness > 0.5 * c.diameter)
     throw InputError(file, p + "/section/wall_thickness", value_text(c.wall_thickness),
                      "a wall thickness <= diameter / 2 = " + value_text(0.5 * c.diameter) + " m");
+  if (c.type == "box" && !(2 * c.wall_thickness < std::min(c.width, c.depth)))
+    throw InputError(file, p + "/section/wall_thickness", value_text(c.wall_thickness),
+                     "a wall thickness below half the smaller side, " + value_text(0.5 * std::min(c.width, c.depth)) + " m (else the section is solid: type rectangle)");
+  if (c.type == "i_section" && !(2 * c.flange_thickness < c.depth))
+    throw InputError(file, p + "/section/flange_thickness", value_text(c.flange_thickness),
+                     "a flange thickness below half the depth, " + value_text(0.5 * c.depth) + " m");
+  if (c.type == "i_section" && !(c.web_thickness < c.width))
+    throw InputError(file, p + "/section/web_thickness", value_text(c.web_thickness),
+                     "a web thinner than the flanges are wide, " + value_text(c.width) + " m");
 }
 
 std::set<std::string> check_structure(const Scenario& s, const std::string& file, const std::set<std::string>& bodies) {

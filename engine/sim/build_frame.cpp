@@ -8,9 +8,30 @@
 namespace dmi {
 namespace {
 
+SectionRecord section_record(const Section& c) {
+  SectionRecord r;
+  switch (c.kind()) {
+    case SectionKind::pipe: r.kind = "pipe"; break;
+    case SectionKind::tapered_rectangle: r.kind = "tapered_rectangle"; break;
+    case SectionKind::box: r.kind = "box"; break;
+    case SectionKind::i_section: r.kind = "i_section"; break;
+    case SectionKind::rectangle: r.kind = "rectangle"; break;
+  }
+  if (c.kind() == SectionKind::pipe) {
+    r.diameter_m = c.depth(0), r.wall_thickness_m = c.wall_thickness();
+    return r;
+  }
+  r.width_m = c.width(0), r.depth_start_m = c.depth(0), r.depth_end_m = c.depth(1);
+  if (c.kind() == SectionKind::box) r.wall_thickness_m = c.wall_thickness();
+  if (c.kind() == SectionKind::i_section) r.flange_thickness_m = c.wall_thickness(), r.web_thickness_m = c.web_thickness();
+  return r;
+}
+
 Section make_section(const SectionConfig& c) {
   if (c.type == "pipe") return Section::pipe(c.diameter, c.wall_thickness);
   if (c.type == "tapered_rectangle") return Section::tapered(c.width, c.depth_start, c.depth_end);
+  if (c.type == "box") return Section::box(c.width, c.depth, c.wall_thickness);
+  if (c.type == "i_section") return Section::i_section(c.width, c.depth, c.flange_thickness, c.web_thickness);
   return Section::rectangle(c.width, c.depth);
 }
 
@@ -192,11 +213,7 @@ template <class F> StructureRecord structure_record(const Scenario& s, const F& 
     const Section& c = e.section;
     ElementRecord el;
     el.member = e.member, el.i = e.i, el.j = e.j, el.s0 = e.s0, el.s1 = e.s1;
-    el.section.kind = c.kind() == SectionKind::pipe ? "pipe" : c.kind() == SectionKind::tapered_rectangle ? "tapered_rectangle" : "rectangle";
-    if (c.kind() == SectionKind::pipe)
-      el.section.diameter_m = c.depth(0), el.section.wall_thickness_m = c.wall_thickness();
-    else
-      el.section.width_m = c.width(0), el.section.depth_start_m = c.depth(0), el.section.depth_end_m = c.depth(1);
+    el.section = section_record(c);
     el.youngs_modulus_Pa = e.E, el.poisson_ratio = e.nu, el.density_kg_m3 = e.rho;
     if (e.steel.fy > 0) el.yield_strength_Pa = e.steel.fy, el.hardening_ratio = e.steel.hardening;
     if constexpr (space) {

@@ -16,6 +16,16 @@ FibreStresses fibre_stresses(const Section& section, double s, const SectionForc
   r.von_mises_top = std::abs(r.sigma_top);
   r.von_mises_bottom = std::abs(r.sigma_bottom);
   constexpr int kFibres = 21;
+  if (section.thin_walled() && !pipe) {  // box and I: Jourawski's shear stress, and the web's side of each flange
+    const double yw = c - section.wall_thickness();
+    const auto at = [&](double y) {
+      const double sigma = f.N / A - f.M * y / I, tau = std::abs(f.V) * section.shear_flow_stress(s, y);
+      r.von_mises_max = std::max(r.von_mises_max, std::sqrt(sigma * sigma + 3 * tau * tau));
+    };
+    for (int k = 0; k < kFibres; ++k) at((-1 + 2.0 * k / (kFibres - 1)) * c);
+    at(yw * (1 - 1e-12)), at(-yw * (1 - 1e-12));
+    return r;
+  }
   for (int k = 0; k < kFibres; ++k) {
     const double eta = -1 + 2.0 * k / (kFibres - 1), sigma = f.N / A - f.M * eta * c / I;
     const double shape = pipe ? std::sqrt(std::max(0.0, 1 - eta * eta)) : 1 - eta * eta;
@@ -24,6 +34,28 @@ FibreStresses fibre_stresses(const Section& section, double s, const SectionForc
   }
   return r;
 }
+
+namespace {
+
+// Box and I sections in a space frame: the normal stress at the outer corners and along the flanges' faces; the shear
+// of V_y' carried by the web(s) (Jourawski, its peak at the axis) and of V_z' by the flanges (a box's flanges as the
+// webs of the box turned a quarter; an I's two flanges as rectangles, 3/2 V_z' / (2 b t_f)).
+template <class Sample>
+void thin_walled_points(const Section& sec, double s, const SpaceSectionForces& f, Sample&& sample) {
+  const double c = sec.half_depth(s), w = 0.5 * sec.width(s), tf = sec.wall_thickness(), tw = sec.web_thickness();
+  const bool box = sec.kind() == SectionKind::box;
+  const double tz = box ? std::abs(f.Vz) * Section::box(2 * c, 2 * w, tf).shear_stress_factor() / sec.area(s) : 0.75 * std::abs(f.Vz) / (2 * w * tf);
+  const double zw = box ? w - 0.5 * tw : 0.0;  // the webs' mid-planes
+  constexpr int kSide = 11;
+  for (int k = 0; k < kSide; ++k) {
+    const double eta = -1 + 2.0 * k / (kSide - 1);
+    const double y = eta * (c - tf) * (1 - 1e-12), ty = std::abs(f.Vy) * sec.shear_flow_stress(s, y);
+    sample(c, eta * w, tz * (1 - eta * eta)), sample(-c, eta * w, tz * (1 - eta * eta));
+    sample(y, zw, ty), sample(y, -zw, ty);
+  }
+}
+
+}  // namespace
 
 SpaceFibreStresses space_fibre_stresses(const Section& section, double s, const SpaceSectionForces& f) {
   const double A = section.area(s), Iz = section.inertia(s), Iy = section.inertia_y(s);
@@ -48,6 +80,8 @@ SpaceFibreStresses space_fibre_stresses(const Section& section, double s, const 
     for (int k = 0; k < kPoints; ++k) at(2 * std::numbers::pi * k / kPoints);
     const double phi_m = std::atan2(f.My, -f.Mz);  // Iy = Iz: sigma is extreme along the resultant moment's normal
     at(phi_m), at(phi_m + std::numbers::pi);
+  } else if (section.thin_walled()) {
+    thin_walled_points(section, s, f, sample);
   } else {
     const double c = section.half_depth(s), w = 0.5 * section.width(s);
     constexpr int kSide = 11;

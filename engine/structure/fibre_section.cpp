@@ -15,17 +15,42 @@ double rms_coordinate(double centre, double size) {
   return std::copysign(std::sqrt(centre * centre + size * size / 12), centre);
 }
 
-void rectangle(std::vector<Fibre>& out, double b, double h, bool space) {
-  const int ny = space ? kGrid : kLayers, nz = space ? kGrid : 1;
-  const double dy = h / ny, dz = b / nz;
+// Cells of a grid ny x nz over the plate y' in [y0, y1], z' in [z0, z1] (plane: nz = 1, z' = 0).
+void plate(std::vector<Fibre>& out, double y0, double y1, double z0, double z1, int ny, int nz, bool space) {
+  const double dy = (y1 - y0) / ny, dz = (z1 - z0) / nz;
   for (int i = 0; i < ny; ++i)
     for (int k = 0; k < nz; ++k) {
       Fibre f;
-      f.c[0] = rms_coordinate(-0.5 * h + (i + 0.5) * dy, dy);
-      f.c[1] = space ? rms_coordinate(-0.5 * b + (k + 0.5) * dz, dz) : 0.0;
+      f.c[0] = rms_coordinate(y0 + (i + 0.5) * dy, dy);
+      f.c[1] = space ? rms_coordinate(z0 + (k + 0.5) * dz, dz) : 0.0;
       f.area = dy * dz;
       out.push_back(f);
     }
+}
+
+void rectangle(std::vector<Fibre>& out, double b, double h, bool space) {
+  const int ny = space ? kGrid : kLayers, nz = space ? kGrid : 1;
+  plate(out, -0.5 * h, 0.5 * h, -0.5 * b, 0.5 * b, ny, nz, space);
+}
+
+// Box and I: two flanges b x t_f and the web(s) between them; box webs of the wall t at the sides, the I's web t_w on
+// the axis. Each plate in kPlate cells along it and kThrough across its thickness, a web kWebThrough (its cells near
+// the axis carry the plastic moment about it); plane: the flanges in kThrough layers, the webs in kLayers.
+constexpr int kPlate = 32, kThrough = 4, kWebThrough = 8;
+void flanged(std::vector<Fibre>& out, const Section& sec, double s, bool space) {
+  const double b = sec.width(s), h = sec.depth(s), tf = sec.wall_thickness(), tw = sec.web_thickness();
+  const double c = 0.5 * h, w = 0.5 * b, yw = c - tf;
+  for (double side : {-1.0, 1.0}) {
+    const double y0 = side > 0 ? yw : -c;
+    plate(out, y0, y0 + tf, -w, w, kThrough, space ? kPlate : 1, space);
+  }
+  const int along = space ? kPlate : kLayers, through = space ? kWebThrough : 1;
+  if (sec.kind() == SectionKind::i_section) {
+    plate(out, -yw, yw, -0.5 * tw, 0.5 * tw, along, through, space);
+    return;
+  }
+  plate(out, -yw, yw, -w, -w + tw, along, through, space);
+  plate(out, -yw, yw, w - tw, w, along, through, space);
 }
 
 void pipe(std::vector<Fibre>& out, double D, double t) {
@@ -49,6 +74,7 @@ void pipe(std::vector<Fibre>& out, double D, double t) {
 std::vector<Fibre> fibre_layout(const Section& section, double s, bool space) {
   std::vector<Fibre> out;
   if (section.kind() == SectionKind::pipe) pipe(out, section.depth(s), section.wall_thickness());
+  else if (section.thin_walled()) flanged(out, section, s, space);
   else rectangle(out, section.width(s), section.depth(s), space);
   return out;
 }

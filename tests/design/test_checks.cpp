@@ -8,6 +8,7 @@
 #include "engine/common/error.hpp"
 
 using namespace dmi::design;
+using dmi::Section;
 
 TEST(DesignFormulas, ConcreteTensileAndCompressiveCapacities) {
   ConcreteLimits c;  // defaults: f'c 28 MPa, f_t 3.28 MPa (Lin, Cheng & Tuan), phi 0.60, alpha 0.85
@@ -65,6 +66,34 @@ TEST(DesignFormulas, SteelPipeClassFromDOverT) {
   // Class 3: the elastic modulus in the interaction (W_el instead of W_pl).
   const double D = 0.55, t = 0.01, f = 355e6;
   EXPECT_NEAR(chs_interaction(0, 1e5, D, t, f, 1.0), 1e5 / (chs_elastic_modulus(D, t) * f), 1e-12);
+}
+
+// EN 1993-1-1 for box and I sections by hand, f_y 355 MPa (eps = sqrt(235/355) = 0.81362).
+TEST(DesignFormulas, SteelIAndBoxSectionsByHand) {
+  const Section I = Section::i_section(0.2, 0.4, 0.016, 0.01);
+  // Outstand c/t = 0.095/0.016 = 5.9375 against 9 eps = 7.3225 (class 1) and 14 eps (class 3); web 36.8 against 72 eps.
+  EXPECT_NEAR(flanged_class_ratio(I, 355e6, 1), 5.9375 / (9 * 0.8136157), 1e-6);
+  EXPECT_NEAR(flanged_class_ratio(I, 355e6, 3), 5.9375 / (14 * 0.8136157), 1e-6);
+  EXPECT_EQ(flanged_class(I, 355e6), 1);
+  // N_Rd = 0.01008 x 355e6 = 3.5784 MN, M_Rd = W_pl f_y = 0.00156736 x 355e6 = 556.41 kN m.
+  EXPECT_NEAR(flanged_interaction(1e6, 0.4e6, 0, I, 355e6, 1.0), 1e6 / 3.5784e6 + 0.4e6 / 556412.8, 1e-9);
+  EXPECT_NEAR(flanged_interaction(-1e6, -0.4e6, 0, I, 355e6, 1.0), flanged_interaction(1e6, 0.4e6, 0, I, 355e6, 1.0), 1e-15);
+  // Shear: A_v = h_w t_w = 0.00368 along the web, 2 b t_f = 0.0064 across: A_v f_y / sqrt 3.
+  EXPECT_NEAR(flanged_shear_resistance(I, true, 355e6, 1.0), 0.00368 * 355e6 / std::sqrt(3.0), 1e-6);
+  EXPECT_NEAR(flanged_shear_resistance(I, false, 355e6, 1.0), 0.0064 * 355e6 / std::sqrt(3.0), 1e-6);
+  // Box 0.2 x 0.3 x 0.01: walls (b - 3t)/t = 17 against 33 eps, webs 27 against 72 eps: class 1.
+  const Section box = Section::box(0.2, 0.3, 0.01);
+  EXPECT_NEAR(flanged_class_ratio(box, 355e6, 1), 17 / (33 * 0.8136157), 1e-6);
+  EXPECT_EQ(flanged_class(box, 355e6), 1);
+  EXPECT_NEAR(flanged_shear_resistance(box, true, 355e6, 1.1), box.area(0) * 0.3 / 0.5 * 355e6 / std::sqrt(3.0) / 1.1, 1e-6);
+  // Class 3 (c/t 31 between 38 eps = 30.92 and 42 eps = 34.17): the elastic moduli about both axes.
+  const Section b3 = Section::box(0.34, 0.34, 0.01);
+  EXPECT_EQ(flanged_class(b3, 355e6), 3);
+  const double Wel = b3.inertia(0) / 0.17;
+  EXPECT_NEAR(flanged_interaction(0, 1e5, 2e5, b3, 355e6, 1.0), 3e5 / (Wel * 355e6), 1e-12);
+  // Class 4: (0.4 - 0.018)/0.006 = 63.7 > 42 eps = 34.17.
+  EXPECT_EQ(flanged_class(Section::box(0.4, 0.4, 0.006), 355e6), 4);
+  EXPECT_GT(flanged_class_ratio(Section::box(0.4, 0.4, 0.006), 355e6, 3), 1.0);
 }
 
 TEST(DesignLimits, ReadsAFileAndRejectsBadValuesWithThePath) {

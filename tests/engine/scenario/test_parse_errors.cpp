@@ -316,7 +316,7 @@ TEST(ScenarioStructureErrors, OutOfRangeAndWrongType) {
   expect_error(frame_with([](json& j) { j["structure"]["members"][0]["elements"] = 10001; }), "/structure/members/0/elements",
                {"<= 10000"});
   expect_error(frame_with([](json& j) { j["structure"]["members"][0]["section"]["type"] = "i_beam"; }), "/structure/members/0/section/type",
-               {"rectangle, pipe or tapered_rectangle", "i_beam"});
+               {"rectangle, pipe, tapered_rectangle, box or i_section", "i_beam"});
   expect_error(frame_with([](json& j) { j["structure"]["supports"][0]["type"] = "clamped"; }), "/structure/supports/0/type",
                {"fixed, pinned, roller or spring", "clamped"});
   expect_error(frame_with([](json& j) { j["structure"]["supports"][1]["restrained"] = "z"; }), "/structure/supports/1/restrained",

@@ -5,12 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <numeric>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
 #include <vector>
 
 #include "engine/structure/fibre_beam.hpp"
+#include "engine/structure/fibre_section.hpp"
 #include "engine/structure/space_frame.hpp"
 #include "verify/plastic_models.hpp"
 #include "tests/engine/structure/beam_models.hpp"
@@ -63,6 +65,27 @@ TEST(FibreBeam, MomentCurvatureReachesThePlasticMoment) {
   const double Mp_pipe = law.fy * (D * D * D - d * d * d) / 6, ky_pipe = law.fy / (law.E * 0.5 * D);
   EXPECT_NEAR(moment_at(pipe, 0.5 * ky_pipe, law) / (0.5 * law.E * pipe.inertia(0) * ky_pipe), 1.0, 1e-12);
   EXPECT_NEAR(moment_at(pipe, 50 * ky_pipe, law) / Mp_pipe, 1.0, 2e-3);
+}
+
+// Box and I sections: their flanges and webs in cells at their rms coordinates carry E I exactly in the elastic range
+// and W_pl f_y far past yield, in the plane and in space (about both axes).
+TEST(FibreBeam, BoxAndISectionsReachTheirPlasticMoments) {
+  const SteelLaw law{200e9, 355e6, 0.0};
+  for (const Section& s : {Section::box(0.2, 0.3, 0.01), Section::i_section(0.2, 0.4, 0.016, 0.01)}) {
+    const double ky = law.fy / (law.E * s.half_depth(0)), Mp = law.fy * s.plastic_modulus(0);
+    EXPECT_NEAR(moment_at(s, 0.5 * ky, law) / (0.5 * law.E * s.inertia(0) * ky), 1.0, 1e-12);
+    EXPECT_NEAR(moment_at(s, 50 * ky, law) / Mp, 1.0, 2e-3);
+    const std::vector<Fibre> fibres = fibre_layout(s, 0, true);
+    const double A = std::accumulate(fibres.begin(), fibres.end(), 0.0, [](double a, const Fibre& f) { return a + f.area; });
+    EXPECT_NEAR(A / s.area(0), 1.0, 1e-12);
+    double Iz = 0, Iy = 0;
+    for (const Fibre& f : fibres) Iz += f.area * f.c[0] * f.c[0], Iy += f.area * f.c[1] * f.c[1];
+    EXPECT_NEAR(Iz / s.inertia(0), 1.0, 1e-12);
+    EXPECT_NEAR(Iy / s.inertia_y(0), 1.0, 1e-12);
+    double Wy = 0;  // the fully plastic moment about y': sum |z'| A over the fibres
+    for (const Fibre& f : fibres) Wy += std::abs(f.c[1]) * f.area;
+    EXPECT_NEAR(Wy / s.plastic_modulus_y(0), 1.0, 2e-3);
+  }
 }
 
 // Large reversing increments on a nearly perfectly plastic section (hardening 0.01 %): Newton's full steps cycle

@@ -90,5 +90,48 @@ TEST(Section, RejectsNonPositiveDimensionsAndThickWalls) {
   EXPECT_THROW(Section::rectangle(0.1, std::nan("")), std::invalid_argument);
 }
 
+// A box 0.2 wide, 0.3 deep, walls 10 mm, by hand: the enclosing rectangle less the hollow 0.18 x 0.28.
+TEST(Section, BoxByHand) {
+  const Section s = Section::box(0.2, 0.3, 0.01);
+  EXPECT_EQ(s.kind(), SectionKind::box);
+  EXPECT_TRUE(s.hollow());
+  EXPECT_NEAR(s.area(0), 0.06 - 0.18 * 0.28, 1e-15);
+  EXPECT_NEAR(s.inertia(0), (0.2 * 0.027 - 0.18 * std::pow(0.28, 3)) / 12, 1e-17);
+  EXPECT_NEAR(s.inertia_y(0), (0.3 * 0.008 - 0.28 * std::pow(0.18, 3)) / 12, 1e-17);
+  EXPECT_NEAR(s.plastic_modulus(0), 0.2 * 0.09 / 4 - 0.18 * 0.0784 / 4, 1e-15);   // 9.72e-4 m^3
+  EXPECT_NEAR(s.plastic_modulus_y(0), 0.3 * 0.04 / 4 - 0.28 * 0.0324 / 4, 1e-15);
+  // Bredt: J = 4 A_m^2 t / p_m, A_m = 0.19 x 0.29, p_m = 2 (0.19 + 0.29); W_t = 2 A_m t.
+  EXPECT_NEAR(s.torsion_constant(0), 4 * std::pow(0.19 * 0.29, 2) * 0.01 / (2 * 0.48), 1e-15);
+  EXPECT_NEAR(s.torsion_modulus(0), 2 * 0.19 * 0.29 * 0.01, 1e-15);
+  // Jourawski at the axis: Q = W_pl / 2 over the two walls 2t; A_v = A h / (b + h).
+  EXPECT_NEAR(s.shear_stress_factor(), 0.5 * s.plastic_modulus(0) * s.area(0) / (s.inertia(0) * 0.02), 1e-12);
+  EXPECT_NEAR(s.shear_coefficient(), 0.3 / 0.5, 1e-15);
+  // In a flange the width is b: the stress falls by (2t / b) across the junction.
+  const double y = 0.14;
+  EXPECT_NEAR(s.shear_flow_stress(0, y - 1e-9) / s.shear_flow_stress(0, y + 1e-9), 0.2 / 0.02, 1e-5);
+  EXPECT_THROW(Section::box(0.2, 0.3, 0.1), std::invalid_argument);  // walls meeting in the middle: a solid
+}
+
+// An I 0.4 deep, flanges 0.2 x 16 mm, web 10 mm: A 0.01008 m^2, W_pl = 2 b t_f (h - t_f) / 2 + t_w h_w^2 / 4.
+TEST(Section, ISectionByHand) {
+  const Section s = Section::i_section(0.2, 0.4, 0.016, 0.01);
+  EXPECT_EQ(s.kind(), SectionKind::i_section);
+  EXPECT_FALSE(s.hollow());
+  EXPECT_TRUE(s.thin_walled());
+  EXPECT_NEAR(s.area(0), 0.01008, 1e-15);
+  EXPECT_NEAR(s.inertia(0), (0.2 * 0.064 - 0.19 * std::pow(0.368, 3)) / 12, 1e-17);
+  EXPECT_NEAR(s.inertia_y(0), (2 * 0.016 * 0.008 + 0.368 * 1e-6) / 12, 1e-17);
+  EXPECT_NEAR(s.plastic_modulus(0), 0.2 * 0.016 * 0.384 + 0.01 * 0.368 * 0.368 / 4, 1e-15);
+  EXPECT_NEAR(s.plastic_modulus_y(0), (2 * 0.016 * 0.04 + 0.368 * 1e-4) / 4, 1e-15);
+  EXPECT_NEAR(s.torsion_constant(0), (2 * 0.2 * std::pow(0.016, 3) + 0.368 * 1e-6) / 3, 1e-15);
+  EXPECT_NEAR(s.torsion_modulus(0), s.torsion_constant(0) / 0.016, 1e-15);
+  EXPECT_NEAR(s.shear_coefficient(), 0.368 * 0.01 / 0.01008, 1e-15);
+  // Peak shear at the axis of the web, V Q / (I t_w): 2.85 V / A, above the mean over the web (A / h_w t_w = 2.74).
+  EXPECT_NEAR(s.shear_stress_factor(), 0.5 * s.plastic_modulus(0) * 0.01008 / (s.inertia(0) * 0.01), 1e-12);
+  EXPECT_GT(s.shear_stress_factor(), 0.01008 / (0.368 * 0.01));
+  EXPECT_THROW(Section::i_section(0.2, 0.4, 0.2, 0.01), std::invalid_argument);   // flanges fill the depth
+  EXPECT_THROW(Section::i_section(0.2, 0.4, 0.016, 0.2), std::invalid_argument);  // a web as wide as the flanges
+}
+
 }  // namespace
 }  // namespace dmi
