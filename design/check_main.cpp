@@ -12,6 +12,7 @@
 
 #include "core/variants.hpp"
 #include "design/design.hpp"
+#include "design/verdict.hpp"
 #include "design/grid_study.hpp"
 #include "engine/common/error.hpp"
 #include "engine/io/results_writer.hpp"
@@ -37,13 +38,12 @@ std::string eng(double v, const std::string& unit) {
   return b;
 }
 
-std::string where_when(const json& c) {
+std::string where_when(const Check& c) {
   std::ostringstream o;
-  if (c["s_m"].is_number()) o << "s = " << eng(c["s_m"].get<double>(), "") << " m";
-  else if (c["member"].get<std::string>().empty() || c["member"].get<std::string>().rfind("solid", 0) == 0)
-    o << "(" << eng(c["location_m"][0].get<double>(), "") << ", " << eng(c["location_m"][1].get<double>(), "")
-      << (c["location_m"].size() > 2 ? ", " + eng(c["location_m"][2].get<double>(), "") : std::string()) << ") m";
-  if (c["time_s"].is_number()) o << (o.tellp() > 0 ? ", " : "") << "t = " << eng(c["time_s"].get<double>(), "s");
+  if (c.s_m >= 0) o << "s = " << eng(c.s_m, "") << " m";
+  else if (c.member.empty() || c.member.rfind("solid", 0) == 0)
+    o << "(" << eng(c.x_m, "") << ", " << eng(c.y_m, "") << (c.space ? ", " + eng(c.z_m, "") : std::string()) << ") m";
+  if (c.time_s >= 0) o << (o.tellp() > 0 ? ", " : "") << "t = " << eng(c.time_s, "s");
   return o.str();
 }
 
@@ -86,9 +86,9 @@ void run_summary(std::ostringstream& o, const json& r) {
   std::snprintf(line, sizeof line, "  %-50s %-12s %-5s %13s %13s %6s %-5s %s\n", "check", "member", "level", "demand", "capacity", "util", "",
                 "where / when");
   o << line;
-  for (const auto& c : r["checks"]) {
-    const std::string u = c["unit"];
-    std::string title = c["title"], member = c["member"];
+  for (const Check& c : checks_from_json(r, "design.json run " + r["results_file"].get<std::string>())) {
+    const std::string& u = c.unit;
+    std::string title = c.title, member = c.member;
     if (member.rfind("solid: ", 0) == 0) {  // the solid-FE load case in brackets, without the common prefix
       std::string load = member.substr(7);
       if (load.rfind("simulated contact, ", 0) == 0) load = load.substr(19);
@@ -96,11 +96,11 @@ void run_summary(std::ostringstream& o, const json& r) {
     }
     if (title.size() > 50) title = title.substr(0, 47) + "...";
     if (member.size() > 12) member = member.substr(0, 11) + ".";
-    const std::string level = c.value("level", "serviceability");
+    const std::string& level = c.level;
     const bool info = level == "information";
     std::snprintf(line, sizeof line, "  %-50s %-12s %-5s %13s %13s %6.2f %-5s %s\n", title.c_str(), member.c_str(),
-                  level == "ultimate" ? "ULS" : level == "serviceability" ? "SLS" : "info", eng(c["demand"], u).c_str(), eng(c["capacity"], u).c_str(),
-                  c["utilisation"].get<double>(), info ? "" : c["passed"] ? "ok" : "FAIL", where_when(c).c_str());
+                  level == "ultimate" ? "ULS" : level == "serviceability" ? "SLS" : "info", eng(c.demand, u).c_str(), eng(c.capacity, u).c_str(),
+                  c.utilisation, info ? "" : c.passed ? "ok" : "FAIL", where_when(c).c_str());
     o << line;
   }
 }
@@ -110,24 +110,24 @@ void run_summary(std::ostringstream& o, const json& r) {
 // The verdict lines: the runs judged, pass or fail, the governing check, each level's verdict (also under -q).
 std::string verdict_text(const json& d) {
   std::ostringstream o;
-  const json& v = d["verdict"];
-  o << "verdict (" << v["runs_judged"].get<std::string>() << "): ";
-  if (v["status"] == "no_checks") o << "NO CHECKS (nothing to check in these results)\n";
+  const Verdict v = verdict_from_json(d["verdict"], true, "design.json verdict");
+  o << "verdict (" << v.runs_judged << "): ";
+  if (v.status == "no_checks") o << "NO CHECKS (nothing to check in these results)\n";
   else {
-    o << (v["passed"] ? "PASS" : "FAIL") << ", " << v["failed"].get<int>() << " of " << v["checks"].get<int>() << " checks failed";
-    const json& g = v["governing"];
-    o << "; governing: " << g["title"].get<std::string>() << (g["member"].get<std::string>().empty() ? "" : ", " + g["member"].get<std::string>())
-      << ", utilisation " << eng(g["utilisation"], "") << " (" << where_when(g) << ")\n";
+    const Check& g = *v.governing;
+    o << (v.passed ? "PASS" : "FAIL") << ", " << v.failed << " of " << v.checks << " checks failed";
+    o << "; governing: " << g.title << (g.member.empty() ? "" : ", " + g.member) << ", utilisation " << eng(g.utilisation, "") << " ("
+      << where_when(g) << ")\n";
   }
-  for (const auto& [group, name] : std::vector<std::pair<const char*, const char*>>{
-           {"levels", "serviceability"}, {"levels", "ultimate"}, {"situations", "persistent"}, {"situations", "accidental"}})
-    if (v.contains(group) && v[group].contains(name) && v[group][name]["checks"].get<int>() > 0) {
-      const json& l = v[group][name];
-      o << "  " << name << (std::string(group) == "situations" ? " situation" : "") << ": " << (l["passed"] ? "pass" : "fail") << ", "
-        << l["failed"].get<int>() << " of " << l["checks"].get<int>() << " failed, largest utilisation " << eng(l["max_utilisation"], "") << " ("
-        << l["governing"]["title"].get<std::string>() << ")\n";
-    }
-  if (v.contains("judged_levels")) o << "  the verdict judges: " << v["judged_levels"].get<std::string>() << " (limits file: verdict.level)\n";
+  for (const auto& [group, name] : std::vector<std::pair<const std::map<std::string, LevelVerdict>*, const char*>>{
+           {&v.levels, "serviceability"}, {&v.levels, "ultimate"}, {&v.situations, "persistent"}, {&v.situations, "accidental"}}) {
+    const auto l = group->find(name);
+    if (l == group->end() || l->second.checks == 0) continue;
+    o << "  " << name << (group == &v.situations ? " situation" : "") << ": " << (l->second.passed ? "pass" : "fail") << ", " << l->second.failed
+      << " of " << l->second.checks << " failed, largest utilisation " << eng(l->second.max_utilisation(), "") << " (" << l->second.governing->title
+      << ")\n";
+  }
+  o << "  the verdict judges: " << v.judged_levels << " (limits file: verdict.level)\n";
   // The member model the verdict rests on (elastic members cannot yield; plastic ones are judged by strain and drift).
   if (d.contains("runs"))
     for (const auto& r : d["runs"])

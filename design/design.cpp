@@ -1,5 +1,6 @@
 // design_run: one results.h5 -> one entry of design.json "runs" (layout: docs/design-json.md).
 #include "design/design.hpp"
+#include "design/verdict.hpp"
 #include "design/plastic_checks.hpp"
 
 #include "engine/common/json_input.hpp"
@@ -168,32 +169,6 @@ void punching(const std::optional<PeakContact>& pc, const std::vector<MemberEnve
   checks.push_back(p);
 }
 
-// The verdict of one run: each level's own (checks, failed, passed, governing), and over the levels the limits judge
-// (serviceability and ultimate by default; information never) the run's verdict and exit code.
-json level_verdict(const std::vector<Check>& checks, const std::function<bool(const Check&)>& counts) {
-  const Check* gov = nullptr;
-  int n = 0, failed = 0;
-  for (const auto& c : checks) {
-    if (!counts(c)) continue;
-    ++n, failed += !c.passed;
-    if (!gov || c.utilisation > gov->utilisation) gov = &c;
-  }
-  return json{{"checks", n}, {"failed", failed}, {"passed", failed == 0}, {"max_utilisation", gov ? json(gov->utilisation) : json(nullptr)},
-              {"governing", gov ? gov->to_json() : json(nullptr)}};
-}
-
-json verdict(const std::vector<Check>& checks, const std::string& judged) {
-  const auto counts = [&](const Check& c) { return c.level != "information" && (judged == "both" || c.level == judged); };
-  json v = level_verdict(checks, counts);
-  v["judged_levels"] = judged;
-  for (const char* level : {"serviceability", "ultimate", "information"})
-    v["levels"][level] = level_verdict(checks, [&](const Check& c) { return c.level == level; });
-  // Each design situation's own verdict over the judged levels (EN 1990 3.2).
-  for (const char* situation : {"persistent", "accidental"})
-    v["situations"][situation] = level_verdict(checks, [&](const Check& c) { return counts(c) && c.situation == situation; });
-  return v;
-}
-
 // The documents the run's own scenario promises: a file whose scenario has members (or a solid check) but not their
 // document was cut or altered, and checking what is left would read "NO CHECKS" or a partial PASS.
 void require_documents(const Results& r, const std::string& where) {
@@ -264,7 +239,7 @@ json design_run(const Results& r, const Limits& limits, const std::string& where
   run["local_damage"] = basis ? local_damage_checks(*basis, L.concrete, checks) : json(nullptr);
   run["checks"] = json::array();
   for (const auto& k : checks) run["checks"].push_back(k.to_json());
-  run["verdict"] = verdict(checks, L.verdict_level);
+  run["verdict"] = to_json(run_verdict(checks, L.verdict_level));
   // The damping's share by the instant of the most utilised member check (else the contact peak).
   double t_member = c.present ? c.peak_time_s : r.time.empty() ? 0.0 : r.time.back(), u_member = -1;
   for (const auto& k : checks)

@@ -7,6 +7,7 @@
 #include "core/variants.hpp"
 #include "design/design.hpp"
 #include "design/loads.hpp"
+#include "design/verdict.hpp"
 
 namespace dmi::design {
 
@@ -121,6 +122,38 @@ json compare_runs(const json& with, const json& without) {
                                              "(the buffer lengthens the contact pulse)"}};
 }
 
+namespace {
+
+// The document's verdict: the judged runs' checks summed, the governing check the largest utilisation of any; each level
+// and each design situation likewise.
+Verdict document_verdict(const std::vector<json>& runs, const std::vector<bool>& reference, const Limits& limits) {
+  Verdict d;
+  d.document = true, d.judged_levels = limits.verdict_level;
+  for (const char* level : {"serviceability", "ultimate"}) d.levels[level] = {};
+  for (const char* situation : {"persistent", "accidental"}) d.situations[situation] = {};
+  const auto add = [](LevelVerdict& into, const LevelVerdict& v) {
+    into.checks += v.checks, into.failed += v.failed, into.passed = into.failed == 0;
+    if (v.governing && (!into.governing || v.governing->utilisation > into.governing->utilisation)) into.governing = v.governing;
+  };
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (reference[i]) continue;
+    const json& r = runs[i];
+    const Verdict v = verdict_from_json(r["verdict"], false, "runs[" + std::to_string(i) + "].verdict");
+    const double before = d.governing ? d.governing->utilisation : -INFINITY;
+    add(d, v);
+    if (v.governing && v.governing->utilisation > before)
+      d.governing_variant = r["variant"], d.governing_results_file = r["results_file"];
+    for (auto& [name, l] : d.levels) add(l, v.levels.at(name));
+    for (auto& [name, l] : d.situations) add(l, v.situations.at(name));
+    const std::string variant = r["variant"];
+    d.runs_judged += (d.runs_judged.empty() ? "" : ", ") + (variant.empty() ? r["results_file"].get<std::string>() : variant);
+  }
+  d.status = d.checks == 0 ? "no_checks" : d.failed == 0 ? "pass" : "fail";
+  return d;
+}
+
+}  // namespace
+
 json design_document(const std::vector<json>& runs, const Limits& limits, const std::string& software_version) {
   json doc{{"format", "damimpact-design"}, {"format_version", kDesignFormatVersion}, {"software_version", software_version},
            {"limits", limits.to_json()}, {"runs", runs}, {"comparison", nullptr}};
@@ -140,37 +173,7 @@ json design_document(const std::vector<json>& runs, const Limits& limits, const 
   }
   for (std::size_t i = 0; i < runs.size(); ++i) doc["runs"][i]["reference"] = static_cast<bool>(reference[i]);
   doc["plane_and_space"] = plane_and_space_section(runs);
-  json gov = nullptr;
-  int checks = 0, failed = 0;
-  std::string basis;
-  for (std::size_t i = 0; i < runs.size(); ++i) {
-    if (reference[i]) continue;
-    const json& r = runs[i];
-    const json& v = r["verdict"];
-    checks += v["checks"].get<int>(), failed += v["failed"].get<int>();
-    if (!v["governing"].is_null() && (gov.is_null() || v["governing"]["utilisation"] > gov["utilisation"])) {
-      gov = v["governing"];
-      gov["variant"] = r["variant"];
-      gov["results_file"] = r["results_file"];
-    }
-    basis += (basis.empty() ? "" : ", ") + (r["variant"].get<std::string>().empty() ? r["results_file"].get<std::string>() : r["variant"].get<std::string>());
-  }
-  doc["verdict"] = {{"passed", failed == 0}, {"checks", checks}, {"failed", failed}, {"governing", gov}, {"runs_judged", basis},
-                    {"status", checks == 0 ? "no_checks" : failed == 0 ? "pass" : "fail"}, {"judged_levels", limits.verdict_level}};
-  // Each level, and each design situation, over the judged runs: its checks, failures and governing check.
-  for (const auto& [group, name] : std::vector<std::pair<const char*, const char*>>{
-           {"levels", "serviceability"}, {"levels", "ultimate"}, {"situations", "persistent"}, {"situations", "accidental"}}) {
-    json l{{"checks", 0}, {"failed", 0}, {"passed", true}, {"max_utilisation", nullptr}, {"governing", nullptr}};
-    for (std::size_t i = 0; i < runs.size(); ++i) {
-      if (reference[i] || !runs[i]["verdict"].contains(group)) continue;
-      const json& v = runs[i]["verdict"][group][name];
-      l["checks"] = l["checks"].get<int>() + v["checks"].get<int>(), l["failed"] = l["failed"].get<int>() + v["failed"].get<int>();
-      l["passed"] = l["failed"].get<int>() == 0;
-      if (!v["governing"].is_null() && (l["governing"].is_null() || v["governing"]["utilisation"] > l["governing"]["utilisation"]))
-        l["governing"] = v["governing"], l["max_utilisation"] = v["max_utilisation"];
-    }
-    doc["verdict"][group][name] = l;
-  }
+  doc["verdict"] = to_json(document_verdict(runs, reference, limits));
   return doc;
 }
 

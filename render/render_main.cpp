@@ -7,11 +7,13 @@
 #include <cerrno>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <vector>
 
 #include "design/design.hpp"
+#include "design/verdict.hpp"
 #include "design/loads.hpp"
 #include "engine/common/error.hpp"
 #include "engine/io/results_writer.hpp"
@@ -111,7 +113,7 @@ std::string ms(double t) {
 }
 
 
-const json* plotted_check(const json& run);
+std::optional<design::Check> plotted_check(const RunData& run);
 
 // The governing instant of the stress field: the governing check's time when it is a check of the members' or the
 // solid's stresses, else the most utilised member check's (a check of the dam on its foundation or of the struck face
@@ -119,10 +121,11 @@ const json* plotted_check(const json& run);
 double governing_time(const RunData& r) {
   const double end = r.results.time.empty() ? 0.0 : r.results.time.back();
   const double peak = num(r.design, {"contact", "peak_time_s"}, end);
-  const json& g = r.design["verdict"]["governing"];
-  if (g.is_object() && g["material"] != "foundation" && g["id"].get<std::string>().rfind("local_", 0) != 0) return num(g, {"time_s"}, peak);
-  const json* c = plotted_check(r.design);
-  return c ? num(*c, {"time_s"}, peak) : peak;
+  const std::optional<design::Check> g = design::verdict_from_json(r.design["verdict"], false, "design.json run " + r.file + " verdict").governing;
+  const auto time_or_peak = [peak](const design::Check& c) { return c.time_s >= 0 ? c.time_s : peak; };
+  if (g && g->material != "foundation" && g->id.rfind("local_", 0) != 0) return time_or_peak(*g);
+  const std::optional<design::Check> c = plotted_check(r);
+  return c ? time_or_peak(*c) : peak;
 }
 
 // The instant of a run's largest member fibre stress |sigma| (design.json envelopes), where the members carry the most;
@@ -177,12 +180,11 @@ double impact_y(const RunData& r) {
 
 // A member check with a time history to plot: the governing one when it is a member check, else the member check
 // with the largest utilisation.
-const json* plotted_check(const json& run) {
-  const json* best = nullptr;
-  for (const auto& c : run["checks"]) {
-    const std::string id = c["id"];
-    if (id.rfind("solid", 0) == 0 || id == "steel_section_class" || id == "concrete_punching" || !c["position"].is_number()) continue;
-    if (!best || c["utilisation"].get<double>() > (*best)["utilisation"].get<double>()) best = &c;
+std::optional<design::Check> plotted_check(const RunData& run) {
+  std::optional<design::Check> best;
+  for (const design::Check& c : design::checks_from_json(run.design, "design.json run " + run.file)) {
+    if (c.id.rfind("solid", 0) == 0 || c.id == "steel_section_class" || c.id == "concrete_punching" || c.position < 0) continue;
+    if (!best || c.utilisation > best->utilisation) best = c;
   }
   return best;
 }
@@ -238,8 +240,8 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
     Panel p{&r.results, fr, sg, "t = " + ms(ts) + (std::abs(ts - tg) > 1e-4 ? " (the snapshot nearest " + ms(tg) + ")" : "")};
     FieldSpec spec;
     spec.quantity = o.quantity;
-    const json& g = r.design["verdict"]["governing"];
-    spec.title = name + ": " + qlabel + " near the governing instant (" + ms(tg) + (g.is_null() ? "" : ", " + g["title"].get<std::string>()) + ")";
+    const std::optional<design::Check> g = design::verdict_from_json(r.design["verdict"], false, "design.json run " + r.file + " verdict").governing;
+    spec.title = name + ": " + qlabel + " near the governing instant (" + ms(tg) + (g ? ", " + g->title : "") + ")";
     spec.draw = mine();
     const std::string f1 = "field_" + tag + "_governing.png";
     const FieldImage gi = render_field({p}, spec, (fs::path(image_dir) / f1).string());
@@ -430,23 +432,22 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
     overlay("chart_base_moment.png", space ? "overturning moment (|(Mx, My)| about the centroid of the supports)" : "base moment (about the centroid of the supports)",
             "moment [kN m]", [](const RunData& r) { return design::base_history(r.results, *r.frame, r.file).moment(); }, 1e-3);
     // The governing member check's demand at its station, with its capacity as a line.
-    if (const json* c = plotted_check(runs[0].design)) {
-      const std::string unit = (*c)["unit"];
+    if (const std::optional<design::Check> c = plotted_check(runs[0])) {
+      const std::string& unit = c->unit;
       const double scale = unit == "Pa" ? 1e-6 : unit == "N" ? 1e-3 : 1.0;
       const std::string ul = unit == "Pa" ? "MPa" : unit == "N" ? "kN" : "-";
-      const std::string member = (*c)["member"], id = (*c)["id"];
-      const double pos = (*c)["position"].get<double>(), tmax = runs[0].results.time.back() * 1e3;
+      const std::string member = c->member, id = c->id;
+      const double pos = c->position, tmax = runs[0].results.time.back() * 1e3;
       design::Limits L;  // the capacity line is the check's own; the demand needs only the shear option
       if (design_doc.contains("limits") && design_doc["limits"]["concrete"]["shear_strength_Pa"].is_number())
         L.concrete.shear_strength = design_doc["limits"]["concrete"]["shear_strength_Pa"].get<double>();
-      overlay("chart_governing_demand.png", (*c)["title"].get<std::string>() + ", " + member + " at s = " + std::to_string((*c)["s_m"].get<double>()).substr(0, 4) + " m",
-              (*c)["title"].get<std::string>() + " [" + ul + "]",
+      overlay("chart_governing_demand.png", c->title + ", " + member + " at s = " + std::to_string(c->s_m).substr(0, 4) + " m", c->title + " [" + ul + "]",
               [&](const RunData& r) { return r.frame ? demand_history(r.results, *r.frame, member, pos, id, L) : std::vector<double>{}; }, scale,
-              {limit_line("capacity " + std::to_string((*c)["capacity"].get<double>() * scale).substr(0, 5) + " " + ul, (*c)["capacity"].get<double>() * scale, 0, tmax)});
+              {limit_line("capacity " + std::to_string(c->capacity * scale).substr(0, 5) + " " + ul, c->capacity * scale, 0, tmax)});
     }
     // Stress envelope along the most utilised member (the dam's height for a concrete dam).
-    if (const json* c = plotted_check(runs[0].design)) {
-      const std::string member = (*c)["member"];
+    if (const std::optional<design::Check> c = plotted_check(runs[0])) {
+      const std::string member = c->member;
       ChartSpec e;
       e.title = "fibre stress envelope along " + member;
       e.x_label = "stress [MPa] (tension +)", e.y_label = "distance from the member start [m]";
@@ -468,7 +469,7 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
           }
           e.curves.push_back(t), e.curves.push_back(cpr);
         }
-      if ((*c)["material"] == "concrete" && design_doc.contains("limits")) {
+      if (c->material == "concrete" && design_doc.contains("limits")) {
         const json& lc = design_doc["limits"]["concrete"];
         const double ft = lc["phi_flexure"].get<double>() * lc["tensile_strength_Pa"].get<double>() * 1e-6;
         e.curves.push_back(limit_line("tension limit", ft, 0, smax, true));

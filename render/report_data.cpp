@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "design/design.hpp"
+#include "design/verdict.hpp"
 #include "render/report.hpp"
 #include "render/report_rows.hpp"
 
@@ -60,12 +61,11 @@ std::string label(const RunData& r) {
 
 namespace {
 
-std::string where(const json& c) {
+std::string where(const design::Check& c) {
   std::string s;
-  if (c["s_m"].is_number()) s = "s = " + fmt("%.2f", c["s_m"].get<double>()) + " m";
-  else if (c["member"].get<std::string>().rfind("solid", 0) == 0) s = "(" + fmt("%.2f", c["location_m"][0].get<double>()) + ", " +
-                                                                      fmt("%.2f", c["location_m"][1].get<double>()) + ") m";
-  if (c["time_s"].is_number()) s += (s.empty() ? "" : ", ") + std::string("t = ") + eng(c["time_s"].get<double>(), "s");
+  if (c.s_m >= 0) s = "s = " + fmt("%.2f", c.s_m) + " m";
+  else if (c.member.rfind("solid", 0) == 0) s = "(" + fmt("%.2f", c.x_m) + ", " + fmt("%.2f", c.y_m) + ") m";
+  if (c.time_s >= 0) s += (s.empty() ? "" : ", ") + std::string("t = ") + eng(c.time_s, "s");
   return s.empty() ? "—" : s;
 }
 
@@ -318,34 +318,29 @@ namespace {
 
 // The verdict's headline class and word in d; returns its sentence: failed checks, the governing one, each level and
 // situation.
-std::string verdict_data(const json& v, json& d) {
-  const std::string status = v.value("status", "no_checks");
+std::string verdict_data(const design::Verdict& v, json& d) {
+  const std::string& status = v.status;
   d["verdict_class"] = status == "pass" ? "pass" : status == "fail" ? "fail" : "none";
   d["verdict_word"] = status == "pass" ? "PASS" : status == "fail" ? "FAIL" : "NO CHECKS";
-  std::string vt = std::to_string(v.value("failed", 0)) + " of " + std::to_string(v.value("checks", 0)) + " checks failed (judged: " +
-                   v.value("runs_judged", std::string()) + ").";
-  if (v.contains("governing") && v["governing"].is_object()) {
-    const json& g = v["governing"];
-    vt += " Governing: " + g["title"].get<std::string>() + (g["member"].get<std::string>().empty() ? "" : " in " + g["member"].get<std::string>()) +
-          ", utilisation " + fmt("%.2f", g["utilisation"].get<double>()) + " (" + eng(g["demand"], g["unit"]) + " against " + eng(g["capacity"], g["unit"]) +
-          "; " + where(g) + ").";
+  std::string vt = std::to_string(v.failed) + " of " + std::to_string(v.checks) + " checks failed (judged: " + v.runs_judged + ").";
+  if (v.governing) {
+    const design::Check& g = *v.governing;
+    vt += " Governing: " + g.title + (g.member.empty() ? "" : " in " + g.member) + ", utilisation " + fmt("%.2f", g.utilisation) + " (" +
+          eng(g.demand, g.unit) + " against " + eng(g.capacity, g.unit) + "; " + where(g) + ").";
   }
-  if (v.contains("levels"))
-    for (const char* level : {"serviceability", "ultimate"}) {
-      const json& l = v["levels"][level];
-      if (l["checks"].get<int>() == 0) continue;
-      vt += std::string(" ") + (std::string(level) == "ultimate" ? "Ultimate" : "Serviceability") + " level: " + (l["passed"] ? "pass" : "FAIL") +
-            ", largest utilisation " + fmt("%.2f", l["max_utilisation"].get<double>()) + " (" + l["governing"]["title"].get<std::string>() + ").";
-    }
-  if (v.contains("situations"))
-    for (const char* situation : {"persistent", "accidental"}) {
-      const json& l = v["situations"][situation];
-      if (l["checks"].get<int>() == 0) continue;
-      vt += std::string(" ") + (std::string(situation) == "persistent" ? "Persistent situation (the loads at rest, factored)" : "Accidental situation (the impact)") +
-            ": " + (l["passed"] ? "pass" : "FAIL") + ", largest utilisation " + fmt("%.2f", l["max_utilisation"].get<double>()) + ".";
-    }
-  if (v.contains("judged_levels") && v["judged_levels"] != "both")
-    vt += " The verdict judges the " + v["judged_levels"].get<std::string>() + " level only (limits file).";
+  for (const char* level : {"serviceability", "ultimate"}) {
+    const auto l = v.levels.find(level);
+    if (l == v.levels.end() || l->second.checks == 0) continue;
+    vt += std::string(" ") + (std::string(level) == "ultimate" ? "Ultimate" : "Serviceability") + " level: " + (l->second.passed ? "pass" : "FAIL") +
+          ", largest utilisation " + fmt("%.2f", l->second.max_utilisation()) + " (" + l->second.governing->title + ").";
+  }
+  for (const char* situation : {"persistent", "accidental"}) {
+    const auto l = v.situations.find(situation);
+    if (l == v.situations.end() || l->second.checks == 0) continue;
+    vt += std::string(" ") + (std::string(situation) == "persistent" ? "Persistent situation (the loads at rest, factored)" : "Accidental situation (the impact)") +
+          ": " + (l->second.passed ? "pass" : "FAIL") + ", largest utilisation " + fmt("%.2f", l->second.max_utilisation()) + ".";
+  }
+  if (v.judged_levels != "both") vt += " The verdict judges the " + v.judged_levels + " level only (limits file).";
   return vt;
 }
 
@@ -395,23 +390,21 @@ json run_checks(const std::vector<RunData>& runs) {
   for (const auto& r : runs) {
     const bool reference = r.design.value("reference", false);  // the bare run of a comparison (design/document.cpp)
     json checks = json::array();
-    for (const auto& c : r.design["checks"]) {
-      const double u = c["utilisation"];
-      const std::string level = c.value("level", "serviceability");
-      const bool info = level == "information";
-      checks.push_back({{"id", c["id"]}, {"title", c["title"]}, {"member", c["member"].get<std::string>().rfind("solid: ", 0) == 0 ? "solid FE, " + c["member"].get<std::string>().substr(7) : c["member"].get<std::string>()},
-                        {"demand", eng(c["demand"], c["unit"])}, {"capacity", eng(c["capacity"], c["unit"])}, {"util", fmt("%.2f", u)},
+    for (const design::Check& c : design::checks_from_json(r.design, "design.json run " + r.file)) {
+      const double u = c.utilisation;
+      const bool info = c.level == "information";
+      checks.push_back({{"id", c.id}, {"title", c.title}, {"member", c.member.rfind("solid: ", 0) == 0 ? "solid FE, " + c.member.substr(7) : c.member},
+                        {"demand", eng(c.demand, c.unit)}, {"capacity", eng(c.capacity, c.unit)}, {"util", fmt("%.2f", u)},
                         {"bar_pct", fmt("%.0f", std::min(100.0, 100 * u))}, {"bar_class", u > 1 ? "over" : u > 0.8 ? "high" : "ok"},
-                        {"status", info ? "info" : c["passed"].get<bool>() ? "pass" : "FAIL"},
-                        {"status_class", info ? "info" : c["passed"].get<bool>() ? "pass" : "fail"}, {"where", where(c)},
-                        {"level", level == "ultimate" ? "ULS" : level == "serviceability" ? "SLS" : "info"}});
+                        {"status", info ? "info" : c.passed ? "pass" : "FAIL"}, {"status_class", info ? "info" : c.passed ? "pass" : "fail"},
+                        {"where", where(c)}, {"level", c.level == "ultimate" ? "ULS" : c.level == "serviceability" ? "SLS" : "info"}});
     }
     std::string gov;
-    if (r.design["verdict"]["governing"].is_object()) {
-      const json& g = r.design["verdict"]["governing"];
-      gov = g["title"].get<std::string>() + (g["member"].get<std::string>().empty() ? "" : ", " + g["member"].get<std::string>()) + ": " +
-            eng(g["demand"], g["unit"]) + " against " + eng(g["capacity"], g["unit"]) + ", utilisation " + fmt("%.2f", g["utilisation"].get<double>()) +
-            " (" + where(g) + "). " + g["formula"].get<std::string>() + "; " + g["source"].get<std::string>() + ".";
+    const design::Verdict verdict = design::verdict_from_json(r.design["verdict"], false, "design.json run " + r.file + " verdict");
+    if (verdict.governing) {
+      const design::Check& g = *verdict.governing;
+      gov = g.title + (g.member.empty() ? "" : ", " + g.member) + ": " + eng(g.demand, g.unit) + " against " + eng(g.capacity, g.unit) +
+            ", utilisation " + fmt("%.2f", g.utilisation) + " (" + where(g) + "). " + g.formula + "; " + g.source + ".";
     }
     const json groups = check_group_rows(r.design);
     rl.push_back({{"label", label(r)}, {"reference", reference}, {"checks", checks}, {"governing", gov}, {"groups", groups},
@@ -476,9 +469,9 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
   char when[64];
   std::strftime(when, sizeof when, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
   d["generated"] = when;
-  const json& v = design_doc["verdict"];
+  const design::Verdict v = design::verdict_from_json(design_doc["verdict"], true, "design.json verdict");
   const std::string vt = verdict_data(v, d);
-  const std::string gov_grid = grid_data(design_doc, v.value("runs_judged", std::string()), d);
+  const std::string gov_grid = grid_data(design_doc, v.runs_judged, d);
   d["verdict_text"] = vt + gov_grid;
   std::string rt, files;
   for (const auto& r : runs) rt += (rt.empty() ? "" : ", ") + label(r), files += (files.empty() ? "" : ", ") + r.file;

@@ -7,6 +7,7 @@
 
 #include "design/design.hpp"
 #include "design/grid_study.hpp"
+#include "design/verdict.hpp"
 #include "design/loads.hpp"
 #include "engine/common/error.hpp"
 #include "engine/io/results_writer.hpp"
@@ -40,17 +41,17 @@ json at(const json& j, std::initializer_list<const char*> path) {  // null when 
 
 // The design's figures for the summary: per variant, the largest utilisation and the peaks engineers size with.
 void fill_from_design(json& row, const json& design) {
-  row["verdict"] = at(design, {"verdict", "status"});
-  const json gov = at(design, {"verdict", "governing"});
-  row["max_utilisation"] = at(gov, {"utilisation"});
-  row["governing"] = gov.is_null() ? json(nullptr)
-                                   : json{{"id", gov.value("id", "")}, {"member", gov.value("member", "")}, {"variant", gov.value("variant", "")}};
+  const design::Verdict v = design::verdict_from_json(design.at("verdict"), true, "design.json verdict");
+  row["verdict"] = v.status;
+  row["max_utilisation"] = v.governing ? json(v.governing->utilisation) : json(nullptr);
+  row["governing"] = v.governing ? json{{"id", v.governing->id}, {"member", v.governing->member}, {"variant", v.governing_variant}} : json(nullptr);
   json vars = json::object();
   for (const json& r : design.value("runs", json::array())) {
     const std::string label = r.value("variant", "");
+    const design::Verdict rv = design::verdict_from_json(r.at("verdict"), false, "design.json run " + label + " verdict");
     vars[label.empty() ? "run" : label] = {
-        {"max_utilisation", at(r, {"verdict", "max_utilisation"})},
-        {"passed", at(r, {"verdict", "passed"})},
+        {"max_utilisation", rv.governing ? json(rv.governing->utilisation) : json(nullptr)},
+        {"passed", rv.passed},
         {"contact_peak_N", at(r, {"contact", "peak_force_N"})},
         {"base_shear_N", at(r, {"base_total", design::shear_key(r.value("dimension", 2)), "abs_max", "value"})},
         {"base_moment_Nm", at(r, {"base_total", design::moment_key(r.value("dimension", 2)), "abs_max", "value"})}};
