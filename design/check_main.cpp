@@ -142,35 +142,34 @@ std::string verdict_text(const json& d) {
 std::string summary_text(const json& d) {
   std::ostringstream o;
   for (const auto& r : d["runs"]) run_summary(o, r);
-  if (d.contains("plane_and_space") && d["plane_and_space"].is_object()) {
+  if (const auto ps = plane_and_space_from_json(d.value("plane_and_space", json()), "design.json plane_and_space")) {
     char line[256];
     o << "\nplane model against its 3D model (compare_3d)\n";
-    for (const auto& pair : d["plane_and_space"]["pairs"]) {
-      const std::string v = pair["variant"].get<std::string>();
+    for (const auto& pair : ps->pairs) {
+      const std::string& v = pair.variant;
       std::snprintf(line, sizeof line, "  [%s] %-44s %14s %14s %8s\n", v.empty() ? "scenario" : v.c_str(), "quantity", "plane (2D)", "3D", "2D / 3D");
       o << line;
-      for (const auto& q : pair["quantities"]) {
-        const std::string u = q["unit"];
-        std::snprintf(line, sizeof line, "  %-*s %-44s %14s %14s %8s\n", static_cast<int>(v.empty() ? 10 : v.size() + 2), "", q["title"].get<std::string>().c_str(),
-                      eng(q["plane"], u).c_str(), eng(q["space"], u).c_str(), q["ratio"].is_number() ? eng(q["ratio"], "").c_str() : "-");
+      for (const auto& q : pair.quantities) {
+        std::snprintf(line, sizeof line, "  %-*s %-44s %14s %14s %8s\n", static_cast<int>(v.empty() ? 10 : v.size() + 2), "", q.title.c_str(),
+                      eng(q.plane, q.unit).c_str(), eng(q.space, q.unit).c_str(), q.ratio ? eng(*q.ratio, "").c_str() : "-");
         o << line;
       }
     }
   }
-  if (!d["comparison"].is_null()) {
+  if (const auto comparison = comparison_from_json(d.value("comparison", json()), "design.json comparison")) {
     char line[256];
     o << "\nwith vs without buffer\n";
     std::snprintf(line, sizeof line, "  %-60s %14s %14s %10s\n", "peak", "with buffer", "without", "reduction");
     o << line;
-    for (const auto& q : d["comparison"]["quantities"]) {
-      const std::string u = q["unit"];
-      std::string title = q["title"];
+    for (const auto& q : comparison->quantities) {
+      const std::string& u = q.unit;
+      std::string title = q.title;
       if (title.size() > 60) title = title.substr(0, 57) + "...";
-      const double red = q["reduction_percent"].is_number() ? q["reduction_percent"].get<double>() : 0.0;
+      const double red = q.reduction_percent.value_or(0.0);
       char reduction[32];  // more than doubled (the buffer lengthens the pulse): the factor, not a percentage of thousands
       if (red < -100) std::snprintf(reduction, sizeof reduction, "x%.3g larger", 1 - red / 100);
       else std::snprintf(reduction, sizeof reduction, "%9.0f %%", red);
-      std::snprintf(line, sizeof line, "  %-60s %14s %14s %11s\n", title.c_str(), eng(q["with_buffer"], u).c_str(), eng(q["without_buffer"], u).c_str(),
+      std::snprintf(line, sizeof line, "  %-60s %14s %14s %11s\n", title.c_str(), eng(q.with_buffer, u).c_str(), eng(q.without_buffer, u).c_str(),
                     reduction);
       o << line;
     }

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/design_basis.hpp"
+#include "design/comparison.hpp"
 #include "design/limits.hpp"
 #include "engine/io/results.hpp"
 
@@ -21,14 +22,14 @@ nlohmann::json design_run(const Results& r, const Limits& limits, const std::str
 
 
 // With vs without buffer: every compared peak and its reduction in % (docs/design-json.md "comparison").
-nlohmann::json compare_runs(const nlohmann::json& with_buffer, const nlohmann::json& without_buffer);
+BufferComparison compare_runs(const nlohmann::json& with_buffer, const nlohmann::json& without_buffer);
 
 // The whole design.json. The verdict judges every run except the without_buffer run of a comparison pair (a
 // with_buffer and a without_buffer run in the same comparison folder): that one is the reference the design is
 // compared with. The first pair gives "comparison".
 // design.json's "plane_and_space": for each 3D run of compare_3d, the plane run it stands beside and their governing
 // numbers side by side (null without compare_3d).
-nlohmann::json plane_and_space_section(const std::vector<nlohmann::json>& runs);
+std::optional<PlaneAndSpace> plane_and_space_section(const std::vector<nlohmann::json>& runs);
 nlohmann::json design_document(const std::vector<nlohmann::json>& runs, const Limits& limits, const std::string& software_version);
 
 // Writes design.json atomically (a temporary beside it, renamed when complete).

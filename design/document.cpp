@@ -42,7 +42,7 @@ std::string root_folder(const json& r) {
 }
 
 // The plane model's governing numbers beside its 3D model's (compare_3d), one pair of runs.
-json plane_and_space(const json& plane, const json& space) {
+PlaneAndSpace::Pair plane_and_space(const json& plane, const json& space) {
   struct Q { const char* id; const char* title; const char* unit; std::function<double(const json&)> get; };
   auto level = [](const char* l) { return [l](const json& r) { return num(r, {"verdict", "levels", l, "max_utilisation"}); }; };
   const std::vector<Q> qs = {
@@ -55,33 +55,32 @@ json plane_and_space(const json& plane, const json& space) {
       {"sliding", "sliding under the impact", "m", [](const json& r) { return num(r, {"stability", "impact", "sliding_displacement_m"}); }},
       {"rocking", "rocking about the toe", "rad", [](const json& r) { return num(r, {"stability", "impact", "peak_rocking_rotation_rad"}); }},
   };
-  json rows = json::array();
+  PlaneAndSpace::Pair pair{plane["variant"], plane["verdict"]["passed"].get<bool>(), space["verdict"]["passed"].get<bool>(), {}};
   for (const Q& q : qs) {
     const double a = q.get(plane), b = q.get(space);
     if (std::isnan(a) || std::isnan(b)) continue;
-    rows.push_back({{"id", q.id}, {"title", q.title}, {"unit", q.unit}, {"plane", a}, {"space", b}, {"ratio", b != 0 ? json(a / b) : json(nullptr)}});
+    pair.quantities.push_back({q.id, q.title, q.unit, a, b, b != 0 ? std::optional<double>(a / b) : std::nullopt});
   }
-  return json{{"variant", plane["variant"]}, {"plane_passed", plane["verdict"]["passed"]}, {"space_passed", space["verdict"]["passed"]},
-              {"quantities", rows}};
+  return pair;
 }
 
 }  // namespace
 
-json plane_and_space_section(const std::vector<json>& runs) {
-  json pairs = json::array();
+std::optional<PlaneAndSpace> plane_and_space_section(const std::vector<json>& runs) {
+  PlaneAndSpace out;
   for (const json& s : runs) {
     const std::string v = s["variant"].get<std::string>();
     if (!is_space_variant(v)) continue;
     for (const json& p : runs)
-      if (p["variant"] == plane_variant(v) && root_folder(p) == root_folder(s)) pairs.push_back(plane_and_space(p, s));
+      if (p["variant"] == plane_variant(v) && root_folder(p) == root_folder(s)) out.pairs.push_back(plane_and_space(p, s));
   }
-  if (pairs.empty()) return nullptr;
-  return json{{"pairs", pairs},
-              {"note", "ratio = plane / 3D. The plane model strikes a width of the dam with a cylinder of the boulder's mass; the 3D "
-                       "model strikes the whole crest with the sphere. Both are judged: the verdict is the worse of the two."}};
+  if (out.pairs.empty()) return std::nullopt;
+  out.note = "ratio = plane / 3D. The plane model strikes a width of the dam with a cylinder of the boulder's mass; the 3D "
+             "model strikes the whole crest with the sphere. Both are judged: the verdict is the worse of the two.";
+  return out;
 }
 
-json compare_runs(const json& with, const json& without) {
+BufferComparison compare_runs(const json& with, const json& without) {
   struct Q { const char* id; const char* title; const char* unit; std::function<double(const json&)> get; };
   auto abs_m = [](const json& r) {
     const double a = member_max(r, "M_max", 1), b = member_max(r, "M_min", -1);
@@ -102,11 +101,10 @@ json compare_runs(const json& with, const json& without) {
       {"member_von_mises", "peak member von Mises", "Pa", [](const json& r) { return member_max(r, "von_mises_max", 1); }},
       {"max_utilisation", "largest utilisation", "-", [](const json& r) { return num(r, {"verdict", "max_utilisation"}); }},
   };
-  json rows = json::array();
+  BufferComparison out;
   auto row = [&](const std::string& id, const std::string& title, const std::string& unit, double a, double b) {
     if (std::isnan(a) || std::isnan(b)) return;
-    rows.push_back({{"id", id}, {"title", title}, {"unit", unit}, {"with_buffer", a}, {"without_buffer", b},
-                    {"reduction_percent", b != 0 ? json(100 * (b - a) / b) : json(nullptr)}});
+    out.quantities.push_back({id, title, unit, a, b, b != 0 ? std::optional<double>(100 * (b - a) / b) : std::nullopt});
   };
   for (const auto& q : qs) row(q.id, q.title, q.unit, q.get(with), q.get(without));
   if (with["solid"].is_object() && without["solid"].is_object())
@@ -118,8 +116,8 @@ json compare_runs(const json& with, const json& without) {
           row("solid_max_principal:" + n, "solid FE max principal (" + n + ")", "Pa", num(cw, {"max_principal", "value_Pa"}),
               num(cb, {"max_principal", "value_Pa"}));
         }
-  return json{{"quantities", rows}, {"note", "reduction_percent = 100 (without - with) / without; a negative value is an increase "
-                                             "(the buffer lengthens the contact pulse)"}};
+  out.note = "reduction_percent = 100 (without - with) / without; a negative value is an increase (the buffer lengthens the contact pulse)";
+  return out;
 }
 
 namespace {
@@ -168,11 +166,12 @@ json design_document(const std::vector<json>& runs, const Limits& limits, const 
     for (std::size_t j = 0; j < runs.size(); ++j)
       if (runs[j]["variant"] == with && root_folder(runs[j]) == root_folder(runs[i])) {
         reference[i] = true;
-        if (doc["comparison"].is_null() && !is_space_variant(v)) doc["comparison"] = compare_runs(runs[j], runs[i]);
+        if (doc["comparison"].is_null() && !is_space_variant(v)) doc["comparison"] = to_json(compare_runs(runs[j], runs[i]));
       }
   }
   for (std::size_t i = 0; i < runs.size(); ++i) doc["runs"][i]["reference"] = static_cast<bool>(reference[i]);
-  doc["plane_and_space"] = plane_and_space_section(runs);
+  const std::optional<PlaneAndSpace> ps = plane_and_space_section(runs);
+  doc["plane_and_space"] = ps ? to_json(*ps) : json(nullptr);
   doc["verdict"] = to_json(document_verdict(runs, reference, limits));
   return doc;
 }

@@ -194,6 +194,7 @@ std::optional<design::Check> plotted_check(const RunData& run) {
 json render_runs(const std::vector<RunData>& runs, const json& design_doc, const std::string& image_dir, const RenderOptions& o,
                  PictureHelper* helper) {
   fs::create_directories(image_dir);
+  const design::Limits limits = design_doc.contains("limits") ? design::parse_limits(design_doc["limits"], "design.json limits") : design::Limits{};
   json manifest = json::array();
   const auto t0 = std::chrono::steady_clock::now();
   const bool assist = o.helper_of > 0, shared = assist || (helper && helper->active());
@@ -438,9 +439,7 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
       const std::string ul = unit == "Pa" ? "MPa" : unit == "N" ? "kN" : "-";
       const std::string member = c->member, id = c->id;
       const double pos = c->position, tmax = runs[0].results.time.back() * 1e3;
-      design::Limits L;  // the capacity line is the check's own; the demand needs only the shear option
-      if (design_doc.contains("limits") && design_doc["limits"]["concrete"]["shear_strength_Pa"].is_number())
-        L.concrete.shear_strength = design_doc["limits"]["concrete"]["shear_strength_Pa"].get<double>();
+      const design::Limits L = limits;
       overlay("chart_governing_demand.png", c->title + ", " + member + " at s = " + std::to_string(c->s_m).substr(0, 4) + " m", c->title + " [" + ul + "]",
               [&](const RunData& r) { return r.frame ? demand_history(r.results, *r.frame, member, pos, id, L) : std::vector<double>{}; }, scale,
               {limit_line("capacity " + std::to_string(c->capacity * scale).substr(0, 5) + " " + ul, c->capacity * scale, 0, tmax)});
@@ -469,9 +468,8 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
           }
           e.curves.push_back(t), e.curves.push_back(cpr);
         }
-      if (c->material == "concrete" && design_doc.contains("limits")) {
-        const json& lc = design_doc["limits"]["concrete"];
-        const double ft = lc["phi_flexure"].get<double>() * lc["tensile_strength_Pa"].get<double>() * 1e-6;
+      if (c->material == "concrete") {
+        const double ft = limits.concrete.tensile_capacity() * 1e-6;
         e.curves.push_back(limit_line("tension limit", ft, 0, smax, true));
       }
       if (!e.curves.empty()) draw(e, "chart_envelope.png", e.title);

@@ -72,28 +72,28 @@ std::string where(const design::Check& c) {
 }  // namespace
 
 static void plane_and_space_data(const json& design_doc, json& d) {
-  const json& ps = design_doc.contains("plane_and_space") ? design_doc["plane_and_space"] : json();
-  d["has_plane_and_space"] = ps.is_object();
+  const std::optional<design::PlaneAndSpace> ps =
+      design::plane_and_space_from_json(design_doc.value("plane_and_space", json()), "design.json plane_and_space");
+  d["has_plane_and_space"] = ps.has_value();
   json cases = json::array();
-  if (!ps.is_object()) {
+  if (!ps) {
     d["plane_and_space"] = cases;
     return;
   }
-  for (const auto& pair : ps["pairs"]) {
-    const std::string v = pair["variant"].get<std::string>();
+  for (const auto& pair : ps->pairs) {
+    const std::string& v = pair.variant;
     json rows = json::array();
-    for (const auto& q : pair["quantities"]) {
-      const double r = num(q, {"ratio"});
+    for (const auto& q : pair.quantities) {
       // The plane model on the safe side: a larger demand (every quantity here is a demand).
-      rows.push_back({{"title", q["title"]}, {"plane", eng(q["plane"], q["unit"])}, {"space", eng(q["space"], q["unit"])},
-                      {"ratio", std::isnan(r) ? "—" : fmt("%.2f", r)}, {"side_class", std::isnan(r) || r >= 1 ? "reduced" : "increased"}});
+      rows.push_back({{"title", q.title}, {"plane", eng(q.plane, q.unit)}, {"space", eng(q.space, q.unit)},
+                      {"ratio", q.ratio ? fmt("%.2f", *q.ratio) : "—"}, {"side_class", !q.ratio || *q.ratio >= 1 ? "reduced" : "increased"}});
     }
-    auto verdict = [](const json& p) { return p.is_boolean() ? (p.get<bool>() ? "PASS" : "FAIL") : "—"; };
+    auto verdict = [](const std::optional<bool>& p) { return p ? (*p ? "PASS" : "FAIL") : "—"; };
     cases.push_back({{"case", v.empty() ? "the scenario" : v == "with_buffer" ? "with buffer" : "without buffer"}, {"rows", rows},
-                     {"plane_verdict", verdict(pair["plane_passed"])}, {"space_verdict", verdict(pair["space_passed"])}});
+                     {"plane_verdict", verdict(pair.plane_passed)}, {"space_verdict", verdict(pair.space_passed)}});
   }
   d["plane_and_space"] = cases;
-  d["plane_and_space_note"] = ps.value("note", "") + " A ratio below 1 (red) is a quantity the plane model puts below the 3D one.";
+  d["plane_and_space_note"] = ps->note + " A ratio below 1 (red) is a quantity the plane model puts below the 3D one.";
 }
 
 std::string estimate_note(double ratio, const std::string& note) {
@@ -512,16 +512,18 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
   d["has_pressure"] = !d["pressure_rows"].empty();
   d["model_rows"] = model_rows(runs);
   // Comparison.
-  d["has_comparison"] = design_doc["comparison"].is_object();
+  const std::optional<design::BufferComparison> comparison =
+      design::comparison_from_json(design_doc.value("comparison", json()), "design.json comparison");
+  d["has_comparison"] = comparison.has_value();
   json cmp = json::array();
-  if (d["has_comparison"].get<bool>()) {
-    for (const auto& q : design_doc["comparison"]["quantities"]) {
-      const double red = num(q, {"reduction_percent"});
-      cmp.push_back({{"title", q["title"]}, {"with", eng(q["with_buffer"], q["unit"])}, {"without", eng(q["without_buffer"], q["unit"])},
+  if (comparison) {
+    for (const auto& q : comparison->quantities) {
+      const double red = q.reduction_percent.value_or(NAN);
+      cmp.push_back({{"title", q.title}, {"with", eng(q.with_buffer, q.unit)}, {"without", eng(q.without_buffer, q.unit)},
                      {"reduction", std::isnan(red) ? "—" : red < -100 ? fmt("%.3g× larger", 1 - red / 100) : fmt("%.0f %%", red)},
                      {"sign_class", red >= 0 ? "reduced" : "increased"}});
     }
-    d["comparison_note"] = design_doc["comparison"].value("note", "");
+    d["comparison_note"] = comparison->note;
   }
   d["comparison"] = cmp;
   int section = d["has_comparison"].get<bool>() ? 5 : 4;

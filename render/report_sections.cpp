@@ -121,29 +121,22 @@ void health_data(const std::vector<RunData>& runs, json& d) {
 json limit_rows(const json& design_doc) {
   // Limits.
   json lr = json::array();
-  if (design_doc.contains("limits")) {
-    const json& c = design_doc["limits"]["concrete"];
-    const json& s = design_doc["limits"]["steel"];
-    lr.push_back({{"key", "concrete f'c, f_t (rule)"}, {"value", eng(c["compressive_strength_Pa"], "Pa") + ", " + eng(c["tensile_strength_Pa"], "Pa") + " (" +
-                                                                     c["tensile_rule"].get<std::string>() + ")"}});
-    lr.push_back({{"key", "concrete φ flexure / compression / shear, α"},
-                  {"value", fmt("%.2f", c["phi_flexure"].get<double>()) + " / " + fmt("%.2f", c["phi_compression"].get<double>()) + " / " +
-                                fmt("%.2f", c["phi_shear"].get<double>()) + ", " + fmt("%.2f", c["compression_coefficient"].get<double>())}});
-    lr.push_back({{"key", "steel f_y, γ_M0"}, {"value", eng(s["yield_strength_Pa"], "Pa") + ", " + fmt("%.2f", s["gamma_M0"].get<double>())}});
-    lr.push_back({{"key", "concrete strengths under the impact"},
-                  {"value", c.value("strain_rate_effects", true) ? "raised by the strain rate (fib MC2010 5.1.11.1)" : "static"}});
-    if (design_doc["limits"].contains("foundation")) {
-      const json& f = design_doc["limits"]["foundation"];
-      lr.push_back({{"key", "foundation joint: tan φ, c, allowable bearing, uplift"},
-                    {"value", fmt("%.2f", f["friction"].get<double>()) + ", " + eng(f["cohesion_Pa"], "Pa") + ", " + eng(f["bearing_capacity_Pa"], "Pa") +
-                                  fmt(", %.2f of full (assumptions unless the limits file sets them)", f["uplift_factor"].get<double>())}});
-      lr.push_back({{"key", "stability: sliding factor at rest, sliding limit, rocking factor"},
-                    {"value", fmt("%.2f", f["sliding_factor_usual"].get<double>()) + ", " + eng(f["sliding_displacement_limit_m"], "m") +
-                                  fmt(", %.2f", f["rocking_safety_factor"].get<double>())}});
-    }
-    if (design_doc["limits"].contains("verdict"))
-      lr.push_back({{"key", "levels judged"}, {"value", design_doc["limits"]["verdict"].value("level", std::string("both"))}});
-  }
+  if (!design_doc.contains("limits")) return lr;
+  const design::Limits L = design::parse_limits(design_doc["limits"], "design.json limits");
+  const design::ConcreteLimits& c = L.concrete;
+  const design::FoundationLimits& f = L.foundation;
+  lr.push_back({{"key", "concrete f'c, f_t (rule)"}, {"value", eng(c.compressive_strength, "Pa") + ", " + eng(c.tensile_value(), "Pa") + " (" + c.tensile_rule + ")"}});
+  lr.push_back({{"key", "concrete φ flexure / compression / shear, α"},
+                {"value", fmt("%.2f", c.phi_flexure) + " / " + fmt("%.2f", c.phi_compression) + " / " + fmt("%.2f", c.phi_shear) + ", " +
+                              fmt("%.2f", c.compression_coefficient)}});
+  lr.push_back({{"key", "steel f_y, γ_M0"}, {"value", eng(L.steel.yield_strength, "Pa") + ", " + fmt("%.2f", L.steel.gamma_M0)}});
+  lr.push_back({{"key", "concrete strengths under the impact"}, {"value", c.strain_rate_effects ? "raised by the strain rate (fib MC2010 5.1.11.1)" : "static"}});
+  lr.push_back({{"key", "foundation joint: tan φ, c, allowable bearing, uplift"},
+                {"value", fmt("%.2f", f.friction) + ", " + eng(f.cohesion, "Pa") + ", " + eng(f.bearing_capacity, "Pa") +
+                              fmt(", %.2f of full (assumptions unless the limits file sets them)", f.uplift_factor)}});
+  lr.push_back({{"key", "stability: sliding factor at rest, sliding limit, rocking factor"},
+                {"value", fmt("%.2f", f.sliding_factor_usual) + ", " + eng(f.sliding_displacement_limit, "m") + fmt(", %.2f", f.rocking_safety_factor)}});
+  lr.push_back({{"key", "levels judged"}, {"value", L.verdict_level}});
   return lr;
 }
 
