@@ -1,4 +1,5 @@
 #include "design/grid_study.hpp"
+#include "design/verdict.hpp"
 #include "core/variants.hpp"
 #include "engine/io/results_writer.hpp"
 #include "design/loads.hpp"
@@ -116,8 +117,8 @@ json grid_study_section(const std::array<json, 3>& designs, const std::array<dou
 
 bool judge_grid_study(json& design, const std::string& judge_on) {
   json& gs = design["grid_study"];
-  json& v = design["verdict"];
-  const std::string judged = v.value("runs_judged", std::string());
+  Verdict v = verdict_from_json(design["verdict"], true, "design.json verdict");
+  const std::string judged = v.runs_judged;
   json runs = json::array();
   bool bound_ok = true;
   for (const auto& q : gs["quantities"]) {
@@ -130,13 +131,13 @@ bool judge_grid_study(json& design, const std::string& judge_on) {
     bound_ok = bound_ok && bound <= 1.0;
   }
   gs["verdict"] = {{"judge_on", judge_on}, {"runs", runs}, {"bound_passed", bound_ok}};
-  if (judge_on != "conservative_bound") return v.value("passed", false);
-  if (v.value("passed", false) && !bound_ok) {
-    v["passed"] = false;
-    v["status"] = "fail";
-    v["note"] = "passes on the finest grid but not on the conservative bound u (1 + GCI) of the grid study (limits: grid_study.judge_on)";
+  if (judge_on == "conservative_bound" && v.passed && !bound_ok) {
+    v.passed = false;
+    v.status = "fail";
+    v.note = "passes on the finest grid but not on the conservative bound u (1 + GCI) of the grid study (limits: grid_study.judge_on)";
+    design["verdict"] = to_json(v);
   }
-  return v.value("passed", false);
+  return v.passed;
 }
 
 GridStudyOutcome run_grid_study(const std::string& file, const nlohmann::json& source, double h, double ratio, const std::string& out,

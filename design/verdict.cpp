@@ -112,6 +112,7 @@ json to_json(const Verdict& v) {
     j.erase("max_utilisation");
     if (v.governing) j["governing"]["variant"] = v.governing_variant, j["governing"]["results_file"] = v.governing_results_file;
     j["runs_judged"] = v.runs_judged, j["status"] = v.status;
+    if (!v.note.empty()) j["note"] = v.note;
   }
   j["judged_levels"] = v.judged_levels;
   for (const auto& [name, l] : v.levels) j["levels"][name] = to_json(l);
@@ -122,6 +123,7 @@ json to_json(const Verdict& v) {
 Verdict verdict_from_json(const json& j, bool document, const std::string& where) {
   Verdict v;
   static_cast<LevelVerdict&>(v) = level_from_json(j, where);
+  v.passed = flag(j, "passed", where);  // a document's verdict may fail on more than its checks (note)
   v.document = document;
   v.judged_levels = text(j, "judged_levels", where);
   for (const auto& [group, into] : {std::pair{"levels", &v.levels}, std::pair{"situations", &v.situations}}) {
@@ -131,6 +133,7 @@ Verdict verdict_from_json(const json& j, bool document, const std::string& where
   }
   if (document) {
     v.status = text(j, "status", where), v.runs_judged = text(j, "runs_judged", where);
+    if (j.contains("note")) v.note = text(j, "note", where);
     if (v.governing) {
       v.governing_variant = text(j["governing"], "variant", where + ".governing");
       v.governing_results_file = text(j["governing"], "results_file", where + ".governing");

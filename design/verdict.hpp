@@ -36,6 +36,7 @@ struct Verdict : LevelVerdict {
   // and the status (pass, fail, no_checks).
   bool document = false;
   std::string status, runs_judged, governing_variant, governing_results_file;
+  std::string note;  // why the verdict is not its checks' alone (a grid study judged on the conservative bound)
 };
 
 // The verdict of one run's checks under the judged levels.
