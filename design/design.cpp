@@ -21,6 +21,7 @@
 #include "design/stability_checks.hpp"
 #include "design/loads.hpp"
 #include "design/members.hpp"
+#include "design/members_json.hpp"
 
 namespace dmi::design {
 
@@ -28,61 +29,10 @@ using nlohmann::json;
 
 namespace {
 
-json extreme(const Extreme& e) { return e.set ? json{{"value", e.value}, {"time_s", e.time}} : json(nullptr); }
-
-json location(const Station& s, int dim) { return dim == 3 ? json{s.x, s.y, s.z} : json{s.x, s.y}; }
-
-// The member-wide peak of one station quantity: the station and instant where it is largest (or smallest).
-json member_peak(const MemberEnvelope& m, Extreme Station::*q, bool smallest, const char* unit) {
-  const Station* best = nullptr;
-  for (const auto& st : m.stations) {
-    const Extreme& e = st.*q;
-    if (!e.set) continue;
-    if (!best || (smallest ? e.value < (best->*q).value : e.value > (best->*q).value)) best = &st;
-  }
-  if (!best) return nullptr;
-  return json{{"value", (best->*q).value}, {"unit", unit}, {"time_s", (best->*q).time}, {"position", best->position}, {"s_m", best->s_m},
-              {"location_m", location(*best, m.dim)}};
-}
-
-json member_json(const MemberEnvelope& m) {
-  const bool space = m.dim == 3;
-  json stations = json::array();
-  for (const auto& s : m.stations) {
-    json j{{"position", s.position}, {"s_m", s.s_m}, {"location_m", location(s, m.dim)}, {"depth_m", s.depth},
-           {"N_max_N", extreme(s.N_max)}, {"N_min_N", extreme(s.N_min)}, {"V_abs_max_N", extreme(s.V_abs)},
-           {"M_max_Nm", extreme(s.M_max)}, {"M_min_Nm", extreme(s.M_min)},
-           {"sigma_tension_max_Pa", extreme(s.sigma_tension)}, {"sigma_compression_min_Pa", extreme(s.sigma_compression)},
-           {"tau_max_Pa", extreme(s.tau)}, {"von_mises_max_Pa", extreme(s.von_mises)}};
-    if (space) {  // V and M above are the resultants |(Vy, Vz)|, |(My, Mz)|
-      j["Vy_abs_max_N"] = extreme(s.Vy_abs), j["Vz_abs_max_N"] = extreme(s.Vz_abs), j["T_abs_max_Nm"] = extreme(s.T_abs);
-      j["My_max_Nm"] = extreme(s.My_max), j["My_min_Nm"] = extreme(s.My_min), j["Mz_max_Nm"] = extreme(s.Mz_max), j["Mz_min_Nm"] = extreme(s.Mz_min);
-      j["principal_max_Pa"] = extreme(s.principal);
-    }
-    stations.push_back(j);
-  }
-  json peaks{{"N_max", member_peak(m, &Station::N_max, false, "N")},
-             {"N_min", member_peak(m, &Station::N_min, true, "N")},
-             {"V_abs_max", member_peak(m, &Station::V_abs, false, "N")},
-             {"M_max", member_peak(m, &Station::M_max, false, "N m")},
-             {"M_min", member_peak(m, &Station::M_min, true, "N m")},
-             {"sigma_tension_max", member_peak(m, &Station::sigma_tension, false, "Pa")},
-             {"sigma_compression_min", member_peak(m, &Station::sigma_compression, true, "Pa")},
-             {"tau_max", member_peak(m, &Station::tau, false, "Pa")},
-             {"von_mises_max", member_peak(m, &Station::von_mises, false, "Pa")}};
-  if (space) {
-    peaks["T_abs_max"] = member_peak(m, &Station::T_abs, false, "N m");
-    peaks["principal_max"] = member_peak(m, &Station::principal, false, "Pa");
-  }
-  json out{{"name", m.name}, {"material", m.cls}, {"length_m", m.length}, {"peaks", peaks}, {"stations", stations}};
-  if (space) out["resultants"] = "V = |(Vy, Vz)|, M = |(My, Mz)| (M_min not defined); local axes of the section (docs/design-checks.md)";
-  return out;
-}
-
 json reaction_json(const ReactionPeaks& p) {
   json j{{"name", p.name}};
   for (const auto& c : p.components)
-    j[c.key] = {{"max", extreme(c.max)}, {"min", extreme(c.min)}, {"abs_max", extreme(c.abs)}, {"final", c.final}};
+    j[c.key] = {{"max", extreme_json(c.max)}, {"min", extreme_json(c.min)}, {"abs_max", extreme_json(c.abs)}, {"final", c.final}};
   return j;
 }
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "design/design.hpp"
+#include "design/members_json.hpp"
 #include "design/verdict.hpp"
 #include "design/loads.hpp"
 #include "engine/common/error.hpp"
@@ -137,11 +138,11 @@ struct MemberPeak {
 
 MemberPeak member_peak(const RunData& r) {
   MemberPeak p;
-  for (const auto& m : r.design["members"])
-    for (const auto& st : m["stations"])
-      for (const char* k : {"sigma_tension_max_Pa", "sigma_compression_min_Pa"}) {
-        const double v = std::abs(num(st, {k, "value"}, 0.0));
-        if (v > p.value) p = {num(st, {k, "time_s"}, std::nan("")), v, m.value("name", "")};
+  for (const design::MemberEnvelope& m : design::members_from_json(r.design, "design.json run " + r.file))
+    for (const design::Station& st : m.stations)
+      for (const design::Extreme* e : {&st.sigma_tension, &st.sigma_compression}) {
+        const double v = e->set ? std::abs(e->value) : 0.0;
+        if (v > p.value) p = {e->time, v, m.name};
       }
   return p;
 }
@@ -453,18 +454,18 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
       e.x_tight = false;
       double smax = 0;
       for (std::size_t i = 0; i < runs.size(); ++i)
-        for (const auto& m : runs[i].design["members"]) {
-          if (m["name"] != member) continue;
+        for (const design::MemberEnvelope& m : design::members_from_json(runs[i].design, "design.json run " + runs[i].file)) {
+          if (m.name != member) continue;
           Curve t, cpr;
           t.label = "max tension" + (runs[i].variant.empty() ? "" : ", " + nice_variant(runs[i].variant));
           cpr.label = "max compression" + (runs[i].variant.empty() ? "" : ", " + nice_variant(runs[i].variant));
           t.color = cpr.color = colour(i);
           t.dashed = cpr.dashed = runs[i].variant == "without_buffer";
           cpr.width = 2.0f;
-          for (const auto& s : m["stations"]) {
-            t.x.push_back(num(s, {"sigma_tension_max_Pa", "value"}, 0.0) * 1e-6), t.y.push_back(s["s_m"].get<double>());
-            cpr.x.push_back(num(s, {"sigma_compression_min_Pa", "value"}, 0.0) * 1e-6), cpr.y.push_back(s["s_m"].get<double>());
-            smax = std::max(smax, s["s_m"].get<double>());
+          for (const design::Station& s : m.stations) {
+            t.x.push_back((s.sigma_tension.set ? s.sigma_tension.value : 0.0) * 1e-6), t.y.push_back(s.s_m);
+            cpr.x.push_back((s.sigma_compression.set ? s.sigma_compression.value : 0.0) * 1e-6), cpr.y.push_back(s.s_m);
+            smax = std::max(smax, s.s_m);
           }
           e.curves.push_back(t), e.curves.push_back(cpr);
         }

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "design/comparison.hpp"
+#include "design/members_json.hpp"
 #include "design/verdict.hpp"
 
 namespace dmi::design {
@@ -62,6 +63,27 @@ TEST(DesignRecords, ComparisonsReadBackTheSame) {
   EXPECT_EQ(to_json(*plane_and_space_from_json(to_json(p), "test")), to_json(p));
   EXPECT_FALSE(comparison_from_json(nullptr, "test").has_value());
   EXPECT_THROW(comparison_from_json(nlohmann::json{{"note", "n"}}, "test"), std::runtime_error);
+}
+
+TEST(DesignRecords, MemberEnvelopeReadsBackTheSame) {
+  for (int dim : {2, 3}) {
+    MemberEnvelope m;
+    m.dim = dim, m.name = "dam", m.cls = "concrete", m.length = 4;
+    for (int k = 0; k < 3; ++k) {
+      Station st;
+      st.position = 0.5 * k, st.s_m = 2.0 * k, st.x = 0.1, st.y = 2.0 * k, st.z = dim == 3 ? 0.3 : 0.0, st.depth = 1.2;
+      st.N_max.max(1e3 * k, 0.01), st.sigma_tension.max(1e6 * (3 - k), 0.02), st.sigma_compression.min(-2e6, 0.03);
+      if (dim == 3) st.T_abs.max(50, 0.04), st.principal.max(1.5e6, 0.05);
+      m.stations.push_back(st);
+    }
+    nlohmann::json run = {{"dimension", dim}, {"members", {member_json(m)}}};
+    const std::vector<MemberEnvelope> back = members_from_json(run, "test");
+    ASSERT_EQ(back.size(), 1u);
+    EXPECT_EQ(member_json(back[0]), member_json(m));
+    EXPECT_FALSE(back[0].stations[0].M_max.set);  // unset stays unset
+    run["members"][0]["stations"][1]["sigma_tension_max_Pa"] = 3;
+    EXPECT_THROW(members_from_json(run, "test"), std::runtime_error);
+  }
 }
 
 }  // namespace
