@@ -12,6 +12,7 @@
 
 #include "core/variants.hpp"
 #include "design/design.hpp"
+#include "design/plastic_record.hpp"
 #include "design/verdict.hpp"
 #include "design/grid_study.hpp"
 #include "engine/common/error.hpp"
@@ -131,8 +132,8 @@ std::string verdict_text(const json& d) {
   // The member model the verdict rests on (elastic members cannot yield; plastic ones are judged by strain and drift).
   if (d.contains("runs"))
     for (const auto& r : d["runs"])
-      if (r.contains("plastic") && r["plastic"].is_object()) {
-        o << "  members: " << r["plastic"]["member_model"].get<std::string>() << ", f_y " << eng(r["steel_yield_strength_Pa"], "Pa") << " ("
+      if (const auto p = plastic_from_json(r.value("plastic", json()), "design.json run plastic")) {
+        o << "  members: " << p->member_model << ", f_y " << eng(r["steel_yield_strength_Pa"], "Pa") << " ("
           << (r["variant"].get<std::string>().empty() ? std::string("the run") : r["variant"].get<std::string>()) << ")\n";
         break;
       }

@@ -178,7 +178,8 @@ json design_run(const Results& r, const Limits& limits, const std::string& where
   run["contact"] = contact_json(c);
   punching(r.info.peak_contact, members, L, checks);
   run["solid"] = solid_part(r.info.solid_check, L, checks);
-  run["plastic"] = frame ? plastic_part(r, *frame, members, basis, c, L.steel, checks, where) : json(nullptr);
+  const std::optional<PlasticRecord> plastic = frame ? plastic_part(r, *frame, members, basis, c, L.steel, checks, where) : std::nullopt;
+  run["plastic"] = plastic ? to_json(*plastic) : json(nullptr);
   run["steel_yield_strength_Pa"] = L.steel.yield_strength;
   json est = json::array();
   if (basis)

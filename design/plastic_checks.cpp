@@ -90,15 +90,15 @@ Check buckling_check(const FrameInfo& f, const FrameInfo::Member& m, const Membe
 }
 
 // The crest's residual displacement along the flow (and across it in 3D): the nodes at the top of the frame.
-json residual_drift(const Results& r, const FrameInfo& f, const std::optional<DesignBasis>& basis, const SteelLimits& S,
-                    std::vector<Check>& checks) {
+std::optional<PlasticRecord::Drift> residual_drift(const Results& r, const FrameInfo& f, const std::optional<DesignBasis>& basis, const SteelLimits& S,
+                                                   std::vector<Check>& checks) {
   const Series* d = r.find("frame/displacement");
-  if (!d || d->samples() != r.time.size() || r.time.size() < 2) return nullptr;
+  if (!d || d->samples() != r.time.size() || r.time.size() < 2) return std::nullopt;
   const int up = f.dim == 3 ? 2 : 1, per = f.dim == 3 ? 6 : 3;
   double top = -INFINITY, bottom = INFINITY;
   for (const auto& n : f.nodes) top = std::max(top, n[up]), bottom = std::min(bottom, n[up]);
   const double height = basis && is_set(basis->dam.height_m) ? basis->dam.height_m : top - bottom;
-  if (!(height > 0)) return nullptr;  // a frame without height (a horizontal member) has no drift
+  if (!(height > 0)) return std::nullopt;  // a frame without height (a horizontal member) has no drift
   const auto p1 = r.info.numbers.find("frame_period_1");
   const double window = p1 != r.info.numbers.end() ? p1->second : 0.1 * (r.time.back() - r.time.front());
   Residual worst;
@@ -115,7 +115,7 @@ json residual_drift(const Results& r, const FrameInfo& f, const std::optional<De
     const double h = std::hypot(along[0].value, f.dim == 3 ? along[1].value : 0.0);
     if (h > worst_h) worst_h = h, node = int(k), worst = {h, std::hypot(along[0].amplitude, f.dim == 3 ? along[1].amplitude : 0.0)};
   }
-  if (node < 0) return nullptr;
+  if (node < 0) return std::nullopt;
   Check c = base_check("steel_residual_drift", "residual drift of the crest", "", "-",
                        "|u_res| / H <= limit, u_res the mean crest displacement over the last period minus the state at rest",
                        "FEMA P-58-1 Table C-1 (1 %: realignment no longer economic)");
@@ -123,16 +123,15 @@ json residual_drift(const Results& r, const FrameInfo& f, const std::optional<De
   c.x_m = f.nodes[node][0], c.y_m = f.nodes[node][1], c.z_m = f.nodes[node][2], c.space = f.dim == 3;
   c.finish();
   checks.push_back(c);
-  return json{{"node_index", node}, {"residual_m", worst.value}, {"amplitude_m", worst.amplitude}, {"height_m", height},
-              {"window_s", window}, {"drift", worst.value / height}, {"settled", worst.amplitude <= 0.2 * worst.value}};
+  return PlasticRecord::Drift{node, worst.value, worst.amplitude, height, window, worst.value / height, worst.amplitude <= 0.2 * worst.value};
 }
 
 // The struck pipe's dent: the depth at which its wall carries the contact pulse's mean force, and the depth that
 // absorbs the impact's energy (the boulder's kinetic energy, at most the work the material did on the members); the
 // smaller governs. A knife-edge contact (b = 0), the lower resistance curve.
-json dent(const Results& r, const FrameInfo& f, const std::optional<DesignBasis>& basis, const Contact& contact, const SteelLimits& S,
-          std::vector<Check>& checks) {
-  if (!r.info.peak_contact || r.info.peak_contact->loads.empty() || !contact.present) return nullptr;
+std::optional<PlasticRecord::Dent> dent(const Results& r, const FrameInfo& f, const std::optional<DesignBasis>& basis, const Contact& contact,
+                                        const SteelLimits& S, std::vector<Check>& checks) {
+  if (!r.info.peak_contact || r.info.peak_contact->loads.empty() || !contact.present) return std::nullopt;
   std::map<std::string, double> per_member;
   for (const ContactLoadAt& l : r.info.peak_contact->loads) {
     double m2 = 0;
@@ -141,7 +140,7 @@ json dent(const Results& r, const FrameInfo& f, const std::optional<DesignBasis>
   }
   const auto struck = std::max_element(per_member.begin(), per_member.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
   const auto m = std::find_if(f.members.begin(), f.members.end(), [&](const FrameInfo::Member& x) { return x.name == struck->first; });
-  if (m == f.members.end() || f.elements[m->first].section.kind() != SectionKind::pipe) return nullptr;
+  if (m == f.members.end() || f.elements[m->first].section.kind() != SectionKind::pipe) return std::nullopt;
   const Section& sec = f.elements[m->first].section;
   const double D = sec.depth(0), t = sec.wall_thickness();
   const double duration = contact.pulse_end_s - contact.pulse_start_s;
@@ -162,27 +161,25 @@ json dent(const Results& r, const FrameInfo& f, const std::optional<DesignBasis>
   place(c, f, *m, r.info.peak_contact->loads[0].position);
   c.finish();
   checks.push_back(c);
-  return json{{"member", m->name}, {"diameter_m", D}, {"wall_thickness_m", t}, {"pulse_mean_force_N", F}, {"energy_J", E},
-              {"depth_at_force_m", std::min(w_force, D)}, {"depth_for_energy_m", std::min(w_energy, D)}, {"depth_m", w}};
+  return PlasticRecord::Dent{m->name, D, t, F, E, std::min(w_force, D), std::min(w_energy, D), w};
 }
 
 }  // namespace
 
-json plastic_part(const Results& r, const FrameInfo& f, const std::vector<MemberEnvelope>& members, const std::optional<DesignBasis>& basis,
-                  const Contact& contact, const SteelLimits& S, std::vector<Check>& checks, const std::string& where) {
-  if (std::none_of(f.members.begin(), f.members.end(), [](const FrameInfo::Member& m) { return m.plastic; })) return nullptr;
+std::optional<PlasticRecord> plastic_part(const Results& r, const FrameInfo& f, const std::vector<MemberEnvelope>& members,
+                                          const std::optional<DesignBasis>& basis, const Contact& contact, const SteelLimits& S,
+                                          std::vector<Check>& checks, const std::string& where) {
+  if (std::none_of(f.members.begin(), f.members.end(), [](const FrameInfo::Member& m) { return m.plastic; })) return std::nullopt;
   const Series* s = r.find("frame/plastic");
   if (!s || s->components.size() != 3 * f.elements.size() || s->samples() != r.time.size() || r.time.empty())
     throw std::runtime_error(where + ": frame/plastic is missing or malformed although the structure has elasto-plastic members");
-  json per_member = json::array();
-  std::map<std::string, double> groups;
+  PlasticRecord out;
   for (std::size_t k = 0; k < f.members.size(); ++k) {
     const FrameInfo::Member& m = f.members[k];
     if (!m.plastic) continue;
     const MemberPlastic p = member_plastic(r, *s, m);
-    groups[member_group(m.name)] += p.work;
-    per_member.push_back({{"member", m.name}, {"group", member_group(m.name)}, {"plastic_work_J", p.work}, {"peak_strain", p.peak_strain},
-                          {"yielded", p.yielded}});
+    out.energy.by_group_J[member_group(m.name)] += p.work;
+    out.members.push_back({m.name, member_group(m.name), p.work, p.peak_strain, p.yielded});
     Check strain = base_check("steel_strain", "peak strain", m.name, "-", "eps_max at the section surface <= eps_lim",
                               "EN 1993-1-5 Annex C.8(1), Note 1 (limiting principal strain 5 %)");
     strain.demand = p.peak_strain, strain.capacity = S.strain_limit, strain.time_s = p.peak_time;
@@ -207,21 +204,20 @@ json plastic_part(const Results& r, const FrameInfo& f, const std::vector<Member
     const Check b = buckling_check(f, m, members[k], S);
     if (b.demand > 0) checks.push_back(b);
   }
-  json energy{{"plastic_work_J", 0.0}, {"by_group_J", groups}};
   const auto last_of = [&](const char* path) {
     const Series* e = r.find(path);
     return e && !e->data.empty() ? e->data.back() : 0.0;
   };
-  energy["plastic_work_J"] = last_of("energy/frame_plastic");
-  energy["damping_J"] = last_of("energy/frame_damping");
-  energy["elastic_at_end_J"] = last_of("energy/frame_strain");
-  energy["kinetic_at_end_J"] = last_of("energy/frame_kinetic");
-  if (const Series* cw = r.find("energy/contact_work")) energy["contact_work_max_J"] = *std::max_element(cw->data.begin(), cw->data.end());
+  PlasticRecord::Energy& energy = out.energy;
+  energy.plastic_work_J = last_of("energy/frame_plastic");
+  energy.damping_J = last_of("energy/frame_damping");
+  energy.elastic_at_end_J = last_of("energy/frame_strain");
+  energy.kinetic_at_end_J = last_of("energy/frame_kinetic");
+  if (const Series* cw = r.find("energy/contact_work")) energy.contact_work_max_J = *std::max_element(cw->data.begin(), cw->data.end());
   if (basis && basis->boulder && is_set(basis->boulder->mass_kg) && is_set(basis->boulder->speed_m_s))
-    energy["boulder_kinetic_J"] = 0.5 * basis->boulder->mass_kg * basis->boulder->speed_m_s * basis->boulder->speed_m_s;
-  json out{{"member_model", "elasto-plastic fibre beam-columns"}, {"energy", energy}, {"members", per_member}};
-  out["residual_drift"] = residual_drift(r, f, basis, S, checks);
-  out["dent"] = dent(r, f, basis, contact, S, checks);
+    energy.boulder_kinetic_J = 0.5 * basis->boulder->mass_kg * basis->boulder->speed_m_s * basis->boulder->speed_m_s;
+  out.residual_drift = residual_drift(r, f, basis, S, checks);
+  out.dent = dent(r, f, basis, contact, S, checks);
   return out;
 }
 

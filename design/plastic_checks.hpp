@@ -16,15 +16,16 @@
 #include "design/limits.hpp"
 #include "design/loads.hpp"
 #include "design/members.hpp"
+#include "design/plastic_record.hpp"
 #include "engine/io/results.hpp"
 
 namespace dmi::design {
 
 // design.json's "plastic" (null when no member is elasto-plastic): the energy split, per member and per member group
 // (the name up to its first '_': column, beam, brace, tie), the residual drift and the dent; the checks are appended.
-nlohmann::json plastic_part(const Results& r, const FrameInfo& f, const std::vector<MemberEnvelope>& members,
-                            const std::optional<DesignBasis>& basis, const Contact& contact, const SteelLimits& S,
-                            std::vector<Check>& checks, const std::string& where);
+std::optional<PlasticRecord> plastic_part(const Results& r, const FrameInfo& f, const std::vector<MemberEnvelope>& members,
+                                          const std::optional<DesignBasis>& basis, const Contact& contact, const SteelLimits& S,
+                                          std::vector<Check>& checks, const std::string& where);
 
 // The member group of a member name: its part before the first '_' (the whole name without one).
 std::string member_group(const std::string& name);

@@ -1,7 +1,9 @@
 // The report's rows on steel members that yield (design.json runs[].plastic; docs/design-checks.md "Plastic steel").
 #include <algorithm>
+#include <optional>
 #include <string>
 
+#include "design/plastic_record.hpp"
 #include "render/report_rows.hpp"
 
 namespace dmi::render {
@@ -10,65 +12,61 @@ using nlohmann::json;
 
 namespace {
 
-const json* plastic(const RunData& r) {
-  return r.design.contains("plastic") && r.design["plastic"].is_object() ? &r.design["plastic"] : nullptr;
+std::optional<design::PlasticRecord> plastic(const RunData& r) {
+  return design::plastic_from_json(r.design.value("plastic", json()), "design.json run " + r.file + " plastic");
 }
 
-std::string energy(const RunData& r, const char* key) {
-  const json* p = plastic(r);
-  if (!p || !(*p)["energy"].contains(key)) return "—";
-  return fmt("%.4g kJ", (*p)["energy"][key].get<double>() / 1e3);
-}
+std::string kilojoules(const std::optional<double>& e) { return e ? fmt("%.4g kJ", *e / 1e3) : std::string("—"); }
 
 }  // namespace
 
 json plastic_rows(const std::vector<RunData>& runs) {
-  bool any = false;
-  for (const auto& r : runs) any = any || plastic(r);
-  if (!any) return json::array();
+  std::vector<std::optional<design::PlasticRecord>> records;
+  for (const auto& r : runs) records.push_back(plastic(r));
+  if (std::none_of(records.begin(), records.end(), [](const auto& p) { return p.has_value(); })) return json::array();
+  const auto of = [&runs, &records](const RunData& r) -> const std::optional<design::PlasticRecord>& { return records[&r - runs.data()]; };
+  const auto energy = [of](double design::PlasticRecord::Energy::*e) {
+    return [of, e](const RunData& r) { return of(r) ? kilojoules(of(r)->energy.*e) : std::string("—"); };
+  };
+  const auto maybe_energy = [of](std::optional<double> design::PlasticRecord::Energy::*e) {
+    return [of, e](const RunData& r) { return of(r) ? kilojoules(of(r)->energy.*e) : std::string("—"); };
+  };
   std::vector<std::pair<std::string, std::function<std::string(const RunData&)>>> rows = {
-      {"member model", [](const RunData& r) {
-         const json* p = plastic(r);
-         return p ? (*p)["member_model"].get<std::string>() + fmt(", f_y %.0f MPa", r.design.value("steel_yield_strength_Pa", 0.0) / 1e6)
-                  : std::string("elastic");
+      {"member model", [of](const RunData& r) {
+         return of(r) ? of(r)->member_model + fmt(", f_y %.0f MPa", r.design.value("steel_yield_strength_Pa", 0.0) / 1e6) : std::string("elastic");
        }},
-      {"boulder's kinetic energy", [](const RunData& r) { return energy(r, "boulder_kinetic_J"); }},
-      {"work of the impact on the members (largest)", [](const RunData& r) { return energy(r, "contact_work_max_J"); }},
-      {"plastic work in the members", [](const RunData& r) { return energy(r, "plastic_work_J"); }},
-      {"dissipated by the members' damping", [](const RunData& r) { return energy(r, "damping_J"); }}};
+      {"boulder's kinetic energy", maybe_energy(&design::PlasticRecord::Energy::boulder_kinetic_J)},
+      {"work of the impact on the members (largest)", maybe_energy(&design::PlasticRecord::Energy::contact_work_max_J)},
+      {"plastic work in the members", energy(&design::PlasticRecord::Energy::plastic_work_J)},
+      {"dissipated by the members' damping", energy(&design::PlasticRecord::Energy::damping_J)}};
   std::vector<std::string> groups;
-  for (const auto& r : runs)
-    if (const json* p = plastic(r))
-      for (auto it = (*p)["energy"]["by_group_J"].begin(); it != (*p)["energy"]["by_group_J"].end(); ++it)
-        if (std::find(groups.begin(), groups.end(), it.key()) == groups.end()) groups.push_back(it.key());
+  for (const auto& p : records)
+    if (p)
+      for (const auto& [g, work] : p->energy.by_group_J)
+        if (std::find(groups.begin(), groups.end(), g) == groups.end()) groups.push_back(g);
   for (const std::string& g : groups)
-    rows.push_back({"plastic work: " + g + "s", [g](const RunData& r) {
-                      const json* p = plastic(r);
-                      if (!p || !(*p)["energy"]["by_group_J"].contains(g)) return std::string("—");
-                      return fmt("%.4g kJ", (*p)["energy"]["by_group_J"][g].get<double>() / 1e3);
+    rows.push_back({"plastic work: " + g + "s", [of, g](const RunData& r) {
+                      if (!of(r) || !of(r)->energy.by_group_J.count(g)) return std::string("—");
+                      return fmt("%.4g kJ", of(r)->energy.by_group_J.at(g) / 1e3);
                     }});
-  rows.push_back({"largest strain (member)", [](const RunData& r) {
-                    const json* p = plastic(r);
-                    if (!p) return std::string("—");
+  rows.push_back({"largest strain (member)", [of](const RunData& r) {
+                    if (!of(r)) return std::string("—");
                     double best = -1;
                     std::string who;
-                    for (const auto& m : (*p)["members"])
-                      if (m["peak_strain"].get<double>() > best) best = m["peak_strain"].get<double>(), who = m["member"].get<std::string>();
+                    for (const auto& m : of(r)->members)
+                      if (m.peak_strain > best) best = m.peak_strain, who = m.member;
                     return fmt("%.3g %%", 100 * best) + " (" + who + ")";
                   }});
-  rows.push_back({"residual drift of the crest", [](const RunData& r) {
-                    const json* p = plastic(r);
-                    if (!p || (*p)["residual_drift"].is_null()) return std::string("—");
-                    const json& d = (*p)["residual_drift"];
-                    return fmt("%.3g %%", 100 * d["drift"].get<double>()) + " (" + eng(d["residual_m"].get<double>(), "m") + ", still ringing ±" +
-                           eng(d["amplitude_m"].get<double>(), "m") + (d["settled"].get<bool>() ? ")" : ": NOT SETTLED, run longer)");
+  rows.push_back({"residual drift of the crest", [of](const RunData& r) {
+                    if (!of(r) || !of(r)->residual_drift) return std::string("—");
+                    const auto& d = *of(r)->residual_drift;
+                    return fmt("%.3g %%", 100 * d.drift) + " (" + eng(d.residual_m, "m") + ", still ringing ±" + eng(d.amplitude_m, "m") +
+                           (d.settled ? ")" : ": NOT SETTLED, run longer)");
                   }});
-  rows.push_back({"dent of the struck pipe", [](const RunData& r) {
-                    const json* p = plastic(r);
-                    if (!p || (*p)["dent"].is_null()) return std::string("—");
-                    const json& d = (*p)["dent"];
-                    return eng(d["depth_m"].get<double>(), "m") + fmt(" (%.3g of D, ", d["depth_m"].get<double>() / d["diameter_m"].get<double>()) +
-                           d["member"].get<std::string>() + ")";
+  rows.push_back({"dent of the struck pipe", [of](const RunData& r) {
+                    if (!of(r) || !of(r)->dent) return std::string("—");
+                    const auto& d = *of(r)->dent;
+                    return eng(d.depth_m, "m") + fmt(" (%.3g of D, ", d.depth_m / d.diameter_m) + d.member + ")";
                   }});
   return per_run_rows(runs, rows);
 }

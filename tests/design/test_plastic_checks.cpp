@@ -77,10 +77,11 @@ TEST(PlasticChecks, ChecksOfAPlasticColumn) {
   std::vector<Check> checks;
   SteelLimits S;
   S.yield_strength = 355e6;
-  const nlohmann::json p = plastic_part(r, f, {env}, std::nullopt, Contact{}, S, checks, "test");
-  ASSERT_FALSE(p.is_null());
-  EXPECT_DOUBLE_EQ(p["energy"]["by_group_J"]["column"].get<double>(), 1060.0);
-  EXPECT_DOUBLE_EQ(p["energy"]["plastic_work_J"].get<double>(), 1060.0);
+  const std::optional<PlasticRecord> p = plastic_part(r, f, {env}, std::nullopt, Contact{}, S, checks, "test");
+  ASSERT_TRUE(p.has_value());
+  EXPECT_DOUBLE_EQ(p->energy.by_group_J.at("column"), 1060.0);
+  EXPECT_DOUBLE_EQ(p->energy.plastic_work_J, 1060.0);
+  EXPECT_EQ(to_json(*plastic_from_json(to_json(*p), "test")), to_json(*p));  // the record reads back the same
   const auto find = [&](const char* id) {
     for (const Check& c : checks)
       if (c.id == id) return c;
@@ -96,7 +97,8 @@ TEST(PlasticChecks, ChecksOfAPlasticColumn) {
   // Residual over the last period (0.015 s: the samples at 0.02 and 0.03 s): mean 0.030 m, drift 0.030 / 4.
   const Check drift = find("steel_residual_drift");
   EXPECT_NEAR(drift.demand, 0.030 / 4, 1e-12);
-  EXPECT_NEAR(p["residual_drift"]["amplitude_m"].get<double>(), 0.005, 1e-12);
+  ASSERT_TRUE(p->residual_drift.has_value());
+  EXPECT_NEAR(p->residual_drift->amplitude_m, 0.005, 1e-12);
 }
 
 }  // namespace
