@@ -45,12 +45,9 @@ Sample sample(const BaseJointLoads& l, const RigidSection& s, double W, const Fo
   return out;
 }
 
-json sample_json(const Sample& s, double t) {
-  auto num = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
-  return json{{"time_s", t}, {"N_N", s.l.N}, {"H_N", s.l.H}, {"sliding_factor", num(s.sliding)}, {"overturning_factor", num(overturning_factor(s.l))},
-              {"resultant_from_toe_m", num(s.at.x_r)}, {"eccentricity_m", num(s.at.eccentricity)},
-              {"compressed_fraction", s.at.compressed_fraction}, {"toe_pressure_Pa", num(s.at.toe_pressure)},
-              {"heel_pressure_Pa", num(s.at.heel_pressure)}};
+StabilityRecord::Sample sample_record(const Sample& s, double t) {
+  return {t, s.l.N, s.l.H, s.sliding, overturning_factor(s.l), s.at.x_r, s.at.eccentricity, s.at.compressed_fraction, s.at.toe_pressure,
+          s.at.heel_pressure};
 }
 
 Check stability_check(const char* level, const char* id, const char* title, double demand, double capacity, const char* unit, double t,
@@ -84,9 +81,9 @@ bool stability_applies(const FrameInfo& f, const DesignBasis& b) {
          is_set(d.crest_upstream_x_m) && is_set(d.crest_downstream_x_m);
 }
 
-json stability(const Results& r, const FrameInfo& f, const DesignBasis& b, const FoundationLimits& L, std::vector<Check>& checks,
-               const std::string& where) {
-  if (!stability_applies(f, b) || r.time.empty()) return nullptr;
+std::optional<StabilityRecord> stability(const Results& r, const FrameInfo& f, const DesignBasis& b, const FoundationLimits& L,
+                                         std::vector<Check>& checks, const std::string& where) {
+  if (!stability_applies(f, b) || r.time.empty()) return std::nullopt;
   const DamBasis& d = b.dam;
   const RigidSection sec = rigid_section(d.heel_x_m, d.toe_x_m, d.crest_upstream_x_m, d.crest_downstream_x_m, d.height_m, d.width_m, d.density_kg_m3);
   const double Mr = sec.weight_N * sec.centroid_from_toe_m;
@@ -101,9 +98,12 @@ json stability(const Results& r, const FrameInfo& f, const DesignBasis& b, const
     for (double& m : M) m = -m;
   // The rigid dam's weight is the section's; the frame must carry it at rest (self-weight on, the same section), else
   // its reactions do not describe this dam.
-  if (!(std::abs(Fy[0] - sec.weight_N) <= 0.1 * sec.weight_N))
-    return json{{"not_assessed", "the frame's vertical reaction at rest (" + std::to_string(Fy[0]) + " N) is not the dam section's weight (" +
-                                     std::to_string(sec.weight_N) + " N) within 10 %: self-weight off, or a frame that is not this dam"}};
+  if (!(std::abs(Fy[0] - sec.weight_N) <= 0.1 * sec.weight_N)) {
+    StabilityRecord out;
+    out.not_assessed = "the frame's vertical reaction at rest (" + std::to_string(Fy[0]) + " N) is not the dam section's weight (" +
+                       std::to_string(sec.weight_N) + " N) within 10 %: self-weight off, or a frame that is not this dam";
+    return out;
+  }
   std::vector<Sample> s;
   std::vector<double> H(r.time.size()), R(r.time.size()), Mo(r.time.size()), Mres(r.time.size(), Mr);
   for (std::size_t k = 0; k < r.time.size(); ++k) {
@@ -130,20 +130,13 @@ json stability(const Results& r, const FrameInfo& f, const DesignBasis& b, const
   checks.push_back(stability_check("ultimate", "stability_rocking", "rocking about the toe under the impact (rigid block)", L.rocking_safety_factor * rotation, alpha,
                                    "rad", r.time.back(), "SF theta_max <= alpha_c = atan(x_G / y_G), I_toe theta'' = M_o - W x_G",
                                    "Housner (1963), small rotations"));
-  return json{{"model", "rigid dam on its base joint under the simulated base reactions (decoupled: the fixed-base run's reactions drive it)"},
-              {"dam", {{"mass_kg", sec.mass_kg}, {"weight_N", sec.weight_N}, {"base_m", sec.base_m}, {"width_m", d.width_m},
-                       {"weight_lever_from_toe_m", sec.centroid_from_toe_m}, {"centroid_height_m", sec.centroid_height_m},
-                       {"inertia_about_toe_kg_m2", sec.inertia_about_toe_kg_m2}, {"critical_angle_rad", alpha}}},
-              {"foundation", {{"friction", L.friction}, {"cohesion_Pa", L.cohesion}, {"bearing_capacity_Pa", L.bearing_capacity},
-                              {"uplift_factor", L.uplift_factor}, {"uplift_N", U}}},
-              {"persistent", sample_json(s[0], r.time[0])},
-              {"impact",
-               {{"least_sliding_factor", sample_json(s[slide], r.time[slide])},
-                {"least_compressed_base", sample_json(s[open], r.time[open])},
-                {"time_outside_middle_third_s", outside_third},
-                {"time_outside_base_s", outside_base},
-                {"sliding_displacement_m", displacement},
-                {"peak_rocking_rotation_rad", rotation}}}};
+  StabilityRecord out;
+  out.model = "rigid dam on its base joint under the simulated base reactions (decoupled: the fixed-base run's reactions drive it)";
+  out.dam = {sec.mass_kg, sec.weight_N, sec.base_m, d.width_m, sec.centroid_from_toe_m, sec.centroid_height_m, sec.inertia_about_toe_kg_m2, alpha};
+  out.foundation = {L.friction, L.cohesion, L.bearing_capacity, L.uplift_factor, U};
+  out.persistent = sample_record(s[0], r.time[0]);
+  out.impact = {sample_record(s[slide], r.time[slide]), sample_record(s[open], r.time[open]), outside_third, outside_base, displacement, rotation};
+  return out;
 }
 
 }  // namespace dmi::design

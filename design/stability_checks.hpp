@@ -5,6 +5,7 @@
 // "Stability"). Plane models of a concrete gravity dam with its base supports; the totals are those of the width the
 // model stands for.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "design/checks.hpp"
 #include "design/limits.hpp"
 #include "design/members.hpp"
+#include "design/stability_record.hpp"
 #include "engine/io/results.hpp"
 
 namespace dmi::design {
@@ -22,8 +24,8 @@ namespace dmi::design {
 // basis records.
 bool stability_applies(const FrameInfo& f, const DesignBasis& b);
 
-// The design.json "stability" object of a run, and its checks appended to `checks`.
-nlohmann::json stability(const Results& r, const FrameInfo& f, const DesignBasis& b, const FoundationLimits& L, std::vector<Check>& checks,
-                         const std::string& where);
+// The design.json "stability" record of a run (none when it does not apply), and its checks appended to `checks`.
+std::optional<StabilityRecord> stability(const Results& r, const FrameInfo& f, const DesignBasis& b, const FoundationLimits& L,
+                                         std::vector<Check>& checks, const std::string& where);
 
 }  // namespace dmi::design

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "design/design.hpp"
+#include "design/stability_record.hpp"
 #include "design/verdict.hpp"
 #include "render/report.hpp"
 #include "render/report_rows.hpp"
@@ -241,45 +242,48 @@ namespace {
 
 // The dam on its foundation (design.json runs[].stability), a column per run; empty when no run has it.
 json stability_rows(const std::vector<RunData>& runs) {
+  // A run whose dam was not assessed keeps its column, with dashes.
+  std::vector<std::optional<design::StabilityRecord>> records;
   bool any = false;
-  for (const auto& r : runs) any = any || (r.design.contains("stability") && r.design["stability"].is_object());
+  for (const auto& r : runs) {
+    std::optional<design::StabilityRecord> s = design::stability_from_json(r.design.value("stability", json()), "design.json run " + r.file + " stability");
+    any = any || s.has_value();
+    records.push_back(s && s->not_assessed.empty() ? s : std::nullopt);
+  }
   if (!any) return json::array();
-  auto get = [](const RunData& r, std::initializer_list<const char*> path) -> const json* {
-    if (!r.design.contains("stability") || !r.design["stability"].is_object()) return nullptr;
-    const json* j = &r.design["stability"];
-    for (const char* k : path) {
-      if (!j->is_object() || !j->contains(k)) return nullptr;
-      j = &(*j)[k];
-    }
-    return j;
-  };
-  auto num = [&](std::initializer_list<const char*> path, const char* unit, double scale = 1.0, const char* infinite = "∞") {
-    return [=](const RunData& r) {
-      const json* v = get(r, path);
-      if (!v) return std::string("—");
-      return v->is_number() ? eng(v->get<double>() * scale, unit) : std::string(infinite);
+  using S = design::StabilityRecord;
+  const auto of = [&runs, &records](const RunData& r) -> const std::optional<S>& { return records[&r - runs.data()]; };
+  // A number of the run's record ("—" without one); not finite (a factor without demand, a block that does not stop or
+  // topples): `infinite`.
+  const auto show = [of](std::function<double(const S&)> get, const char* unit, const char* infinite = "∞") {
+    return [of, get, unit, infinite](const RunData& r) {
+      if (!of(r)) return std::string("—");
+      const double v = get(*of(r));
+      return std::isfinite(v) ? eng(v, unit) : std::string(infinite);
     };
   };
   return per_run_rows(runs, {
-      {"dam weight (width represented)", num({"dam", "weight_N"}, "N")},
-      {"at rest: eccentricity of the resultant (B/6 limit)", [=](const RunData& r) {
-         const json *e = get(r, {"persistent", "eccentricity_m"}), *b = get(r, {"dam", "base_m"});
-         return e && b && e->is_number() ? eng(e->get<double>(), "m") + " (" + eng(b->get<double>() / 6, "m") + ")" : std::string("—");
+      {"dam weight (width represented)", show([](const S& s) { return s.dam.weight_N; }, "N")},
+      {"at rest: eccentricity of the resultant (B/6 limit)", [of](const RunData& r) {
+         if (!of(r) || std::isnan(of(r)->persistent.eccentricity_m)) return std::string("—");
+         return eng(of(r)->persistent.eccentricity_m, "m") + " (" + eng(of(r)->dam.base_m / 6, "m") + ")";
        }},
-      {"at rest: toe / heel pressure", [=](const RunData& r) {
-         return num({"persistent", "toe_pressure_Pa"}, "Pa")(r) + " / " + num({"persistent", "heel_pressure_Pa"}, "Pa")(r);
+      {"at rest: toe / heel pressure", [show](const RunData& r) {
+         return show([](const S& s) { return s.persistent.toe_pressure_Pa; }, "Pa", "∞")(r) + " / " +
+                show([](const S& s) { return s.persistent.heel_pressure_Pa; }, "Pa", "∞")(r);
        }},
-      {"impact: least sliding factor (instant)", [=](const RunData& r) {
-         const json* t = get(r, {"impact", "least_sliding_factor", "time_s"});
-         return num({"impact", "least_sliding_factor", "sliding_factor"}, "")(r) + (t ? " (" + eng(t->get<double>(), "s") + ")" : "");
+      {"impact: least sliding factor (instant)", [of, show](const RunData& r) {
+         return show([](const S& s) { return s.impact.least_sliding_factor.sliding_factor; }, "", "∞")(r) +
+                (of(r) ? " (" + eng(of(r)->impact.least_sliding_factor.time_s, "s") + ")" : "");
        }},
-      {"impact: time the resultant is outside the middle third / the base", [=](const RunData& r) {
-         return num({"impact", "time_outside_middle_third_s"}, "s")(r) + " / " + num({"impact", "time_outside_base_s"}, "s")(r);
+      {"impact: time the resultant is outside the middle third / the base", [show](const RunData& r) {
+         return show([](const S& s) { return s.impact.time_outside_middle_third_s; }, "s", "∞")(r) + " / " +
+                show([](const S& s) { return s.impact.time_outside_base_s; }, "s", "∞")(r);
        }},
-      {"impact: sliding displacement (Newmark)", num({"impact", "sliding_displacement_m"}, "m", 1.0, "does not stop")},
-      {"impact: peak rocking rotation about the toe (critical angle)", [=](const RunData& r) {
-         const json* a = get(r, {"dam", "critical_angle_rad"});
-         return num({"impact", "peak_rocking_rotation_rad"}, "rad", 1.0, "topples")(r) + (a ? " (" + fmt("%.3g rad", a->get<double>()) + ")" : "");
+      {"impact: sliding displacement (Newmark)", show([](const S& s) { return s.impact.sliding_displacement_m; }, "m", "does not stop")},
+      {"impact: peak rocking rotation about the toe (critical angle)", [of, show](const RunData& r) {
+         return show([](const S& s) { return s.impact.peak_rocking_rotation_rad; }, "rad", "topples")(r) +
+                (of(r) ? " (" + fmt("%.3g rad", of(r)->dam.critical_angle_rad) + ")" : "");
        }},
   });
 }
