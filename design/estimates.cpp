@@ -14,8 +14,53 @@ using nlohmann::json;
 
 json Estimate::to_json() const {
   auto num = [&](double v) { return applicable ? json(v) : json(nullptr); };
-  return json{{"id", id}, {"title", title}, {"formula", formula}, {"source", source}, {"parameters", parameters}, {"applicable", applicable},
-              {"value_N", num(value)}, {"compare_to", compare_to}, {"simulated_N", num(simulated)}, {"ratio", num(ratio)}, {"note", note}};
+  json j{{"id", id}, {"title", title}, {"formula", formula}, {"source", source}, {"parameters", parameters}, {"applicable", applicable},
+         {"value_N", num(value)}, {"compare_to", compare_to}, {"simulated_N", num(simulated)}, {"ratio", num(ratio)}, {"note", note}};
+  if (grid) {
+    j["simulated_gci"] = simulated_gci, j["ratio_low"] = ratio_low;
+    j["simulated_extrapolated_N"] = simulated_extrapolated ? json(*simulated_extrapolated) : json(nullptr);
+    j["ratio_high"] = ratio_high ? json(*ratio_high) : json(nullptr);
+  }
+  return j;
+}
+
+namespace {
+std::string text_at(const json& j, const char* key, const std::string& where) {
+  if (!j.is_object() || !j.contains(key) || !j[key].is_string()) throw std::runtime_error(where + "." + key + " is not a string");
+  return j[key].get<std::string>();
+}
+// A number, or null (NaN) where the estimate does not apply.
+double number_at(const json& j, const char* key, bool nullable, const std::string& where) {
+  if (j.is_object() && j.contains(key) && j[key].is_number()) return j[key].get<double>();
+  if (nullable && j.is_object() && j.contains(key) && j[key].is_null()) return NAN;
+  throw std::runtime_error(where + "." + key + " is not a number");
+}
+}  // namespace
+
+Estimate estimate_from_json(const json& j, const std::string& w) {
+  Estimate e;
+  e.id = text_at(j, "id", w), e.title = text_at(j, "title", w), e.formula = text_at(j, "formula", w), e.source = text_at(j, "source", w);
+  e.parameters = text_at(j, "parameters", w), e.compare_to = text_at(j, "compare_to", w), e.note = text_at(j, "note", w);
+  if (!j.contains("applicable") || !j["applicable"].is_boolean()) throw std::runtime_error(w + ".applicable is not true or false");
+  e.applicable = j["applicable"];
+  e.value = number_at(j, "value_N", !e.applicable, w), e.simulated = number_at(j, "simulated_N", !e.applicable, w);
+  e.ratio = number_at(j, "ratio", !e.applicable, w);
+  if (j.contains("simulated_gci")) {
+    e.grid = true;
+    e.simulated_gci = number_at(j, "simulated_gci", false, w), e.ratio_low = number_at(j, "ratio_low", false, w);
+    const double x = number_at(j, "simulated_extrapolated_N", true, w), hi = number_at(j, "ratio_high", true, w);
+    if (!std::isnan(x)) e.simulated_extrapolated = x;
+    if (!std::isnan(hi)) e.ratio_high = hi;
+  }
+  return e;
+}
+
+std::vector<Estimate> estimates_from_json(const json& run, const std::string& where) {
+  std::vector<Estimate> out;
+  const json& list = run.is_object() && run.contains("estimates") ? run["estimates"] : json::array();
+  if (!list.is_array()) throw std::runtime_error(where + ".estimates is not an array");
+  for (std::size_t k = 0; k < list.size(); ++k) out.push_back(estimate_from_json(list[k], where + ".estimates[" + std::to_string(k) + "]"));
+  return out;
 }
 
 namespace {
@@ -257,19 +302,23 @@ void add_grid_uncertainty(json& design) {
   if (!design.contains("grid_study") || !design["grid_study"].contains("quantities")) return;
   for (auto& run : design["runs"]) {
     const std::string variant = run.value("variant", "");
-    for (auto& e : run["estimates"]) {
-      if (!e.value("applicable", true) || !e["ratio"].is_number()) continue;
-      const std::string id = e["compare_to"] == "peak_base_shear" ? "base_shear" : "contact_force";
+    std::vector<Estimate> list = estimates_from_json(run, "design.json run " + variant);
+    for (Estimate& e : list) {
+      if (!e.applicable) continue;
+      const std::string id = e.compare_to == "peak_base_shear" ? "base_shear" : "contact_force";
       for (const auto& q : design["grid_study"]["quantities"]) {
         if (q.value("variant", "") != variant || q["id"] != id || !q["gci"].is_number()) continue;
-        const double gci = q["gci"], sim = e["simulated_N"], val = e["value_N"];
+        const double gci = q["gci"], sim = e.simulated, val = e.value;
         if (!(sim > 0) || !std::isfinite(gci)) continue;
-        e["simulated_gci"] = gci;
-        e["simulated_extrapolated_N"] = q["extrapolated"];
-        e["ratio_low"] = val / (sim * (1 + gci));
-        e["ratio_high"] = gci < 1 ? json(val / (sim * (1 - gci))) : json(nullptr);
+        e.grid = true, e.simulated_gci = gci;
+        e.simulated_extrapolated = q["extrapolated"].is_number() ? std::optional<double>(q["extrapolated"].get<double>()) : std::nullopt;
+        e.ratio_low = val / (sim * (1 + gci));
+        e.ratio_high = gci < 1 ? std::optional<double>(val / (sim * (1 - gci))) : std::nullopt;
       }
     }
+    json out = json::array();
+    for (const Estimate& e : list) out.push_back(e.to_json());
+    run["estimates"] = out;
   }
 }
 

@@ -7,6 +7,10 @@
 #include <string>
 #include <vector>
 
+#include <optional>
+#include <string>
+#include <vector>
+
 #include <nlohmann/json.hpp>
 
 #include "core/design_basis.hpp"
@@ -21,8 +25,17 @@ struct Estimate {
   std::string compare_to;           // "peak_base_shear" | "peak_contact_force"
   double simulated = 0, ratio = 0;  // ratio = estimate / simulated (0 when nothing was simulated)
   std::string note;
+  // With a grid study: the grid uncertainty of the simulated peak compared with (add_grid_uncertainty), the
+  // extrapolated peak (none: not converged) and the ratio band for the simulated value within +-GCI (no upper end
+  // when GCI >= 1).
+  bool grid = false;
+  double simulated_gci = 0, ratio_low = 0;
+  std::optional<double> simulated_extrapolated, ratio_high;
   nlohmann::json to_json() const;
 };
+// An estimate read back from design.json (runs[].estimates[]), validated; `where` names the place in errors.
+Estimate estimate_from_json(const nlohmann::json& j, const std::string& where);
+std::vector<Estimate> estimates_from_json(const nlohmann::json& run, const std::string& where);
 
 // Every estimate of the scenario's kind (boulder, debris surge) for the basis, which design_basis_from_json validated.
 // `dimension`: the model's (2 or 3), for the notes on how it represents the boulder.

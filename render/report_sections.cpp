@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "design/estimates.hpp"
 #include "render/report_rows.hpp"
 
 namespace dmi::render {
@@ -14,20 +15,20 @@ void estimates_data(const std::vector<RunData>& runs, const json& design_doc, bo
   json est = json::array();
   bool banded = false;
   for (const auto& r : runs)
-    for (const auto& e : r.design["estimates"]) {
-      const bool ok = e.value("applicable", true) && e["value_N"].is_number();
-      const std::string what = e["compare_to"] == "peak_base_shear" ? "base shear" : "contact";
-      std::string sim = ok ? eng(e["simulated_N"], "N") : "—", sim_note = ok ? what : "", ratio = ok ? fmt("%.2f", e["ratio"].get<double>()) : "—", band;
-      if (ok && e.contains("simulated_gci")) {
+    for (const design::Estimate& e : design::estimates_from_json(r.design, "design.json run " + r.file)) {
+      const bool ok = e.applicable;
+      const std::string what = e.compare_to == "peak_base_shear" ? "base shear" : "contact";
+      std::string sim = ok ? eng(e.simulated, "N") : "—", sim_note = ok ? what : "", ratio = ok ? fmt("%.2f", e.ratio) : "—", band;
+      if (ok && e.grid) {
         banded = true;
-        sim_note += fmt(", GCI %.0f %%", 100 * e["simulated_gci"].get<double>());
-        band = fmt("%.2f", e["ratio_low"].get<double>()) + "–" + (e["ratio_high"].is_number() ? fmt("%.2f", e["ratio_high"].get<double>()) : std::string("∞"));
+        sim_note += fmt(", GCI %.0f %%", 100 * e.simulated_gci);
+        band = fmt("%.2f", e.ratio_low) + "–" + (e.ratio_high ? fmt("%.2f", *e.ratio_high) : std::string("∞"));
       }
-      const double q = ok ? e["ratio"].get<double>() : NAN;
+      const double q = ok ? e.ratio : NAN;
       const bool far = ok && (q < 0.5 || q > 2);
-      const std::string note = estimate_note(q, e.value("note", ""));
-      est.push_back({{"run", label(r)}, {"title", e["title"]}, {"formula", e["formula"]}, {"parameters", e.value("parameters", "")},
-                     {"value", ok ? eng(e["value_N"], "N") : std::string("n/a")}, {"simulated", sim}, {"simulated_note", sim_note}, {"ratio", ratio}, {"ratio_band", band}, {"source", e["source"]},
+      const std::string note = estimate_note(q, e.note);
+      est.push_back({{"run", label(r)}, {"title", e.title}, {"formula", e.formula}, {"parameters", e.parameters},
+                     {"value", ok ? eng(e.value, "N") : std::string("n/a")}, {"simulated", sim}, {"simulated_note", sim_note}, {"ratio", ratio}, {"ratio_band", band}, {"source", e.source},
                      {"note", note}, {"row_class", ok ? (far ? "far" : "") : "muted"}});
     }
   d["estimates"] = est;

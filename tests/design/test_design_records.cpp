@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "design/comparison.hpp"
+#include "design/estimates.hpp"
 #include "design/members_json.hpp"
 #include "design/verdict.hpp"
 
@@ -84,6 +85,17 @@ TEST(DesignRecords, MemberEnvelopeReadsBackTheSame) {
     run["members"][0]["stations"][1]["sigma_tension_max_Pa"] = 3;
     EXPECT_THROW(members_from_json(run, "test"), std::runtime_error);
   }
+}
+
+TEST(DesignRecords, EstimatesReadBackTheSame) {
+  Estimate a{"sdof", "SDOF", "F = k x", "a paper", "k 1", true, 2e6, "peak_base_shear", 1e6, 2.0, ""};
+  Estimate b{"hertz", "Hertz", "F = ...", "Hertz 1882", "", false, 0, "peak_contact_force", 0, 0, "a sphere on a half-space"};
+  Estimate c = a;
+  c.grid = true, c.simulated_gci = 0.1, c.ratio_low = 2.0 / 1.1, c.ratio_high = 2.0 / 0.9;  // extrapolated: not converged
+  for (const Estimate& e : {a, b, c}) EXPECT_EQ(estimate_from_json(e.to_json(), "test").to_json(), e.to_json());
+  nlohmann::json bad = a.to_json();
+  bad["value_N"] = nullptr;  // an applicable estimate without a value
+  EXPECT_THROW(estimate_from_json(bad, "test"), std::runtime_error);
 }
 
 }  // namespace
