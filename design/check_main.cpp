@@ -14,7 +14,9 @@
 #include "design/design.hpp"
 #include "design/plastic_record.hpp"
 #include "design/verdict.hpp"
+#include "design/estimates.hpp"
 #include "design/grid_study.hpp"
+#include "design/health_record.hpp"
 #include "engine/common/error.hpp"
 #include "engine/io/results_writer.hpp"
 
@@ -66,20 +68,19 @@ void run_summary(std::ostringstream& o, const json& r) {
     o << "  contact: peak " << eng(c["peak_force_N"], "N") << " at " << eng(c["peak_time_s"], "s") << ", impulse "
       << eng(c["impulse_magnitude_N_s"], "N s") << ", pulse " << eng(c["pulse"]["duration_s"], "s") << "\n";
   }
-  for (const auto& e : r["estimates"]) {
-    if (e["value_N"].is_number())
-      std::snprintf(line, sizeof line, "  estimate %-41s %12s  (simulated %s: ratio %.2f)\n", e["title"].get<std::string>().c_str(),
-                    eng(e["value_N"], "N").c_str(), eng(e["simulated_N"], "N").c_str(), e["ratio"].get<double>());
+  const std::string where = "design.json run " + r["results_file"].get<std::string>();
+  for (const Estimate& e : estimates_from_json(r, where)) {
+    if (e.applicable)
+      std::snprintf(line, sizeof line, "  estimate %-41s %12s  (simulated %s: ratio %.2f)\n", e.title.c_str(), eng(e.value, "N").c_str(),
+                    eng(e.simulated, "N").c_str(), e.ratio);
     else
-      std::snprintf(line, sizeof line, "  estimate %-41s %12s  (%s)\n", e["title"].get<std::string>().c_str(), "n/a", e["note"].get<std::string>().c_str());
+      std::snprintf(line, sizeof line, "  estimate %-41s %12s  (%s)\n", e.title.c_str(), "n/a", e.note.c_str());
     o << line;
   }
-  if (r.contains("volume_health"))
-    for (const auto& v : r["volume_health"])
-      if (v["flagged"].get<bool>())
-        o << "  warning: body probe '" << v["probe"].get<std::string>() << "' fills " << eng(100 * (v["largest_ratio"].get<double>() - 1), "")
-          << " % more than its particles did when created (at " << eng(v["largest_time_s"], "s")
-          << "): a non-dilatant body should keep its volume; its loads are suspect (docs/design-checks.md, numerical health)\n";
+  for (const VolumeHealthRecord& v : volume_health_from_json(r.value("volume_health", json()), where + " volume_health"))
+    if (v.flagged)
+      o << "  warning: body probe '" << v.probe << "' fills " << eng(100 * (v.largest_ratio - 1), "") << " % more than its particles did when created (at "
+        << eng(v.largest_time_s, "s") << "): a non-dilatant body should keep its volume; its loads are suspect (docs/design-checks.md, numerical health)\n";
   if (r["checks"].empty()) {
     o << "  no checks (no members and no solid check in this run)\n";
     return;

@@ -25,24 +25,23 @@ double at_time(const Results& r, const Series* s, double t) {
 
 }  // namespace
 
-nlohmann::json damping_share(const Results& r, const DesignBasis& b, double t_gov, double t_base) {
+std::optional<DampingShareRecord> damping_share(const Results& r, const DesignBasis& b, double t_gov, double t_base) {
   const Series* s = r.find("energy/frame_damping");
   const Series* w = r.find("energy/contact_work");
   const double E = impact_energy(b);
-  if (!s || s->data.empty() || !(E > 0) || r.time.size() != s->data.size()) return nullptr;
+  if (!s || s->data.empty() || !(E > 0) || r.time.size() != s->data.size()) return std::nullopt;
   const auto share = [](double d, double received) { return received > 0 ? d / received : 0.0; };
   const double at = at_time(r, s, t_gov), end = s->data.back(), received = at_time(r, w, t_gov);
-  nlohmann::json j{{"impact_energy_J", E}, {"damping_energy_J", end}, {"damping_energy_at_governing_J", at},
-                   {"governing_time_s", t_gov}, {"share_at_governing", at / E}, {"share", end / E},
-                   {"received_at_governing_J", received}, {"share_of_received_at_governing", share(at, received)},
-                   {"base_shear_peak", nullptr}, {"flag_above", kDampingShareFlag}};
-  bool flagged = at / E > kDampingShareFlag || share(at, received) > kDampingShareFlag;
+  DampingShareRecord j;
+  j.impact_energy_J = E, j.damping_energy_J = end, j.damping_energy_at_governing_J = at, j.governing_time_s = t_gov;
+  j.share_at_governing = at / E, j.share = end / E, j.received_at_governing_J = received, j.share_of_received_at_governing = share(at, received);
+  j.flag_above = kDampingShareFlag;
+  j.flagged = at / E > kDampingShareFlag || share(at, received) > kDampingShareFlag;
   if (t_base >= 0) {
     const double d = at_time(r, s, t_base), e = at_time(r, w, t_base);
-    j["base_shear_peak"] = {{"time_s", t_base}, {"damping_J", d}, {"received_J", e}, {"share_of_received", share(d, e)}};
-    flagged = flagged || share(d, e) > kDampingShareFlag;
+    j.base_shear_peak = DampingShareRecord::AtBaseShearPeak{t_base, d, e, share(d, e)};
+    j.flagged = j.flagged || share(d, e) > kDampingShareFlag;
   }
-  j["flagged"] = flagged;
   return j;
 }
 

@@ -5,7 +5,11 @@
 // either instant the peak demands rest on the damping ratio, which for concrete is known to no better than 2-10 %, and
 // design.json and the report say so.
 #pragma once
+#include <optional>
+
 #include <nlohmann/json.hpp>
+
+#include "design/health_record.hpp"
 
 #include "core/design_basis.hpp"
 #include "engine/io/results.hpp"
@@ -20,6 +24,6 @@ double impact_energy(const DesignBasis& b);
 // {impact_energy_J, damping_energy_J, damping_energy_at_governing_J, share_at_governing, share, received_at_governing_J,
 // share_of_received_at_governing, base_shear_peak {time_s, damping_J, received_J, share_of_received}, flagged}; null
 // without the damping history or an impact energy. base_shear_peak_s < 0: no base shear peak.
-nlohmann::json damping_share(const Results& r, const DesignBasis& b, double governing_time_s, double base_shear_peak_s = -1);
+std::optional<DampingShareRecord> damping_share(const Results& r, const DesignBasis& b, double governing_time_s, double base_shear_peak_s = -1);
 
 }  // namespace dmi::design

@@ -196,8 +196,9 @@ json design_run(const Results& r, const Limits& limits, const std::string& where
   double t_member = c.present ? c.peak_time_s : r.time.empty() ? 0.0 : r.time.back(), u_member = -1;
   for (const auto& k : checks)
     if (k.s_m >= 0 && k.time_s >= 0 && k.situation == "accidental" && k.utilisation > u_member) u_member = k.utilisation, t_member = k.time_s;
-  run["damping"] = basis ? damping_share(r, *basis, t_member, base_shear_time) : json(nullptr);
-  run["volume_health"] = volume_health(r);
+  const std::optional<DampingShareRecord> damping = basis ? damping_share(r, *basis, t_member, base_shear_time) : std::nullopt;
+  run["damping"] = damping ? to_json(*damping) : json(nullptr);
+  run["volume_health"] = to_json(volume_health(r));
   run["face_profile"] = face_profile(r, where);
   run["sensors"] = sensor_peaks(r);
   return run;

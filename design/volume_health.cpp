@@ -2,8 +2,8 @@
 
 namespace dmi::design {
 
-nlohmann::json volume_health(const Results& r) {
-  nlohmann::json out = nlohmann::json::array();
+std::vector<VolumeHealthRecord> volume_health(const Results& r) {
+  std::vector<VolumeHealthRecord> out;
   for (const Series& s : r.series) {
     const std::string suffix = "/volume";
     if (s.path.rfind("probes/", 0) != 0 || s.path.size() <= suffix.size() || s.path.compare(s.path.size() - suffix.size(), suffix.size(), suffix) != 0 ||
@@ -17,8 +17,7 @@ nlohmann::json volume_health(const Results& r) {
       if (last > largest) largest = last, t_largest = k < r.time.size() ? r.time[k] : 0.0;
     }
     if (!(largest > 0)) continue;
-    out.push_back({{"probe", s.path.substr(7, s.path.size() - 7 - suffix.size())}, {"final_ratio", last}, {"largest_ratio", largest},
-                   {"largest_time_s", t_largest}, {"flagged", largest > 1 + kVolumeGrowthFlag}, {"flag_above", 1 + kVolumeGrowthFlag}});
+    out.push_back({s.path.substr(7, s.path.size() - 7 - suffix.size()), last, largest, t_largest, 1 + kVolumeGrowthFlag, largest > 1 + kVolumeGrowthFlag});
   }
   return out;
 }

@@ -3,7 +3,11 @@
 // (sigma / K ~ 1e-3 for debris), so a body whose particles fill more than 5 % more than they did when created has
 // gained volume from the discretisation, not the physics, and its loads are suspect.
 #pragma once
+#include <vector>
+
 #include <nlohmann/json.hpp>
+
+#include "design/health_record.hpp"
 
 #include "engine/io/results.hpp"
 
@@ -14,6 +18,6 @@ inline constexpr double kVolumeGrowthFlag = 0.05;
 // One entry per body probe that recorded its volume (probes/<name>/volume: the particles' volumes summed now and as
 // created, so a body fed by an inflow counts only what has entered): {probe, final_ratio, largest_ratio, largest_time_s,
 // flagged (largest ratio above 1 + 5 %)}.
-nlohmann::json volume_health(const Results& r);
+std::vector<VolumeHealthRecord> volume_health(const Results& r);
 
 }  // namespace dmi::design

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "design/estimates.hpp"
+#include "design/health_record.hpp"
 #include "render/report_rows.hpp"
 
 namespace dmi::render {
@@ -88,21 +89,19 @@ void health_data(const std::vector<RunData>& runs, json& d) {
          const Series* s = r.results.find("energy/frame_damping");
          if (!s || s->data.empty()) return std::string("—");
          std::string t = fmt("%.4g J", s->data.back());
-         if (const json* d = r.design.contains("damping") && r.design["damping"].is_object() ? &r.design["damping"] : nullptr)
-           t += fmt(" (%.1f %% of the impact energy; by the governing member demand ", 100 * (*d)["share"].get<double>()) +
-                fmt("%.1f %% of it", 100 * (*d)["share_at_governing"].get<double>()) +
-                fmt(" and %.1f %% of the energy the members had received", 100 * num(*d, {"share_of_received_at_governing"}, 0.0)) +
-                ((*d)["base_shear_peak"].is_object() ? fmt("; by the peak base shear %.1f %% of it", 100 * (*d)["base_shear_peak"]["share_of_received"].get<double>())
-                                                     : std::string()) +
-                ((*d)["flagged"].get<bool>() ? ": ABOVE 10 %, the peaks rest on the damping ratio)" : ")");
+         if (const auto d = design::damping_from_json(r.design.value("damping", json()), "design.json run " + r.file + " damping"))
+           t += fmt(" (%.1f %% of the impact energy; by the governing member demand ", 100 * d->share) +
+                fmt("%.1f %% of it", 100 * d->share_at_governing) +
+                fmt(" and %.1f %% of the energy the members had received", 100 * d->share_of_received_at_governing) +
+                (d->base_shear_peak ? fmt("; by the peak base shear %.1f %% of it", 100 * d->base_shear_peak->share_of_received) : std::string()) +
+                (d->flagged ? ": ABOVE 10 %, the peaks rest on the damping ratio)" : ")");
          return t;
        }},
       {"bodies' volume (largest / as created; flagged above 1.05)", [](const RunData& r) {
          std::string t;
-         if (r.design.contains("volume_health"))
-           for (const auto& v : r.design["volume_health"])
-             t += (t.empty() ? "" : "; ") + v["probe"].get<std::string>() + fmt(" %.3f", v["largest_ratio"].get<double>()) +
-                  (v["flagged"].get<bool>() ? " (GAINED VOLUME: a non-dilatant body should keep it; its loads are suspect)" : "");
+         for (const auto& v : design::volume_health_from_json(r.design.value("volume_health", json()), "design.json run " + r.file + " volume_health"))
+           t += (t.empty() ? "" : "; ") + v.probe + fmt(" %.3f", v.largest_ratio) +
+                (v.flagged ? " (GAINED VOLUME: a non-dilatant body should keep it; its loads are suspect)" : "");
          return t.empty() ? std::string("—") : t;
        }},
       {"largest Courant number used", [](const RunData& r) {

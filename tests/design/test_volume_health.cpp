@@ -15,7 +15,8 @@ TEST(VolumeHealth, GrowthAgainstTheVolumeAsCreated) {
   r.series.push_back(Series{"probes/debris/volume", "m^3", {"current", "initial"}, {9.04, 9.04, 9.5, 9.04, 10.39, 9.04}});
   r.series.push_back(Series{"probes/inflow/volume", "m^3", {"current", "initial"}, {0.0, 0.0, 2.0, 2.0, 5.1, 5.0}});
   r.series.push_back(Series{"probes/debris/velocity", "m/s", {"x", "y"}, {0, 0, 1, 0, 2, 0}});
-  const nlohmann::json v = volume_health(r);
+  const nlohmann::json v = to_json(volume_health(r));
+  EXPECT_EQ(to_json(volume_health_from_json(v, "test")), v);  // the record reads back the same
   ASSERT_EQ(v.size(), 2u);
   EXPECT_EQ(v[0]["probe"], "debris");
   EXPECT_NEAR(v[0]["largest_ratio"].get<double>(), 10.39 / 9.04, 1e-12);

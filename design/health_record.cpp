@@ -1,0 +1,71 @@
+#include "design/health_record.hpp"
+
+#include <stdexcept>
+
+namespace dmi::design {
+
+using nlohmann::json;
+
+namespace {
+
+double number(const json& j, const char* key, const std::string& where) {
+  if (!j.is_object() || !j.contains(key) || !j[key].is_number()) throw std::runtime_error(where + "." + key + " is not a number");
+  return j[key].get<double>();
+}
+bool flag(const json& j, const char* key, const std::string& where) {
+  if (!j.is_object() || !j.contains(key) || !j[key].is_boolean()) throw std::runtime_error(where + "." + key + " is not true or false");
+  return j[key].get<bool>();
+}
+
+}  // namespace
+
+json to_json(const DampingShareRecord& d) {
+  json j{{"impact_energy_J", d.impact_energy_J}, {"damping_energy_J", d.damping_energy_J}, {"damping_energy_at_governing_J", d.damping_energy_at_governing_J},
+         {"governing_time_s", d.governing_time_s}, {"share_at_governing", d.share_at_governing}, {"share", d.share},
+         {"received_at_governing_J", d.received_at_governing_J}, {"share_of_received_at_governing", d.share_of_received_at_governing},
+         {"base_shear_peak", nullptr}, {"flag_above", d.flag_above}, {"flagged", d.flagged}};
+  if (const auto& b = d.base_shear_peak)
+    j["base_shear_peak"] = {{"time_s", b->time_s}, {"damping_J", b->damping_J}, {"received_J", b->received_J}, {"share_of_received", b->share_of_received}};
+  return j;
+}
+
+json to_json(const std::vector<VolumeHealthRecord>& v) {
+  json out = json::array();
+  for (const auto& p : v)
+    out.push_back({{"probe", p.probe}, {"final_ratio", p.final_ratio}, {"largest_ratio", p.largest_ratio}, {"largest_time_s", p.largest_time_s},
+                   {"flagged", p.flagged}, {"flag_above", p.flag_above}});
+  return out;
+}
+
+std::optional<DampingShareRecord> damping_from_json(const json& j, const std::string& w) {
+  if (j.is_null()) return std::nullopt;
+  DampingShareRecord d;
+  d.impact_energy_J = number(j, "impact_energy_J", w), d.damping_energy_J = number(j, "damping_energy_J", w);
+  d.damping_energy_at_governing_J = number(j, "damping_energy_at_governing_J", w), d.governing_time_s = number(j, "governing_time_s", w);
+  d.share_at_governing = number(j, "share_at_governing", w), d.share = number(j, "share", w);
+  d.received_at_governing_J = number(j, "received_at_governing_J", w);
+  d.share_of_received_at_governing = number(j, "share_of_received_at_governing", w);
+  d.flag_above = number(j, "flag_above", w), d.flagged = flag(j, "flagged", w);
+  if (!j.contains("base_shear_peak")) throw std::runtime_error(w + ": no 'base_shear_peak'");
+  if (const json& b = j["base_shear_peak"]; !b.is_null()) {
+    const std::string wb = w + ".base_shear_peak";
+    d.base_shear_peak = DampingShareRecord::AtBaseShearPeak{number(b, "time_s", wb), number(b, "damping_J", wb), number(b, "received_J", wb),
+                                                            number(b, "share_of_received", wb)};
+  }
+  return d;
+}
+
+std::vector<VolumeHealthRecord> volume_health_from_json(const json& j, const std::string& w) {
+  std::vector<VolumeHealthRecord> out;
+  if (j.is_null()) return out;
+  if (!j.is_array()) throw std::runtime_error(w + " is not an array");
+  for (std::size_t k = 0; k < j.size(); ++k) {
+    const std::string at = w + "[" + std::to_string(k) + "]";
+    if (!j[k].is_object() || !j[k].contains("probe") || !j[k]["probe"].is_string()) throw std::runtime_error(at + ".probe is not a string");
+    out.push_back({j[k]["probe"], number(j[k], "final_ratio", at), number(j[k], "largest_ratio", at), number(j[k], "largest_time_s", at),
+                   number(j[k], "flag_above", at), flag(j[k], "flagged", at)});
+  }
+  return out;
+}
+
+}  // namespace dmi::design
