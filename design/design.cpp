@@ -185,7 +185,8 @@ json design_run(const Results& r, const Limits& limits, const std::string& where
   if (basis)
     for (const auto& e : estimates(*basis, base_shear, c.present ? c.peak_N : 0.0, r.info.dimension)) est.push_back(e.to_json());
   run["estimates"] = est;
-  run["debris_phases"] = basis ? debris_phases(r, *basis) : json(nullptr);
+  const std::optional<DebrisLoad> debris = basis ? debris_phases(r, *basis) : std::nullopt;
+  run["debris_phases"] = debris ? debris->to_json() : json(nullptr);
   const std::optional<StabilityRecord> st = basis && frame ? stability(r, *frame, *basis, L.foundation, checks, where) : std::nullopt;
   run["stability"] = st ? to_json(*st) : json(nullptr);
   run["local_damage"] = basis ? local_damage_checks(*basis, L.concrete, checks) : json(nullptr);

@@ -16,6 +16,48 @@ json DebrisPhases::to_json() const {
               {"alpha_static", static_N ? json(*static_N / flux_N) : json(nullptr)}};
 }
 
+json DebrisLoad::to_json() const {
+  json out = phases.to_json();
+  out["froude"] = froude;
+  out["cui"] = {{"alpha", cui.alpha}, {"force_N", cui.force_N}, {"in_range", cui_in_range}, {"source", cui.source}};
+  out["geo"] = {{"alpha", geo.alpha}, {"force_N", geo.force_N}, {"source", geo.source}};
+  out["deposit"] = deposit ? json{{"height_m", deposit->height_m}, {"hydrostatic_N", deposit->hydrostatic_N}, {"face_resultant_N", deposit->face_resultant_N}}
+                           : json(nullptr);
+  return out;
+}
+
+namespace {
+double number(const json& j, const char* key, const std::string& where) {
+  if (!j.is_object() || !j.contains(key) || !j[key].is_number()) throw std::runtime_error(where + "." + key + " is not a number");
+  return j[key].get<double>();
+}
+DebrisLoad::Practice practice_from(const json& j, const char* key, const std::string& where) {
+  const std::string w = where + "." + key;
+  if (!j.is_object() || !j.contains(key) || !j[key].is_object()) throw std::runtime_error(w + " is not an object");
+  const json& p = j[key];
+  if (!p.contains("source") || !p["source"].is_string()) throw std::runtime_error(w + ".source is not a string");
+  return {number(p, "alpha", w), number(p, "force_N", w), p["source"].get<std::string>()};
+}
+}  // namespace
+
+std::optional<DebrisLoad> debris_load_from_json(const json& j, const std::string& w) {
+  if (j.is_null()) return std::nullopt;
+  DebrisLoad d;
+  DebrisPhases& p = d.phases;
+  p.flux_N = number(j, "flux_N", w), p.passage_s = number(j, "passage_s", w), p.arrival_s = number(j, "arrival_s", w);
+  p.peak_N = number(j, "peak_N", w), p.peak_time_s = number(j, "peak_time_s", w), p.dynamic_N = number(j, "dynamic_N", w);
+  if (!j.contains("static_N")) throw std::runtime_error(w + ": no 'static_N'");
+  if (!j["static_N"].is_null()) p.static_N = number(j, "static_N", w);
+  d.froude = number(j, "froude", w);
+  d.geo = practice_from(j, "geo", w), d.cui = practice_from(j, "cui", w);
+  if (!j["cui"].contains("in_range") || !j["cui"]["in_range"].is_boolean()) throw std::runtime_error(w + ".cui.in_range is not true or false");
+  d.cui_in_range = j["cui"]["in_range"];
+  if (!j.contains("deposit")) throw std::runtime_error(w + ": no 'deposit'");
+  if (const json& dep = j["deposit"]; !dep.is_null())
+    d.deposit = DepositLoad{number(dep, "height_m", w + ".deposit"), number(dep, "hydrostatic_N", w + ".deposit"), number(dep, "face_resultant_N", w + ".deposit")};
+  return d;
+}
+
 std::optional<DebrisPhases> debris_phases(const std::vector<double>& t, const std::vector<double>& F, double flux, double passage) {
   if (t.size() != F.size() || t.size() < 2 || !(flux > 0) || !(passage > 0)) return std::nullopt;
   DebrisPhases p;
@@ -44,12 +86,12 @@ std::optional<DebrisPhases> debris_phases(const std::vector<double>& t, const st
 // profile carrying more than 5 % of the largest mean pressure there, and the hydrostatic load of a fluid of the
 // debris' density that high, rho g h_d^2 w / 2 (K = 1: the upper bound of a granular deposit's earth pressure).
 // Null without a face profile.
-json deposit_load(const Results& r, double rho) {
+std::optional<DepositLoad> deposit_load(const Results& r, double rho) {
   const Series* p = r.find("face/pressure");
   const auto& d = r.info.face_profile;
-  if (!p || !d || r.time.size() < 2) return nullptr;
+  if (!p || !d || r.time.size() < 2) return std::nullopt;
   const std::size_t nb = p->components.size();
-  if (d->bins.size() != nb) return nullptr;
+  if (d->bins.size() != nb) return std::nullopt;
   const double width = d->width;  // the face's: the one its pressures were measured over
   std::vector<double> mean(nb, 0.0);
   const double tail = r.time.back() - 0.1 * (r.time.back() - r.time.front());
@@ -61,7 +103,7 @@ json deposit_load(const Results& r, double rho) {
     span += dt;
   }
   const double top = *std::max_element(mean.begin(), mean.end());
-  if (!(span > 0) || !(top > 0)) return nullptr;
+  if (!(span > 0) || !(top > 0)) return std::nullopt;
   double height = 0, measured = 0;
   for (std::size_t b = 0; b < nb; ++b) {
     const FaceBin& bin = d->bins[b];
@@ -69,27 +111,29 @@ json deposit_load(const Results& r, double rho) {
     if (mean[b] > 0.05 * top) height = std::max(height, bin.height_to);  // above the foot, not along the face
     measured += mean[b] / span * (to - from) * width;
   }
-  return json{{"height_m", height}, {"hydrostatic_N", 0.5 * rho * 9.81 * height * height * width}, {"face_resultant_N", measured}};
+  return DepositLoad{height, 0.5 * rho * 9.81 * height * height * width, measured};
 }
 
-json debris_phases(const Results& r, const DesignBasis& basis) {
-  if (!basis.debris || !is_set(basis.debris->length_m)) return nullptr;
+std::optional<DebrisLoad> debris_phases(const Results& r, const DesignBasis& basis) {
+  if (!basis.debris || !is_set(basis.debris->length_m)) return std::nullopt;
   const Series* s = r.find("frame/contact_force");
-  if (!s || s->components.size() != 2 || r.time.empty()) return nullptr;
+  if (!s || s->components.size() != 2 || r.time.empty()) return std::nullopt;
   const DebrisBasis& f = *basis.debris;
   const double rho = f.density_kg_m3, h = f.depth_m, v = f.speed_m_s, L = f.length_m, w = basis.dam.width_m;
   std::vector<double> F(r.time.size());
   for (std::size_t k = 0; k < F.size(); ++k) F[k] = std::hypot(s->data[2 * k], s->data[2 * k + 1]);
   const auto p = debris_phases(r.time, F, rho * v * v * h * w, L / v);
-  if (!p) return nullptr;
-  json out = p->to_json();
+  if (!p) return std::nullopt;
+  DebrisLoad out;
+  out.phases = *p;
   const double g = 9.81, Fr = v / std::sqrt(g * h), alpha_cui = 5.3 * std::pow(Fr, -1.5);
-  out["froude"] = Fr;
-  out["cui"] = {{"alpha", alpha_cui}, {"force_N", alpha_cui * p->flux_N}, {"in_range", Fr >= 2.3 && Fr <= 6.2},
-                {"source", "Cui, Zeng & Lei (2015): alpha = 5.3 Fr^-1.5 for a viscous debris flow in a flume (depth 7.2-11.2 cm, "
-                           "speed 2.4-5.2 m/s, Fr about 2.3-6.2); read second-hand, not checked against the paper"}};
-  out["geo"] = {{"alpha", 2.5}, {"force_N", 2.5 * p->flux_N}, {"source", "Kwan (2012), GEO Report 270: alpha = 2.5 for a rigid barrier"}};
-  out["deposit"] = deposit_load(r, rho);
+  out.froude = Fr;
+  out.cui = {alpha_cui, alpha_cui * p->flux_N,
+             "Cui, Zeng & Lei (2015): alpha = 5.3 Fr^-1.5 for a viscous debris flow in a flume (depth 7.2-11.2 cm, "
+             "speed 2.4-5.2 m/s, Fr about 2.3-6.2); read second-hand, not checked against the paper"};
+  out.cui_in_range = Fr >= 2.3 && Fr <= 6.2;
+  out.geo = {2.5, 2.5 * p->flux_N, "Kwan (2012), GEO Report 270: alpha = 2.5 for a rigid barrier"};
+  out.deposit = deposit_load(r, rho);
   return out;
 }
 

@@ -28,13 +28,33 @@ struct DebrisPhases {
 // force never reaches 1 % of F0 (the surge did not arrive).
 std::optional<DebrisPhases> debris_phases(const std::vector<double>& t, const std::vector<double>& F, double flux_N, double passage_s);
 
-// The deposit at rest against the face over the last 10 % of the run (face/pressure and /documents/face_profile):
-// {height_m, hydrostatic_N = rho g h_d^2 w / 2 (w the face profile's width), face_resultant_N}; null without a face
-// profile.
-nlohmann::json deposit_load(const Results& r, double rho);
+// The deposit at rest against the face over the last 10 % of the run (face/pressure and /documents/face_profile): its
+// height, hydrostatic_N = rho g h_d^2 w / 2 (w the face profile's width) and the face's measured resultant; none
+// without a face profile.
+struct DepositLoad {
+  double height_m = 0, hydrostatic_N = 0, face_resultant_N = 0;
+};
+std::optional<DepositLoad> deposit_load(const Results& r, double rho);
+
+// design.json's "debris_phases" as a typed record: the phases, the surge's Froude number, the design-practice loads
+// alpha rho v^2 h w of GEO (Kwan 2012) and of Cui, Zeng & Lei (2015), and the deposit. Read back validated by
+// debris_load_from_json (null: nullopt).
+struct DebrisLoad {
+  struct Practice {
+    double alpha = 0, force_N = 0;
+    std::string source;
+  };
+  DebrisPhases phases;
+  double froude = 0;
+  Practice geo, cui;
+  bool cui_in_range = false;  // Fr within Cui's data (about 2.3-6.2)
+  std::optional<DepositLoad> deposit;
+  nlohmann::json to_json() const;
+};
+std::optional<DebrisLoad> debris_load_from_json(const nlohmann::json& j, const std::string& where);
 
 // From a results file: the contact history and the design basis' surge (density, depth, speed, length, width).
-// Null when the basis has no debris surge or the file no contact history.
-nlohmann::json debris_phases(const Results& r, const DesignBasis& basis);
+// None when the basis has no debris surge or the file no contact history.
+std::optional<DebrisLoad> debris_phases(const Results& r, const DesignBasis& basis);
 
 }  // namespace dmi::design

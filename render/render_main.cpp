@@ -14,6 +14,7 @@
 
 #include "design/design.hpp"
 #include "design/members_json.hpp"
+#include "design/phases.hpp"
 #include "design/verdict.hpp"
 #include "design/loads.hpp"
 #include "engine/common/error.hpp"
@@ -274,10 +275,10 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
                                                             {"contact peak", nearest_snapshot(r.results, t_peak)},
                                                             {"rebound", nearest_snapshot(r.results, t_end + 0.5 * (t_end - t_start))}};
     // A debris surge: its arrival, its peak and the deposit it leaves (the last snapshot), not a rebound.
-    if (const json& dp = r.design.contains("debris_phases") ? r.design["debris_phases"] : json(); dp.is_object())
+    if (const auto dp = design::debris_load_from_json(r.design.value("debris_phases", json()), "design.json run " + r.file + " debris_phases"))
       seq = {{"initial state", 0},
-             {"surge arrival", nearest_snapshot(r.results, num(dp, {"arrival_s"}, t_start))},
-             {"load peak", nearest_snapshot(r.results, num(dp, {"peak_time_s"}, t_peak))},
+             {"surge arrival", nearest_snapshot(r.results, dp->phases.arrival_s)},
+             {"load peak", nearest_snapshot(r.results, dp->phases.peak_time_s)},
              {"deposit", r.results.snapshots.size() - 1}};
     // Members that yield keep a residual shape: the last snapshot shows it (the members' deformation scaled as in the
     // rest of the sequence).

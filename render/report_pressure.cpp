@@ -5,6 +5,7 @@
 #include <string>
 
 #include "render/charts.hpp"
+#include "design/phases.hpp"
 #include "render/report_rows.hpp"
 
 namespace dmi::render {
@@ -73,24 +74,23 @@ std::string gci_of(const json& design_doc, const std::string& variant, const std
 json debris_practice_rows(const std::vector<RunData>& runs, const json& design_doc) {
   json rows = json::array();
   for (const auto& r : runs) {
-    const json& p = r.design.value("debris_phases", json());
-    if (!p.is_object() || !p.contains("cui")) continue;
+    const std::optional<design::DebrisLoad> p =
+        design::debris_load_from_json(r.design.value("debris_phases", json()), "design.json run " + r.file + " debris_phases");
+    if (!p) continue;
     const std::string run = r.variant.empty() ? "simulation" : r.variant;
-    const double peak = p["peak_N"].get<double>();
+    const double peak = p->phases.peak_N;
     auto row = [&](const std::string& model, const std::string& source, double value, const std::string& sim, double simulated, const std::string& note) {
       rows.push_back({{"run", run}, {"model", model}, {"source", source}, {"value", eng(value, "N")}, {"simulated", sim},
                       {"ratio", simulated > 0 ? fmt("%.2f", value / simulated) : std::string("—")}, {"note", note}});
     };
     const std::string peak_text = eng(peak, "N") + " (peak" + gci_of(design_doc, r.variant, "debris_peak") + ")";
-    row("α = 2.5, ρ v² h w", p["geo"]["source"], p["geo"]["force_N"].get<double>(), peak_text, peak, "");
-    row(fmt("α = 5.3 Fr^-1.5 = %.2f", p["cui"]["alpha"].get<double>()) + fmt(" (Fr %.2f)", p["froude"].get<double>()), p["cui"]["source"],
-        p["cui"]["force_N"].get<double>(), peak_text, peak,
-        p["cui"]["in_range"].get<bool>() ? "second-hand formula" : "second-hand formula, outside its data range (Fr about 2.3-6.2)");
-    const json& d = p.value("deposit", json());
-    if (d.is_object() && p["static_N"].is_number())
-      row(fmt("deposit at rest, h_d = %.2f m: ρ g h_d² w / 2", d["height_m"].get<double>()), "hydrostatic (K = 1), the upper bound of a granular deposit",
-          d["hydrostatic_N"].get<double>(), eng(p["static_N"], "N") + " (static tail" + gci_of(design_doc, r.variant, "debris_static") + ")",
-          p["static_N"].get<double>(), "h_d: the face profile's loaded height over the last 10 % of the run");
+    row("α = 2.5, ρ v² h w", p->geo.source, p->geo.force_N, peak_text, peak, "");
+    row(fmt("α = 5.3 Fr^-1.5 = %.2f", p->cui.alpha) + fmt(" (Fr %.2f)", p->froude), p->cui.source, p->cui.force_N, peak_text, peak,
+        p->cui_in_range ? "second-hand formula" : "second-hand formula, outside its data range (Fr about 2.3-6.2)");
+    if (p->deposit && p->phases.static_N)
+      row(fmt("deposit at rest, h_d = %.2f m: ρ g h_d² w / 2", p->deposit->height_m), "hydrostatic (K = 1), the upper bound of a granular deposit",
+          p->deposit->hydrostatic_N, eng(*p->phases.static_N, "N") + " (static tail" + gci_of(design_doc, r.variant, "debris_static") + ")",
+          *p->phases.static_N, "h_d: the face profile's loaded height over the last 10 % of the run");
   }
   return rows;
 }

@@ -5,6 +5,7 @@
 
 #include "design/estimates.hpp"
 #include "design/health_record.hpp"
+#include "design/phases.hpp"
 #include "render/report_rows.hpp"
 
 namespace dmi::render {
@@ -36,18 +37,17 @@ void estimates_data(const std::vector<RunData>& runs, const json& design_doc, bo
   // The debris load in its three phases, against the momentum flux of the surge.
   json phases = json::array();
   for (const auto& r : runs) {
-    const json& p = r.design.value("debris_phases", json());
-    if (!p.is_object()) continue;
-    auto force = [&](const char* key, const char* alpha) {  // the force, and α under it
-      const double f = num(p, {key}), a = num(p, {alpha});
-      return std::isfinite(f) && std::isfinite(a) ? json{{"v", eng(p[key], "N")}, {"a", fmt("α %.2f", a)}}
-                                                  : json{{"v", "—"}, {"a", "the run ends within the passage"}};
+    const std::optional<design::DebrisLoad> load =
+        design::debris_load_from_json(r.design.value("debris_phases", json()), "design.json run " + r.file + " debris_phases");
+    if (!load) continue;
+    const design::DebrisPhases& p = load->phases;
+    auto force = [&](std::optional<double> f) {  // the force, and α = F / F0 under it
+      return f && std::isfinite(*f / p.flux_N) ? json{{"v", eng(*f, "N")}, {"a", fmt("α %.2f", *f / p.flux_N)}}
+                                               : json{{"v", "—"}, {"a", "the run ends within the passage"}};
     };
-    auto seconds = [&](const char* key) { const double t = num(p, {key}); return std::isfinite(t) ? fmt("%.3f s", t) : std::string("—"); };
-    phases.push_back({{"run", label(r)}, {"flux", std::isfinite(num(p, {"flux_N"})) ? eng(p["flux_N"], "N") : std::string("—")},
-                      {"arrival", seconds("arrival_s")}, {"passage", seconds("passage_s")},
-                      {"peak", force("peak_N", "alpha_peak")}, {"peak_at", seconds("peak_time_s")},
-                      {"dynamic", force("dynamic_N", "alpha_dynamic")}, {"static", force("static_N", "alpha_static")}});
+    auto seconds = [](double t) { return std::isfinite(t) ? fmt("%.3f s", t) : std::string("—"); };
+    phases.push_back({{"run", label(r)}, {"flux", eng(p.flux_N, "N")}, {"arrival", seconds(p.arrival_s)}, {"passage", seconds(p.passage_s)},
+                      {"peak", force(p.peak_N)}, {"peak_at", seconds(p.peak_time_s)}, {"dynamic", force(p.dynamic_N)}, {"static", force(p.static_N)}});
   }
   d["has_debris_phases"] = !phases.empty();
   d["debris_practice"] = debris_practice_rows(runs, design_doc);

@@ -62,12 +62,26 @@ TEST(DebrisPhases, DepositAgainstTheFaceByHand) {
   for (int k = 0; k <= 10; ++k) p.data.insert(p.data.end(), {k == 10 ? 1000.0 : 0.0, k == 10 ? 500.0 : 0.0, k == 10 ? 10.0 : 99.0});
   r.series.push_back(p);
   r.info.face_profile = FaceProfileRecord{{"dam"}, {1, 0}, 2, {{"dam", 0, 0, 1, 0, 1}, {"dam", 1, 1, 2, 1, 2}, {"dam", 2, 2, 3, 2, 3}}};
-  const nlohmann::json d = deposit_load(r, 2000);
-  EXPECT_DOUBLE_EQ(d["height_m"].get<double>(), 2.0);
-  EXPECT_NEAR(d["hydrostatic_N"].get<double>(), 78480.0, 1e-9);
-  EXPECT_NEAR(d["face_resultant_N"].get<double>(), 3020.0, 1e-9);
+  const std::optional<DepositLoad> d = deposit_load(r, 2000);
+  ASSERT_TRUE(d.has_value());
+  EXPECT_DOUBLE_EQ(d->height_m, 2.0);
+  EXPECT_NEAR(d->hydrostatic_N, 78480.0, 1e-9);
+  EXPECT_NEAR(d->face_resultant_N, 3020.0, 1e-9);
   r.info.face_profile.reset();
-  EXPECT_TRUE(deposit_load(r, 2000).is_null());
+  EXPECT_FALSE(deposit_load(r, 2000).has_value());
+}
+
+// design.json's debris_phases reads back the same, with and without a static tail and a deposit.
+TEST(DebrisPhases, RecordReadsBackTheSame) {
+  DebrisLoad d;
+  d.phases = DebrisPhases{1e5, 2.0, 0.3, 2.5e5, 0.4, 1.5e5, std::nullopt};
+  d.froude = 3.1, d.cui = {0.97, 0.97e5, "Cui"}, d.cui_in_range = true, d.geo = {2.5, 2.5e5, "Kwan"};
+  EXPECT_EQ(debris_load_from_json(d.to_json(), "test")->to_json(), d.to_json());
+  d.phases.static_N = 4e4, d.deposit = DepositLoad{1.2, 3e4, 2.9e4};
+  EXPECT_EQ(debris_load_from_json(d.to_json(), "test")->to_json(), d.to_json());
+  nlohmann::json bad = d.to_json();
+  bad["cui"].erase("in_range");
+  EXPECT_THROW(debris_load_from_json(bad, "test"), std::runtime_error);
 }
 
 }  // namespace
