@@ -200,8 +200,9 @@ json design_run(const Results& r, const Limits& limits, const std::string& where
   const std::optional<DampingShareRecord> damping = basis ? damping_share(r, *basis, t_member, base_shear_time) : std::nullopt;
   run["damping"] = damping ? to_json(*damping) : json(nullptr);
   run["volume_health"] = to_json(volume_health(r));
-  run["face_profile"] = face_profile(r, where);
-  run["sensors"] = sensor_peaks(r);
+  const std::optional<FaceProfileAtMoment> face = face_profile(r, where);
+  run["face_profile"] = face ? to_json(*face) : json(nullptr);
+  run["sensors"] = to_json(sensor_peaks(r));
   return run;
 }
 

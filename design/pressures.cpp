@@ -6,10 +6,10 @@ namespace dmi::design {
 
 using json = nlohmann::json;
 
-json face_profile(const Results& r, const std::string& where) {
+std::optional<FaceProfileAtMoment> face_profile(const Results& r, const std::string& where) {
   const auto& d = r.info.face_profile;
   const Series *p = r.find("face/pressure"), *R = r.find("face/resultant"), *z = r.find("face/height");
-  if (!d || !p || !R || !z) return nullptr;
+  if (!d || !p || !R || !z) return std::nullopt;
   if (d->bins.size() != p->components.size())
     throw std::runtime_error(where + ": /documents/face_profile does not match the history face/pressure; the file is altered");
   std::size_t best = 0, peak = 0;
@@ -18,22 +18,23 @@ json face_profile(const Results& r, const std::string& where) {
     if (R->data[k] * z->data[k] > moment) moment = R->data[k] * z->data[k], best = k;
     if (R->data[k] > peak_R) peak_R = R->data[k], peak = k;
   }
-  if (!(peak_R > 0)) return nullptr;
-  json positions = json::array(), lengths = json::array(), pressure = json::array();
+  if (!(peak_R > 0)) return std::nullopt;
+  FaceProfileAtMoment f;
+  f.members = d->members, f.direction.assign(d->direction.begin(), d->direction.end()), f.width_m = d->width;
   const std::size_t nb = p->components.size();
   for (std::size_t b = 0; b < nb; ++b) {
     const double from = d->bins[b].from, to = d->bins[b].to;
-    positions.push_back(0.5 * (from + to));
-    lengths.push_back(to - from);
-    pressure.push_back(p->data[best * nb + b]);
+    f.positions_m.push_back(0.5 * (from + to));
+    f.lengths_m.push_back(to - from);
+    f.pressure_Pa.push_back(p->data[best * nb + b]);
   }
-  return json{{"members", d->members}, {"direction", d->direction}, {"width_m", d->width}, {"positions_m", positions},
-              {"lengths_m", lengths}, {"time_s", r.time.at(best)}, {"pressure_Pa", pressure}, {"resultant_N", R->data[best]},
-              {"height_m", z->data[best]}, {"moment_N_m", moment}, {"peak_resultant_N", peak_R}, {"peak_resultant_time_s", r.time.at(peak)}};
+  f.time_s = r.time.at(best), f.resultant_N = R->data[best], f.height_m = z->data[best], f.moment_N_m = moment;
+  f.peak_resultant_N = peak_R, f.peak_resultant_time_s = r.time.at(peak);
+  return f;
 }
 
-json sensor_peaks(const Results& r) {
-  json out = json::array();
+std::vector<SensorPeak> sensor_peaks(const Results& r) {
+  std::vector<SensorPeak> out;
   const std::string head = "sensors/", tail = "/pressure";
   for (const Series& s : r.series) {
     if (s.path.rfind(head, 0) != 0 || s.path.size() <= head.size() + tail.size() || s.samples() == 0) continue;
@@ -43,8 +44,68 @@ json sensor_peaks(const Results& r) {
       if (s.data[k] > s.data[best]) best = k;
       sum += s.data[k];
     }
-    out.push_back({{"name", s.path.substr(head.size(), s.path.size() - head.size() - tail.size())}, {"peak_pressure_Pa", s.data[best]},
-                   {"peak_time_s", r.time.at(best)}, {"mean_pressure_Pa", sum / static_cast<double>(s.samples())}});
+    out.push_back({s.path.substr(head.size(), s.path.size() - head.size() - tail.size()), s.data[best], r.time.at(best),
+                   sum / static_cast<double>(s.samples())});
+  }
+  return out;
+}
+
+json to_json(const FaceProfileAtMoment& f) {
+  return json{{"members", f.members}, {"direction", f.direction}, {"width_m", f.width_m}, {"positions_m", f.positions_m},
+              {"lengths_m", f.lengths_m}, {"time_s", f.time_s}, {"pressure_Pa", f.pressure_Pa}, {"resultant_N", f.resultant_N},
+              {"height_m", f.height_m}, {"moment_N_m", f.moment_N_m}, {"peak_resultant_N", f.peak_resultant_N},
+              {"peak_resultant_time_s", f.peak_resultant_time_s}};
+}
+
+json to_json(const std::vector<SensorPeak>& s) {
+  json out = json::array();
+  for (const auto& p : s)
+    out.push_back({{"name", p.name}, {"peak_pressure_Pa", p.peak_pressure_Pa}, {"peak_time_s", p.peak_time_s}, {"mean_pressure_Pa", p.mean_pressure_Pa}});
+  return out;
+}
+
+namespace {
+double number(const json& j, const char* key, const std::string& where) {
+  if (!j.is_object() || !j.contains(key) || !j[key].is_number()) throw std::runtime_error(where + "." + key + " is not a number");
+  return j[key].get<double>();
+}
+std::vector<double> numbers(const json& j, const char* key, const std::string& where) {
+  if (!j.is_object() || !j.contains(key) || !j[key].is_array()) throw std::runtime_error(where + "." + key + " is not an array");
+  std::vector<double> out;
+  for (const json& x : j[key]) {
+    if (!x.is_number()) throw std::runtime_error(where + "." + key + " holds a value that is not a number");
+    out.push_back(x.get<double>());
+  }
+  return out;
+}
+}  // namespace
+
+std::optional<FaceProfileAtMoment> face_profile_from_json(const json& j, const std::string& w) {
+  if (j.is_null()) return std::nullopt;
+  FaceProfileAtMoment f;
+  if (!j.is_object() || !j.contains("members") || !j["members"].is_array()) throw std::runtime_error(w + ".members is not an array");
+  for (const json& m : j["members"]) {
+    if (!m.is_string()) throw std::runtime_error(w + ".members holds a name that is not a string");
+    f.members.push_back(m.get<std::string>());
+  }
+  f.direction = numbers(j, "direction", w), f.positions_m = numbers(j, "positions_m", w), f.lengths_m = numbers(j, "lengths_m", w);
+  f.pressure_Pa = numbers(j, "pressure_Pa", w);
+  if (f.positions_m.size() != f.pressure_Pa.size() || f.lengths_m.size() != f.pressure_Pa.size())
+    throw std::runtime_error(w + ": positions_m, lengths_m and pressure_Pa differ in length");
+  f.width_m = number(j, "width_m", w), f.time_s = number(j, "time_s", w), f.resultant_N = number(j, "resultant_N", w);
+  f.height_m = number(j, "height_m", w), f.moment_N_m = number(j, "moment_N_m", w), f.peak_resultant_N = number(j, "peak_resultant_N", w);
+  f.peak_resultant_time_s = number(j, "peak_resultant_time_s", w);
+  return f;
+}
+
+std::vector<SensorPeak> sensors_from_json(const json& j, const std::string& w) {
+  std::vector<SensorPeak> out;
+  if (j.is_null()) return out;
+  if (!j.is_array()) throw std::runtime_error(w + " is not an array");
+  for (std::size_t k = 0; k < j.size(); ++k) {
+    const std::string at = w + "[" + std::to_string(k) + "]";
+    if (!j[k].is_object() || !j[k].contains("name") || !j[k]["name"].is_string()) throw std::runtime_error(at + ".name is not a string");
+    out.push_back({j[k]["name"], number(j[k], "peak_pressure_Pa", at), number(j[k], "peak_time_s", at), number(j[k], "mean_pressure_Pa", at)});
   }
   return out;
 }

@@ -2,7 +2,9 @@
 // pressure along a dam's upstream face at the instant its overturning moment about the face's foot is largest (the
 // height of the resultant sets the base moment), and the peak of every pressure sensor.
 #pragma once
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -10,12 +12,28 @@
 
 namespace dmi::design {
 
-// {members, direction, width_m, positions_m (bin centres along the face), lengths_m, time_s, pressure_Pa (per bin at
-// time_s), resultant_N, height_m (of the resultant above the foot, across the load), moment_N_m (resultant x height), peak_resultant_N,
-// peak_resultant_time_s}; null when the run recorded no face profile or no load reached the face.
-nlohmann::json face_profile(const Results& r, const std::string& where);
+// design.json's "face_profile": the face's members, the load's direction, the face width, per element its centre and
+// length along the face and its pressure at time_s, the instant of the largest moment about the foot; the resultant
+// there, its height above the foot (across the load) and moment; the largest resultant of the run and when.
+struct FaceProfileAtMoment {
+  std::vector<std::string> members;
+  std::vector<double> direction, positions_m, lengths_m, pressure_Pa;
+  double width_m = 0, time_s = 0, resultant_N = 0, height_m = 0, moment_N_m = 0, peak_resultant_N = 0, peak_resultant_time_s = 0;
+};
+// design.json's "sensors": per sensors/<name>/pressure series its peak, when, and its mean over the run.
+struct SensorPeak {
+  std::string name;
+  double peak_pressure_Pa = 0, peak_time_s = 0, mean_pressure_Pa = 0;
+};
 
-// [{name, peak_pressure_Pa, peak_time_s, mean_pressure_Pa}] over the run, one per sensors/<name>/pressure series.
-nlohmann::json sensor_peaks(const Results& r);
+// None when the run recorded no face profile or no load reached the face.
+std::optional<FaceProfileAtMoment> face_profile(const Results& r, const std::string& where);
+std::vector<SensorPeak> sensor_peaks(const Results& r);
+
+nlohmann::json to_json(const FaceProfileAtMoment& f);
+nlohmann::json to_json(const std::vector<SensorPeak>& s);
+// Read back validated (`where` names the place in errors); null reads as nullopt / none.
+std::optional<FaceProfileAtMoment> face_profile_from_json(const nlohmann::json& j, const std::string& where);
+std::vector<SensorPeak> sensors_from_json(const nlohmann::json& j, const std::string& where);
 
 }  // namespace dmi::design

@@ -6,6 +6,7 @@
 
 #include "render/charts.hpp"
 #include "design/phases.hpp"
+#include "design/pressures.hpp"
 #include "render/report_rows.hpp"
 
 namespace dmi::render {
@@ -14,42 +15,49 @@ using nlohmann::json;
 
 namespace {
 
-const json* face(const RunData& r) {
-  return r.design.contains("face_profile") && r.design["face_profile"].is_object() ? &r.design["face_profile"] : nullptr;
+std::optional<design::FaceProfileAtMoment> face(const RunData& r) {
+  return design::face_profile_from_json(r.design.value("face_profile", json()), "design.json run " + r.file + " face_profile");
 }
 
+std::vector<design::SensorPeak> sensors_of(const RunData& r) {
+  return design::sensors_from_json(r.design.value("sensors", json()), "design.json run " + r.file + " sensors");
+}
+
+using Face = design::FaceProfileAtMoment;
+
 // The row of a face quantity: its value per run, "—" where the run has no face profile.
-std::pair<std::string, std::function<std::string(const RunData&)>> face_row(const std::string& key, std::function<std::string(const json&)> f) {
-  return {key, [f](const RunData& r) { return face(r) ? f(*face(r)) : std::string("—"); }};
+std::pair<std::string, std::function<std::string(const RunData&)>> face_row(const std::string& key, std::function<std::string(const Face&)> f) {
+  return {key, [f](const RunData& r) {
+            const std::optional<Face> p = face(r);
+            return p ? f(*p) : std::string("—");
+          }};
 }
 
 }  // namespace
 
 json pressure_rows(const std::vector<RunData>& runs) {
   std::vector<std::pair<std::string, std::function<std::string(const RunData&)>>> rows;
-  if (std::any_of(runs.begin(), runs.end(), [](const RunData& r) { return face(r) != nullptr; })) {
-    rows.push_back(face_row("instant of the largest moment about the foot", [](const json& f) { return eng(f["time_s"], "s"); }));
-    rows.push_back(face_row("resultant of the face pressure", [](const json& f) { return eng(f["resultant_N"], "N"); }));
-    rows.push_back(face_row("its height above the foot", [](const json& f) { return fmt("%.3g m", f["height_m"].get<double>()); }));
-    rows.push_back(face_row("its moment about the foot", [](const json& f) { return eng(f["moment_N_m"], "N m"); }));
-    rows.push_back(face_row("largest pressure of the profile (element length × face width)", [](const json& f) {
+  if (std::any_of(runs.begin(), runs.end(), [](const RunData& r) { return face(r).has_value(); })) {
+    rows.push_back(face_row("instant of the largest moment about the foot", [](const Face& f) { return eng(f.time_s, "s"); }));
+    rows.push_back(face_row("resultant of the face pressure", [](const Face& f) { return eng(f.resultant_N, "N"); }));
+    rows.push_back(face_row("its height above the foot", [](const Face& f) { return fmt("%.3g m", f.height_m); }));
+    rows.push_back(face_row("its moment about the foot", [](const Face& f) { return eng(f.moment_N_m, "N m"); }));
+    rows.push_back(face_row("largest pressure of the profile (element length × face width)", [](const Face& f) {
       std::size_t k = 0;
-      for (std::size_t b = 0; b < f["pressure_Pa"].size(); ++b)
-        if (f["pressure_Pa"][b].get<double>() > f["pressure_Pa"][k].get<double>()) k = b;
-      return eng(f["pressure_Pa"][k], "Pa") + fmt(" at %.3g m", f["positions_m"][k].get<double>());
+      for (std::size_t b = 0; b < f.pressure_Pa.size(); ++b)
+        if (f.pressure_Pa[b] > f.pressure_Pa[k]) k = b;
+      return eng(f.pressure_Pa[k], "Pa") + fmt(" at %.3g m", f.positions_m[k]);
     }));
-    rows.push_back(face_row("largest resultant over the run", [](const json& f) {
-      return eng(f["peak_resultant_N"], "N") + " at " + eng(f["peak_resultant_time_s"], "s");
-    }));
+    rows.push_back(face_row("largest resultant over the run", [](const Face& f) { return eng(f.peak_resultant_N, "N") + " at " + eng(f.peak_resultant_time_s, "s"); }));
   }
   std::vector<std::string> sensors;
   for (const auto& r : runs)
-    for (const auto& s : r.design.value("sensors", json::array()))
-      if (std::find(sensors.begin(), sensors.end(), s["name"].get<std::string>()) == sensors.end()) sensors.push_back(s["name"]);
+    for (const design::SensorPeak& s : sensors_of(r))
+      if (std::find(sensors.begin(), sensors.end(), s.name) == sensors.end()) sensors.push_back(s.name);
   for (const std::string& name : sensors)
     rows.push_back({"sensor " + name + ": peak pressure", [name](const RunData& r) {
-                      for (const auto& s : r.design.value("sensors", json::array()))
-                        if (s["name"] == name) return eng(s["peak_pressure_Pa"], "Pa") + " at " + eng(s["peak_time_s"], "s");
+                      for (const design::SensorPeak& s : sensors_of(r))
+                        if (s.name == name) return eng(s.peak_pressure_Pa, "Pa") + " at " + eng(s.peak_time_s, "s");
                       return std::string("—");
                     }});
   return rows.empty() ? json::array() : per_run_rows(runs, rows);
@@ -107,18 +115,18 @@ ChartSpec face_profile_chart(const std::vector<RunData>& runs) {
   c.x_label = "pressure [kPa]", c.y_label = "position along the face from its foot [m]";
   c.x_tight = false;
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    const json& f = runs[i].design.contains("face_profile") ? runs[i].design["face_profile"] : json();
-    if (!f.is_object()) continue;
+    const std::optional<Face> f = face(runs[i]);
+    if (!f) continue;
     Curve cv;
     char b[200];
-    const double R = f["resultant_N"].get<double>();
+    const double R = f->resultant_N;
     std::snprintf(b, sizeof b, "%st = %.2f ms, resultant %.3g %s at %.2f m", runs[i].variant.empty() ? "" : (nice_variant(runs[i].variant) + ", ").c_str(),
-                  f["time_s"].get<double>() * 1e3, R >= 1e6 ? R * 1e-6 : R * 1e-3, R >= 1e6 ? "MN" : "kN", f["height_m"].get<double>());
+                  f->time_s * 1e3, R >= 1e6 ? R * 1e-6 : R * 1e-3, R >= 1e6 ? "MN" : "kN", f->height_m);
     cv.label = b;
     cv.color = colour(i);
     cv.dashed = runs[i].variant == "without_buffer";
-    for (std::size_t k = 0; k < f["pressure_Pa"].size(); ++k) {
-      const double p = f["pressure_Pa"][k].get<double>() * 1e-3, mid = f["positions_m"][k].get<double>(), half = 0.5 * f["lengths_m"][k].get<double>();
+    for (std::size_t k = 0; k < f->pressure_Pa.size(); ++k) {
+      const double p = f->pressure_Pa[k] * 1e-3, mid = f->positions_m[k], half = 0.5 * f->lengths_m[k];
       cv.x.insert(cv.x.end(), {p, p}), cv.y.insert(cv.y.end(), {mid - half, mid + half});
     }
     c.curves.push_back(cv);

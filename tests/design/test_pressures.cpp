@@ -16,14 +16,16 @@ TEST(Pressures, FaceProfileAtTheLargestMomentByHand) {
   r.series.push_back(Series{"face/height", "m", {"value"}, {0, 1, 2}});
   r.series.push_back(Series{"sensors/a/pressure", "Pa", {"value"}, {1, 5, 2}});
   r.info.face_profile = FaceProfileRecord{{"dam"}, {1, 0}, 2, {{"dam", 0, 0, 1.5, 0, 1.5}, {"dam", 1, 1.5, 3, 1.5, 3}}};
-  const nlohmann::json f = face_profile(r, "hand.h5");
+  const nlohmann::json f = to_json(*face_profile(r, "hand.h5"));
+  EXPECT_EQ(to_json(*face_profile_from_json(f, "test")), f);  // the record reads back the same
   EXPECT_DOUBLE_EQ(f["time_s"].get<double>(), 2.0);
   EXPECT_DOUBLE_EQ(f["moment_N_m"].get<double>(), 16.0);
   EXPECT_DOUBLE_EQ(f["peak_resultant_N"].get<double>(), 10.0);
   EXPECT_DOUBLE_EQ(f["peak_resultant_time_s"].get<double>(), 1.0);
   EXPECT_EQ(f["pressure_Pa"], nlohmann::json({1.0, 7.0}));
   EXPECT_EQ(f["positions_m"], nlohmann::json({0.75, 2.25}));
-  const nlohmann::json s = sensor_peaks(r);
+  const nlohmann::json s = to_json(sensor_peaks(r));
+  EXPECT_EQ(to_json(sensors_from_json(s, "test")), s);
   ASSERT_EQ(s.size(), 1u);
   EXPECT_EQ(s[0]["name"], "a");
   EXPECT_DOUBLE_EQ(s[0]["peak_pressure_Pa"].get<double>(), 5.0);
