@@ -1,43 +1,17 @@
 #include "design/comparison.hpp"
 
+#include "design/record_reader.hpp"
+
 #include <stdexcept>
 
 namespace dmi::design {
 
 using nlohmann::json;
 
+using namespace record;
+
 namespace {
 
-const json& field(const json& j, const char* key, const std::string& where) {
-  if (!j.is_object() || !j.contains(key)) throw std::runtime_error(where + ": no '" + key + "'");
-  return j[key];
-}
-std::string text(const json& j, const char* key, const std::string& where) {
-  const json& v = field(j, key, where);
-  if (!v.is_string()) throw std::runtime_error(where + "." + key + " is not a string");
-  return v.get<std::string>();
-}
-double number(const json& j, const char* key, const std::string& where) {
-  const json& v = field(j, key, where);
-  if (!v.is_number()) throw std::runtime_error(where + "." + key + " is not a number");
-  return v.get<double>();
-}
-std::optional<double> number_or_null(const json& j, const char* key, const std::string& where) {
-  const json& v = field(j, key, where);
-  if (v.is_null()) return std::nullopt;
-  return number(j, key, where);
-}
-std::optional<bool> flag_or_null(const json& j, const char* key, const std::string& where) {
-  const json& v = field(j, key, where);
-  if (v.is_null()) return std::nullopt;
-  if (!v.is_boolean()) throw std::runtime_error(where + "." + key + " is not true, false or null");
-  return v.get<bool>();
-}
-const json& list(const json& j, const char* key, const std::string& where) {
-  const json& v = field(j, key, where);
-  if (!v.is_array()) throw std::runtime_error(where + "." + key + " is not an array");
-  return v;
-}
 json optional_json(const std::optional<double>& x) { return x ? json(*x) : json(nullptr); }
 json optional_json(const std::optional<bool>& x) { return x ? json(*x) : json(nullptr); }
 
@@ -71,7 +45,7 @@ std::optional<BufferComparison> comparison_from_json(const json& j, const std::s
   for (std::size_t k = 0; k < rows.size(); ++k) {
     const std::string at = where + ".quantities[" + std::to_string(k) + "]";
     c.quantities.push_back({text(rows[k], "id", at), text(rows[k], "title", at), text(rows[k], "unit", at), number(rows[k], "with_buffer", at),
-                            number(rows[k], "without_buffer", at), number_or_null(rows[k], "reduction_percent", at)});
+                            number(rows[k], "without_buffer", at), number_or_none(rows[k], "reduction_percent", at)});
   }
   return c;
 }
@@ -83,12 +57,12 @@ std::optional<PlaneAndSpace> plane_and_space_from_json(const json& j, const std:
   const json& pairs = list(j, "pairs", where);
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const std::string at = where + ".pairs[" + std::to_string(k) + "]";
-    PlaneAndSpace::Pair pair{text(pairs[k], "variant", at), flag_or_null(pairs[k], "plane_passed", at), flag_or_null(pairs[k], "space_passed", at), {}};
+    PlaneAndSpace::Pair pair{text(pairs[k], "variant", at), flag_or_none(pairs[k], "plane_passed", at), flag_or_none(pairs[k], "space_passed", at), {}};
     const json& rows = list(pairs[k], "quantities", at);
     for (std::size_t n = 0; n < rows.size(); ++n) {
       const std::string q = at + ".quantities[" + std::to_string(n) + "]";
       pair.quantities.push_back({text(rows[n], "id", q), text(rows[n], "title", q), text(rows[n], "unit", q), number(rows[n], "plane", q),
-                                 number(rows[n], "space", q), number_or_null(rows[n], "ratio", q)});
+                                 number(rows[n], "space", q), number_or_none(rows[n], "ratio", q)});
     }
     p.pairs.push_back(pair);
   }

@@ -1,5 +1,7 @@
 #include "design/estimates.hpp"
 
+#include "design/record_reader.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -24,33 +26,20 @@ json Estimate::to_json() const {
   return j;
 }
 
-namespace {
-std::string text_at(const json& j, const char* key, const std::string& where) {
-  if (!j.is_object() || !j.contains(key) || !j[key].is_string()) throw std::runtime_error(where + "." + key + " is not a string");
-  return j[key].get<std::string>();
-}
-// A number, or null (NaN) where the estimate does not apply.
-double number_at(const json& j, const char* key, bool nullable, const std::string& where) {
-  if (j.is_object() && j.contains(key) && j[key].is_number()) return j[key].get<double>();
-  if (nullable && j.is_object() && j.contains(key) && j[key].is_null()) return NAN;
-  throw std::runtime_error(where + "." + key + " is not a number");
-}
-}  // namespace
 
 Estimate estimate_from_json(const json& j, const std::string& w) {
   Estimate e;
-  e.id = text_at(j, "id", w), e.title = text_at(j, "title", w), e.formula = text_at(j, "formula", w), e.source = text_at(j, "source", w);
-  e.parameters = text_at(j, "parameters", w), e.compare_to = text_at(j, "compare_to", w), e.note = text_at(j, "note", w);
-  if (!j.contains("applicable") || !j["applicable"].is_boolean()) throw std::runtime_error(w + ".applicable is not true or false");
-  e.applicable = j["applicable"];
-  e.value = number_at(j, "value_N", !e.applicable, w), e.simulated = number_at(j, "simulated_N", !e.applicable, w);
-  e.ratio = number_at(j, "ratio", !e.applicable, w);
+  e.id = record::text(j, "id", w), e.title = record::text(j, "title", w), e.formula = record::text(j, "formula", w), e.source = record::text(j, "source", w);
+  e.parameters = record::text(j, "parameters", w), e.compare_to = record::text(j, "compare_to", w), e.note = record::text(j, "note", w);
+  e.applicable = record::flag(j, "applicable", w);
+  // Where the estimate does not apply, value, simulated and ratio are null.
+  const auto value = [&](const char* key) { return e.applicable ? record::number(j, key, w) : record::number_or(j, key, NAN, w); };
+  e.value = value("value_N"), e.simulated = value("simulated_N"), e.ratio = value("ratio");
   if (j.contains("simulated_gci")) {
     e.grid = true;
-    e.simulated_gci = number_at(j, "simulated_gci", false, w), e.ratio_low = number_at(j, "ratio_low", false, w);
-    const double x = number_at(j, "simulated_extrapolated_N", true, w), hi = number_at(j, "ratio_high", true, w);
-    if (!std::isnan(x)) e.simulated_extrapolated = x;
-    if (!std::isnan(hi)) e.ratio_high = hi;
+    e.simulated_gci = record::number(j, "simulated_gci", w), e.ratio_low = record::number(j, "ratio_low", w);
+    e.simulated_extrapolated = record::number_or_none(j, "simulated_extrapolated_N", w);
+    e.ratio_high = record::number_or_none(j, "ratio_high", w);
   }
   return e;
 }

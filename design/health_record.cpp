@@ -1,23 +1,14 @@
 #include "design/health_record.hpp"
 
+#include "design/record_reader.hpp"
+
 #include <stdexcept>
 
 namespace dmi::design {
 
 using nlohmann::json;
 
-namespace {
-
-double number(const json& j, const char* key, const std::string& where) {
-  if (!j.is_object() || !j.contains(key) || !j[key].is_number()) throw std::runtime_error(where + "." + key + " is not a number");
-  return j[key].get<double>();
-}
-bool flag(const json& j, const char* key, const std::string& where) {
-  if (!j.is_object() || !j.contains(key) || !j[key].is_boolean()) throw std::runtime_error(where + "." + key + " is not true or false");
-  return j[key].get<bool>();
-}
-
-}  // namespace
+using namespace record;
 
 json to_json(const DampingShareRecord& d) {
   json j{{"impact_energy_J", d.impact_energy_J}, {"damping_energy_J", d.damping_energy_J}, {"damping_energy_at_governing_J", d.damping_energy_at_governing_J},

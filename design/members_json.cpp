@@ -1,5 +1,7 @@
 #include "design/members_json.hpp"
 
+#include "design/record_reader.hpp"
+
 #include <stdexcept>
 
 namespace dmi::design {
@@ -75,12 +77,10 @@ Extreme extreme_from(const json& j, const char* key, const std::string& where) {
   return e;
 }
 
-double number(const json& j, const char* key, const std::string& where) {
-  if (!j.is_object() || !j.contains(key) || !j[key].is_number()) throw std::runtime_error(where + "." + key + " is not a number");
-  return j[key].get<double>();
-}
 
 }  // namespace
+
+using record::number;
 
 MemberEnvelope member_from_json(const json& j, int dim, const std::string& where) {
   MemberEnvelope m;

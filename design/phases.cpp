@@ -1,5 +1,7 @@
 #include "design/phases.hpp"
 
+#include "design/record_reader.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -26,11 +28,9 @@ json DebrisLoad::to_json() const {
   return out;
 }
 
+using namespace record;
+
 namespace {
-double number(const json& j, const char* key, const std::string& where) {
-  if (!j.is_object() || !j.contains(key) || !j[key].is_number()) throw std::runtime_error(where + "." + key + " is not a number");
-  return j[key].get<double>();
-}
 DebrisLoad::Practice practice_from(const json& j, const char* key, const std::string& where) {
   const std::string w = where + "." + key;
   if (!j.is_object() || !j.contains(key) || !j[key].is_object()) throw std::runtime_error(w + " is not an object");

@@ -1,36 +1,16 @@
 #include "design/plastic_record.hpp"
 
+#include "design/record_reader.hpp"
+
 #include <stdexcept>
 
 namespace dmi::design {
 
 using nlohmann::json;
 
-namespace {
+using namespace record;
 
-const json& field(const json& j, const char* key, const std::string& where) {
-  if (!j.is_object() || !j.contains(key)) throw std::runtime_error(where + ": no '" + key + "'");
-  return j[key];
-}
-double number(const json& j, const char* key, const std::string& where) {
-  const json& v = field(j, key, where);
-  if (!v.is_number()) throw std::runtime_error(where + "." + key + " is not a number");
-  return v.get<double>();
-}
-std::optional<double> maybe_number(const json& j, const char* key, const std::string& where) {
-  if (!j.is_object() || !j.contains(key)) return std::nullopt;
-  return number(j, key, where);
-}
-std::string text(const json& j, const char* key, const std::string& where) {
-  const json& v = field(j, key, where);
-  if (!v.is_string()) throw std::runtime_error(where + "." + key + " is not a string");
-  return v.get<std::string>();
-}
-bool flag(const json& j, const char* key, const std::string& where) {
-  const json& v = field(j, key, where);
-  if (!v.is_boolean()) throw std::runtime_error(where + "." + key + " is not true or false");
-  return v.get<bool>();
-}
+namespace {
 
 json energy_json(const PlasticRecord::Energy& e) {
   json j{{"plastic_work_J", e.plastic_work_J}, {"by_group_J", e.by_group_J}, {"damping_J", e.damping_J}, {"elastic_at_end_J", e.elastic_at_end_J},
@@ -44,7 +24,7 @@ PlasticRecord::Energy energy_from(const json& j, const std::string& where) {
   PlasticRecord::Energy e;
   e.plastic_work_J = number(j, "plastic_work_J", where), e.damping_J = number(j, "damping_J", where);
   e.elastic_at_end_J = number(j, "elastic_at_end_J", where), e.kinetic_at_end_J = number(j, "kinetic_at_end_J", where);
-  e.contact_work_max_J = maybe_number(j, "contact_work_max_J", where), e.boulder_kinetic_J = maybe_number(j, "boulder_kinetic_J", where);
+  e.contact_work_max_J = number_if_there(j, "contact_work_max_J", where), e.boulder_kinetic_J = number_if_there(j, "boulder_kinetic_J", where);
   const json& g = field(j, "by_group_J", where);
   if (!g.is_object()) throw std::runtime_error(where + ".by_group_J is not an object");
   for (const auto& [name, v] : g.items()) e.by_group_J[name] = number(g, name.c_str(), where + ".by_group_J");

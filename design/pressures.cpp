@@ -1,5 +1,7 @@
 #include "design/pressures.hpp"
 
+#include "design/record_reader.hpp"
+
 #include <stdexcept>
 
 namespace dmi::design {
@@ -64,21 +66,7 @@ json to_json(const std::vector<SensorPeak>& s) {
   return out;
 }
 
-namespace {
-double number(const json& j, const char* key, const std::string& where) {
-  if (!j.is_object() || !j.contains(key) || !j[key].is_number()) throw std::runtime_error(where + "." + key + " is not a number");
-  return j[key].get<double>();
-}
-std::vector<double> numbers(const json& j, const char* key, const std::string& where) {
-  if (!j.is_object() || !j.contains(key) || !j[key].is_array()) throw std::runtime_error(where + "." + key + " is not an array");
-  std::vector<double> out;
-  for (const json& x : j[key]) {
-    if (!x.is_number()) throw std::runtime_error(where + "." + key + " holds a value that is not a number");
-    out.push_back(x.get<double>());
-  }
-  return out;
-}
-}  // namespace
+using namespace record;
 
 std::optional<FaceProfileAtMoment> face_profile_from_json(const json& j, const std::string& w) {
   if (j.is_null()) return std::nullopt;

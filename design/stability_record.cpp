@@ -1,5 +1,7 @@
 #include "design/stability_record.hpp"
 
+#include "design/record_reader.hpp"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -7,25 +9,11 @@ namespace dmi::design {
 
 using nlohmann::json;
 
+using namespace record;
+
 namespace {
 
 json finite_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
-
-const json& field(const json& j, const char* key, const std::string& where) {
-  if (!j.is_object() || !j.contains(key)) throw std::runtime_error(where + ": no '" + key + "'");
-  return j[key];
-}
-double number(const json& j, const char* key, const std::string& where) {
-  const json& v = field(j, key, where);
-  if (!v.is_number()) throw std::runtime_error(where + "." + key + " is not a number");
-  return v.get<double>();
-}
-// A number, or null for `absent` (NaN where undefined, +inf where unbounded).
-double number_or(const json& j, const char* key, double absent, const std::string& where) {
-  const json& v = field(j, key, where);
-  if (v.is_null()) return absent;
-  return number(j, key, where);
-}
 
 json sample_json(const StabilityRecord::Sample& s) {
   return json{{"time_s", s.time_s}, {"N_N", s.N_N}, {"H_N", s.H_N}, {"sliding_factor", finite_or_null(s.sliding_factor)},

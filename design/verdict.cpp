@@ -1,5 +1,7 @@
 #include "design/verdict.hpp"
 
+#include "design/record_reader.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -9,39 +11,12 @@ namespace dmi::design {
 
 using nlohmann::json;
 
+using namespace record;
+
 namespace {
 
-const json& field(const json& j, const char* key, const std::string& where) {
-  if (!j.is_object() || !j.contains(key)) throw std::runtime_error(where + ": no '" + key + "'");
-  return j[key];
-}
-std::string text(const json& j, const char* key, const std::string& where) {
-  const json& v = field(j, key, where);
-  if (!v.is_string()) throw std::runtime_error(where + "." + key + " is not a string");
-  return v.get<std::string>();
-}
-double number(const json& j, const char* key, const std::string& where) {
-  const json& v = field(j, key, where);
-  if (!v.is_number()) throw std::runtime_error(where + "." + key + " is not a number");
-  return v.get<double>();
-}
 // A number or null (null: -1, "not on a member" / "not time-dependent").
-double optional_number(const json& j, const char* key, const std::string& where) {
-  const json& v = field(j, key, where);
-  if (v.is_null()) return -1;
-  if (!v.is_number()) throw std::runtime_error(where + "." + key + " is neither a number nor null");
-  return v.get<double>();
-}
-int count(const json& j, const char* key, const std::string& where) {
-  const json& v = field(j, key, where);
-  if (!v.is_number_integer() || v.get<int>() < 0) throw std::runtime_error(where + "." + key + " is not a count");
-  return v.get<int>();
-}
-bool flag(const json& j, const char* key, const std::string& where) {
-  const json& v = field(j, key, where);
-  if (!v.is_boolean()) throw std::runtime_error(where + "." + key + " is not true or false");
-  return v.get<bool>();
-}
+double optional_number(const json& j, const char* key, const std::string& where) { return record::number_or(j, key, -1, where); }
 
 LevelVerdict level_from_json(const json& j, const std::string& where) {
   LevelVerdict l;
