@@ -6,42 +6,36 @@
 #include <string>
 #include <utility>
 
+#include "design/plastic_checks.hpp"
+#include "design/verdict.hpp"
 #include "render/report_rows.hpp"
 
 namespace dmi::render {
 
 using nlohmann::json;
 
-namespace {
-
-// A member's group: its name up to the first '_' (column_0_1 -> column); the whole name when it has none.
-std::string group_of(const std::string& member) { return member.substr(0, member.find('_')); }
-
-}  // namespace
-
 json check_group_rows(const json& design_run) {
   struct Group {
     std::string title, member, unit, level;
     int members = 0, failed = 0;
     double util = -1;
-    json demand, capacity;
+    double demand = 0, capacity = 0;
   };
   std::map<std::pair<std::string, std::string>, Group> groups;  // (check id, group)
   std::vector<std::pair<std::string, std::string>> order;
-  for (const auto& c : design_run.value("checks", json::array())) {
-    const std::string member = c.value("member", std::string());
-    if (member.empty() || member.rfind("solid: ", 0) == 0 || c.value("level", std::string()) == "information") continue;
-    const auto key = std::make_pair(c["id"].get<std::string>(), group_of(member));
+  for (const design::Check& c : design::checks_from_json(design_run, "design.json run " + design_run.value("results_file", std::string()))) {
+    const std::string& member = c.member;
+    if (member.empty() || member.rfind("solid: ", 0) == 0 || c.level == "information") continue;
+    const auto key = std::make_pair(c.id, design::member_group(member));  // column_0_1 -> column
     auto [it, fresh] = groups.try_emplace(key);
     if (fresh) order.push_back(key);
     Group& g = it->second;
-    g.title = c["title"], g.unit = c["unit"];
-    const std::string level = c.value("level", std::string("serviceability"));
-    if (g.level.empty() || g.level == level) g.level = level;
+    g.title = c.title, g.unit = c.unit;
+    if (g.level.empty() || g.level == c.level) g.level = c.level;
     else g.level = "both";
     ++g.members;
-    g.failed += c["passed"].get<bool>() ? 0 : 1;
-    if (c["utilisation"].get<double>() > g.util) g.util = c["utilisation"], g.member = member, g.demand = c["demand"], g.capacity = c["capacity"];
+    g.failed += c.passed ? 0 : 1;
+    if (c.utilisation > g.util) g.util = c.utilisation, g.member = member, g.demand = c.demand, g.capacity = c.capacity;
   }
   if (std::none_of(groups.begin(), groups.end(), [](const auto& g) { return g.second.members > 1; })) return json::array();
   json rows = json::array();
