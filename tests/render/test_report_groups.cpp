@@ -1,6 +1,7 @@
 // The report's member checks by member group (render/report_groups.cpp), by hand.
 #include <gtest/gtest.h>
 
+#include "design/checks.hpp"
 #include "render/report_rows.hpp"
 
 namespace dmi::render {
@@ -8,9 +9,12 @@ namespace {
 
 using nlohmann::json;
 
+// A check as design writes it (design::Check::to_json).
 json check(const std::string& id, const std::string& member, double u, const std::string& level = "ultimate") {
-  return {{"id", id}, {"title", id + " title"}, {"member", member}, {"utilisation", u}, {"passed", u <= 1}, {"demand", 100 * u},
-          {"capacity", 100.0}, {"unit", "N"}, {"level", level}};
+  design::Check c;
+  c.id = id, c.title = id + " title", c.member = member, c.unit = "N", c.level = level, c.demand = 100 * u, c.capacity = 100;
+  c.finish();
+  return c.to_json();
 }
 
 // Two columns and a beam: the shear row of the columns counts 2 members, 1 failing, column_1_1 governing at 1.20; the
