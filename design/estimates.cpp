@@ -1,5 +1,6 @@
 #include "design/estimates.hpp"
 
+#include "design/grid_study_record.hpp"
 #include "design/record_reader.hpp"
 
 #include <cmath>
@@ -288,19 +289,20 @@ std::vector<Estimate> estimates(const DesignBasis& basis, double shear, double c
 }
 
 void add_grid_uncertainty(json& design) {
-  if (!design.contains("grid_study") || !design["grid_study"].contains("quantities")) return;
+  const std::optional<GridStudyRecord> gs = grid_study_from_json(design.value("grid_study", json()), "design.json grid_study");
+  if (!gs) return;
   for (auto& run : design["runs"]) {
     const std::string variant = run.value("variant", "");
     std::vector<Estimate> list = estimates_from_json(run, "design.json run " + variant);
     for (Estimate& e : list) {
       if (!e.applicable) continue;
       const std::string id = e.compare_to == "peak_base_shear" ? "base_shear" : "contact_force";
-      for (const auto& q : design["grid_study"]["quantities"]) {
-        if (q.value("variant", "") != variant || q["id"] != id || !q["gci"].is_number()) continue;
-        const double gci = q["gci"], sim = e.simulated, val = e.value;
+      for (const GridQuantity& q : gs->quantities) {
+        if (q.variant != variant || q.id != id) continue;
+        const double gci = q.gci, sim = e.simulated, val = e.value;
         if (!(sim > 0) || !std::isfinite(gci)) continue;
         e.grid = true, e.simulated_gci = gci;
-        e.simulated_extrapolated = q["extrapolated"].is_number() ? std::optional<double>(q["extrapolated"].get<double>()) : std::nullopt;
+        e.simulated_extrapolated = q.extrapolated;
         e.ratio_low = val / (sim * (1 + gci));
         e.ratio_high = gci < 1 ? std::optional<double>(val / (sim * (1 - gci))) : std::nullopt;
       }

@@ -1,4 +1,5 @@
 #include "design/grid_study.hpp"
+#include "design/grid_study_record.hpp"
 #include "design/verdict.hpp"
 #include "core/variants.hpp"
 #include "engine/io/results_writer.hpp"
@@ -43,22 +44,22 @@ double number_at(const json& doc, const json::json_pointer& ptr, const std::stri
   return v;
 }
 
-json quantity(const std::string& variant, const std::string& id, const std::string& title, const std::string& unit,
-              const std::array<double, 3>& h, const std::array<double, 3>& f) {
+GridQuantity quantity(const std::string& variant, const std::string& id, const std::string& title, const std::string& unit,
+                      const std::array<double, 3>& h, const std::array<double, 3>& f) {
   const GridConvergence c = grid_convergence(h, f);
-  auto num = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
-  const double bound = std::abs(f[0]) * (1 + c.gci);
-  return json{{"variant", variant}, {"id", id}, {"title", title}, {"unit", unit}, {"values", {f[0], f[1], f[2]}},
-              {"observed_order", num(c.order)}, {"extrapolated", num(c.extrapolated)}, {"gci", c.gci},
-              {"safety_factor", c.safety_factor}, {"asymptotic_ratio", num(c.asymptotic_ratio)},
-              {"behaviour", behaviour_name(c.behaviour)}, {"converged", c.converged()},
-              {"conservative_magnitude", bound}, {"statement", describe(c)}};
+  auto num = [](double v) { return std::isfinite(v) ? std::optional<double>(v) : std::nullopt; };
+  GridQuantity q;
+  q.variant = variant, q.id = id, q.title = title, q.unit = unit, q.values = f;
+  q.observed_order = num(c.order), q.extrapolated = num(c.extrapolated), q.asymptotic_ratio = num(c.asymptotic_ratio);
+  q.gci = c.gci, q.safety_factor = c.safety_factor, q.conservative_magnitude = std::abs(f[0]) * (1 + c.gci);
+  q.behaviour = behaviour_name(c.behaviour), q.statement = describe(c), q.converged = c.converged();
+  return q;
 }
 
 }  // namespace
 
 json grid_study_section(const std::array<json, 3>& designs, const std::array<double, 3>& h, const std::array<std::string, 3>& folders) {
-  json qs = json::array();
+  std::vector<GridQuantity> qs;
   const json& fine = designs[0];
   for (std::size_t ri = 0; ri < fine["runs"].size(); ++ri) {
     const json& run = fine["runs"][ri];
@@ -106,31 +107,30 @@ json grid_study_section(const std::array<json, 3>& designs, const std::array<dou
       qs.push_back(quantity(variant, "governing_utilisation", "governing utilisation", "-", h, util));
     }
   }
-  json out = {{"method", "Roache 1994 grid convergence index, Celik et al. 2008 procedure (ASME V&V 20-2009); Fs 1.25, 3 outside the asymptotic range; order at most the method's, 2 (Oberkampf & Roy 2010)"},
-              {"cell_sizes_m", {h[0], h[1], h[2]}}, {"refinement_ratios", {h[1] / h[0], h[2] / h[1]}},
-              {"folders", {folders[0], folders[1], folders[2]}}, {"quantities", qs}};
-  int not_converged = 0;
-  for (const auto& q : qs) not_converged += q["converged"].get<bool>() ? 0 : 1;
-  out["not_converged"] = not_converged;
-  return out;
+  GridStudyRecord out;
+  out.method = "Roache 1994 grid convergence index, Celik et al. 2008 procedure (ASME V&V 20-2009); Fs 1.25, 3 outside the asymptotic "
+               "range; order at most the method's, 2 (Oberkampf & Roy 2010)";
+  out.cell_sizes_m = h, out.refinement_ratios = {h[1] / h[0], h[2] / h[1]}, out.folders = folders, out.quantities = qs;
+  for (const auto& q : qs) out.not_converged += q.converged ? 0 : 1;
+  return to_json(out);
 }
 
 bool judge_grid_study(json& design, const std::string& judge_on) {
-  json& gs = design["grid_study"];
+  GridStudyRecord gs = *grid_study_from_json(design.at("grid_study"), "design.json grid_study");
   Verdict v = verdict_from_json(design["verdict"], true, "design.json verdict");
   const std::string judged = v.runs_judged;
-  json runs = json::array();
-  bool bound_ok = true;
-  for (const auto& q : gs["quantities"]) {
-    if (q["id"] != "governing_utilisation") continue;
-    const std::string var = q["variant"];
+  GridStudyRecord::Judged out{judge_on, {}, true};
+  for (const GridQuantity& q : gs.quantities) {
+    if (q.id != "governing_utilisation") continue;
+    const std::string& var = q.variant;
     if (!judged.empty() && !var.empty() && judged.find(var) == std::string::npos) continue;  // a reference run
-    const double u = q["values"][0].get<double>(), gci = q["gci"].get<double>(), bound = u * (1 + gci);
-    runs.push_back({{"variant", var}, {"utilisation", u}, {"gci", gci}, {"utilisation_bound", bound}, {"passed", bound <= 1.0},
-                    {"converged", q["converged"]}});
-    bound_ok = bound_ok && bound <= 1.0;
+    const double u = q.values[0], gci = q.gci, bound = u * (1 + gci);
+    out.runs.push_back({var, u, gci, bound, bound <= 1.0, q.converged});
+    out.bound_passed = out.bound_passed && bound <= 1.0;
   }
-  gs["verdict"] = {{"judge_on", judge_on}, {"runs", runs}, {"bound_passed", bound_ok}};
+  const bool bound_ok = out.bound_passed;
+  gs.verdict = out;
+  design["grid_study"] = to_json(gs);
   if (judge_on == "conservative_bound" && v.passed && !bound_ok) {
     v.passed = false;
     v.status = "fail";

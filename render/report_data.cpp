@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "design/design.hpp"
+#include "design/grid_study_record.hpp"
 #include "design/stability_record.hpp"
 #include "design/verdict.hpp"
 #include "render/report.hpp"
@@ -361,24 +362,21 @@ std::string grid_data(const json& design_doc, const std::string& judged, json& d
   };
   json gq = json::array();
   std::string gov_grid;
-  if (design_doc.contains("grid_study") && design_doc["grid_study"].is_object()) {
-    const json& gs = design_doc["grid_study"];
-    for (const auto& q : gs["quantities"]) {
-      const std::string unit = q["unit"], var = q["variant"];
+  if (const auto gs = design::grid_study_from_json(design_doc.value("grid_study", json()), "design.json grid_study")) {
+    for (const design::GridQuantity& q : gs->quantities) {
+      const std::string &unit = q.unit, &var = q.variant;
       auto val = [&](double x) { return unit == "-" ? fmt("%.3f", x) : eng(x, unit); };
-      const bool ok = q["converged"].get<bool>();
-      gq.push_back({{"run", var.empty() ? "—" : var}, {"title", q["title"]}, {"fine", val(q["values"][0])}, {"medium", val(q["values"][1])},
-                    {"coarse", val(q["values"][2])}, {"gci", fmt("± %.0f %%", 100 * q["gci"].get<double>())},
-                    {"order", q["observed_order"].is_number() ? fmt("%.2f", q["observed_order"].get<double>()) : std::string("—")},
-                    {"extrapolated", q["extrapolated"].is_number() && ok ? val(q["extrapolated"]) : std::string("—")},
-                    {"statement", grid_word(q["behaviour"])}, {"status_class", ok ? "pass" : "fail"}});
-      if (q["id"] == "governing_utilisation" && (judged.empty() || var.empty() || judged.find(var) != std::string::npos))
-        gov_grid = " Grid uncertainty of the governing utilisation: " + fmt("%.2f", q["values"][0].get<double>()) + fmt(" ± %.0f %%", 100 * q["gci"].get<double>()) +
-                   " (" + q["statement"].get<std::string>() + ").";
+      const bool ok = q.converged;
+      gq.push_back({{"run", var.empty() ? "—" : var}, {"title", q.title}, {"fine", val(q.values[0])}, {"medium", val(q.values[1])},
+                    {"coarse", val(q.values[2])}, {"gci", fmt("± %.0f %%", 100 * q.gci)},
+                    {"order", q.observed_order ? fmt("%.2f", *q.observed_order) : std::string("—")},
+                    {"extrapolated", q.extrapolated && ok ? val(*q.extrapolated) : std::string("—")},
+                    {"statement", grid_word(q.behaviour)}, {"status_class", ok ? "pass" : "fail"}});
+      if (q.id == "governing_utilisation" && (judged.empty() || var.empty() || judged.find(var) != std::string::npos))
+        gov_grid = " Grid uncertainty of the governing utilisation: " + fmt("%.2f", q.values[0]) + fmt(" ± %.0f %%", 100 * q.gci) + " (" + q.statement + ").";
     }
-    d["grid_cells"] = fmt("%.4g", gs["cell_sizes_m"][0].get<double>()) + ", " + fmt("%.4g", gs["cell_sizes_m"][1].get<double>()) + " and " +
-                      fmt("%.4g m", gs["cell_sizes_m"][2].get<double>());
-    d["grid_not_converged"] = gs.value("not_converged", 0);
+    d["grid_cells"] = fmt("%.4g", gs->cell_sizes_m[0]) + ", " + fmt("%.4g", gs->cell_sizes_m[1]) + " and " + fmt("%.4g m", gs->cell_sizes_m[2]);
+    d["grid_not_converged"] = gs->not_converged;
   } else {
     gov_grid = " These numbers come from one grid: their grid uncertainty is unknown (damimpact run --grid-study states it).";
   }

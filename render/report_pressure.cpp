@@ -5,6 +5,7 @@
 #include <string>
 
 #include "render/charts.hpp"
+#include "design/grid_study_record.hpp"
 #include "design/phases.hpp"
 #include "design/pressures.hpp"
 #include "render/report_rows.hpp"
@@ -71,9 +72,9 @@ namespace {
 
 // "± n %" of a grid-study quantity of the run, or "".
 std::string gci_of(const json& design_doc, const std::string& variant, const std::string& id) {
-  if (!design_doc.contains("grid_study") || !design_doc["grid_study"].is_object()) return "";
-  for (const auto& q : design_doc["grid_study"]["quantities"])
-    if (q["id"] == id && q.value("variant", "") == variant) return fmt(", grid ± %.0f %%", 100 * q["gci"].get<double>());
+  if (const auto gs = design::grid_study_from_json(design_doc.value("grid_study", json()), "design.json grid_study"))
+    for (const design::GridQuantity& q : gs->quantities)
+      if (q.id == id && q.variant == variant) return fmt(", grid ± %.0f %%", 100 * q.gci);
   return "";
 }
 

@@ -7,6 +7,7 @@
 
 #include "design/design.hpp"
 #include "design/grid_study.hpp"
+#include "design/grid_study_record.hpp"
 #include "design/verdict.hpp"
 #include "design/loads.hpp"
 #include "engine/common/error.hpp"
@@ -140,7 +141,9 @@ json run_case(const SweepSpec& spec, std::size_t k, const SweepOptions& o) {
       row["simulated_seconds"] = sim_wall;
       fill_from_design(row, g.design);
       double bound = 0;
-      for (const json& r : g.design["grid_study"]["verdict"]["runs"]) bound = std::max(bound, r["utilisation_bound"].get<double>());
+      const design::GridStudyRecord gs = *design::grid_study_from_json(g.design.at("grid_study"), "design.json grid_study");
+      if (gs.verdict)
+        for (const auto& r : gs.verdict->runs) bound = std::max(bound, r.utilisation_bound);
       row["utilisation_bound"] = bound;
       row["grid_study_passed"] = g.passed;
       if (o.case_reports) row["report"] = fs::relative(render::report_main(dir.string(), {"von_mises", true, o.pdf, o.software_version}).html, o.out_dir).string();

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "design/estimates.hpp"
+#include "design/grid_study_record.hpp"
 #include "engine/scenario/design_basis_json.hpp"
 
 namespace dmi::design {
@@ -140,7 +141,11 @@ TEST(DesignEstimates, GridUncertaintyBandsTheRatio) {
   json rows = json::array();
   for (const auto& e : est(basis(false), 2.0e5, 4.0e6)) rows.push_back(e.to_json());
   design["runs"] = json::array({{{"variant", ""}, {"estimates", rows}}});
-  design["grid_study"]["quantities"] = json::array({{{"variant", ""}, {"id", "contact_force"}, {"gci", 0.1}, {"extrapolated", 4.2e6}}});
+  GridStudyRecord gs;  // the study as design writes it, of the contact force alone
+  GridQuantity q;
+  q.variant = "", q.id = "contact_force", q.gci = 0.1, q.extrapolated = 4.2e6, q.values = {4.0e6, 3.9e6, 3.7e6};
+  gs.quantities = {q};
+  design["grid_study"] = to_json(gs);
   add_grid_uncertainty(design);
   for (const auto& e : design["runs"][0]["estimates"]) {
     if (e["compare_to"] == "peak_contact_force" && e["applicable"].get<bool>()) {

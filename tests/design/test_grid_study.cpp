@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "design/grid_study.hpp"
+#include "design/grid_study_record.hpp"
 #include "design/verdict.hpp"
 
 using namespace dmi::design;
@@ -44,11 +45,14 @@ TEST(GridStudy, SectionReadsTheThreeDesignsAndRefusesAMissingQuantity) {
 TEST(GridStudy, ConservativeBoundCanFailADesignThatPassesOnTheFinestGrid) {
   using nlohmann::json;
   auto design = [] {
-    json q = {{"id", "governing_utilisation"}, {"variant", ""}, {"values", {0.9, 0.8, 0.7}}, {"gci", 0.2}, {"converged", true}};
+    GridStudyRecord gs;  // the study as design writes it, of the governing utilisation alone
+    GridQuantity q;
+    q.id = "governing_utilisation", q.variant = "", q.values = {0.9, 0.8, 0.7}, q.gci = 0.2, q.converged = true;
+    gs.quantities = {q};
     Verdict v = run_verdict({}, "both");  // a document's verdict as design writes it: one passing check, u 0.9
     v.document = true, v.status = "pass", v.checks = 1, v.governing = Check{};
     v.governing->utilisation = 0.9, v.governing->demand = 0.9, v.governing->capacity = 1;
-    return json{{"verdict", to_json(v)}, {"grid_study", {{"quantities", {q}}}}};
+    return json{{"verdict", to_json(v)}, {"grid_study", to_json(gs)}};
   };
   json a = design(), b = design();
   EXPECT_TRUE(judge_grid_study(a, "finest"));
