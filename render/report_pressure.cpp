@@ -26,19 +26,21 @@ std::vector<design::SensorPeak> sensors_of(const RunData& r) {
 
 using Face = design::FaceProfileAtMoment;
 
-// The row of a face quantity: its value per run, "—" where the run has no face profile.
-std::pair<std::string, std::function<std::string(const RunData&)>> face_row(const std::string& key, std::function<std::string(const Face&)> f) {
-  return {key, [f](const RunData& r) {
-            const std::optional<Face> p = face(r);
-            return p ? f(*p) : std::string("—");
-          }};
-}
-
 }  // namespace
 
 json pressure_rows(const std::vector<RunData>& runs) {
+  // Each run's records, read once; a row looks its run's up.
+  std::vector<std::optional<Face>> faces;
+  std::vector<std::vector<design::SensorPeak>> peaks;
+  for (const auto& r : runs) faces.push_back(face(r)), peaks.push_back(sensors_of(r));
+  const auto index = [&runs](const RunData& r) { return static_cast<std::size_t>(&r - runs.data()); };
+  // The row of a face quantity: its value per run, "—" where the run has no face profile.
+  const auto face_row = [&faces, index](const std::string& key, std::function<std::string(const Face&)> f) {
+    return std::pair<std::string, std::function<std::string(const RunData&)>>{
+        key, [&faces, index, f](const RunData& r) { return faces[index(r)] ? f(*faces[index(r)]) : std::string("—"); }};
+  };
   std::vector<std::pair<std::string, std::function<std::string(const RunData&)>>> rows;
-  if (std::any_of(runs.begin(), runs.end(), [](const RunData& r) { return face(r).has_value(); })) {
+  if (std::any_of(faces.begin(), faces.end(), [](const std::optional<Face>& f) { return f.has_value(); })) {
     rows.push_back(face_row("instant of the largest moment about the foot", [](const Face& f) { return eng(f.time_s, "s"); }));
     rows.push_back(face_row("resultant of the face pressure", [](const Face& f) { return eng(f.resultant_N, "N"); }));
     rows.push_back(face_row("its height above the foot", [](const Face& f) { return fmt("%.3g m", f.height_m); }));
@@ -52,12 +54,12 @@ json pressure_rows(const std::vector<RunData>& runs) {
     rows.push_back(face_row("largest resultant over the run", [](const Face& f) { return eng(f.peak_resultant_N, "N") + " at " + eng(f.peak_resultant_time_s, "s"); }));
   }
   std::vector<std::string> sensors;
-  for (const auto& r : runs)
-    for (const design::SensorPeak& s : sensors_of(r))
+  for (const auto& list : peaks)
+    for (const design::SensorPeak& s : list)
       if (std::find(sensors.begin(), sensors.end(), s.name) == sensors.end()) sensors.push_back(s.name);
   for (const std::string& name : sensors)
-    rows.push_back({"sensor " + name + ": peak pressure", [name](const RunData& r) {
-                      for (const design::SensorPeak& s : sensors_of(r))
+    rows.push_back({"sensor " + name + ": peak pressure", [&peaks, index, name](const RunData& r) {
+                      for (const design::SensorPeak& s : peaks[index(r)])
                         if (s.name == name) return eng(s.peak_pressure_Pa, "Pa") + " at " + eng(s.peak_time_s, "s");
                       return std::string("—");
                     }});
