@@ -50,26 +50,26 @@ std::string where_when(const Check& c) {
   return o.str();
 }
 
-void run_summary(std::ostringstream& o, const json& r) {
+void run_summary(std::ostringstream& o, const RunDesign& r) {
   char line[512];
-  o << "\n" << (r["variant"].get<std::string>().empty() ? "" : "[" + r["variant"].get<std::string>() + "] ") << r["results_file"].get<std::string>()
-    << "  (" << r["scenario_name"].get<std::string>() << ")\n";
-  if (!r["base_total"].is_null()) {
-    const json& b = r["base_total"];
-    if (r.value("dimension", 2) == 3)  // z up: the horizontal shear and overturning moment, and the vertical force
-      o << "  base: |H| " << eng(b["H_N"]["abs_max"]["value"], "N") << ", |M_overturning| " << eng(b["M_overturning_Nm"]["abs_max"]["value"], "N m")
-        << ", Fz " << eng(b["Fz_N"]["min"]["value"], "N") << " .. " << eng(b["Fz_N"]["max"]["value"], "N") << "\n";
+  o << "\n" << (r.variant.empty() ? "" : "[" + r.variant + "] ") << r.results_file << "  (" << r.scenario_name << ")\n";
+  if (r.base_total) {
+    const ReactionPeaks& b = r.base_total->peaks;
+    if (r.dim() == 3)  // z up: the horizontal shear and overturning moment, and the vertical force
+      o << "  base: |H| " << eng(b.at("H_N").abs.value, "N") << ", |M_overturning| " << eng(b.at("M_overturning_Nm").abs.value, "N m")
+        << ", Fz " << eng(b.at("Fz_N").min.value, "N") << " .. " << eng(b.at("Fz_N").max.value, "N") << "\n";
     else
-      o << "  base: |Fx| " << eng(b["Fx_N"]["abs_max"]["value"], "N") << ", |M| " << eng(b["M_Nm"]["abs_max"]["value"], "N m") << ", Fy "
-        << eng(b["Fy_N"]["min"]["value"], "N") << " .. " << eng(b["Fy_N"]["max"]["value"], "N") << "\n";
+      o << "  base: |Fx| " << eng(b.at("Fx_N").abs.value, "N") << ", |M| " << eng(b.at("M_Nm").abs.value, "N m") << ", Fy "
+        << eng(b.at("Fy_N").min.value, "N") << " .. " << eng(b.at("Fy_N").max.value, "N") << "\n";
   }
-  if (!r["contact"].is_null() && r["contact"]["peak_force_N"].get<double>() > 0) {
-    const json& c = r["contact"];
-    o << "  contact: peak " << eng(c["peak_force_N"], "N") << " at " << eng(c["peak_time_s"], "s") << ", impulse "
-      << eng(c["impulse_magnitude_N_s"], "N s") << ", pulse " << eng(c["pulse"]["duration_s"], "s") << "\n";
+  if (r.contact.present && r.contact.peak_N > 0) {
+    const Contact& c = r.contact;
+    double m2 = 0;
+    for (double v : c.impulse_N_s) m2 += v * v;
+    o << "  contact: peak " << eng(c.peak_N, "N") << " at " << eng(c.peak_time_s, "s") << ", impulse " << eng(std::sqrt(m2), "N s") << ", pulse "
+      << eng(c.pulse_end_s - c.pulse_start_s, "s") << "\n";
   }
-  const std::string where = "design.json run " + r["results_file"].get<std::string>();
-  for (const Estimate& e : estimates_from_json(r, where)) {
+  for (const Estimate& e : r.estimates) {
     if (e.applicable)
       std::snprintf(line, sizeof line, "  estimate %-41s %12s  (simulated %s: ratio %.2f)\n", e.title.c_str(), eng(e.value, "N").c_str(),
                     eng(e.simulated, "N").c_str(), e.ratio);
@@ -77,18 +77,18 @@ void run_summary(std::ostringstream& o, const json& r) {
       std::snprintf(line, sizeof line, "  estimate %-41s %12s  (%s)\n", e.title.c_str(), "n/a", e.note.c_str());
     o << line;
   }
-  for (const VolumeHealthRecord& v : volume_health_from_json(r.value("volume_health", json()), where + " volume_health"))
+  for (const VolumeHealthRecord& v : r.volume_health)
     if (v.flagged)
       o << "  warning: body probe '" << v.probe << "' fills " << eng(100 * (v.largest_ratio - 1), "") << " % more than its particles did when created (at "
         << eng(v.largest_time_s, "s") << "): a non-dilatant body should keep its volume; its loads are suspect (docs/design-checks.md, numerical health)\n";
-  if (r["checks"].empty()) {
+  if (r.checks.empty()) {
     o << "  no checks (no members and no solid check in this run)\n";
     return;
   }
   std::snprintf(line, sizeof line, "  %-50s %-12s %-5s %13s %13s %6s %-5s %s\n", "check", "member", "level", "demand", "capacity", "util", "",
                 "where / when");
   o << line;
-  for (const Check& c : checks_from_json(r, "design.json run " + r["results_file"].get<std::string>())) {
+  for (const Check& c : r.checks) {
     const std::string& u = c.unit;
     std::string title = c.title, member = c.member;
     if (member.rfind("solid: ", 0) == 0) {  // the solid-FE load case in brackets, without the common prefix
@@ -110,9 +110,9 @@ void run_summary(std::ostringstream& o, const json& r) {
 }  // namespace
 
 // The verdict lines: the runs judged, pass or fail, the governing check, each level's verdict (also under -q).
-std::string verdict_text(const json& d) {
+std::string verdict_text(const DesignDocument& d) {
   std::ostringstream o;
-  const Verdict v = verdict_from_json(d["verdict"], true, "design.json verdict");
+  const Verdict& v = d.verdict;
   o << "verdict (" << v.runs_judged << "): ";
   if (v.status == "no_checks") o << "NO CHECKS (nothing to check in these results)\n";
   else {
@@ -131,20 +131,19 @@ std::string verdict_text(const json& d) {
   }
   o << "  the verdict judges: " << v.judged_levels << " (limits file: verdict.level)\n";
   // The member model the verdict rests on (elastic members cannot yield; plastic ones are judged by strain and drift).
-  if (d.contains("runs"))
-    for (const auto& r : d["runs"])
-      if (const auto p = plastic_from_json(r.value("plastic", json()), "design.json run plastic")) {
-        o << "  members: " << p->member_model << ", f_y " << eng(r["steel_yield_strength_Pa"], "Pa") << " ("
-          << (r["variant"].get<std::string>().empty() ? std::string("the run") : r["variant"].get<std::string>()) << ")\n";
-        break;
-      }
+  for (const RunDesign& r : d.runs)
+    if (r.plastic) {
+      o << "  members: " << r.plastic->member_model << ", f_y " << eng(r.steel_yield_strength_Pa, "Pa") << " ("
+        << (r.variant.empty() ? std::string("the run") : r.variant) << ")\n";
+      break;
+    }
   return o.str();
 }
 
-std::string summary_text(const json& d) {
+std::string summary_text(const DesignDocument& d) {
   std::ostringstream o;
-  for (const auto& r : d["runs"]) run_summary(o, r);
-  if (const auto ps = plane_and_space_from_json(d.value("plane_and_space", json()), "design.json plane_and_space")) {
+  for (const RunDesign& r : d.runs) run_summary(o, r);
+  if (const auto& ps = d.plane_and_space) {
     char line[256];
     o << "\nplane model against its 3D model (compare_3d)\n";
     for (const auto& pair : ps->pairs) {
@@ -158,7 +157,7 @@ std::string summary_text(const json& d) {
       }
     }
   }
-  if (const auto comparison = comparison_from_json(d.value("comparison", json()), "design.json comparison")) {
+  if (const auto& comparison = d.comparison) {
     char line[256];
     o << "\nwith vs without buffer\n";
     std::snprintf(line, sizeof line, "  %-60s %14s %14s %10s\n", "peak", "with buffer", "without", "reduction");
@@ -198,12 +197,12 @@ std::vector<std::string> resolve(const std::string& p) {
 
 }  // namespace
 
-void write_design_json(const std::string& path, const json& doc) {
+void write_design_json(const std::string& path, const DesignDocument& doc) {
   const fs::path target = path, tmp = path + "." + std::to_string(::getpid()) + ".tmp";
   {
     std::ofstream o(tmp);
     if (!o) throw InputError(target.string() + ": cannot write design.json here");
-    o << doc.dump(1) << "\n";
+    o << to_json(doc).dump(1) << "\n";
     o.flush();
     if (!o) {
       std::error_code ec;
@@ -214,12 +213,12 @@ void write_design_json(const std::string& path, const json& doc) {
   fs::rename(tmp, target);
 }
 
-json check_document(const std::vector<std::string>& paths, const std::string& limits_file, const std::string& version) {
+DesignDocument check_document(const std::vector<std::string>& paths, const std::string& limits_file, const std::string& version) {
   const Limits limits = limits_file.empty() ? Limits{} : read_limits(limits_file);
   std::vector<std::string> files;
   for (const auto& p : paths)
     for (const auto& f : resolve(p)) files.push_back(f);
-  std::vector<json> runs;
+  std::vector<RunDesign> runs;
   for (const auto& f : files) {
     Results r;
     try {
@@ -235,12 +234,12 @@ json check_document(const std::vector<std::string>& paths, const std::string& li
       throw InputError(f + ": " + e.what());
     }
   }
-  return design_document(runs, limits, version);
+  return design_document(std::move(runs), limits, version);
 }
 
 int check_main(const std::vector<std::string>& paths, const std::string& limits_file, bool print_json, const std::string& out, bool quiet,
                const std::string& version, bool with_grid_study) {
-  json doc = check_document(paths, limits_file, version);
+  DesignDocument doc = check_document(paths, limits_file, version);
   // Beside the results (a comparison folder: in the folder), atomically.
   fs::path target = out;
   if (target.empty()) {
@@ -250,10 +249,10 @@ int check_main(const std::vector<std::string>& paths, const std::string& limits_
   // A grid study's folder keeps its study: the coarser levels are judged again with the same limits.
   if (with_grid_study) restudy_grid(doc, target.parent_path().string(), limits_file, version);
   write_design_json(target.string(), doc);
-  if (print_json) std::cout << doc.dump(1) << "\n";
+  if (print_json) std::cout << to_json(doc).dump(1) << "\n";
   else if (!quiet) std::cout << summary_text(doc) << "wrote " << target.string() << "\n";
   else std::cout << verdict_text(doc);
-  return doc["verdict"]["passed"] ? 0 : 1;
+  return doc.verdict.passed ? 0 : 1;
 }
 
 }  // namespace dmi::design

@@ -1,4 +1,4 @@
-// design_run: one results.h5 -> one entry of design.json "runs" (layout: docs/design-json.md).
+// design_run: one results.h5 -> the design of one run (design.json "runs"[], docs/design-json.md).
 #include "design/design.hpp"
 #include "design/verdict.hpp"
 #include "design/plastic_checks.hpp"
@@ -22,6 +22,7 @@
 #include "design/loads.hpp"
 #include "design/members.hpp"
 #include "design/members_json.hpp"
+#include "design/run_design.hpp"
 
 namespace dmi::design {
 
@@ -29,34 +30,14 @@ using nlohmann::json;
 
 namespace {
 
-json reaction_json(const ReactionPeaks& p) {
-  json j{{"name", p.name}};
-  for (const auto& c : p.components)
-    j[c.key] = {{"max", extreme_json(c.max)}, {"min", extreme_json(c.min)}, {"abs_max", extreme_json(c.abs)}, {"final", c.final}};
-  return j;
-}
-
-json contact_json(const Contact& c) {
-  if (!c.present) return nullptr;
-  double m2 = 0;
-  for (double v : c.impulse_N_s) m2 += v * v;
-  return json{{"peak_force_N", c.peak_N}, {"peak_time_s", c.peak_time_s >= 0 ? json(c.peak_time_s) : json(nullptr)},
-              {"impulse_N_s", c.impulse_N_s}, {"impulse_magnitude_N_s", std::sqrt(m2)},
-              {"pulse", {{"start_s", c.pulse_start_s}, {"end_s", c.pulse_end_s}, {"duration_s", c.pulse_end_s - c.pulse_start_s},
-                         {"impulse_N_s", c.pulse_impulse_N_s}}},
-              {"loaded_time_s", c.loaded_time_s}, {"threshold", "5 % of the peak"}};
-}
-
 // Solid-FE peaks (Lin, Cheng & Tuan, Table 1) and their concrete checks: max principal vs phi_f f_t, min principal vs phi_c alpha f'c.
-json solid_part(const std::optional<SolidCheckRecord>& doc, const Limits& L, std::vector<Check>& checks) {
-  if (!doc) return nullptr;
-  const json record = solid_check_to_json(*doc);  // design.json repeats the model and each case's Gauss-point peaks
-  json cases = json::array();
+std::optional<SolidDesign> solid_part(const std::optional<SolidCheckRecord>& doc, const Limits& L, std::vector<Check>& checks) {
+  if (!doc) return std::nullopt;
+  SolidDesign out{doc->model, {}};
   for (const SolidCase& c : doc->cases) {
-    const json& pk = record["cases"][cases.size()]["peaks"];
-    cases.push_back({{"name", c.name}, {"type", c.type}, {"load_resultant_N", c.load_resultant_N}, {"von_mises", pk["von_mises"]["gauss"]},
-                     {"max_principal", pk["max_principal"]["gauss"]}, {"min_principal", pk["min_principal"]["gauss"]},
-                     {"max_nodal_base_reaction_N", c.max_nodal_base_reaction_N}, {"max_displacement_m", c.max_displacement_m}});
+    const SolidPeak& mx = c.peaks.at("max_principal").at("gauss");
+    const SolidPeak& mn = c.peaks.at("min_principal").at("gauss");
+    out.cases.push_back({c.name, c.type, c.load_resultant_N, c.max_nodal_base_reaction_N, c.max_displacement_m, c.peaks.at("von_mises").at("gauss"), mx, mn});
     auto add = [&](const char* id, const char* title, double demand, double cap, const std::vector<double>& loc, const char* formula, const char* src) {
       Check k;
       k.id = id, k.title = title, k.member = "solid: " + c.name, k.material = "concrete", k.unit = "Pa";
@@ -67,14 +48,12 @@ json solid_part(const std::optional<SolidCheckRecord>& doc, const Limits& L, std
       k.finish();
       checks.push_back(k);
     };
-    const SolidPeak& mx = c.peaks.at("max_principal").at("gauss");
-    const SolidPeak& mn = c.peaks.at("min_principal").at("gauss");
     add("solid_principal_tension", "principal tension", std::max(0.0, mx.value_Pa), L.concrete.tensile_capacity(), mx.location_m,
         "sigma_1 <= phi_f f_t", "Lin, Cheng & Tuan, Table 1; ACI 318-19 21.2.1");
     add("solid_principal_compression", "principal compression", std::max(0.0, -mn.value_Pa), L.concrete.compressive_capacity(), mn.location_m,
         "|sigma_3| <= phi_c alpha f'c", "ACI 318-19 21.2.1, 22.2.2.4.1");
   }
-  return json{{"model", record["model"]}, {"cases", cases}};
+  return out;
 }
 
 double norm(const std::vector<double>& v) {
@@ -137,19 +116,17 @@ void require_documents(const Results& r, const std::string& where) {
 
 }  // namespace
 
-json design_run(const Results& r, const Limits& limits, const std::string& where) {
+RunDesign design_run(const Results& r, const Limits& limits, const std::string& where) {
   if (!r.complete) throw std::runtime_error(where + ": the run did not finish (complete = 0); nothing to check");
   require_documents(r, where);
   const std::optional<DesignBasis>& basis = r.info.design_basis;
   Limits L = limits;  // the steel's f_y is the one the run simulated, when its design basis gives it
   if (basis && is_set(basis->dam.yield_strength_Pa)) L.steel.yield_strength = basis->dam.yield_strength_Pa;
-  json run{{"results_file", where}, {"scenario_name", r.info.scenario_name}, {"variant", r.info.variant}};
+  RunDesign run;
+  run.results_file = where, run.scenario_name = r.info.scenario_name, run.variant = r.info.variant;
   std::vector<Check> checks;
-  std::vector<MemberEnvelope> members;
-  Contact c = contact(r);
-  run["members"] = json::array();
-  run["supports"] = json::array();
-  run["base_total"] = nullptr;
+  run.contact = contact(r);
+  const Contact& c = run.contact;
   double base_shear = 0, base_shear_time = -1;
   std::optional<FrameInfo> frame;
   if (r.info.structure) {
@@ -160,49 +137,38 @@ json design_run(const Results& r, const Limits& limits, const std::string& where
           L.steel.yield_strength = e.yield_strength;
           break;
         }
-    members = member_envelopes(r, f, L, where);
-    for (const auto& m : members) {
-      run["members"].push_back(member_json(m));
+    run.members = member_envelopes(r, f, L, where);
+    for (auto& m : run.members) {  // the run's checks hold them (as design.json does)
       checks.insert(checks.end(), m.checks.begin(), m.checks.end());
+      m.checks.clear();
     }
-    const Reactions re = reactions(r, f, where);
-    for (const auto& s : re.supports) run["supports"].push_back(reaction_json(s));
+    Reactions re = reactions(r, f, where);
+    run.supports = re.supports;
     if (!re.supports.empty()) {
-      run["base_total"] = reaction_json(re.total);
-      run["base_total"]["about_m"] = f.dim == 3 ? json{re.about[0], re.about[1], re.about[2]} : json{re.about[0], re.about[1]};
+      run.base_total = BaseTotal{re.total, f.dim == 3 ? std::vector<double>{re.about[0], re.about[1], re.about[2]} : std::vector<double>{re.about[0], re.about[1]}};
       base_shear = re.total.at(shear_key(f.dim)).abs.value;
       base_shear_time = re.total.at(shear_key(f.dim)).abs.time;
     }
-    run["dimension"] = f.dim;
+    run.dimension = f.dim;
   }
-  run["contact"] = contact_json(c);
-  punching(r.info.peak_contact, members, L, checks);
-  run["solid"] = solid_part(r.info.solid_check, L, checks);
-  const std::optional<PlasticRecord> plastic = frame ? plastic_part(r, *frame, members, basis, c, L.steel, checks, where) : std::nullopt;
-  run["plastic"] = plastic ? to_json(*plastic) : json(nullptr);
-  run["steel_yield_strength_Pa"] = L.steel.yield_strength;
-  json est = json::array();
-  if (basis)
-    for (const auto& e : estimates(*basis, base_shear, c.present ? c.peak_N : 0.0, r.info.dimension)) est.push_back(e.to_json());
-  run["estimates"] = est;
-  const std::optional<DebrisLoad> debris = basis ? debris_phases(r, *basis) : std::nullopt;
-  run["debris_phases"] = debris ? debris->to_json() : json(nullptr);
-  const std::optional<StabilityRecord> st = basis && frame ? stability(r, *frame, *basis, L.foundation, checks, where) : std::nullopt;
-  run["stability"] = st ? to_json(*st) : json(nullptr);
-  run["local_damage"] = basis ? local_damage_checks(*basis, L.concrete, checks) : json(nullptr);
-  run["checks"] = json::array();
-  for (const auto& k : checks) run["checks"].push_back(k.to_json());
-  run["verdict"] = to_json(run_verdict(checks, L.verdict_level));
+  punching(r.info.peak_contact, run.members, L, checks);
+  run.solid = solid_part(r.info.solid_check, L, checks);
+  run.plastic = frame ? plastic_part(r, *frame, run.members, basis, c, L.steel, checks, where) : std::nullopt;
+  run.steel_yield_strength_Pa = L.steel.yield_strength;
+  if (basis) run.estimates = estimates(*basis, base_shear, c.present ? c.peak_N : 0.0, r.info.dimension);
+  if (basis) run.debris_phases = debris_phases(r, *basis);
+  if (basis && frame) run.stability = stability(r, *frame, *basis, L.foundation, checks, where);
+  if (basis) run.local_damage = local_damage_checks(*basis, L.concrete, checks);
+  run.verdict = run_verdict(checks, L.verdict_level);
   // The damping's share by the instant of the most utilised member check (else the contact peak).
   double t_member = c.present ? c.peak_time_s : r.time.empty() ? 0.0 : r.time.back(), u_member = -1;
   for (const auto& k : checks)
     if (k.s_m >= 0 && k.time_s >= 0 && k.situation == "accidental" && k.utilisation > u_member) u_member = k.utilisation, t_member = k.time_s;
-  const std::optional<DampingShareRecord> damping = basis ? damping_share(r, *basis, t_member, base_shear_time) : std::nullopt;
-  run["damping"] = damping ? to_json(*damping) : json(nullptr);
-  run["volume_health"] = to_json(volume_health(r));
-  const std::optional<FaceProfileAtMoment> face = face_profile(r, where);
-  run["face_profile"] = face ? to_json(*face) : json(nullptr);
-  run["sensors"] = to_json(sensor_peaks(r));
+  if (basis) run.damping = damping_share(r, *basis, t_member, base_shear_time);
+  run.volume_health = volume_health(r);
+  run.face_profile = face_profile(r, where);
+  run.sensors = sensor_peaks(r);
+  run.checks = std::move(checks);
   return run;
 }
 

@@ -10,35 +10,35 @@
 #include "core/design_basis.hpp"
 #include "design/comparison.hpp"
 #include "design/limits.hpp"
+#include "design/design_document.hpp"
+#include "design/run_design.hpp"
 #include "engine/io/results.hpp"
 
 namespace dmi::design {
 
-constexpr int kDesignFormatVersion = 1;
-
 // The design of one run (an entry of design.json "runs"): envelopes, reactions, contact, solid-FE peaks,
 // closed-form estimates, checks and the verdict. `where` names the results file in errors.
-nlohmann::json design_run(const Results& r, const Limits& limits, const std::string& where);
+RunDesign design_run(const Results& r, const Limits& limits, const std::string& where);
 
 
 // With vs without buffer: every compared peak and its reduction in % (docs/design-json.md "comparison").
-BufferComparison compare_runs(const nlohmann::json& with_buffer, const nlohmann::json& without_buffer);
+BufferComparison compare_runs(const RunDesign& with_buffer, const RunDesign& without_buffer);
 
 // The whole design.json. The verdict judges every run except the without_buffer run of a comparison pair (a
 // with_buffer and a without_buffer run in the same comparison folder): that one is the reference the design is
 // compared with. The first pair gives "comparison".
 // design.json's "plane_and_space": for each 3D run of compare_3d, the plane run it stands beside and their governing
 // numbers side by side (null without compare_3d).
-std::optional<PlaneAndSpace> plane_and_space_section(const std::vector<nlohmann::json>& runs);
-nlohmann::json design_document(const std::vector<nlohmann::json>& runs, const Limits& limits, const std::string& software_version);
+std::optional<PlaneAndSpace> plane_and_space_section(const std::vector<RunDesign>& runs);
+DesignDocument design_document(std::vector<RunDesign> runs, const Limits& limits, const std::string& software_version);
 
 // Writes design.json atomically (a temporary beside it, renamed when complete).
-void write_design_json(const std::string& path, const nlohmann::json& doc);
+void write_design_json(const std::string& path, const DesignDocument& doc);
 
 // The readable summary `damimpact check` prints.
-std::string summary_text(const nlohmann::json& design);
+std::string summary_text(const DesignDocument& design);
 // Its verdict lines alone (what `check -q` prints).
-std::string verdict_text(const nlohmann::json& design);
+std::string verdict_text(const DesignDocument& design);
 
 // `damimpact check PATH... [--limits FILE] [--json] [-o design.json]`: PATH a results.h5 or a run folder (holding
 // results.h5, or with_buffer/ and without_buffer/). Writes design.json (atomically) beside the results, or to
@@ -47,7 +47,7 @@ std::string verdict_text(const nlohmann::json& design);
 // throws (exit 2).
 // The design document of the runs at `paths` (results files or run folders) under the limits file ("" the defaults),
 // without writing or printing it.
-nlohmann::json check_document(const std::vector<std::string>& paths, const std::string& limits_file, const std::string& software_version);
+DesignDocument check_document(const std::vector<std::string>& paths, const std::string& limits_file, const std::string& software_version);
 int check_main(const std::vector<std::string>& paths, const std::string& limits_file, bool print_json, const std::string& out,
                bool quiet, const std::string& software_version, bool with_grid_study = false);
 

@@ -288,29 +288,4 @@ std::vector<Estimate> estimates(const DesignBasis& basis, double shear, double c
   return out;
 }
 
-void add_grid_uncertainty(json& design) {
-  const std::optional<GridStudyRecord> gs = grid_study_from_json(design.value("grid_study", json()), "design.json grid_study");
-  if (!gs) return;
-  for (auto& run : design["runs"]) {
-    const std::string variant = run.value("variant", "");
-    std::vector<Estimate> list = estimates_from_json(run, "design.json run " + variant);
-    for (Estimate& e : list) {
-      if (!e.applicable) continue;
-      const std::string id = e.compare_to == "peak_base_shear" ? "base_shear" : "contact_force";
-      for (const GridQuantity& q : gs->quantities) {
-        if (q.variant != variant || q.id != id) continue;
-        const double gci = q.gci, sim = e.simulated, val = e.value;
-        if (!(sim > 0) || !std::isfinite(gci)) continue;
-        e.grid = true, e.simulated_gci = gci;
-        e.simulated_extrapolated = q.extrapolated;
-        e.ratio_low = val / (sim * (1 + gci));
-        e.ratio_high = gci < 1 ? std::optional<double>(val / (sim * (1 - gci))) : std::nullopt;
-      }
-    }
-    json out = json::array();
-    for (const Estimate& e : list) out.push_back(e.to_json());
-    run["estimates"] = out;
-  }
-}
-
 }  // namespace dmi::design

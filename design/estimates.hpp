@@ -41,9 +41,5 @@ std::vector<Estimate> estimates_from_json(const nlohmann::json& run, const std::
 // `dimension`: the model's (2 or 3), for the notes on how it represents the boulder.
 std::vector<Estimate> estimates(const DesignBasis& basis, double simulated_base_shear_N, double simulated_contact_N, int dimension = 2);
 
-// With a grid study (design["grid_study"]): each applicable estimate of a run gets the grid uncertainty of the simulated
-// peak it is compared with (simulated_gci, simulated_extrapolated_N and the ratio band ratio_low .. ratio_high for the
-// simulated value within +-GCI). Estimates whose quantity the study did not cover are left as they are.
-void add_grid_uncertainty(nlohmann::json& design);
 
 }  // namespace dmi::design

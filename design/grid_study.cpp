@@ -1,5 +1,6 @@
 #include "design/grid_study.hpp"
 #include "design/grid_study_record.hpp"
+#include "design/design_document.hpp"
 #include "design/verdict.hpp"
 #include "core/variants.hpp"
 #include "engine/io/results_writer.hpp"
@@ -30,18 +31,25 @@ using nlohmann::json;
 
 namespace {
 
-const json* find_check(const json& run, const std::string& id, const std::string& member) {
-  for (const auto& c : run["checks"])
-    if (c["id"] == id && c["member"] == member) return &c;
+const Check* find_check(const RunDesign& run, const std::string& id, const std::string& member) {
+  for (const Check& c : run.checks)
+    if (c.id == id && c.member == member) return &c;
   return nullptr;
 }
 
-double number_at(const json& doc, const json::json_pointer& ptr, const std::string& what, const std::string& folder) {
-  if (!doc.contains(ptr) || !doc[ptr].is_number())
-    throw std::runtime_error("grid study: " + folder + "/design.json has no number for " + what + " (" + ptr.to_string() + ")");
-  const double v = doc[ptr].get<double>();
+double finite(double v, const std::string& what, const std::string& folder) {
   if (!std::isfinite(v)) throw std::runtime_error("grid study: " + folder + "/design.json: " + what + " is not finite");
   return v;
+}
+
+// A governing number of a run, none where the run has no such quantity.
+using Reading = std::function<std::optional<double>(const RunDesign&)>;
+
+std::optional<double> base_peak(const RunDesign& r, const char* key) {
+  if (!r.base_total) return std::nullopt;
+  for (const ReactionComponent& c : r.base_total->peaks.components)
+    if (c.key == key && c.abs.set) return c.abs.value;
+  return std::nullopt;
 }
 
 GridQuantity quantity(const std::string& variant, const std::string& id, const std::string& title, const std::string& unit,
@@ -58,52 +66,57 @@ GridQuantity quantity(const std::string& variant, const std::string& id, const s
 
 }  // namespace
 
-json grid_study_section(const std::array<json, 3>& designs, const std::array<double, 3>& h, const std::array<std::string, 3>& folders) {
+GridStudyRecord grid_study_section(const std::array<DesignDocument, 3>& designs, const std::array<double, 3>& h,
+                                   const std::array<std::string, 3>& folders) {
   std::vector<GridQuantity> qs;
-  const json& fine = designs[0];
-  for (std::size_t ri = 0; ri < fine["runs"].size(); ++ri) {
-    const json& run = fine["runs"][ri];
-    const std::string variant = run.value("variant", "");
-    std::array<const json*, 3> runs{};
+  for (const RunDesign& run : designs[0].runs) {
+    const std::string& variant = run.variant;
+    std::array<const RunDesign*, 3> runs{};
     for (int g = 0; g < 3; ++g) {
-      for (const auto& r : designs[g]["runs"])
-        if (r.value("variant", "") == variant) runs[g] = &r;
+      for (const RunDesign& r : designs[g].runs)
+        if (r.variant == variant) runs[g] = &r;
       if (!runs[g]) throw std::runtime_error("grid study: " + folders[g] + "/design.json has no run '" + variant + "'");
     }
-    auto add = [&](const std::string& id, const std::string& title, const std::string& unit, const char* ptr) {
-      const json::json_pointer p(ptr);
-      // Not in this kind of run (no frame, no contact), or null on one grid (a surge whose static tail that grid's run
-      // does not reach): left out of the study. A value that is there but not a number is an altered file (number_at).
-      for (const json* r : runs)
-        if (!r->contains(p) || (*r)[p].is_null()) return;
+    auto add = [&](const std::string& id, const std::string& title, const std::string& unit, const Reading& read) {
+      // Not in this kind of run (no frame, no contact), or none on one grid (a surge whose static tail that grid's run
+      // does not reach): left out of the study.
+      std::array<std::optional<double>, 3> v;
+      for (int g = 0; g < 3; ++g)
+        if (!(v[g] = read(*runs[g]))) return;
       std::array<double, 3> f{};
-      for (int g = 0; g < 3; ++g) f[g] = std::abs(number_at(*runs[g], p, title + " of run '" + variant + "'", folders[g]));
+      for (int g = 0; g < 3; ++g) f[g] = std::abs(finite(*v[g], title + " of run '" + variant + "'", folders[g]));
       qs.push_back(quantity(variant, id, title, unit, h, f));
     };
-    add("contact_force", "peak contact force", "N", "/contact/peak_force_N");
-    const int dim = run.value("dimension", 2);
+    const int dim = run.dim();
+    const auto face = [](double FaceProfileAtMoment::*q) {
+      return [q](const RunDesign& r) { return r.face_profile ? std::optional<double>((*r.face_profile).*q) : std::nullopt; };
+    };
+    const auto debris = [](auto get) {
+      return [get](const RunDesign& r) { return r.debris_phases ? get(r.debris_phases->phases) : std::optional<double>(); };
+    };
+    add("contact_force", "peak contact force", "N", [](const RunDesign& r) { return r.contact.present ? std::optional<double>(r.contact.peak_N) : std::nullopt; });
     add("base_shear", dim == 3 ? "peak base shear |(sum Fx, sum Fy)|" : "peak base shear |sum Fx|", "N",
-        (std::string("/base_total/") + shear_key(dim) + "/abs_max/value").c_str());
+        [dim](const RunDesign& r) { return base_peak(r, shear_key(dim)); });
     add("base_moment", dim == 3 ? "peak overturning moment |(sum Mx, sum My)|" : "peak base moment |sum M|", "N m",
-        (std::string("/base_total/") + moment_key(dim) + "/abs_max/value").c_str());
-    add("face_resultant", "face pressure resultant at its largest moment about the foot", "N", "/face_profile/resultant_N");
-    add("face_height", "height of that resultant above the foot", "m", "/face_profile/height_m");
-    add("debris_peak", "debris load: peak over the surge's passage", "N", "/debris_phases/peak_N");
-    add("debris_dynamic", "debris load: dynamic (the surge's body)", "N", "/debris_phases/dynamic_N");
-    add("debris_static", "debris load: static tail (the deposit)", "N", "/debris_phases/static_N");
-    if (run.contains("verdict") && run["verdict"]["governing"].is_object()) {
-      const json& gov = run["verdict"]["governing"];
-      const std::string id = gov["id"], member = gov["member"];
+        [dim](const RunDesign& r) { return base_peak(r, moment_key(dim)); });
+    add("face_resultant", "face pressure resultant at its largest moment about the foot", "N", face(&FaceProfileAtMoment::resultant_N));
+    add("face_height", "height of that resultant above the foot", "m", face(&FaceProfileAtMoment::height_m));
+    add("debris_peak", "debris load: peak over the surge's passage", "N", debris([](const DebrisPhases& p) { return std::optional<double>(p.peak_N); }));
+    add("debris_dynamic", "debris load: dynamic (the surge's body)", "N", debris([](const DebrisPhases& p) { return std::optional<double>(p.dynamic_N); }));
+    add("debris_static", "debris load: static tail (the deposit)", "N", debris([](const DebrisPhases& p) { return p.static_N; }));
+    if (run.verdict.governing) {
+      const Check& gov = *run.verdict.governing;
+      const std::string& id = gov.id, member = gov.member;
       std::array<double, 3> demand{}, util{};
       for (int g = 0; g < 3; ++g) {
-        const json* c = find_check(*runs[g], id, member);
+        const Check* c = find_check(*runs[g], id, member);
         if (!c) throw std::runtime_error("grid study: " + folders[g] + "/design.json has no check '" + id + "' on '" + member + "' (run '" + variant + "')");
-        demand[g] = std::abs(number_at(*c, json::json_pointer("/demand"), "demand of " + id, folders[g]));
+        demand[g] = std::abs(finite(c->demand, "demand of " + id, folders[g]));
         // The governing utilisation of each grid: its verdict's, whichever check governs there (information checks and
         // levels the limits do not judge left out).
-        util[g] = number_at(*runs[g], json::json_pointer("/verdict/max_utilisation"), "governing utilisation", folders[g]);
+        util[g] = finite(runs[g]->verdict.max_utilisation(), "governing utilisation", folders[g]);
       }
-      qs.push_back(quantity(variant, "governing_demand", gov.value("title", id) + " (" + member + ")", gov.value("unit", ""), h, demand));
+      qs.push_back(quantity(variant, "governing_demand", gov.title + " (" + member + ")", gov.unit, h, demand));
       qs.push_back(quantity(variant, "governing_utilisation", "governing utilisation", "-", h, util));
     }
   }
@@ -112,12 +125,31 @@ json grid_study_section(const std::array<json, 3>& designs, const std::array<dou
                "range; order at most the method's, 2 (Oberkampf & Roy 2010)";
   out.cell_sizes_m = h, out.refinement_ratios = {h[1] / h[0], h[2] / h[1]}, out.folders = folders, out.quantities = qs;
   for (const auto& q : qs) out.not_converged += q.converged ? 0 : 1;
-  return to_json(out);
+  return out;
 }
 
-bool judge_grid_study(json& design, const std::string& judge_on) {
-  GridStudyRecord gs = *grid_study_from_json(design.at("grid_study"), "design.json grid_study");
-  Verdict v = verdict_from_json(design["verdict"], true, "design.json verdict");
+void add_grid_uncertainty(DesignDocument& design) {
+  if (!design.grid_study) return;
+  for (RunDesign& run : design.runs)
+    for (Estimate& e : run.estimates) {
+      if (!e.applicable) continue;
+      const std::string id = e.compare_to == "peak_base_shear" ? "base_shear" : "contact_force";
+      for (const GridQuantity& q : design.grid_study->quantities) {
+        if (q.variant != run.variant || q.id != id) continue;
+        const double gci = q.gci, sim = e.simulated, val = e.value;
+        if (!(sim > 0) || !std::isfinite(gci)) continue;
+        e.grid = true, e.simulated_gci = gci;
+        e.simulated_extrapolated = q.extrapolated;
+        e.ratio_low = val / (sim * (1 + gci));
+        e.ratio_high = gci < 1 ? std::optional<double>(val / (sim * (1 - gci))) : std::nullopt;
+      }
+    }
+}
+
+bool judge_grid_study(DesignDocument& design, const std::string& judge_on) {
+  if (!design.grid_study) throw std::runtime_error("design.json has no grid study to judge");
+  GridStudyRecord& gs = *design.grid_study;
+  Verdict& v = design.verdict;
   const std::string judged = v.runs_judged;
   GridStudyRecord::Judged out{judge_on, {}, true};
   for (const GridQuantity& q : gs.quantities) {
@@ -130,12 +162,10 @@ bool judge_grid_study(json& design, const std::string& judge_on) {
   }
   const bool bound_ok = out.bound_passed;
   gs.verdict = out;
-  design["grid_study"] = to_json(gs);
   if (judge_on == "conservative_bound" && v.passed && !bound_ok) {
     v.passed = false;
     v.status = "fail";
     v.note = "passes on the finest grid but not on the conservative bound u (1 + GCI) of the grid study (limits: grid_study.judge_on)";
-    design["verdict"] = to_json(v);
   }
   return v.passed;
 }
@@ -147,7 +177,7 @@ GridStudyOutcome run_grid_study(const std::string& file, const nlohmann::json& s
   GridStudyOutcome r;
   r.h = {h, h * ratio, h * ratio * ratio};
   std::array<std::string, 3> folders;
-  std::array<nlohmann::json, 3> designs;
+  std::array<DesignDocument, 3> designs;
   const auto t_start = std::chrono::steady_clock::now();
   auto level = [&](int g) {
     const auto t0 = overlap ? t_start : std::chrono::steady_clock::now();  // overlapping: seconds since the study began
@@ -166,8 +196,7 @@ GridStudyOutcome run_grid_study(const std::string& file, const nlohmann::json& s
     const std::string design = (fs::path(dir) / "design.json").string();
     if (g == 0) {  // the finest level prints its checks (the coarser ones only feed the study)
       check_main(written, limits_file, false, design, quiet, software_version);
-      std::ifstream d(design);
-      designs[g] = nlohmann::json::parse(d);
+      designs[g] = read_design_json(design);
     } else {
       designs[g] = check_document(written, limits_file, software_version);
       write_design_json(design, designs[g]);
@@ -215,15 +244,15 @@ GridStudyOutcome run_grid_study(const std::string& file, const nlohmann::json& s
   return r;
 }
 
-bool attach_grid_study(nlohmann::json& design, const std::array<nlohmann::json, 3>& designs, const std::array<double, 3>& h,
+bool attach_grid_study(DesignDocument& design, const std::array<DesignDocument, 3>& designs, const std::array<double, 3>& h,
                        const std::array<std::string, 3>& folders, const std::string& limits_file) {
-  design["grid_study"] = grid_study_section(designs, h, folders);
+  design.grid_study = grid_study_section(designs, h, folders);
   add_grid_uncertainty(design);
   const Limits limits = limits_file.empty() ? Limits{} : read_limits(limits_file);
   return judge_grid_study(design, limits.grid_judge_on);
 }
 
-bool restudy_grid(nlohmann::json& design, const std::string& out, const std::string& limits_file, const std::string& software_version) {
+bool restudy_grid(DesignDocument& design, const std::string& out, const std::string& limits_file, const std::string& software_version) {
   namespace fs = std::filesystem;
   const fs::path root = fs::path(out) / "grid_study";
   std::error_code ec;
@@ -237,7 +266,7 @@ bool restudy_grid(nlohmann::json& design, const std::string& out, const std::str
   }
   if (levels.size() != 2) return false;
   std::sort(levels.begin(), levels.end());
-  std::array<nlohmann::json, 3> designs{design, {}, {}};
+  std::array<DesignDocument, 3> designs{design, {}, {}};
   std::array<std::string, 3> folders{out, levels[0].second, levels[1].second};
   // Each level's cell as its run recorded it (the folder names round it to 6 digits).
   std::array<double, 3> h{};

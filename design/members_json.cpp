@@ -65,9 +65,7 @@ json member_json(const MemberEnvelope& m) {
   return out;
 }
 
-namespace {
-
-Extreme extreme_from(const json& j, const char* key, const std::string& where) {
+Extreme extreme_from_json(const json& j, const char* key, const std::string& where) {
   Extreme e;
   if (!j.contains(key) || j[key].is_null()) return e;
   const json& x = j[key];
@@ -76,9 +74,6 @@ Extreme extreme_from(const json& j, const char* key, const std::string& where) {
   e.value = x["value"], e.time = x["time_s"], e.set = true;
   return e;
 }
-
-
-}  // namespace
 
 using record::number;
 
@@ -104,7 +99,7 @@ MemberEnvelope member_from_json(const json& j, int dim, const std::string& where
         {"tau_max_Pa", &Station::tau}, {"von_mises_max_Pa", &Station::von_mises}, {"Vy_abs_max_N", &Station::Vy_abs},
         {"Vz_abs_max_N", &Station::Vz_abs}, {"T_abs_max_Nm", &Station::T_abs}, {"My_max_Nm", &Station::My_max}, {"My_min_Nm", &Station::My_min},
         {"Mz_max_Nm", &Station::Mz_max}, {"Mz_min_Nm", &Station::Mz_min}, {"principal_max_Pa", &Station::principal}};
-    for (const auto& [key, field] : fields) st.*field = extreme_from(s, key, at);
+    for (const auto& [key, field] : fields) st.*field = extreme_from_json(s, key, at);
     m.stations.push_back(st);
   }
   return m;

@@ -10,6 +10,8 @@
 namespace dmi::design {
 
 nlohmann::json extreme_json(const Extreme& e);  // {"value", "time_s"}, or null when unset
+// j[key] as an extreme: unset where the key is absent or null; anything but {value, time_s} is refused naming `where`.
+Extreme extreme_from_json(const nlohmann::json& j, const char* key, const std::string& where);
 nlohmann::json member_json(const MemberEnvelope& m);
 // The envelope of runs[].members[k] (its stations and their extremes; the member's checks are the run's, not read
 // here); `dim` the run's dimension, `where` names the place in errors.

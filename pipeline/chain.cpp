@@ -23,19 +23,20 @@ namespace fs = std::filesystem;
 namespace {
 
 // The grid uncertainty of the governing numbers, and the verdict on their conservative bound (stdout).
-void print_grid_study(const nlohmann::json& fine) {
-  const nlohmann::json& g = fine["grid_study"];
-  std::printf("\ngrid uncertainty of the governing numbers (%s):\n", g["method"].get<std::string>().c_str());
-  auto tag = [](const nlohmann::json& v) { return v.get<std::string>().empty() ? std::string() : "[" + v.get<std::string>() + "] "; };
-  for (const auto& q : g["quantities"])
-    std::printf("  %s%-40s %12.5g %-4s +- %5.1f %%  %s\n", tag(q["variant"]).c_str(), q["title"].get<std::string>().c_str(),
-                q["values"][0].get<double>(), q["unit"].get<std::string>().c_str(), 100 * q["gci"].get<double>(),
-                q["statement"].get<std::string>().c_str());
-  for (const auto& r : g["verdict"]["runs"])
-    std::printf("  %sgoverning utilisation %.3f, conservative bound u (1 + GCI) = %.3f: %s\n", tag(r["variant"]).c_str(),
-                r["utilisation"].get<double>(), r["utilisation_bound"].get<double>(), r["passed"].get<bool>() ? "within 1" : "above 1");
-  const std::string note = fine["verdict"].contains("note") ? " (" + fine["verdict"]["note"].get<std::string>() + ")" : "";
-  std::printf("  judged on: %s%s\n", g["verdict"]["judge_on"].get<std::string>().c_str(), note.c_str());
+void print_grid_study(const design::DesignDocument& fine) {
+  if (!fine.grid_study) return;
+  const design::GridStudyRecord& g = *fine.grid_study;
+  std::printf("\ngrid uncertainty of the governing numbers (%s):\n", g.method.c_str());
+  auto tag = [](const std::string& v) { return v.empty() ? std::string() : "[" + v + "] "; };
+  for (const design::GridQuantity& q : g.quantities)
+    std::printf("  %s%-40s %12.5g %-4s +- %5.1f %%  %s\n", tag(q.variant).c_str(), q.title.c_str(), q.values[0], q.unit.c_str(), 100 * q.gci,
+                q.statement.c_str());
+  if (!g.verdict) return;
+  for (const auto& r : g.verdict->runs)
+    std::printf("  %sgoverning utilisation %.3f, conservative bound u (1 + GCI) = %.3f: %s\n", tag(r.variant).c_str(), r.utilisation,
+                r.utilisation_bound, r.passed ? "within 1" : "above 1");
+  const std::string note = fine.verdict.note.empty() ? "" : " (" + fine.verdict.note + ")";
+  std::printf("  judged on: %s%s\n", g.verdict->judge_on.c_str(), note.c_str());
 }
 
 // Restarted, every level continues from its own checkpoints (or keeps its complete results), variant by variant as

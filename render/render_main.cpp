@@ -35,7 +35,7 @@ namespace dmi::render {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-std::vector<RunData> load_runs(const std::string& out_dir, json& design_doc) {
+std::vector<RunData> load_runs(const std::string& out_dir, design::DesignDocument& design_doc) {
   std::error_code ec;
   const fs::path d = fs::is_directory(out_dir, ec) ? fs::path(out_dir) : fs::path(out_dir).parent_path();
   const std::vector<std::pair<std::string, fs::path>> files = variant_results(d);
@@ -60,35 +60,31 @@ std::vector<RunData> load_runs(const std::string& out_dir, json& design_doc) {
     runs.push_back(std::move(r));
   }
   // design.json beside the results, else the checks with default limits.
-  design_doc = nullptr;
+  std::optional<design::DesignDocument> written;
   if (fs::exists(d / "design.json")) {
-    std::ifstream in(d / "design.json");
     try {
-      design_doc = json::parse(in);
-    } catch (const json::exception& e) {
-      throw InputError((d / "design.json").string() + ": invalid JSON (" + e.what() + "); re-run damimpact check");
+      written = design::read_design_json((d / "design.json").string());
+    } catch (const std::exception& e) {
+      throw InputError(std::string(e.what()) + "; re-run damimpact check");
     }
   }
-  std::vector<json> entries;
+  std::vector<design::RunDesign> entries;
   for (auto& r : runs) {
-    if (design_doc.is_object() && design_doc.contains("runs"))
-      for (const auto& e : design_doc["runs"])
-        if (e.value("variant", std::string()) == r.variant) r.design = e;
-    if (r.design.is_null()) {
-      try {
-        r.design = design::design_run(r.results, design::Limits{}, r.file);
-      } catch (const std::exception& e) {
-        throw InputError(e.what());
-      }
+    const design::RunDesign* found = nullptr;
+    if (written)
+      for (const design::RunDesign& e : written->runs)
+        if (e.variant == r.variant) found = &e;
+    try {
+      r.design = found ? *found : design::design_run(r.results, design::Limits{}, r.file);
+    } catch (const std::exception& e) {
+      throw InputError(e.what());
     }
     entries.push_back(r.design);
   }
-  // Which run is the bare reference of a comparison: design_document's pairing (a design.json written before it said
-  // so, or none, leaves the flag to it).
-  const json paired = design::design_document(entries, design::Limits{}, "");
-  if (!design_doc.is_object()) design_doc = paired;
-  for (std::size_t i = 0; i < runs.size(); ++i)
-    if (!runs[i].design.contains("reference")) runs[i].design["reference"] = paired["runs"][i]["reference"];
+  // Which run is the bare reference of a comparison: design_document's pairing (by variant and folder).
+  design::DesignDocument paired = design::design_document(std::move(entries), design::Limits{}, "");
+  for (std::size_t i = 0; i < runs.size(); ++i) runs[i].design.reference = paired.runs[i].reference;
+  design_doc = written ? std::move(*written) : std::move(paired);
   return runs;
 }
 
@@ -117,13 +113,21 @@ std::string ms(double t) {
 
 std::optional<design::Check> plotted_check(const RunData& run);
 
+// The contact's peak instant and its pulse (design.json contact), or `otherwise` without a recorded contact.
+double peak_time_or(const RunData& r, double otherwise) {
+  const design::Contact& c = r.design.contact;
+  return c.present && c.peak_time_s >= 0 ? c.peak_time_s : otherwise;
+}
+double pulse_start_or(const RunData& r, double otherwise) { return r.design.contact.present ? r.design.contact.pulse_start_s : otherwise; }
+double pulse_end_or(const RunData& r, double otherwise) { return r.design.contact.present ? r.design.contact.pulse_end_s : otherwise; }
+
 // The governing instant of the stress field: the governing check's time when it is a check of the members' or the
 // solid's stresses, else the most utilised member check's (a check of the dam on its foundation or of the struck face
 // has no field to show), else the contact peak, else the end.
 double governing_time(const RunData& r) {
   const double end = r.results.time.empty() ? 0.0 : r.results.time.back();
-  const double peak = num(r.design, {"contact", "peak_time_s"}, end);
-  const std::optional<design::Check> g = design::verdict_from_json(r.design["verdict"], false, "design.json run " + r.file + " verdict").governing;
+  const double peak = peak_time_or(r, end);
+  const std::optional<design::Check>& g = r.design.verdict.governing;
   const auto time_or_peak = [peak](const design::Check& c) { return c.time_s >= 0 ? c.time_s : peak; };
   if (g && g->material != "foundation" && g->id.rfind("local_", 0) != 0) return time_or_peak(*g);
   const std::optional<design::Check> c = plotted_check(r);
@@ -139,7 +143,7 @@ struct MemberPeak {
 
 MemberPeak member_peak(const RunData& r) {
   MemberPeak p;
-  for (const design::MemberEnvelope& m : design::members_from_json(r.design, "design.json run " + r.file))
+  for (const design::MemberEnvelope& m : r.design.members)
     for (const design::Station& st : m.stations)
       for (const design::Extreme* e : {&st.sigma_tension, &st.sigma_compression}) {
         const double v = e->set ? std::abs(e->value) : 0.0;
@@ -184,7 +188,7 @@ double impact_y(const RunData& r) {
 // with the largest utilisation.
 std::optional<design::Check> plotted_check(const RunData& run) {
   std::optional<design::Check> best;
-  for (const design::Check& c : design::checks_from_json(run.design, "design.json run " + run.file)) {
+  for (const design::Check& c : run.design.checks) {
     if (c.id.rfind("solid", 0) == 0 || c.id == "steel_section_class" || c.id == "concrete_punching" || c.position < 0) continue;
     if (!best || c.utilisation > best->utilisation) best = c;
   }
@@ -193,10 +197,10 @@ std::optional<design::Check> plotted_check(const RunData& run) {
 
 }  // namespace
 
-json render_runs(const std::vector<RunData>& runs, const json& design_doc, const std::string& image_dir, const RenderOptions& o,
+json render_runs(const std::vector<RunData>& runs, const design::DesignDocument& design_doc, const std::string& image_dir, const RenderOptions& o,
                  PictureHelper* helper) {
   fs::create_directories(image_dir);
-  const design::Limits limits = design_doc.contains("limits") ? design::parse_limits(design_doc["limits"], "design.json limits") : design::Limits{};
+  const design::Limits& limits = design_doc.limits;
   json manifest = json::array();
   const auto t0 = std::chrono::steady_clock::now();
   const bool assist = o.helper_of > 0, shared = assist || (helper && helper->active());
@@ -243,7 +247,7 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
     Panel p{&r.results, fr, sg, "t = " + ms(ts) + (std::abs(ts - tg) > 1e-4 ? " (the snapshot nearest " + ms(tg) + ")" : "")};
     FieldSpec spec;
     spec.quantity = o.quantity;
-    const std::optional<design::Check> g = design::verdict_from_json(r.design["verdict"], false, "design.json run " + r.file + " verdict").governing;
+    const std::optional<design::Check>& g = r.design.verdict.governing;
     spec.title = name + ": " + qlabel + " near the governing instant (" + ms(tg) + (g ? ", " + g->title : "") + ")";
     spec.draw = mine();
     const std::string f1 = "field_" + tag + "_governing.png";
@@ -252,7 +256,7 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
         gi.width, gi.height, &gi);
     // 3D: the vertical section through the impact point at the contact peak (particles within a cell of it, members cut there).
     if (r.results.snapshots[sg].dim == 3) {
-      const double tp = num(r.design, {"contact", "peak_time_s"}, tg);
+      const double tp = peak_time_or(r, tg);
       const std::size_t sp = nearest_snapshot(r.results, tp);
       FieldSpec cs = spec;
       cs.section_y = impact_y(r);
@@ -268,21 +272,21 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
           ci.width, ci.height, &ci);
     }
     // The sequence: initial state, contact start, contact peak, rebound (end of the pulse); for a surge, its phases.
-    const double t_peak = num(r.design, {"contact", "peak_time_s"}, tg);
-    const double t_start = num(r.design, {"contact", "pulse", "start_s"}, 0.0), t_end = num(r.design, {"contact", "pulse", "end_s"}, t_peak);
+    const double t_peak = peak_time_or(r, tg);
+    const double t_start = pulse_start_or(r, 0.0), t_end = pulse_end_or(r, t_peak);
     std::vector<std::pair<std::string, std::size_t>> seq = {{"initial state", 0},
                                                             {"contact start", nearest_snapshot(r.results, t_start)},
                                                             {"contact peak", nearest_snapshot(r.results, t_peak)},
                                                             {"rebound", nearest_snapshot(r.results, t_end + 0.5 * (t_end - t_start))}};
     // A debris surge: its arrival, its peak and the deposit it leaves (the last snapshot), not a rebound.
-    if (const auto dp = design::debris_load_from_json(r.design.value("debris_phases", json()), "design.json run " + r.file + " debris_phases"))
+    if (const auto& dp = r.design.debris_phases)
       seq = {{"initial state", 0},
              {"surge arrival", nearest_snapshot(r.results, dp->phases.arrival_s)},
              {"load peak", nearest_snapshot(r.results, dp->phases.peak_time_s)},
              {"deposit", r.results.snapshots.size() - 1}};
     // Members that yield keep a residual shape: the last snapshot shows it (the members' deformation scaled as in the
     // rest of the sequence).
-    if (r.design.contains("plastic") && r.design["plastic"].is_object() && r.results.snapshots.size() > 1)
+    if (r.design.plastic && r.results.snapshots.size() > 1)
       seq.push_back({"residual shape (end of the run)", r.results.snapshots.size() - 1});
     std::vector<Panel> all;
     for (const auto& [what, s] : seq) all.push_back({&r.results, fr, s, ""});
@@ -317,13 +321,13 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
                       sp->principal_at[1], sp->principal_at[2]);
         // The check's own number for this case (design.json, at the elements' Gauss points), beside the picture's nodal one.
         std::string caption = b;
-        if (r.design.contains("solid") && r.design["solid"].is_object())
-          for (const auto& c : r.design["solid"].value("cases", json::array()))
-            if (c.value("name", std::string()) == sp->case_name && c.contains("max_principal")) {
+        if (r.design.solid)
+          for (const design::SolidDesignCase& c : r.design.solid->cases)
+            if (c.name == sp->case_name) {
               char k[320];
               std::snprintf(k, sizeof k, "; the picture's colours are nodal values, extrapolated from the elements to the nodes: the "
                                          "check's principal tension, taken at the Gauss points (design.json), is %.3g MPa",
-                            c["max_principal"].value("value_Pa", NAN) / 1e6);
+                            c.max_principal.value_Pa / 1e6);
               caption += k;
             }
         add(file, "field_solid", r.variant, caption, sp->width, sp->height, nullptr);
@@ -423,7 +427,7 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
     // The contact chart ends a pulse length after the last run's pulse (in ms).
     double contact_end = 0;
     for (const auto& r : runs) {
-      const double a = num(r.design, {"contact", "pulse", "start_s"}, 0), b = num(r.design, {"contact", "pulse", "end_s"}, 0);
+      const double a = pulse_start_or(r, 0), b = pulse_end_or(r, 0);
       contact_end = std::max(contact_end, (b + std::max(b - a, 0.2 * b)) * 1e3);
     }
     if (contact_end >= runs[0].results.time.back() * 1e3) contact_end = 0;
@@ -455,7 +459,7 @@ json render_runs(const std::vector<RunData>& runs, const json& design_doc, const
       e.x_tight = false;
       double smax = 0;
       for (std::size_t i = 0; i < runs.size(); ++i)
-        for (const design::MemberEnvelope& m : design::members_from_json(runs[i].design, "design.json run " + runs[i].file)) {
+        for (const design::MemberEnvelope& m : runs[i].design.members) {
           if (m.name != member) continue;
           Curve t, cpr;
           t.label = "max tension" + (runs[i].variant.empty() ? "" : ", " + nice_variant(runs[i].variant));
@@ -507,7 +511,7 @@ std::vector<RunData> pictured_runs(const std::vector<RunData>& runs) {
 
 json render_main(const std::string& out_dir, const RenderOptions& o) {
   PictureHelper helper(out_dir, o.quantity, o.helper_of > 0 ? 1 : o.processes);
-  json design_doc;
+  design::DesignDocument design_doc;
   const std::vector<RunData> runs = pictured_runs(load_runs(out_dir, design_doc));
   std::error_code ec;
   const fs::path d = fs::is_directory(out_dir, ec) ? fs::path(out_dir) : fs::path(out_dir).parent_path();

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "design/design_document.hpp"
 #include "design/members.hpp"
 #include "engine/io/results.hpp"
 #include "render/charts.hpp"
@@ -20,12 +21,10 @@ namespace dmi::render {
 struct RunData {
   std::string variant, file;             // "" | with_buffer | without_buffer; the results.h5 path
   Results results;                       // with snapshots
-  nlohmann::json design;                 // its entry of design.json "runs"
+  design::RunDesign design;              // its entry of design.json "runs", read once
   std::optional<design::FrameInfo> frame;
 };
 
-// The number at path in j (nested keys), or fallback where a key is missing or null or the value not a number.
-double num(const nlohmann::json& j, std::initializer_list<const char*> path, double fallback = std::nan(""));
 
 // A variant's name in words ("with buffer", "without buffer", "" for a single run) and run i's colour in the charts.
 std::string nice_variant(const std::string& v);
@@ -36,7 +35,7 @@ ChartSpec face_profile_chart(const std::vector<RunData>& runs);
 
 // The runs of OUT (OUT/results.h5, or OUT/with_buffer and OUT/without_buffer) and design.json (OUT/design.json when
 // present, else computed with the default limits). Throws dmi::InputError naming the path.
-std::vector<RunData> load_runs(const std::string& out_dir, nlohmann::json& design_doc);
+std::vector<RunData> load_runs(const std::string& out_dir, design::DesignDocument& design_doc);
 // The runs the pictures show: the plane runs when compare_3d put 3D models beside them (the report's tables set the
 // two side by side), else all.
 std::vector<RunData> pictured_runs(const std::vector<RunData>& runs);
@@ -58,7 +57,7 @@ nlohmann::json render_main(const std::string& out_dir, const RenderOptions& o);
 // With an active helper, each picture is drawn by the process that claims it first (an exclusive file in the helper's
 // claims folder), so the helper takes pictures as soon as it is ready; render_runs waits for it (and draws every
 // picture itself if it failed; on an error of its own it stops the helper first).
-nlohmann::json render_runs(const std::vector<RunData>& runs, const nlohmann::json& design_doc, const std::string& image_dir,
+nlohmann::json render_runs(const std::vector<RunData>& runs, const design::DesignDocument& design_doc, const std::string& image_dir,
                            const RenderOptions& o, PictureHelper* helper = nullptr);
 
 }  // namespace dmi::render

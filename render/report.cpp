@@ -203,7 +203,7 @@ ReportFiles report_main(const std::string& out_dir, const ReportOptions& o) {
   PictureHelper helper(out_dir, o.quantity, o.picture_processes);
   std::error_code ec;
   const fs::path d = fs::is_directory(out_dir, ec) ? fs::path(out_dir) : fs::path(out_dir).parent_path();
-  json design_doc;
+  design::DesignDocument design_doc;
   const std::vector<RunData> runs = load_runs(out_dir, design_doc);
   std::optional<PdfJob> pdf;  // started now: it reads the document when the pictures are done
   if (o.pdf) pdf.emplace((d / "report.pdf").string(), (d / "report.html").string());

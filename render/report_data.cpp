@@ -46,15 +46,6 @@ std::string eng(double v, const std::string& unit) {
   return fmt("%.3g", v) + " " + unit;
 }
 
-double num(const json& j, std::initializer_list<const char*> path, double fallback) {
-  const json* p = &j;
-  for (const char* k : path) {
-    if (!p->is_object() || !p->contains(k) || (*p)[k].is_null()) return fallback;
-    p = &(*p)[k];
-  }
-  return p->is_number() ? p->get<double>() : fallback;
-}
-
 std::string label(const RunData& r) {
   const std::string v = plane_variant(r.variant);
   const std::string plane = v == "with_buffer" ? "with buffer" : v == "without_buffer" ? "without buffer" : "simulation";
@@ -73,9 +64,8 @@ std::string where(const design::Check& c) {
 
 }  // namespace
 
-static void plane_and_space_data(const json& design_doc, json& d) {
-  const std::optional<design::PlaneAndSpace> ps =
-      design::plane_and_space_from_json(design_doc.value("plane_and_space", json()), "design.json plane_and_space");
+static void plane_and_space_data(const design::DesignDocument& design_doc, json& d) {
+  const std::optional<design::PlaneAndSpace>& ps = design_doc.plane_and_space;
   d["has_plane_and_space"] = ps.has_value();
   json cases = json::array();
   if (!ps) {
@@ -247,7 +237,7 @@ json stability_rows(const std::vector<RunData>& runs) {
   std::vector<std::optional<design::StabilityRecord>> records;
   bool any = false;
   for (const auto& r : runs) {
-    std::optional<design::StabilityRecord> s = design::stability_from_json(r.design.value("stability", json()), "design.json run " + r.file + " stability");
+    const std::optional<design::StabilityRecord>& s = r.design.stability;
     any = any || s.has_value();
     records.push_back(s && s->not_assessed.empty() ? s : std::nullopt);
   }
@@ -351,7 +341,7 @@ std::string verdict_data(const design::Verdict& v, json& d) {
 
 // The grid study's table in d; returns the sentence on the governing utilisation's grid uncertainty (judged: the runs
 // the verdict judges).
-std::string grid_data(const json& design_doc, const std::string& judged, json& d) {
+std::string grid_data(const design::DesignDocument& design_doc, const std::string& judged, json& d) {
   // Grid uncertainty: the governing numbers with their GCI, or a plain statement that it is unknown.
   auto grid_word = [](const std::string& b) -> std::string {
     if (b == "converged") return "converged";
@@ -362,7 +352,7 @@ std::string grid_data(const json& design_doc, const std::string& judged, json& d
   };
   json gq = json::array();
   std::string gov_grid;
-  if (const auto gs = design::grid_study_from_json(design_doc.value("grid_study", json()), "design.json grid_study")) {
+  if (const auto& gs = design_doc.grid_study) {
     for (const design::GridQuantity& q : gs->quantities) {
       const std::string &unit = q.unit, &var = q.variant;
       auto val = [&](double x) { return unit == "-" ? fmt("%.3f", x) : eng(x, unit); };
@@ -390,9 +380,9 @@ std::string grid_data(const json& design_doc, const std::string& judged, json& d
 json run_checks(const std::vector<RunData>& runs) {
   json rl = json::array();
   for (const auto& r : runs) {
-    const bool reference = r.design.value("reference", false);  // the bare run of a comparison (design/document.cpp)
+    const bool reference = r.design.reference;  // the bare run of a comparison (design/document.cpp)
     json checks = json::array();
-    for (const design::Check& c : design::checks_from_json(r.design, "design.json run " + r.file)) {
+    for (const design::Check& c : r.design.checks) {
       const double u = c.utilisation;
       const bool info = c.level == "information";
       checks.push_back({{"id", c.id}, {"title", c.title}, {"member", c.member.rfind("solid: ", 0) == 0 ? "solid FE, " + c.member.substr(7) : c.member},
@@ -402,7 +392,7 @@ json run_checks(const std::vector<RunData>& runs) {
                         {"where", where(c)}, {"level", c.level == "ultimate" ? "ULS" : c.level == "serviceability" ? "SLS" : "info"}});
     }
     std::string gov;
-    const design::Verdict verdict = design::verdict_from_json(r.design["verdict"], false, "design.json run " + r.file + " verdict");
+    const design::Verdict& verdict = r.design.verdict;
     if (verdict.governing) {
       const design::Check& g = *verdict.governing;
       gov = g.title + (g.member.empty() ? "" : ", " + g.member) + ": " + eng(g.demand, g.unit) + " against " + eng(g.capacity, g.unit) +
@@ -450,7 +440,7 @@ json model_rows(const std::vector<RunData>& runs) {
 
 }  // namespace
 
-json report_data(const std::vector<RunData>& runs, const json& design_doc, const json& manifest, const std::string& image_dir,
+json report_data(const std::vector<RunData>& runs, const design::DesignDocument& design_doc, const json& manifest, const std::string& image_dir,
                  const std::string& software_version) {
   const RunData& first = runs.front();
   json d;
@@ -471,7 +461,7 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
   char when[64];
   std::strftime(when, sizeof when, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
   d["generated"] = when;
-  const design::Verdict v = design::verdict_from_json(design_doc["verdict"], true, "design.json verdict");
+  const design::Verdict& v = design_doc.verdict;
   const std::string vt = verdict_data(v, d);
   const std::string gov_grid = grid_data(design_doc, v.runs_judged, d);
   d["verdict_text"] = vt + gov_grid;
@@ -502,9 +492,8 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
   std::set<std::string> seen;
   json formulas = json::array();
   for (const auto& r : runs)
-    for (const auto& c : r.design["checks"])
-      if (seen.insert(c["id"].get<std::string>() + c["title"].get<std::string>()).second)
-        formulas.push_back({{"title", c["title"]}, {"formula", c["formula"]}, {"source", c["source"]}});
+    for (const design::Check& c : r.design.checks)
+      if (seen.insert(c.id + c.title).second) formulas.push_back({{"title", c.title}, {"formula", c.formula}, {"source", c.source}});
   d["formulas"] = formulas;
   d["stability_rows"] = stability_rows(runs);
   d["has_stability"] = !d["stability_rows"].empty();
@@ -514,8 +503,7 @@ json report_data(const std::vector<RunData>& runs, const json& design_doc, const
   d["has_pressure"] = !d["pressure_rows"].empty();
   d["model_rows"] = model_rows(runs);
   // Comparison.
-  const std::optional<design::BufferComparison> comparison =
-      design::comparison_from_json(design_doc.value("comparison", json()), "design.json comparison");
+  const std::optional<design::BufferComparison>& comparison = design_doc.comparison;
   d["has_comparison"] = comparison.has_value();
   json cmp = json::array();
   if (comparison) {

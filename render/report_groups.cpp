@@ -14,7 +14,7 @@ namespace dmi::render {
 
 using nlohmann::json;
 
-json check_group_rows(const json& design_run) {
+json check_group_rows(const design::RunDesign& design_run) {
   struct Group {
     std::string title, member, unit, level;
     int members = 0, failed = 0;
@@ -23,7 +23,7 @@ json check_group_rows(const json& design_run) {
   };
   std::map<std::pair<std::string, std::string>, Group> groups;  // (check id, group)
   std::vector<std::pair<std::string, std::string>> order;
-  for (const design::Check& c : design::checks_from_json(design_run, "design.json run " + design_run.value("results_file", std::string()))) {
+  for (const design::Check& c : design_run.checks) {
     const std::string& member = c.member;
     if (member.empty() || member.rfind("solid: ", 0) == 0 || c.level == "information") continue;
     const auto key = std::make_pair(c.id, design::member_group(member));  // column_0_1 -> column

@@ -12,9 +12,7 @@ using nlohmann::json;
 
 namespace {
 
-std::optional<design::PlasticRecord> plastic(const RunData& r) {
-  return design::plastic_from_json(r.design.value("plastic", json()), "design.json run " + r.file + " plastic");
-}
+const std::optional<design::PlasticRecord>& plastic(const RunData& r) { return r.design.plastic; }
 
 std::string kilojoules(const std::optional<double>& e) { return e ? fmt("%.4g kJ", *e / 1e3) : std::string("—"); }
 
@@ -33,7 +31,7 @@ json plastic_rows(const std::vector<RunData>& runs) {
   };
   std::vector<std::pair<std::string, std::function<std::string(const RunData&)>>> rows = {
       {"member model", [of](const RunData& r) {
-         return of(r) ? of(r)->member_model + fmt(", f_y %.0f MPa", r.design.value("steel_yield_strength_Pa", 0.0) / 1e6) : std::string("elastic");
+         return of(r) ? of(r)->member_model + fmt(", f_y %.0f MPa", r.design.steel_yield_strength_Pa / 1e6) : std::string("elastic");
        }},
       {"boulder's kinetic energy", maybe_energy(&design::PlasticRecord::Energy::boulder_kinetic_J)},
       {"work of the impact on the members (largest)", maybe_energy(&design::PlasticRecord::Energy::contact_work_max_J)},

@@ -16,13 +16,9 @@ using nlohmann::json;
 
 namespace {
 
-std::optional<design::FaceProfileAtMoment> face(const RunData& r) {
-  return design::face_profile_from_json(r.design.value("face_profile", json()), "design.json run " + r.file + " face_profile");
-}
+const std::optional<design::FaceProfileAtMoment>& face(const RunData& r) { return r.design.face_profile; }
 
-std::vector<design::SensorPeak> sensors_of(const RunData& r) {
-  return design::sensors_from_json(r.design.value("sensors", json()), "design.json run " + r.file + " sensors");
-}
+const std::vector<design::SensorPeak>& sensors_of(const RunData& r) { return r.design.sensors; }
 
 using Face = design::FaceProfileAtMoment;
 
@@ -73,8 +69,8 @@ namespace dmi::render {
 namespace {
 
 // "± n %" of a grid-study quantity of the run, or "".
-std::string gci_of(const json& design_doc, const std::string& variant, const std::string& id) {
-  if (const auto gs = design::grid_study_from_json(design_doc.value("grid_study", json()), "design.json grid_study"))
+std::string gci_of(const design::DesignDocument& design_doc, const std::string& variant, const std::string& id) {
+  if (const auto& gs = design_doc.grid_study)
     for (const design::GridQuantity& q : gs->quantities)
       if (q.id == id && q.variant == variant) return fmt(", grid ± %.0f %%", 100 * q.gci);
   return "";
@@ -82,11 +78,10 @@ std::string gci_of(const json& design_doc, const std::string& variant, const std
 
 }  // namespace
 
-json debris_practice_rows(const std::vector<RunData>& runs, const json& design_doc) {
+json debris_practice_rows(const std::vector<RunData>& runs, const design::DesignDocument& design_doc) {
   json rows = json::array();
   for (const auto& r : runs) {
-    const std::optional<design::DebrisLoad> p =
-        design::debris_load_from_json(r.design.value("debris_phases", json()), "design.json run " + r.file + " debris_phases");
+    const std::optional<design::DebrisLoad>& p = r.design.debris_phases;
     if (!p) continue;
     const std::string run = r.variant.empty() ? "simulation" : r.variant;
     const double peak = p->phases.peak_N;

@@ -31,17 +31,17 @@ double reference_energy(const Results& r);
 bool all_finite(const Results& r);
 // The report's sections (report_sections.cpp): the design-practice loads and a surge's phases; the numerical health;
 // the limits used.
-void estimates_data(const std::vector<RunData>& runs, const nlohmann::json& design_doc, bool space, nlohmann::json& d);
+void estimates_data(const std::vector<RunData>& runs, const design::DesignDocument& design_doc, bool space, nlohmann::json& d);
 void health_data(const std::vector<RunData>& runs, nlohmann::json& d);
-nlohmann::json limit_rows(const nlohmann::json& design_doc);
+nlohmann::json limit_rows(const design::DesignDocument& design_doc);
 // A run's member checks by member group (the name before its first '_'): per check and group the members it covers, how
 // many fail and the governing one; empty when no group holds more than one member.
-nlohmann::json check_group_rows(const nlohmann::json& design_run);
+nlohmann::json check_group_rows(const design::RunDesign& design_run);
 // The pressure on the struck face (its profile's resultant, position and moment) and the sensors' peaks, a column per run;
 // empty when no run recorded them.
 nlohmann::json pressure_rows(const std::vector<RunData>& runs);
 // The debris load beside practice (GEO 270's alpha, Cui et al.'s alpha(Fr) marked second-hand, the deposit's hydrostatic
 // load against the static tail), with the grid uncertainty where design_doc holds a grid study; empty without a surge.
-nlohmann::json debris_practice_rows(const std::vector<RunData>& runs, const nlohmann::json& design_doc);
+nlohmann::json debris_practice_rows(const std::vector<RunData>& runs, const design::DesignDocument& design_doc);
 
 }  // namespace dmi::render

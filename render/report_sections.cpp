@@ -12,12 +12,12 @@ namespace dmi::render {
 
 using nlohmann::json;
 
-void estimates_data(const std::vector<RunData>& runs, const json& design_doc, bool space, json& d) {
+void estimates_data(const std::vector<RunData>& runs, const design::DesignDocument& design_doc, bool space, json& d) {
   // Design-practice loads beside the simulation.
   json est = json::array();
   bool banded = false;
   for (const auto& r : runs)
-    for (const design::Estimate& e : design::estimates_from_json(r.design, "design.json run " + r.file)) {
+    for (const design::Estimate& e : r.design.estimates) {
       const bool ok = e.applicable;
       const std::string what = e.compare_to == "peak_base_shear" ? "base shear" : "contact";
       std::string sim = ok ? eng(e.simulated, "N") : "—", sim_note = ok ? what : "", ratio = ok ? fmt("%.2f", e.ratio) : "—", band;
@@ -37,8 +37,7 @@ void estimates_data(const std::vector<RunData>& runs, const json& design_doc, bo
   // The debris load in its three phases, against the momentum flux of the surge.
   json phases = json::array();
   for (const auto& r : runs) {
-    const std::optional<design::DebrisLoad> load =
-        design::debris_load_from_json(r.design.value("debris_phases", json()), "design.json run " + r.file + " debris_phases");
+    const std::optional<design::DebrisLoad>& load = r.design.debris_phases;
     if (!load) continue;
     const design::DebrisPhases& p = load->phases;
     auto force = [&](std::optional<double> f) {  // the force, and α = F / F0 under it
@@ -89,7 +88,7 @@ void health_data(const std::vector<RunData>& runs, json& d) {
          const Series* s = r.results.find("energy/frame_damping");
          if (!s || s->data.empty()) return std::string("—");
          std::string t = fmt("%.4g J", s->data.back());
-         if (const auto d = design::damping_from_json(r.design.value("damping", json()), "design.json run " + r.file + " damping"))
+         if (const auto& d = r.design.damping)
            t += fmt(" (%.1f %% of the impact energy; by the governing member demand ", 100 * d->share) +
                 fmt("%.1f %% of it", 100 * d->share_at_governing) +
                 fmt(" and %.1f %% of the energy the members had received", 100 * d->share_of_received_at_governing) +
@@ -99,7 +98,7 @@ void health_data(const std::vector<RunData>& runs, json& d) {
        }},
       {"bodies' volume (largest / as created; flagged above 1.05)", [](const RunData& r) {
          std::string t;
-         for (const auto& v : design::volume_health_from_json(r.design.value("volume_health", json()), "design.json run " + r.file + " volume_health"))
+         for (const auto& v : r.design.volume_health)
            t += (t.empty() ? "" : "; ") + v.probe + fmt(" %.3f", v.largest_ratio) +
                 (v.flagged ? " (GAINED VOLUME: a non-dilatant body should keep it; its loads are suspect)" : "");
          return t.empty() ? std::string("—") : t;
@@ -118,11 +117,10 @@ void health_data(const std::vector<RunData>& runs, json& d) {
        }}});
 }
 
-json limit_rows(const json& design_doc) {
+json limit_rows(const design::DesignDocument& design_doc) {
   // Limits.
   json lr = json::array();
-  if (!design_doc.contains("limits")) return lr;
-  const design::Limits L = design::parse_limits(design_doc["limits"], "design.json limits");
+  const design::Limits& L = design_doc.limits;
   const design::ConcreteLimits& c = L.concrete;
   const design::FoundationLimits& f = L.foundation;
   lr.push_back({{"key", "concrete f'c, f_t (rule)"}, {"value", eng(c.compressive_strength, "Pa") + ", " + eng(c.tensile_value(), "Pa") + " (" + c.tensile_rule + ")"}});

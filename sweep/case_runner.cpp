@@ -1,6 +1,7 @@
 #include "sweep/case_runner.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -31,31 +32,23 @@ std::string read_text(const fs::path& p) {
   return in ? ss.str() : std::string();
 }
 
-json at(const json& j, std::initializer_list<const char*> path) {  // null when any step is missing or null
-  const json* c = &j;
-  for (const char* k : path) {
-    if (!c->is_object() || !c->contains(k) || (*c)[k].is_null()) return nullptr;
-    c = &(*c)[k];
-  }
-  return *c;
-}
+json number_or_null(double v) { return std::isnan(v) ? json(nullptr) : json(v); }
 
 // The design's figures for the summary: per variant, the largest utilisation and the peaks engineers size with.
-void fill_from_design(json& row, const json& design) {
-  const design::Verdict v = design::verdict_from_json(design.at("verdict"), true, "design.json verdict");
+void fill_from_design(json& row, const design::DesignDocument& design) {
+  const design::Verdict& v = design.verdict;
   row["verdict"] = v.status;
   row["max_utilisation"] = v.governing ? json(v.governing->utilisation) : json(nullptr);
   row["governing"] = v.governing ? json{{"id", v.governing->id}, {"member", v.governing->member}, {"variant", v.governing_variant}} : json(nullptr);
   json vars = json::object();
-  for (const json& r : design.value("runs", json::array())) {
-    const std::string label = r.value("variant", "");
-    const design::Verdict rv = design::verdict_from_json(r.at("verdict"), false, "design.json run " + label + " verdict");
-    vars[label.empty() ? "run" : label] = {
+  for (const design::RunDesign& r : design.runs) {
+    const design::Verdict& rv = r.verdict;
+    vars[r.variant.empty() ? "run" : r.variant] = {
         {"max_utilisation", rv.governing ? json(rv.governing->utilisation) : json(nullptr)},
         {"passed", rv.passed},
-        {"contact_peak_N", at(r, {"contact", "peak_force_N"})},
-        {"base_shear_N", at(r, {"base_total", design::shear_key(r.value("dimension", 2)), "abs_max", "value"})},
-        {"base_moment_Nm", at(r, {"base_total", design::moment_key(r.value("dimension", 2)), "abs_max", "value"})}};
+        {"contact_peak_N", r.contact.present ? json(r.contact.peak_N) : json(nullptr)},
+        {"base_shear_N", number_or_null(r.base_abs_max(design::shear_key(r.dim())))},
+        {"base_moment_Nm", number_or_null(r.base_abs_max(design::moment_key(r.dim())))}};
   }
   row["variants"] = vars;
 }
@@ -141,9 +134,8 @@ json run_case(const SweepSpec& spec, std::size_t k, const SweepOptions& o) {
       row["simulated_seconds"] = sim_wall;
       fill_from_design(row, g.design);
       double bound = 0;
-      const design::GridStudyRecord gs = *design::grid_study_from_json(g.design.at("grid_study"), "design.json grid_study");
-      if (gs.verdict)
-        for (const auto& r : gs.verdict->runs) bound = std::max(bound, r.utilisation_bound);
+      if (g.design.grid_study && g.design.grid_study->verdict)
+        for (const auto& r : g.design.grid_study->verdict->runs) bound = std::max(bound, r.utilisation_bound);
       row["utilisation_bound"] = bound;
       row["grid_study_passed"] = g.passed;
       if (o.case_reports) row["report"] = fs::relative(render::report_main(dir.string(), {"von_mises", true, o.pdf, o.software_version}).html, o.out_dir).string();
@@ -165,7 +157,7 @@ json run_case(const SweepSpec& spec, std::size_t k, const SweepOptions& o) {
     }
     row["simulated_seconds"] = sim_wall;
     design::check_main(written, o.limits_file, false, (dir / "design.json").string(), true, o.software_version);
-    fill_from_design(row, json::parse(read_text(dir / "design.json")));
+    fill_from_design(row, design::read_design_json((dir / "design.json").string()));
     if (o.case_reports && (!reused || !fs::exists(dir / "report.html"))) {
       const auto rf = render::report_main(dir.string(), {"von_mises", true, o.pdf, o.software_version});
       row["report"] = fs::relative(rf.html, o.out_dir).string();

@@ -169,12 +169,36 @@ FaceProfileRecord face_profile_from_json(const nlohmann::json& j, const std::str
   }
 }
 
+nlohmann::json solid_model_to_json(const SolidModel& m) {
+  return {{"element", m.element}, {"cells", m.cells}, {"nodes", m.nodes}, {"elements", m.elements}, {"height_m", m.height_m},
+          {"crest_thickness_m", m.crest_thickness_m}, {"base_thickness_m", m.base_thickness_m}, {"width_m", m.width_m},
+          {"sloped_face", m.sloped_face}, {"youngs_modulus_Pa", m.youngs_modulus_Pa}, {"poisson_ratio", m.poisson_ratio},
+          {"axes", m.axes}};
+}
+
+namespace {
+
+SolidModel read_solid_model(const nlohmann::json& m) {
+  SolidModel sm;
+  sm.element = m.at("element").get<std::string>(), sm.sloped_face = m.value("sloped_face", std::string()), sm.axes = m.value("axes", std::string());
+  sm.cells = m.at("cells").get<std::vector<int>>(), sm.nodes = index_at(m, "nodes"), sm.elements = index_at(m, "elements");
+  sm.height_m = m.at("height_m"), sm.crest_thickness_m = m.at("crest_thickness_m"), sm.base_thickness_m = m.at("base_thickness_m");
+  sm.width_m = m.at("width_m"), sm.youngs_modulus_Pa = m.at("youngs_modulus_Pa"), sm.poisson_ratio = m.at("poisson_ratio");
+  return sm;
+}
+
+}  // namespace
+
+SolidModel solid_model_from_json(const nlohmann::json& m, const std::string& where) {
+  try {
+    return read_solid_model(m);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(where + " is malformed (" + std::string(e.what()) + ")");
+  }
+}
+
 nlohmann::json solid_check_to_json(const SolidCheckRecord& c) {
-  const SolidModel& m = c.model;
-  const nlohmann::json model{{"element", m.element}, {"cells", m.cells}, {"nodes", m.nodes}, {"elements", m.elements}, {"height_m", m.height_m},
-                             {"crest_thickness_m", m.crest_thickness_m}, {"base_thickness_m", m.base_thickness_m}, {"width_m", m.width_m},
-                             {"sloped_face", m.sloped_face}, {"youngs_modulus_Pa", m.youngs_modulus_Pa}, {"poisson_ratio", m.poisson_ratio},
-                             {"axes", m.axes}};
+  const nlohmann::json model = solid_model_to_json(c.model);
   nlohmann::json cases = nlohmann::json::array();
   for (const SolidCase& k : c.cases) {
     nlohmann::json e{{"name", k.name}, {"type", k.type}};
@@ -198,12 +222,7 @@ nlohmann::json solid_check_to_json(const SolidCheckRecord& c) {
 SolidCheckRecord solid_check_from_json(const nlohmann::json& j, const std::string& where) {
   try {
     SolidCheckRecord c;
-    const nlohmann::json& m = j.at("model");
-    SolidModel& sm = c.model;
-    sm.element = m.at("element").get<std::string>(), sm.sloped_face = m.value("sloped_face", std::string()), sm.axes = m.value("axes", std::string());
-    sm.cells = m.at("cells").get<std::vector<int>>(), sm.nodes = index_at(m, "nodes"), sm.elements = index_at(m, "elements");
-    sm.height_m = m.at("height_m"), sm.crest_thickness_m = m.at("crest_thickness_m"), sm.base_thickness_m = m.at("base_thickness_m");
-    sm.width_m = m.at("width_m"), sm.youngs_modulus_Pa = m.at("youngs_modulus_Pa"), sm.poisson_ratio = m.at("poisson_ratio");
+    c.model = read_solid_model(j.at("model"));
     if (!j.at("cases").is_array()) throw std::out_of_range("cases is not an array");
     for (const auto& e : j.at("cases")) {
       SolidCase k;

@@ -29,6 +29,8 @@ FaceProfileRecord face_profile_from_json(const nlohmann::json& j, const std::str
 // Validated on reading: hex8 in 3D or quad4 in 2D, whole nodes and elements, corners that exist, at least one case,
 // every case's stresses one finite value per node.
 // Validated on reading: every case's peaks present with their places.
+nlohmann::json solid_model_to_json(const SolidModel& m);
+SolidModel solid_model_from_json(const nlohmann::json& j, const std::string& where);
 nlohmann::json solid_check_to_json(const SolidCheckRecord& c);
 SolidCheckRecord solid_check_from_json(const nlohmann::json& j, const std::string& where);
 

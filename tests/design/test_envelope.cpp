@@ -172,7 +172,7 @@ TEST(DesignEnvelope, ReactionTotalsAboutTheSupportCentroidAndContactPulse) {
 
 TEST(DesignEnvelope, DesignRunJsonCarriesPeaksChecksAndVerdict) {
   const dmi::Results r = results(structure(kRect, "concrete"));
-  const json run = design_run(r, Limits{}, "hand.h5");
+  const json run = to_json(design_run(r, Limits{}, "hand.h5"));
   const json& m = run["members"][0];
   EXPECT_EQ(m["name"], "dam");
   EXPECT_NEAR(m["peaks"]["sigma_tension_max"]["value"].get<double>(), 8e5, 1e-6);
@@ -191,7 +191,7 @@ TEST(DesignEnvelope, DesignRunJsonCarriesPeaksChecksAndVerdict) {
   r2.info.peak_contact = dmi::PeakContact{0.1, {2e5, 0}, {{"dam", 0.4, {0, 0.8}, {1e5, 0}}, {"dam", 0.6, {0, 1.2}, {1e5, 0}}}};
   Limits L;
   L.concrete.punching_patch_width = 0.4, L.concrete.punching_patch_height = 0.4;
-  const json run2 = design_run(r2, L, "hand.h5");
+  const json run2 = to_json(design_run(r2, L, "hand.h5"));
   bool found = false;
   for (const auto& c : run2["checks"])
     if (c["id"] == "concrete_punching") {
@@ -212,16 +212,15 @@ TEST(DesignEnvelope, DesignRunJsonCarriesPeaksChecksAndVerdict) {
 // 3D run the reference of its own buffered one.
 TEST(DesignEnvelope, PlaneAndSpaceRunsSideBySide) {
   const dmi::Results r = results(structure(kRect, "concrete"));
-  json with = design_run(r, Limits{}, "out/with_buffer/results.h5");
-  with["results_file"] = "out/with_buffer/results.h5";
-  json without = with, with3 = with, without3 = with;
-  with["variant"] = "with_buffer", without["variant"] = "without_buffer";
-  with3["variant"] = "with_buffer_3d", without3["variant"] = "without_buffer_3d";
-  without["results_file"] = "out/without_buffer/results.h5";
-  with3["results_file"] = "out/with_buffer_3d/results.h5";
-  without3["results_file"] = "out/without_buffer_3d/results.h5";
-  with["contact"]["peak_force_N"] = 300e3, with3["contact"]["peak_force_N"] = 200e3;
-  const json doc = design_document({with, without, with3, without3}, Limits{}, "test");
+  RunDesign with = design_run(r, Limits{}, "out/with_buffer/results.h5");
+  RunDesign without = with, with3 = with, without3 = with;
+  with.variant = "with_buffer", without.variant = "without_buffer";
+  with3.variant = "with_buffer_3d", without3.variant = "without_buffer_3d";
+  without.results_file = "out/without_buffer/results.h5";
+  with3.results_file = "out/with_buffer_3d/results.h5";
+  without3.results_file = "out/without_buffer_3d/results.h5";
+  with.contact.peak_N = 300e3, with3.contact.peak_N = 200e3;
+  const json doc = to_json(design_document({with, without, with3, without3}, Limits{}, "test"));
   ASSERT_TRUE(doc["plane_and_space"].is_object());
   ASSERT_EQ(doc["plane_and_space"]["pairs"].size(), 2u);
   const json& pair = doc["plane_and_space"]["pairs"][0];
@@ -234,15 +233,15 @@ TEST(DesignEnvelope, PlaneAndSpaceRunsSideBySide) {
     }
   EXPECT_TRUE(found);
   EXPECT_EQ(doc["verdict"]["runs_judged"], "with_buffer, with_buffer_3d");
-  EXPECT_TRUE(design_document({with, without}, Limits{}, "test")["plane_and_space"].is_null());
+  EXPECT_FALSE(design_document({with, without}, Limits{}, "test").plane_and_space.has_value());
 }
 
 TEST(DesignEnvelope, ComparisonReductionsInPercent) {
   const dmi::Results r = results(structure(kRect, "concrete"));
-  json with = design_run(r, Limits{}, "a.h5"), without = with;
-  with["variant"] = "with_buffer", without["variant"] = "without_buffer";
-  without["contact"]["peak_force_N"] = 400e3;  // with: 100 kN -> 75 % less
-  const json doc = design_document({with, without}, Limits{}, "test");
+  RunDesign with = design_run(r, Limits{}, "a.h5"), without = with;
+  with.variant = "with_buffer", without.variant = "without_buffer";
+  without.contact.peak_N = 400e3;  // with: 100 kN -> 75 % less
+  const json doc = to_json(design_document({with, without}, Limits{}, "test"));
   ASSERT_TRUE(doc["comparison"].is_object());
   bool found = false;
   for (const auto& q : doc["comparison"]["quantities"])
@@ -253,18 +252,46 @@ TEST(DesignEnvelope, ComparisonReductionsInPercent) {
   EXPECT_TRUE(found);
   EXPECT_EQ(doc["verdict"]["runs_judged"], "with_buffer");
   // A failing bare run is the reference only beside its own buffered run: a run from elsewhere is judged.
-  json bare = without;
-  bare["verdict"]["failed"] = 1, bare["verdict"]["passed"] = false;
-  EXPECT_TRUE(design_document({with, bare}, Limits{}, "test")["verdict"]["passed"].get<bool>());
-  json other = bare;
-  other["results_file"] = "elsewhere/without_buffer/results.h5";
-  with["results_file"] = "out/with_buffer/results.h5";
-  const json d2 = design_document({with, other}, Limits{}, "test");
-  EXPECT_FALSE(d2["verdict"]["passed"].get<bool>());
-  EXPECT_TRUE(d2["comparison"].is_null());
-  json plain = bare;
-  plain["variant"] = "";
-  EXPECT_FALSE(design_document({with, plain}, Limits{}, "test")["verdict"]["passed"].get<bool>());
+  RunDesign bare = without;
+  bare.verdict.failed = 1, bare.verdict.passed = false;
+  EXPECT_TRUE(design_document({with, bare}, Limits{}, "test").verdict.passed);
+  RunDesign other = bare;
+  other.results_file = "elsewhere/without_buffer/results.h5";
+  with.results_file = "out/with_buffer/results.h5";
+  const DesignDocument d2 = design_document({with, other}, Limits{}, "test");
+  EXPECT_FALSE(d2.verdict.passed);
+  EXPECT_FALSE(d2.comparison.has_value());
+  RunDesign plain = bare;
+  plain.variant = "";
+  EXPECT_FALSE(design_document({with, plain}, Limits{}, "test").verdict.passed);
   EXPECT_EQ(doc["format"], "damimpact-design");
   EXPECT_EQ(doc["format_version"], kDesignFormatVersion);
+}
+
+// design.json's runs and document are typed records: what design builds survives its file (written, read back
+// validated, written again: the same text), and a damaged value is refused naming its place.
+TEST(DesignEnvelope, RunAndDocumentSurviveTheirFile) {
+  dmi::Results r = results(structure(kRect, "concrete"));
+  r.info.peak_contact = dmi::PeakContact{0.1, {2e5, 0}, {{"dam", 0.4, {0, 0.8}, {1e5, 0}}, {"dam", 0.6, {0, 1.2}, {1e5, 0}}}};
+  Limits L;
+  L.concrete.punching_patch_width = 0.4, L.concrete.punching_patch_height = 0.4;
+  RunDesign with = design_run(r, L, "out/with_buffer/results.h5"), without = with;
+  with.variant = "with_buffer", without.variant = "without_buffer", without.results_file = "out/without_buffer/results.h5";
+  const json run = to_json(with);
+  EXPECT_EQ(to_json(run_design_from_json(run, "design.json run")), run);
+  const json doc = to_json(design_document({with, without}, L, "test"));
+  ASSERT_TRUE(doc["comparison"].is_object());
+  EXPECT_EQ(to_json(design_document_from_json(doc, "design.json")), doc);
+  EXPECT_TRUE(design_document_from_json(doc, "design.json").runs[1].reference);
+  json bad = doc;
+  bad["runs"][0]["base_total"]["Fx_N"]["abs_max"]["value"] = "n/a";
+  try {
+    design_document_from_json(bad, "design.json");
+    ADD_FAILURE() << "a damaged base total was read";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("design.json run out/with_buffer/results.h5.base_total.Fx_N"), std::string::npos) << e.what();
+  }
+  bad = doc;
+  bad["format_version"] = 99;
+  EXPECT_THROW(design_document_from_json(bad, "design.json"), std::runtime_error);
 }

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "design/estimates.hpp"
+#include "design/grid_study.hpp"
 #include "design/grid_study_record.hpp"
 #include "engine/scenario/design_basis_json.hpp"
 
@@ -137,17 +138,18 @@ TEST(DesignEstimates, MissingBasisNumberNamesTheKey) {
 
 // A grid study of 10 % on the contact force puts the ratio of 2.0 between 2.0 / 1.1 and 2.0 / 0.9.
 TEST(DesignEstimates, GridUncertaintyBandsTheRatio) {
-  json design;
-  json rows = json::array();
-  for (const auto& e : est(basis(false), 2.0e5, 4.0e6)) rows.push_back(e.to_json());
-  design["runs"] = json::array({{{"variant", ""}, {"estimates", rows}}});
+  DesignDocument design;
+  RunDesign run;
+  run.estimates = est(basis(false), 2.0e5, 4.0e6);
+  design.runs = {run};
   GridStudyRecord gs;  // the study as design writes it, of the contact force alone
   GridQuantity q;
   q.variant = "", q.id = "contact_force", q.gci = 0.1, q.extrapolated = 4.2e6, q.values = {4.0e6, 3.9e6, 3.7e6};
   gs.quantities = {q};
-  design["grid_study"] = to_json(gs);
+  design.grid_study = gs;
   add_grid_uncertainty(design);
-  for (const auto& e : design["runs"][0]["estimates"]) {
+  for (const Estimate& est : design.runs[0].estimates) {
+    const json e = est.to_json();
     if (e["compare_to"] == "peak_contact_force" && e["applicable"].get<bool>()) {
       const double r = e["ratio"];
       EXPECT_NEAR(e["ratio_low"].get<double>(), r / 1.1, 1e-12) << e["id"];

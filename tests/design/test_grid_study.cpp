@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <filesystem>
@@ -17,26 +18,32 @@
 
 using namespace dmi::design;
 
-TEST(GridStudy, SectionReadsTheThreeDesignsAndRefusesAMissingQuantity) {
-  using nlohmann::json;
+TEST(GridStudy, SectionReadsTheThreeDesignsAndRefusesANonFiniteQuantity) {
   auto doc = [](double shear, double util) {
-    json check = {{"id", "shear"}, {"member", "dam"}, {"demand", shear}, {"utilisation", util}, {"title", "one-way shear"}, {"unit", "N"}};
+    Check check;
+    check.id = "shear", check.member = "dam", check.demand = shear, check.utilisation = util, check.title = "one-way shear", check.unit = "N";
     // An information check (never judged) with a larger utilisation: the governing utilisation is the verdict's.
-    json info = {{"id", "solid_principal_tension"}, {"member", "solid: x"}, {"demand", 1}, {"utilisation", 3 * util}, {"level", "information"}};
-    json run = {{"variant", ""}, {"base_total", {{"Fx_N", {{"abs_max", {{"value", shear}}}}}, {"M_Nm", {{"abs_max", {{"value", 2 * shear}}}}}}},
-                {"contact", nullptr}, {"checks", {check, info}}, {"verdict", {{"governing", check}, {"max_utilisation", util}}}};
-    return json{{"runs", {run}}};
+    Check info;
+    info.id = "solid_principal_tension", info.member = "solid: x", info.demand = 1, info.utilisation = 3 * util, info.level = "information";
+    RunDesign run;
+    const auto peak = [](const char* key, double v) { return dmi::design::ReactionComponent{key, {}, {}, {v, 0.1, true}, 0.0}; };
+    run.base_total = BaseTotal{{"base total", {peak("Fx_N", shear), peak("M_Nm", 2 * shear)}}, {0, 0}};
+    run.checks = {check, info};
+    run.verdict.governing = check;
+    DesignDocument d;
+    d.runs = {run};
+    return d;
   };
   const std::array<double, 3> h{0.01, 0.02, 0.04};
-  const json s = grid_study_section({doc(101, 0.5), doc(104, 0.52), doc(116, 0.6)}, h, {"a", "b", "c"});
-  ASSERT_EQ(s["quantities"].size(), 4u);  // base shear, base moment, governing demand, governing utilisation
-  EXPECT_EQ(s["quantities"][0]["id"], "base_shear");
-  EXPECT_NEAR(s["quantities"][0]["observed_order"].get<double>(), 2.0, 1e-9);
-  EXPECT_NEAR(s["quantities"][0]["extrapolated"].get<double>(), 100.0, 1e-9);
-  EXPECT_EQ(s["quantities"][3]["id"], "governing_utilisation");
-  EXPECT_NEAR(s["quantities"][3]["values"][0].get<double>(), 0.5, 1e-12);
-  json bad = doc(104, 0.52);
-  bad["runs"][0]["base_total"]["Fx_N"]["abs_max"]["value"] = "n/a";
+  const GridStudyRecord s = grid_study_section({doc(101, 0.5), doc(104, 0.52), doc(116, 0.6)}, h, {"a", "b", "c"});
+  ASSERT_EQ(s.quantities.size(), 4u);  // base shear, base moment, governing demand, governing utilisation
+  EXPECT_EQ(s.quantities[0].id, "base_shear");
+  EXPECT_NEAR(*s.quantities[0].observed_order, 2.0, 1e-9);
+  EXPECT_NEAR(*s.quantities[0].extrapolated, 100.0, 1e-9);
+  EXPECT_EQ(s.quantities[3].id, "governing_utilisation");
+  EXPECT_NEAR(s.quantities[3].values[0], 0.5, 1e-12);
+  DesignDocument bad = doc(104, 0.52);
+  bad.runs[0].base_total->peaks.components[0].abs.value = NAN;
   EXPECT_THROW(grid_study_section({doc(101, 0.5), bad, doc(116, 0.6)}, h, {"a", "b", "c"}), std::runtime_error);
 }
 
@@ -52,16 +59,18 @@ TEST(GridStudy, ConservativeBoundCanFailADesignThatPassesOnTheFinestGrid) {
     Verdict v = run_verdict({}, "both");  // a document's verdict as design writes it: one passing check, u 0.9
     v.document = true, v.status = "pass", v.checks = 1, v.governing = Check{};
     v.governing->utilisation = 0.9, v.governing->demand = 0.9, v.governing->capacity = 1;
-    return json{{"verdict", to_json(v)}, {"grid_study", to_json(gs)}};
+    DesignDocument d;
+    d.verdict = v, d.grid_study = gs;
+    return d;
   };
-  json a = design(), b = design();
+  DesignDocument a = design(), b = design();
   EXPECT_TRUE(judge_grid_study(a, "finest"));
-  EXPECT_TRUE(a["verdict"]["passed"].get<bool>());
-  EXPECT_NEAR(a["grid_study"]["verdict"]["runs"][0]["utilisation_bound"].get<double>(), 1.08, 1e-12);
-  EXPECT_FALSE(a["grid_study"]["verdict"]["bound_passed"].get<bool>());
+  EXPECT_TRUE(a.verdict.passed);
+  EXPECT_NEAR(a.grid_study->verdict->runs.at(0).utilisation_bound, 1.08, 1e-12);
+  EXPECT_FALSE(a.grid_study->verdict->bound_passed);
   EXPECT_FALSE(judge_grid_study(b, "conservative_bound"));
-  EXPECT_EQ(b["verdict"]["status"], "fail");
-  EXPECT_NE(b["verdict"]["note"].get<std::string>().find("conservative bound"), std::string::npos);
+  EXPECT_EQ(b.verdict.status, "fail");
+  EXPECT_NE(b.verdict.note.find("conservative bound"), std::string::npos);
 }
 
 // Levels side by side: an error of a coarser level (its own thread) reaches the caller, after the finest level has
@@ -119,13 +128,13 @@ TEST(GridStudy, CheckOfAStudyFolderKeepsItsStudy) {
   };
   const double h = source["grid"]["cell_size"].get<double>();
   const GridStudyOutcome study = run_grid_study(file, source, h, 2.0, out.string(), "", simulate, true, "test");
-  ASSERT_TRUE(study.design.contains("grid_study"));
+  ASSERT_TRUE(study.design.grid_study.has_value());
   const std::string cmd = std::string(DMI_BINARY) + " check " + out.string() + " -q > /dev/null";
   ASSERT_LE(std::system(cmd.c_str()) >> 8, 1);
   std::ifstream d(out / "design.json");
   const nlohmann::json checked = nlohmann::json::parse(d);
   ASSERT_TRUE(checked.contains("grid_study"));
-  EXPECT_EQ(checked["grid_study"]["quantities"], study.design["grid_study"]["quantities"]);
+  EXPECT_EQ(checked["grid_study"]["quantities"], to_json(*study.design.grid_study)["quantities"]);
   EXPECT_NEAR(checked["grid_study"]["cell_sizes_m"][0].get<double>(), h, 1e-12 * h);
   fs::remove_all(out);
 }

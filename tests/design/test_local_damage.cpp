@@ -155,7 +155,8 @@ TEST(LocalDamage, ChecksAgainstTheSectionThicknessAtTheImpactHeight) {
   b.boulder = k;
   ConcreteLimits C;
   std::vector<Check> checks;
-  const nlohmann::json j = local_damage_checks(b, C, checks);
+  const std::optional<LocalDamageRecord> j = local_damage_checks(b, C, checks);
+  ASSERT_TRUE(j.has_value());
   ASSERT_EQ(checks.size(), 2u);
   const DesignThickness t = design_thickness(local_damage(1000, 0.894, 5, 28e6, kNoseSpherical), 1.1, 1.2);
   EXPECT_EQ(checks[0].id, "local_perforation");
@@ -163,9 +164,12 @@ TEST(LocalDamage, ChecksAgainstTheSectionThicknessAtTheImpactHeight) {
   EXPECT_NEAR(checks[0].utilisation, t.perforation_design_m / 1.06, 1e-12);
   EXPECT_EQ(checks[1].level, "serviceability");
   EXPECT_NEAR(checks[1].demand, t.scabbing_design_m, 1e-12);
-  EXPECT_NEAR(j["thickness_m"].get<double>(), 1.06, 1e-12);
+  EXPECT_NEAR(j->thickness_m, 1.06, 1e-12);
+  const std::optional<LocalDamageRecord> back = local_damage_from_json(to_json(*j), "design.json local_damage");  // the record survives its file
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ(to_json(*back), to_json(*j));
   b.buffer = dmi::BufferBasis{};
   checks.clear();
-  EXPECT_TRUE(local_damage_checks(b, C, checks).is_null());
+  EXPECT_FALSE(local_damage_checks(b, C, checks).has_value());
   EXPECT_TRUE(checks.empty());
 }

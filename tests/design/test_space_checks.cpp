@@ -151,7 +151,7 @@ TEST(SpaceDesign, ReactionTotalsAboutTheSupportCentroidInThreeDimensions) {
   ASSERT_EQ(c.impulse_N_s.size(), 3u);
   EXPECT_NEAR(c.impulse_N_s[2], 4e3, 1e-9);
   // design_run: the base shear key of a space frame and a 3-component location.
-  const json run = design_run(r, Limits{}, "hand.h5");
+  const json run = to_json(design_run(r, Limits{}, "hand.h5"));
   EXPECT_EQ(run["dimension"], 3);
   EXPECT_NEAR(run["base_total"]["H_N"]["abs_max"]["value"].get<double>(), 20e3, 1e-9);
   EXPECT_EQ(run["members"][0]["stations"][0]["location_m"].size(), 3u);

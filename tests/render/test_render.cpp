@@ -121,7 +121,7 @@ TEST(RenderBasics, Sha256AndBase64KnownVectors) {
 }
 
 TEST_F(Render, FieldPictureHasTheSizeColoursAndTheDataRangeOnItsScalarBar) {
-  json doc;
+  dmi::design::DesignDocument doc;
   const auto runs = dmi::render::load_runs(dir.string(), doc);
   ASSERT_EQ(runs.size(), 1u);
   ASSERT_TRUE(runs[0].frame.has_value());
@@ -149,7 +149,7 @@ TEST_F(Render, FieldPictureHasTheSizeColoursAndTheDataRangeOnItsScalarBar) {
 // One particle a hundred times hotter than the rest must not wash out the picture: the scale ends at the 99th
 // percentile, and the picture reports the clipped maximum and where it is.
 TEST_F(Render, RobustParticleScaleClipsAnOutlierAndStatesIt) {
-  json doc;
+  dmi::design::DesignDocument doc;
   auto runs = dmi::render::load_runs(dir.string(), doc);
   dmi::Results& r = runs[0].results;
   const std::size_t snap = r.snapshots.size() - 1;
@@ -187,7 +187,7 @@ TEST_F(Render, RobustParticleScaleClipsAnOutlierAndStatesIt) {
 // The envelope panel colours the members by the largest |fibre stress| of any history sample: the cantilever released
 // under self-weight overshoots its static 981 kPa.
 TEST_F(Render, MemberEnvelopeSpansEverySample) {
-  json doc;
+  dmi::design::DesignDocument doc;
   const auto runs = dmi::render::load_runs(dir.string(), doc);
   const dmi::Results& r = runs[0].results;
   const auto& f = *runs[0].frame;
@@ -407,7 +407,7 @@ TEST(RenderSolid, TableOnePictureStatesThePeaksOfTheCheck) {
   const fs::path d = fs::temp_directory_path() / ("dmi_solid_" + std::to_string(::getpid()));
   fs::remove_all(d);
   ASSERT_EQ(sh(std::string(DMI_BINARY) + " simulate " + DMI_SOURCE_DIR + "/examples/paper_b_table1.json -o " + d.string() + " -q"), 0);
-  json doc;
+  dmi::design::DesignDocument doc;
   auto runs = dmi::render::load_runs(d.string(), doc);
   ASSERT_EQ(runs.size(), 1u);
   const auto pic = dmi::render::render_solid(runs[0].results, "table 1", (d / "solid.png").string(), 1200, 600);

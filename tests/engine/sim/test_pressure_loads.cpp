@@ -82,7 +82,7 @@ TEST(PressureLoads, ASpaceFrameCarriesTheSamePressure) {
 // compression 1.35 x (94 176 + 843 750) = 1 266 200 Pa, shear 1.35 x 90 kN = 121.5 kN; each in the persistent verdict.
 TEST(PressureLoads, PersistentSituationChecksByHand) {
   const RunOutput out = run_quiet(parse_scenario(cantilever(3.0).dump(), "test"));
-  const nlohmann::json run = design::design_run(out.results, design::Limits{}, "w.h5");
+  const nlohmann::json run = design::to_json(design::design_run(out.results, design::Limits{}, "w.h5"));
   auto check = [&](const std::string& id) -> nlohmann::json {
     for (const auto& c : run["checks"])
       if (c["id"] == id) return c;
