@@ -274,9 +274,9 @@ bool restudy_grid(DesignDocument& design, const std::string& out, const std::str
     const auto files = variant_results(folders[g]);
     if (files.empty()) return false;
     const Results r = read_results(files.front().second.string(), false);
-    const auto it = r.info.numbers.find("cell_size");
-    if (it == r.info.numbers.end() || !(it->second > 0)) return false;
-    h[g] = it->second;
+    const std::optional<double>& cell = r.info.stats.cell_size;
+    if (!cell || !(*cell > 0)) return false;
+    h[g] = *cell;
   }
   for (int g = 1; g <= 2; ++g) {
     designs[g] = check_document({folders[g]}, limits_file, software_version);

@@ -99,8 +99,8 @@ std::optional<PlasticRecord::Drift> residual_drift(const Results& r, const Frame
   for (const auto& n : f.nodes) top = std::max(top, n[up]), bottom = std::min(bottom, n[up]);
   const double height = basis && is_set(basis->dam.height_m) ? basis->dam.height_m : top - bottom;
   if (!(height > 0)) return std::nullopt;  // a frame without height (a horizontal member) has no drift
-  const auto p1 = r.info.numbers.find("frame_period_1");
-  const double window = p1 != r.info.numbers.end() ? p1->second : 0.1 * (r.time.back() - r.time.front());
+  const std::vector<double>& periods = r.info.stats.frame_periods;
+  const double window = !periods.empty() ? periods.front() : 0.1 * (r.time.back() - r.time.front());
   Residual worst;
   double worst_h = -1;
   int node = -1;

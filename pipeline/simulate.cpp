@@ -53,8 +53,8 @@ void report(const SimulateRequest& rq, const ScenarioVariant& v, const Job& j, s
   if (j.error) std::rethrow_exception(j.error);
   if (written) written->push_back(j.r.results_path);
   if (!rq.quiet)
-    std::printf("wrote %s (%.0f steps, %.2f s wall)\n", j.r.results_path.c_str(), j.r.results.info.numbers.at("steps"),
-                j.r.results.info.numbers.at("wall_seconds"));
+    std::printf("wrote %s (%.0f steps, %.2f s wall)\n", j.r.results_path.c_str(), j.r.results.info.stats.steps.value(),
+                j.r.results.info.stats.wall_seconds.value());
 }
 
 }  // namespace

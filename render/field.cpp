@@ -432,8 +432,8 @@ vtkSmartPointer<vtkRenderer> panel_renderer(const Panel& p, std::size_t i, std::
   double centre[3], half = 0;
   panel_camera(st.box, st.axes, vw, vh, centre, half);
   const double px_per_m = vh / (2 * half);
-  const auto cs = p.results->info.numbers.find("cell_size");
-  const double spacing = cs != p.results->info.numbers.end() ? 0.5 * cs->second : 0.01 * st.box.size;
+  const std::optional<double>& cs = p.results->info.stats.cell_size;
+  const double spacing = cs ? 0.5 * *cs : 0.01 * st.box.size;
   const auto cut = section ? st.spec.section_y : std::nullopt;
   ren->AddActor(particles_actor(s, particle_field(s, st.spec.quantity), st.particles, std::max(1.0, 1.2 * spacing * px_per_m), cut, 2 * spacing));
   if (!fs.elements.empty()) {

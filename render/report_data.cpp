@@ -163,8 +163,8 @@ json scenario_rows(const RunData& r) {
                        fmt(", centre %.3g m above the base at impact", k->impact_height_m));
     row("rock", fmt("E %.3g GPa", k->youngs_modulus_Pa / 1e9) + fmt(", ν %.2f", k->poisson_ratio) + fmt(", ρ %.0f kg/m³", k->density_kg_m3));
     row("impact energy", fmt("%.4g kJ", 0.5 * k->mass_kg * k->speed_m_s * k->speed_m_s / 1e3));
-    const auto& n = r.results.info.numbers;
-    const double cfl = n.count("cfl_used") ? n.at("cfl_used") : n.count("cfl") ? n.at("cfl") : NAN;  // cfl_used: reduced to the stable limit
+    const RunStats& n = r.results.info.stats;
+    const double cfl = n.cfl_used ? *n.cfl_used : n.cfl.value_or(NAN);  // cfl_used: reduced to the stable limit
     if (const std::string t = boulder_model_text(k->model, cfl); !t.empty()) row("boulder model", t);
   }
   if (const auto& k = basis->debris; k && k->hydrograph) {
@@ -408,14 +408,13 @@ json run_checks(const std::vector<RunData>& runs) {
 // The model table: a row per quantity, a column per run.
 json model_rows(const std::vector<RunData>& runs) {
   return per_run_rows(runs, {
-      {"cell size", [](const RunData& r) { return fmt("%.3g m", r.results.info.numbers.count("cell_size") ? r.results.info.numbers.at("cell_size") : NAN); }},
-      {"particles", [](const RunData& r) { return fmt("%.0f", r.results.info.numbers.count("particles") ? r.results.info.numbers.at("particles") : NAN); }},
+      {"cell size", [](const RunData& r) { return fmt("%.3g m", r.results.info.stats.cell_size.value_or(NAN)); }},
+      {"particles", [](const RunData& r) { return fmt("%.0f", r.results.info.stats.particles.value_or(NAN)); }},
       {"members / elements", [](const RunData& r) { return r.frame ? std::to_string(r.frame->members.size()) + " / " + std::to_string(r.frame->elements.size()) : std::string("—"); }},
       {"members' lowest natural periods", [](const RunData& r) {
          std::string t;
-         for (int k = 1; k <= 3; ++k)
-           if (auto it = r.results.info.numbers.find("frame_period_" + std::to_string(k)); it != r.results.info.numbers.end())
-             t += (t.empty() ? "" : ", ") + eng(it->second, "s");
+         const std::vector<double>& periods = r.results.info.stats.frame_periods;
+         for (std::size_t k = 0; k < std::min<std::size_t>(3, periods.size()); ++k) t += (t.empty() ? "" : ", ") + eng(periods[k], "s");
          return t.empty() ? std::string("—") : t;
        }},
       {"member damping", [](const RunData& r) {
@@ -424,18 +423,17 @@ json model_rows(const std::vector<RunData>& runs) {
          return r.frame && s.is_object() ? member_damping_text(s) : std::string("—");
        }},
       {"shape functions, transfer, stress update", [](const RunData& r) {
-         const auto& s = r.results.info.strings;
-         auto g = [&](const char* k) { return s.count(k) ? s.at(k) : std::string("?"); };
-         return g("shape_function") + ", " + g("transfer") + ", " + g("stress_update");
+         const RunStats& s = r.results.info.stats;
+         return s.shape_function.value_or("?") + ", " + s.transfer.value_or("?") + ", " + s.stress_update.value_or("?");
        }},
       {"simulated time", [](const RunData& r) { return r.results.time.empty() ? std::string("—") : eng(r.results.time.back(), "s"); }},
-      {"time steps", [](const RunData& r) { return fmt("%.0f", r.results.info.numbers.count("steps") ? r.results.info.numbers.at("steps") : NAN); }},
+      {"time steps", [](const RunData& r) { return fmt("%.0f", r.results.info.stats.steps.value_or(NAN)); }},
       {"time step min / max", [](const RunData& r) {
-         const auto& n = r.results.info.numbers;
-         return n.count("dt_min") ? fmt("%.3g", n.at("dt_min") * 1e6) + " / " + fmt("%.3g µs", n.at("dt_max") * 1e6) : std::string("—");
+         const RunStats& n = r.results.info.stats;
+         return n.dt_min && n.dt_max ? fmt("%.3g", *n.dt_min * 1e6) + " / " + fmt("%.3g µs", *n.dt_max * 1e6) : std::string("—");
        }},
-      {"wall time", [](const RunData& r) { return fmt("%.1f s", r.results.info.numbers.count("wall_seconds") ? r.results.info.numbers.at("wall_seconds") : NAN); }},
-      {"threads", [](const RunData& r) { return fmt("%.0f", r.results.info.numbers.count("threads") ? r.results.info.numbers.at("threads") : NAN); }}});
+      {"wall time", [](const RunData& r) { return fmt("%.1f s", r.results.info.stats.wall_seconds.value_or(NAN)); }},
+      {"threads", [](const RunData& r) { return fmt("%.0f", r.results.info.stats.threads.value_or(NAN)); }}});
 }
 
 }  // namespace

@@ -104,16 +104,16 @@ void health_data(const std::vector<RunData>& runs, json& d) {
          return t.empty() ? std::string("—") : t;
        }},
       {"largest Courant number used", [](const RunData& r) {
-         const auto& n = r.results.info.numbers;
-         return n.count("courant_max") ? fmt("%.3f", n.at("courant_max")) : std::string("—");
+         const auto& c = r.results.info.stats.courant_max;
+         return c ? fmt("%.3f", *c) : std::string("—");
        }},
       {"smallest particle J = V/V0", [](const RunData& r) {
-         const auto& n = r.results.info.numbers;
-         return n.count("jacobian_min") ? fmt("%.4f", n.at("jacobian_min")) : std::string("—");
+         const auto& j = r.results.info.stats.jacobian_min;
+         return j ? fmt("%.4f", *j) : std::string("—");
        }},
       {"contact projection iterations, max", [](const RunData& r) {
-         const auto& n = r.results.info.numbers;
-         return n.count("projection_iterations_max") ? fmt("%.0f", n.at("projection_iterations_max")) : std::string("—");
+         const auto& p = r.results.info.stats.projection_iterations_max;
+         return p ? fmt("%.0f", *p) : std::string("—");
        }}});
 }
 

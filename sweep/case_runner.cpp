@@ -82,7 +82,7 @@ std::vector<std::string> run_variants(const std::vector<ScenarioVariant>& varian
     if (pipeline::run_state(shared) == pipeline::RunState::complete) {
       fs::remove_all(vd);
       link_tree(shared, vd);
-      sim_wall += read_results((vd / "results.h5").string(), false).info.numbers.at("wall_seconds");
+      sim_wall += read_results((vd / "results.h5").string(), false).info.stats.wall_seconds.value();
       written.push_back((vd / "results.h5").string());
       continue;
     }
@@ -92,7 +92,7 @@ std::vector<std::string> run_variants(const std::vector<ScenarioVariant>& varian
     ro.progress = ProgressMode::quiet;
     ro.software_version = o.software_version;
     const RunOutput r = run_scenario(v.scenario, ro);
-    sim_wall += r.results.info.numbers.at("wall_seconds");
+    sim_wall += r.results.info.stats.wall_seconds.value();
     written.push_back(r.results_path);
     // Kept for the other cases: linked into a fresh folder, which is then renamed into place (another rank that
     // simulated the same run first keeps its own; both are the same run).
@@ -150,7 +150,7 @@ json run_case(const SweepSpec& spec, std::size_t k, const SweepOptions& o) {
       written.push_back((vd / "results.h5").string());
     }
     if (reused) {  // resumable: a finished case is kept (its scenario unchanged)
-      for (const auto& w : written) sim_wall += read_results(w, false).info.numbers.at("wall_seconds");
+      for (const auto& w : written) sim_wall += read_results(w, false).info.stats.wall_seconds.value();
       row["status"] = "reused";
     } else {
       run_variants(variants, dir, o, sim_wall);

@@ -120,9 +120,9 @@ json bench_bar(bool progress) {
           const double period = z.size() >= 3 ? z[2] - z[0] : NAN;
           const double err = std::abs(period - 10.0) / 10.0;
           points.push_back({{"group", std::string(shape) + " " + transfer}, {"shape", shape}, {"transfer", transfer}, {"cell_size", h}, {"cfl", cfl},
-                            {"error", std::isfinite(err) ? err : 1.0}, {"wall_seconds", out.results.info.numbers.at("wall_seconds")}});
+                            {"error", std::isfinite(err) ? err : 1.0}, {"wall_seconds", out.results.info.stats.wall_seconds.value()}});
           if (progress) std::fprintf(stderr, "bar %-8s %-4s h %.3f cfl %.1f: error %.2e wall %.3f s\n", shape, transfer, h, cfl, err,
-                                     out.results.info.numbers.at("wall_seconds"));
+                                     out.results.info.stats.wall_seconds.value());
         }
     }
   mark_front(points);
@@ -153,9 +153,9 @@ json bench_disks(bool progress) {
           const double e0 = ke->data[0] + se->data[0], e1 = ke->data[n - 1] + se->data[n - 1];
           const double err = std::abs(e1 / e0 - 1);
           points.push_back({{"group", std::string(shape) + " " + transfer + " " + update}, {"shape", shape}, {"transfer", transfer},
-                            {"stress_update", update}, {"cell_size", h}, {"error", err}, {"wall_seconds", out.results.info.numbers.at("wall_seconds")}});
+                            {"stress_update", update}, {"cell_size", h}, {"error", err}, {"wall_seconds", out.results.info.stats.wall_seconds.value()}});
           if (progress) std::fprintf(stderr, "disks %-8s %-4s %-4s h %.4f: |dE/E0| %.3f wall %.3f s\n", shape, transfer, update, h, err,
-                                     out.results.info.numbers.at("wall_seconds"));
+                                     out.results.info.stats.wall_seconds.value());
         }
   mark_front(points);
   return json{{"points", points}, {"reference", "energy conservation (E0 at t = 0)"}};
@@ -238,15 +238,15 @@ json bench_skip(bool progress) {
   long steps_n = 0, steps_e = 0;
   ws_n = median3([&] {
     const RunOutput o = run_with(quiet);
-    steps_n = static_cast<long>(o.results.info.numbers.at("steps")), peak_n = peak_base_reaction(o, 0);
-    return o.results.info.numbers.at("wall_seconds");
+    steps_n = static_cast<long>(o.results.info.stats.steps.value()), peak_n = peak_base_reaction(o, 0);
+    return o.results.info.stats.wall_seconds.value();
   });
   Overrides ex = quiet;
   ex.push_back({"/structure/integrator", "explicit"});
   ws_e = median3([&] {
     const RunOutput o = run_with(ex);
-    steps_e = static_cast<long>(o.results.info.numbers.at("steps")), peak_e = peak_base_reaction(o, 0);
-    return o.results.info.numbers.at("wall_seconds");
+    steps_e = static_cast<long>(o.results.info.stats.steps.value()), peak_e = peak_base_reaction(o, 0);
+    return o.results.info.stats.wall_seconds.value();
   });
   out["implicit_frame"] = {{"newmark_steps", steps_n}, {"newmark_wall_s", ws_n}, {"newmark_peak_base_shear_N", peak_n},
                            {"explicit_steps", steps_e}, {"explicit_wall_s", ws_e}, {"explicit_peak_base_shear_N", peak_e},
@@ -261,7 +261,7 @@ json bench_skip(bool progress) {
     o.progress = ProgressMode::quiet;
     const RunOutput r = run_scenario(s, o);
     std::filesystem::remove_all(dir);
-    return r.results.info.numbers.at("wall_seconds");
+    return r.results.info.stats.wall_seconds.value();
   };
   const double w_none = median3([&] { return files_run(false); }), w_snap = median3([&] { return files_run(true); });
   out["output_cost"] = {{"no_snapshots_wall_s", w_none}, {"snapshots_every_10ms_wall_s", w_snap}, {"ratio", w_snap / w_none}};
@@ -295,7 +295,7 @@ json bench_dam(bool progress, bool quick) {
       double f = 0;
       for (std::size_t k = 0; k < o.results.time.size(); ++k) f = std::max(f, std::hypot(cf.data[2 * k], cf.data[2 * k + 1]));
       q[group].push_back({peak_base_reaction(o, 0), peak_base_reaction(o, 2), f});
-      wall[group].push_back(o.results.info.numbers.at("wall_seconds"));
+      wall[group].push_back(o.results.info.stats.wall_seconds.value());
       if (progress) std::fprintf(stderr, "dam %-11s h %.4f: base shear %.4g N, moment %.4g N m, contact %.4g N, %.2f s\n", group.c_str(), h,
                                  q[group].back()[0], q[group].back()[1], q[group].back()[2], wall[group].back());
     }
@@ -358,22 +358,20 @@ json bench_small(bool progress, bool quick) {
       RunOptions ro;
       ro.progress = ProgressMode::quiet, ro.profile = true;
       const RunOutput o = run_scenario(v.scenario, ro);
-      const auto& n = o.results.info.numbers;
-      const double ps = n.at("particles") * n.at("steps");
+      const RunStats& n = o.results.info.stats;
+      const double ps = n.particles.value() * n.steps.value();
       json phases = json::object();
       double loop = 0;
-      for (const auto& [k, sec] : n)
-        if (k.rfind("profile_", 0) == 0) {
-          const std::string name = k.substr(8, k.size() - 8 - 8);  // profile_<name>_seconds
-          phases[name] = 1e9 * sec / ps;
-          loop += sec;
-        }
-      json r = {{"variant", v.label}, {"cell_size", h}, {"particles", n.at("particles")}, {"steps", n.at("steps")}, {"loop_seconds", loop},
+      for (const auto& [name, sec] : n.profile_seconds) {
+        phases[name] = 1e9 * sec / ps;
+        loop += sec;
+      }
+      json r = {{"variant", v.label}, {"cell_size", h}, {"particles", n.particles.value()}, {"steps", n.steps.value()}, {"loop_seconds", loop},
                 {"ns_per_particle_step", 1e9 * loop / ps}, {"ratio_to_kernel", 1e9 * loop / ps / kernel_ns}, {"phases_ns", phases},
-                {"rigid_passes_per_step", n.at("rigid_passes_per_step")}};
+                {"rigid_passes_per_step", n.rigid_passes_per_step.value()}};
       if (progress)
         std::fprintf(stderr, "small %s at h %g m: %.0f particles, %.0f steps, %.2f s, %.0f ns per particle-step (%.1f x kernel)\n",
-                     v.label.c_str(), h, n.at("particles"), n.at("steps"), loop, 1e9 * loop / ps, 1e9 * loop / ps / kernel_ns);
+                     v.label.c_str(), h, n.particles.value(), n.steps.value(), loop, 1e9 * loop / ps, 1e9 * loop / ps / kernel_ns);
       variants.push_back(r);
     }
   }

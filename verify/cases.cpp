@@ -33,7 +33,7 @@ BarResult bar_vibration_run(double h, ShapeKind shape, TransferKind transfer) {
   r.period_exact = 2 * pi / w;
   r.amplitude = column_max(series(out.results, "probes/bar/displacement"), 0, true);
   r.amplitude_exact = v0 / w * 2 / pi;
-  r.wall = out.results.info.numbers.at("wall_seconds");
+  r.wall = out.results.info.stats.wall_seconds.value();
   return r;
 }
 

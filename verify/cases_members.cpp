@@ -99,8 +99,8 @@ A5Run paper_a5_run(int elements, const std::vector<std::pair<std::string, nlohma
     r.contact.push_back(f.data[2 * k + 1]);
     if (std::isnan(r.t_impact) && std::abs(f.data[2 * k + 1]) > 0) r.t_impact = r.time[k];
   }
-  r.wall = out.results.info.numbers.at("wall_seconds");
-  r.steps = static_cast<long>(out.results.info.numbers.at("steps"));
+  r.wall = out.results.info.stats.wall_seconds.value();
+  r.steps = static_cast<long>(out.results.info.stats.steps.value());
   return r;
 }
 
@@ -140,13 +140,13 @@ A6Run paper_a6_run(double h, bool beam_column, const std::vector<std::pair<std::
       r.min_bottom_gap = std::min(r.min_bottom_gap, 0.25 + (yb->data[2 * k + 1] - yb->data[1]) - u.data[2 * k + 1]);
   }
   r.disc_final_vy = vd.data.back();
-  const auto& num = out.results.info.numbers;
-  if (num.count("projection_iterations_max")) {
-    r.projection_iterations_max = num.at("projection_iterations_max");
-    r.projection_iterations_mean = num.at("projection_iterations_mean");
+  const RunStats& num = out.results.info.stats;
+  if (num.projection_iterations_max) {
+    r.projection_iterations_max = *num.projection_iterations_max;
+    r.projection_iterations_mean = num.projection_iterations_mean.value();
   }
-  r.wall = num.at("wall_seconds");
-  r.steps = static_cast<long>(num.at("steps"));
+  r.wall = num.wall_seconds.value();
+  r.steps = static_cast<long>(num.steps.value());
   return r;
 }
 

@@ -110,7 +110,7 @@ std::vector<CaseResult> long_run_impl(bool energy) {
   std::vector<CaseResult> r;
   if (!a.ok) return stamp({run_failed(c, "bar, 50 000 s", a.error)}, timer.seconds());
   const Results& res = a.out.results;
-  const double steps = res.info.numbers.at("steps");
+  const double steps = res.info.stats.steps.value();
   const Series& ke = series(res, "energy/kinetic");
   const Series& se = series(res, "energy/strain");
   const Series& bal = series(res, "energy/balance_error");
@@ -176,8 +176,8 @@ DamRun dam_run(const std::string& file, const Overrides& ov) {
   for (std::size_t k = 0; k < res.time.size(); ++k) d.contact = std::max(d.contact, std::hypot(cf.data[2 * k], cf.data[2 * k + 1]));
   d.shear = column_max(base, 0, true);
   d.moment = column_max(base, 2, true);
-  d.j_min = res.info.numbers.at("jacobian_min");
-  d.steps = res.info.numbers.at("steps");
+  d.j_min = res.info.stats.jacobian_min.value();
+  d.steps = res.info.stats.steps.value();
   d.finite = all_finite(res);
   return d;
 }
@@ -418,7 +418,7 @@ void on_grid_lines(std::vector<CaseResult>& r, const std::string& c, const std::
     const Series& p = series(res, "momentum");
     const double dp = std::hypot(last(p, 0) - p.data[0], last(p, 1) - p.data[1]) / std::hypot(p.data[0], p.data[1]);
     detail("  %s %s: %.0f steps, displacement error %.3g, max von Mises %.3g Pa, momentum change %.3g\n", c.c_str(), tag.c_str(),
-           res.info.numbers.at("steps"), err, vm, dp);
+           res.info.stats.steps.value(), err, vm, dp);
     r.push_back(metric(c, tag + ": displacement / v t (48 cells)", "-", err, 0.0, 1e-9, false));
     r.push_back(metric(c, tag + ": max von Mises (rigid translation)", "Pa", vm, 0.0, 1e-6, false));
     r.push_back(metric(c, tag + ": momentum change / m|v|", "-", dp, 0.0, 1e-12, false));
@@ -491,8 +491,8 @@ void lone_particles(const std::string& c, std::vector<CaseResult>& r) {
     const double xerr = std::abs(last(series(res, "probes/disk/displacement"), 0) - 3.0 * t) / (3.0 * t);
     const double vm = column_max(series(res, "probes/centre/von_mises"), 0);
     detail("  grid_edges %s: %.0f particle(s), %.0f steps, velocity error %.3g, x error %.3g, max von Mises %.3g Pa\n", tag.c_str(),
-           res.info.numbers.at("particles"), res.info.numbers.at("steps"), verr, xerr, vm);
-    r.push_back(metric(c, tag + ": particles", "-", res.info.numbers.at("particles"), 1.0, 0.0, false));
+           res.info.stats.particles.value(), res.info.stats.steps.value(), verr, xerr, vm);
+    r.push_back(metric(c, tag + ": particles", "-", res.info.stats.particles.value(), 1.0, 0.0, false));
     r.push_back(metric(c, tag + ": velocity / (v0 + g t)", "-", verr, 0.0, 1e-9, false));
     r.push_back(metric(c, tag + ": horizontal travel / v0x t (24 cells)", "-", xerr, 0.0, 1e-9, false));
     r.push_back(metric(c, tag + ": max von Mises (free flight)", "Pa", vm, 0.0, 1e-3, false));
@@ -512,7 +512,7 @@ void sparse_disks(const std::string& c, std::vector<CaseResult>& r) {
       continue;
     }
     const Results& res = a.out.results;
-    const double per_disk = res.info.numbers.at("particles") / 2;
+    const double per_disk = res.info.stats.particles.value() / 2;
     const Series& ke = series(res, "energy/kinetic");
     const double e0 = ke.data[0] + series(res, "energy/strain").data[0];
     const double gain = column_max(series(res, "energy/balance_error"), 0) / e0;

@@ -13,6 +13,7 @@
 #include "core/solid_check_record.hpp"
 #include "core/solid_field.hpp"
 #include "core/structure_record.hpp"
+#include "engine/io/run_stats.hpp"
 
 namespace dmi {
 
@@ -56,8 +57,7 @@ struct RunInfo {
   std::string software_version;
   int dimension = 2;
   std::vector<std::string> body_names, material_names;
-  std::map<std::string, double> numbers;       // e.g. "cell_size", "end_time", "wall_seconds", "steps"
-  std::map<std::string, std::string> strings;  // e.g. "shape_function", "transfer", "status"
+  RunStats stats;  // /run's attributes: the set-up, the outcome, the solver's counters
   std::optional<DesignBasis> design_basis;  // /documents/design_basis: what the presets described (checks, estimates)
   std::optional<PeakContact> peak_contact;  // /documents/peak_contact: members touched in the run
   std::optional<StructureRecord> structure;  // /documents/structure: the members as built

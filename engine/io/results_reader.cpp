@@ -403,16 +403,18 @@ void read_run(const Reader& r, hid_t file, const std::string& path, RunInfo& inf
   check_ok(H5Aiterate2(run, H5_INDEX_NAME, H5_ITER_NATIVE, &idx, collect, &names), path,
            "cannot list attributes of /run");
   std::sort(names.begin(), names.end());
+  RunAttributes attrs;
   for (const std::string& name : names) {
     Handle a = r.attr(run, name, "/run");
     Handle type(check_id(H5Aget_type(a), path, "cannot read attribute '" + name + "' on /run"),
                 H5Tclose);
     const H5T_class_t cls = H5Tget_class(type);
     if (cls == H5T_STRING)
-      info.strings[name] = r.attr_string(run, name, "/run");
+      attrs.words[name] = r.attr_string(run, name, "/run");
     else if (cls == H5T_FLOAT || cls == H5T_INTEGER)
-      info.numbers[name] = r.attr_number<double>(run, name, "/run", H5T_NATIVE_DOUBLE, false);
+      attrs.numbers[name] = r.attr_number<double>(run, name, "/run", H5T_NATIVE_DOUBLE, false);
   }
+  info.stats = from_attributes(attrs);
   Handle bn = r.open(run, "body_names", "/run/body_names", H5I_DATASET);
   info.body_names = r.strings(bn, false, "/run/body_names");
   Handle mn = r.open(run, "material_names", "/run/material_names", H5I_DATASET);

@@ -4,7 +4,7 @@
 //   /scenario         scalar string dataset: the scenario JSON text
 //   /scenario_expanded scalar string: the low-level scenario of a preset file (when it has presets)
 //   /documents/<name> scalar strings: JSON documents (peak_contact, solid_check)
-//   /run              group; attrs = RunInfo::numbers (double) and RunInfo::strings (string);
+//   /run              group; attrs = RunInfo::stats by name (double or string; engine/io/run_stats.hpp);
 //                     datasets body_names, material_names (1-D string arrays)
 //   /history/time     (n) double, s
 //   /history/<path>   (n, ncomp) double per Series; attrs unit (string), components (1-D string
@@ -235,12 +235,13 @@ struct ResultsWriter::Impl {
     Handle run(check_id(H5Gcreate2(file, "run", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), f,
                         "cannot create group /run"),
                H5Gclose);
-    for (const auto& [key, value] : info.numbers) {
-      if (info.strings.count(key) != 0)
+    const RunAttributes attrs = to_attributes(info.stats);
+    for (const auto& [key, value] : attrs.numbers) {
+      if (attrs.words.count(key) != 0)
         throw std::runtime_error(f + ": run info key '" + key + "' is both a number and a string");
       attr_double(run, key, value, f);
     }
-    for (const auto& [key, value] : info.strings) attr_string(run, key, value, f);
+    for (const auto& [key, value] : attrs.words) attr_string(run, key, value, f);
     write_strings(run, "body_names", info.body_names, false, f);
     write_strings(run, "material_names", info.material_names, false, f);
   }

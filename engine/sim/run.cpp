@@ -54,9 +54,9 @@ template <int D>
   if (writer) {
     checkpoint();
     if (rec.time().empty() || rec.time().back() < solver.time()) rec.sample(solver, 0.0);
-    info.strings["status"] = sig == 0 ? "stopped (" + why + ")" : "interrupted (" + why + ")";
-    info.numbers["steps"] = static_cast<double>(solver.steps());
-    info.numbers["wall_seconds"] = wall;
+    info.stats.status = sig == 0 ? "stopped (" + why + ")" : "interrupted (" + why + ")";
+    info.stats.steps = static_cast<double>(solver.steps());
+    info.stats.wall_seconds = wall;
     writer->abandon(rec.time(), rec.series(), info);
     where = "partial results in " + results_path + ".partial (complete = 0), checkpoint " + ckpt +
             "; continue with the same command and --restart";
@@ -110,15 +110,15 @@ RunInfo make_info(const Scenario& s, const RunOptions& o) {
   info.dimension = s.analysis.dimension;
   for (const auto& b : s.bodies) info.body_names.push_back(b.name);
   for (const auto& m : s.materials) info.material_names.push_back(m.name);
-  info.numbers["cell_size"] = s.grid.cell_size;
-  info.numbers["end_time"] = s.analysis.end_time;
-  info.numbers["cfl"] = s.analysis.cfl;
-  info.strings["shape_function"] = name_of(s.mpm.shape);
-  info.strings["transfer"] = s.mpm.transfer == TransferKind::apic ? "apic" : "flip";
-  info.numbers["flip_blend"] = s.mpm.flip_blend;
-  info.strings["stress_update"] = s.mpm.update == StressUpdate::usl ? "usl" : "musl";
-  info.strings["plane"] = s.analysis.dimension == 3 ? "none" : s.analysis.plane == Plane::strain ? "strain" : "stress";
-  info.strings["contact"] = s.contact.method == ContactMethod::multi_field ? "multi_field" : "single_field";
+  info.stats.cell_size = s.grid.cell_size;
+  info.stats.end_time = s.analysis.end_time;
+  info.stats.cfl = s.analysis.cfl;
+  info.stats.shape_function = name_of(s.mpm.shape);
+  info.stats.transfer = s.mpm.transfer == TransferKind::apic ? "apic" : "flip";
+  info.stats.flip_blend = s.mpm.flip_blend;
+  info.stats.stress_update = s.mpm.update == StressUpdate::usl ? "usl" : "musl";
+  info.stats.plane = s.analysis.dimension == 3 ? "none" : s.analysis.plane == Plane::strain ? "strain" : "stress";
+  info.stats.contact = s.contact.method == ContactMethod::multi_field ? "multi_field" : "single_field";
   info.design_basis = s.design_basis;
   return info;
 }
@@ -187,7 +187,8 @@ template <class F> void record_periods(const F& f, RunInfo& info) {
     } catch (const std::invalid_argument&) {  // fewer free DOFs than asked for
     }
   }
-  for (std::size_t k = 0; k < w.size(); ++k) info.numbers["frame_period_" + std::to_string(k + 1)] = 2 * std::numbers::pi / w[k];
+  info.stats.frame_periods.clear();
+  for (double wk : w) info.stats.frame_periods.push_back(2 * std::numbers::pi / wk);
 }
 
 // One run: the solver and its recorder, the step loop, results.h5 with its snapshots (periodic, and one at the member
@@ -229,7 +230,7 @@ template <int D> class RunDriver {
 
   // The scene's particles and periods, the CFL factor used and the first guess of the run's cost.
   void describe() {
-    info_.numbers["particles"] = static_cast<double>(solver_.scene().particles.size());
+    info_.stats.particles = static_cast<double>(solver_.scene().particles.size());
     if (const auto* f = solver_.scene().frame.get()) record_periods(*f, info_);
     // A CFL factor above the scheme's measured stability limit is reduced to it, with a message (docs/reliability.md).
     if (const double lim = stable_cfl_limit(s_.mpm.shape, s_.mpm.transfer); s_.analysis.cfl > lim && !s_.mpm.allow_unstable_cfl) {
@@ -237,13 +238,13 @@ template <int D> class RunDriver {
       char msg[256];
       std::snprintf(msg, sizeof msg, "/analysis/cfl = %g is above the stable limit %g measured for %s %s; the run uses %g", s_.analysis.cfl,
                     lim, name_of(s_.mpm.shape), s_.mpm.transfer == TransferKind::apic ? "APIC" : "FLIP", lim);
-      info_.strings["notes"] = msg;
-      info_.numbers["cfl_used"] = lim;
+      info_.stats.notes = msg;
+      info_.stats.cfl_used = lim;
       if (o_.progress != ProgressMode::quiet) std::fprintf(stderr, "damimpact: note: %s\n", msg);
     }
     if (!o_.restart) {
       const RunEstimate e = step_budget(solver_, s_);
-      info_.numbers["steps_estimate"] = e.steps, info_.numbers["wall_estimate_s"] = e.wall_s;
+      info_.stats.steps_estimate = e.steps, info_.stats.wall_estimate_s = e.wall_s;
     }
   }
 
@@ -380,37 +381,37 @@ template <int D> class RunDriver {
 
   // The run's figures: its cost, the profile, numerical health, the structure's documents and the solid check.
   void record_end() {
-    info_.numbers["steps"] = static_cast<double>(solver_.steps());
-    info_.numbers["wall_seconds"] = wall_now();
-    info_.numbers["particles"] = static_cast<double>(solver_.scene().particles.size());  // at the end (an inflow adds them)
+    info_.stats.steps = static_cast<double>(solver_.steps());
+    info_.stats.wall_seconds = wall_now();
+    info_.stats.particles = static_cast<double>(solver_.scene().particles.size());  // at the end (an inflow adds them)
     if (o_.profile) record_profile();
-    info_.numbers["dt_min"] = loop_.dt_min;
-    info_.numbers["dt_max"] = loop_.dt_max;
-    info_.numbers["courant_max"] = loop_.courant_max;  // numerical health (docs/results.md)
-    info_.numbers["jacobian_min"] = std::isfinite(loop_.j_min) ? loop_.j_min : 1.0;
-    info_.numbers["threads"] = requested_;
-    info_.numbers["threads_used"] = used_;  // the most the step loop used (kParallelScene)
+    info_.stats.dt_min = loop_.dt_min;
+    info_.stats.dt_max = loop_.dt_max;
+    info_.stats.courant_max = loop_.courant_max;  // numerical health (docs/results.md)
+    info_.stats.jacobian_min = std::isfinite(loop_.j_min) ? loop_.j_min : 1.0;
+    info_.stats.threads = requested_;
+    info_.stats.threads_used = used_;  // the most the step loop used (kParallelScene)
     record_structure();
     record_solver_stats();
     if (s_.solid_check.present) {
       const auto t1 = Clock::now();
       auto docs = run_solid_check(s_, info_.peak_contact ? &*info_.peak_contact : nullptr);
       info_.solid_check = std::move(docs.check), info_.solid_field = std::move(docs.field);
-      info_.numbers["solid_check_seconds"] = std::chrono::duration<double>(Clock::now() - t1).count();
+      info_.stats.solid_check_seconds = std::chrono::duration<double>(Clock::now() - t1).count();
     }
-    info_.strings["status"] = "complete";
+    info_.stats.status = "complete";
   }
 
   void record_profile() {
     auto key = [](std::string n) {
       for (char& c : n) c = c == ' ' ? '_' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-      return "profile_" + n + "_seconds";
+      return n;
     };
-    for (int p = 0; p < Solver<D>::kPhases; ++p) info_.numbers[key(Solver<D>::phase_name(p))] = solver_.phase_seconds()[p];
-    info_.numbers["profile_time_step_seconds"] = profile_time_step_;
-    info_.numbers["profile_recorder_seconds"] = profile_recorder_;
+    for (int p = 0; p < Solver<D>::kPhases; ++p) info_.stats.profile_seconds[key(Solver<D>::phase_name(p))] = solver_.phase_seconds()[p];
+    info_.stats.profile_seconds["time_step"] = profile_time_step_;
+    info_.stats.profile_seconds["recorder"] = profile_recorder_;
     const long steps = solver_.steps() - first_step_;
-    info_.numbers["rigid_passes_per_step"] = steps > 0 ? double(solver_.rigid_passes()) / double(steps) : 0.0;
+    info_.stats.rigid_passes_per_step = steps > 0 ? double(solver_.rigid_passes()) / double(steps) : 0.0;
   }
 
   void record_structure() {
@@ -424,19 +425,19 @@ template <int D> class RunDriver {
   void record_solver_stats() {
     const auto& bodies = solver_.scene().bodies;
     if (std::any_of(bodies.begin(), bodies.end(), [](const Body& b) { return b.rigid_when_free; })) {
-      info_.numbers["free_rigid_switches"] = static_cast<double>(solver_.free_switches());
-      info_.numbers["free_rigid_steps"] = static_cast<double>(solver_.free_rigid_steps());
+      info_.stats.free_rigid_switches = static_cast<double>(solver_.free_switches());
+      info_.stats.free_rigid_steps = static_cast<double>(solver_.free_rigid_steps());
     }
     if (const auto* iv = solver_.viscosity()) {
-      info_.numbers["viscous_steps"] = static_cast<double>(iv->stats().steps);
-      info_.numbers["viscous_stages"] = static_cast<double>(iv->stats().stages);
+      info_.stats.viscous_steps = static_cast<double>(iv->stats().steps);
+      info_.stats.viscous_stages = static_cast<double>(iv->stats().stages);
     }
     if (const auto* mc = solver_.member_contact()) {
       const MemberContactStats& st = mc->stats();
-      info_.numbers["member_contact_candidates"] = static_cast<double>(st.candidates);
-      info_.numbers["member_contact_loaded"] = static_cast<double>(st.loaded);
-      info_.numbers["projection_iterations_mean"] = st.candidates > 0 ? double(st.projection_iterations) / st.candidates : 0.0;
-      info_.numbers["projection_iterations_max"] = st.max_projection_iterations;
+      info_.stats.member_contact_candidates = static_cast<double>(st.candidates);
+      info_.stats.member_contact_loaded = static_cast<double>(st.loaded);
+      info_.stats.projection_iterations_mean = st.candidates > 0 ? double(st.projection_iterations) / st.candidates : 0.0;
+      info_.stats.projection_iterations_max = st.max_projection_iterations;
     }
   }
 
@@ -489,10 +490,10 @@ RunOutput run_solid_only(const Scenario& s, const RunOptions& o) {
   auto docs = run_solid_check(s, nullptr);
   info.solid_check = std::move(docs.check), info.solid_field = std::move(docs.field);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  info.numbers["steps"] = 0;
-  info.numbers["wall_seconds"] = wall;
-  info.numbers["solid_check_seconds"] = wall;
-  info.strings["status"] = "complete";
+  info.stats.steps = 0;
+  info.stats.wall_seconds = wall;
+  info.stats.solid_check_seconds = wall;
+  info.stats.status = "complete";
   out.results.info = info;
   out.results.complete = true;
   if (!o.out_dir.empty()) {

@@ -59,7 +59,7 @@ TEST(PlasticChecks, ChecksOfAPlasticColumn) {
   Results r;
   r.complete = true;
   r.time = {0.0, 0.01, 0.02, 0.03};
-  r.info.numbers["frame_period_1"] = 0.015;
+  r.info.stats.frame_periods = {0.015};
   // frame/plastic: [work, peak strain, plastic strain] per element; the foot element peaks at 0.02 s.
   r.series.push_back({"frame/plastic", "J, -, -", {"e0_work", "e0_peak_strain", "e0_plastic_strain", "e1_work", "e1_peak_strain", "e1_plastic_strain"},
                       {0, 0, 0, 0, 0, 0, 100, 0.004, 0.002, 0, 0.001, 0, 900, 0.012, 0.010, 50, 0.001, 0, 1000, 0.012, 0.011, 60, 0.001, 0}});

@@ -68,8 +68,12 @@ RunInfo make_info(int dim) {
   info.dimension = dim;
   info.body_names = {"block", "floor"};
   info.material_names = {"steel"};
-  info.numbers = {{"cell_size", 0.01}, {"end_time", 1.0 / 3.0}, {"steps", 1234}};
-  info.strings = {{"shape_function", "quadratic"}, {"status", "running"}};
+  info.stats.cell_size = 0.01, info.stats.end_time = 1.0 / 3.0, info.stats.steps = 1234;
+  info.stats.shape_function = "quadratic", info.stats.status = "running";
+  info.stats.frame_periods = {0.02, 0.005};
+  info.stats.profile_seconds = {{"grid_update", 0.25}, {"time_step", 1.5}};
+  info.stats.other_numbers = {{"a_later_number", 7}};  // a file of a later version: kept as it is
+  info.stats.other_words = {{"a_later_word", "kept"}};
   return info;
 }
 
@@ -107,8 +111,8 @@ Results write_sample(const std::string& path, int dim, const std::vector<Snapsho
   r.snapshots = snaps;
   ResultsWriter w(path, make_info(dim));
   for (const auto& s : snaps) w.write_snapshot(s);
-  r.info.strings["status"] = "finished";  // finish() replaces the run info written at start
-  r.info.numbers["wall_seconds"] = 12.5;
+  r.info.stats.status = "finished";  // finish() replaces the run info written at start
+  r.info.stats.wall_seconds = 12.5;
   w.finish(r.time, r.series, r.info);
   return r;
 }
@@ -137,8 +141,13 @@ void expect_same(const Results& a, const Results& b, bool snapshots) {
   EXPECT_EQ(a.info.dimension, b.info.dimension);
   EXPECT_EQ(a.info.body_names, b.info.body_names);
   EXPECT_EQ(a.info.material_names, b.info.material_names);
-  EXPECT_EQ(a.info.numbers, b.info.numbers);
-  EXPECT_EQ(a.info.strings, b.info.strings);
+  const RunAttributes x = to_attributes(a.info.stats), y = to_attributes(b.info.stats);
+  EXPECT_EQ(x.numbers, y.numbers);
+  EXPECT_EQ(x.words, y.words);
+  EXPECT_EQ(a.info.stats.frame_periods, b.info.stats.frame_periods);
+  EXPECT_EQ(a.info.stats.profile_seconds, b.info.stats.profile_seconds);
+  EXPECT_EQ(a.info.stats.wall_seconds, b.info.stats.wall_seconds);
+  EXPECT_EQ(a.info.stats.status, b.info.stats.status);
   EXPECT_EQ(a.time, b.time);
   ASSERT_EQ(a.series.size(), b.series.size());
   for (std::size_t i = 0; i < a.series.size(); ++i) {
@@ -419,3 +428,27 @@ TEST(MemberVtu, WritesOnePolylinePerElementWithItsFields) {
 
 }  // namespace
 }  // namespace dmi
+
+// /run's attributes by name and the typed record: each known name to its field, the periods frame_period_1.. to the
+// list in order (one after a gap kept as it is), profile_<phase>_seconds to the profile, others kept; and back.
+TEST(RunStats, AttributesByNameAndBack) {
+  RunAttributes a;
+  a.numbers = {{"cell_size", 0.05},          {"steps", 10},         {"frame_period_1", 0.1}, {"frame_period_2", 0.03},
+               {"frame_period_4", 0.01},     {"profile_g2p_seconds", 2}, {"courant_max", 0.4}, {"something_new", 3}};
+  a.words = {{"status", "complete"}, {"notes", "cfl reduced"}, {"new_word", "x"}};
+  const RunStats s = from_attributes(a);
+  EXPECT_EQ(s.cell_size, 0.05);
+  EXPECT_EQ(s.steps, 10);
+  EXPECT_EQ(s.courant_max, 0.4);
+  EXPECT_FALSE(s.wall_seconds.has_value());
+  EXPECT_EQ(s.frame_periods, (std::vector<double>{0.1, 0.03}));
+  EXPECT_EQ(s.other_numbers.at("frame_period_4"), 0.01);
+  EXPECT_EQ(s.profile_seconds.at("g2p"), 2);
+  EXPECT_EQ(s.other_numbers.at("something_new"), 3);
+  EXPECT_EQ(s.status, "complete");
+  EXPECT_EQ(s.notes, "cfl reduced");
+  EXPECT_EQ(s.other_words.at("new_word"), "x");
+  const RunAttributes b = to_attributes(s);
+  EXPECT_EQ(b.numbers, a.numbers);
+  EXPECT_EQ(b.words, a.words);
+}

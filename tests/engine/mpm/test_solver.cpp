@@ -238,7 +238,7 @@ TEST(Solver, TinyOutputIntervalsDoNotStall) {
   j["output"]["history_interval"] = 1e-13;
   j["analysis"]["end_time"] = 1e-3;
   const RunOutput out = run_quiet(parse_scenario(j, "tiny.json"));
-  EXPECT_EQ(out.results.time.size(), static_cast<std::size_t>(out.results.info.numbers.at("steps")) + 1);
+  EXPECT_EQ(out.results.time.size(), static_cast<std::size_t>(out.results.info.stats.steps.value()) + 1);
 }
 
 }  // namespace

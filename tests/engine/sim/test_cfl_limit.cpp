@@ -12,12 +12,12 @@ TEST(CflLimit, AFactorAboveTheSchemeLimitIsReducedWithANote) {
                                                                           {"/mpm/shape_function", c.shape}, {"/mpm/transfer", c.transfer}});
     const dmi::RunOutput out = dmi::run_quiet(s);
     const auto& info = out.results.info;
-    ASSERT_TRUE(info.strings.count("notes")) << c.shape << " " << c.transfer;
-    EXPECT_NE(info.strings.at("notes").find("/analysis/cfl = 1"), std::string::npos) << info.strings.at("notes");
-    EXPECT_DOUBLE_EQ(info.numbers.at("cfl_used"), c.limit);
-    EXPECT_LE(info.numbers.at("courant_max"), c.limit * (1 + 1e-12));
+    ASSERT_TRUE(info.stats.notes.has_value()) << c.shape << " " << c.transfer;
+    EXPECT_NE(info.stats.notes.value().find("/analysis/cfl = 1"), std::string::npos) << info.stats.notes.value();
+    EXPECT_DOUBLE_EQ(info.stats.cfl_used.value(), c.limit);
+    EXPECT_LE(info.stats.courant_max.value(), c.limit * (1 + 1e-12));
   }
   // At or below the limit nothing changes.
   const dmi::RunOutput ok = dmi::run_quiet(dmi::example_scenario("bar_free_free.json", {{"/analysis/end_time", 1.0}}));
-  EXPECT_FALSE(ok.results.info.strings.count("notes"));
+  EXPECT_FALSE(ok.results.info.stats.notes.has_value());
 }

@@ -91,13 +91,13 @@ TEST(Interrupt, SigtermKeepsPartialHistoriesAndTheOlderCompleteResult) {
   const dmi::Results after = dmi::read_results((dir / "results.h5").string(), false);
   EXPECT_TRUE(after.complete);
   EXPECT_EQ(after.time.size(), before.time.size());
-  EXPECT_DOUBLE_EQ(after.info.numbers.at("end_time"), 0.01);
+  EXPECT_DOUBLE_EQ(after.info.stats.end_time.value(), 0.01);
   const dmi::Results partial = dmi::read_results((dir / "results.h5.partial").string(), false);
   EXPECT_FALSE(partial.complete);
   ASSERT_GT(partial.time.size(), 2u);
   EXPECT_LT(partial.time.back(), 100.0);
   for (const auto& s : partial.series) EXPECT_EQ(s.samples(), partial.time.size()) << s.path;
-  EXPECT_EQ(partial.info.strings.at("status"), "interrupted (SIGTERM)");
+  EXPECT_EQ(partial.info.stats.status.value(), "interrupted (SIGTERM)");
   fs::remove_all(dir);
 }
 
@@ -137,9 +137,9 @@ TEST(Interrupt, GridStudyLevelsAllStopAndRestartFromTheirCheckpoints) {
   for (const fs::path& p : levels) {
     const dmi::Results r = dmi::read_results(p.string(), false);
     EXPECT_FALSE(r.complete) << p;
-    EXPECT_EQ(r.info.strings.at("status"), "interrupted (SIGINT)") << p;
+    EXPECT_EQ(r.info.stats.status.value(), "interrupted (SIGINT)") << p;
     EXPECT_TRUE(fs::exists(p.parent_path() / "checkpoint.dmi")) << p;
-    steps.push_back(r.info.numbers.at("steps"));
+    steps.push_back(r.info.stats.steps.value());
   }
   for (const auto& e : fs::recursive_directory_iterator(out)) {
     EXPECT_NE(e.path().filename(), "results.h5") << e.path();
@@ -151,7 +151,7 @@ TEST(Interrupt, GridStudyLevelsAllStopAndRestartFromTheirCheckpoints) {
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 128 + SIGINT);
   for (std::size_t k = 0; k < levels.size(); ++k)
-    EXPECT_GE(dmi::read_results(levels[k].string(), false).info.numbers.at("steps"), steps[k]) << levels[k] << ": started afresh";
+    EXPECT_GE(dmi::read_results(levels[k].string(), false).info.stats.steps.value(), steps[k]) << levels[k] << ": started afresh";
   EXPECT_FALSE(fs::exists(out / "design.json"));
   fs::remove_all(dir);
 }

@@ -63,7 +63,7 @@ void expect_bit_identical_restart(const dmi::Scenario& s, const std::string& nam
   EXPECT_FALSE(fs::exists(part / "checkpoint.dmi"));  // removed once the run is complete
   const dmi::Results a = dmi::read_results((full / "results.h5").string()), b = dmi::read_results((part / "results.h5").string());
   ASSERT_TRUE(b.complete);
-  EXPECT_EQ(a.info.numbers.at("steps"), b.info.numbers.at("steps"));
+  EXPECT_EQ(a.info.stats.steps.value(), b.info.stats.steps.value());
   EXPECT_TRUE(same_bits(a.time, b.time));
   ASSERT_EQ(a.series.size(), b.series.size());
   for (std::size_t k = 0; k < a.series.size(); ++k) EXPECT_TRUE(same_bits(a.series[k].data, b.series[k].data)) << a.series[k].path;

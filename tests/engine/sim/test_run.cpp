@@ -57,7 +57,7 @@ TEST(RunCli, WritesResultsSnapshotsAndParaViewFiles) {
   EXPECT_NEAR(res.snapshots.back().time, 0.03, 1e-12);
   EXPECT_NEAR(res.time.back(), 0.03, 1e-12);
   // One history row per step (history_interval 0) plus the initial state.
-  EXPECT_EQ(res.time.size(), static_cast<std::size_t>(res.info.numbers.at("steps")) + 1);
+  EXPECT_EQ(res.time.size(), static_cast<std::size_t>(res.info.stats.steps.value()) + 1);
   for (const auto& s : res.series) EXPECT_EQ(s.samples(), res.time.size()) << s.path;
   EXPECT_EQ(nlohmann::json::parse(res.info.scenario_json)["name"], "Elastic bar hitting a rigid wall");
   for (std::size_t i = 0; i < res.snapshots.size(); ++i) {
@@ -246,7 +246,7 @@ TEST(RunHealth, CourantAndJacobianAreRecorded) {
   dmi::RunOptions o;
   o.progress = dmi::ProgressMode::quiet;
   const dmi::RunOutput r = dmi::run_scenario(s, o);
-  const double c = r.results.info.numbers.at("courant_max"), j = r.results.info.numbers.at("jacobian_min");
+  const double c = r.results.info.stats.courant_max.value(), j = r.results.info.stats.jacobian_min.value();
   EXPECT_GT(c, 0.9 * s.analysis.cfl);
   EXPECT_LE(c, s.analysis.cfl + 1e-12);
   EXPECT_GT(j, 0.3);
