@@ -16,38 +16,12 @@
 #include <string>
 
 #include "engine/structure/frame_system.hpp"
-#include "engine/structure/frame_dynamics.hpp"
+#include "engine/structure/frame_core.hpp"
 
 namespace dmi {
 
-struct Frame::Impl {
-  explicit Impl(FrameModel m) : sys(std::move(m)), dyn(sys, sys.model().integrator, sys.model().hht_alpha) {
-    w.assign(sys.nelements(), Vec2::Zero());
-  }
-  void update_loads() {  // f = nodal + element loads at the current state
-    if (f_current && sys.linear()) return;
-    dyn.f = dyn.nodal;
-    sys.add_element_loads(w, dyn.state.d, dyn.f);
-    f_current = true;
-  }
-  void check_element(int e, double xi) const {
-    if (e < 0 || e >= sys.nelements())
-      throw std::invalid_argument("Frame: element index " + std::to_string(e) + " outside [0, " +
-                                  std::to_string(sys.nelements()) + ")");
-    if (!(xi >= 0 && xi <= 1))
-      throw std::invalid_argument("Frame: element " + std::to_string(e) + ": xi = " + std::to_string(xi) +
-                                  " outside [0, 1]");
-  }
-  void check_node(int n) const {
-    if (n < 0 || 3 * n >= sys.ndof())
-      throw std::invalid_argument("Frame: node index " + std::to_string(n) + " outside [0, " +
-                                  std::to_string(sys.ndof() / 3) + ")");
-  }
-
-  FrameSystem sys;
-  FrameDynamics dyn;
-  std::vector<Vec2> w;  // uniform element loads, local axes (N/m)
-  bool f_current = false;
+struct Frame::Impl : FrameCore<FrameSystem, Vec2, 3> {
+  explicit Impl(FrameModel m) : FrameCore(std::move(m), "Frame") {}
 };
 
 Frame::Frame(FrameModel model) : impl_(std::make_unique<Impl>(std::move(model))) {}
@@ -56,7 +30,7 @@ Frame::Frame(Frame&&) noexcept = default;
 Frame& Frame::operator=(Frame&&) noexcept = default;
 
 const FrameModel& Frame::model() const { return impl_->sys.model(); }
-int Frame::nnodes() const { return impl_->sys.ndof() / 3; }
+int Frame::nnodes() const { return impl_->nnodes(); }
 int Frame::nelements() const { return impl_->sys.nelements(); }
 const Eigen::VectorXd& Frame::displacement() const { return impl_->dyn.state.d; }
 const Eigen::VectorXd& Frame::velocity() const { return impl_->dyn.state.v; }
@@ -73,29 +47,15 @@ void Frame::set_velocity(const Eigen::VectorXd& v) {
   impl_->dyn.state.a_current = false;
 }
 
-void Frame::clear_loads() {
-  impl_->dyn.nodal.setZero();
-  impl_->dyn.added.clear();
-  for (Vec2& w : impl_->w) w.setZero();
-  impl_->f_current = false;
-}
+void Frame::clear_loads() { impl_->clear_loads(); }
 
-void Frame::add_nodal_load(int node, const Vec3& f) {
-  impl_->check_node(node);
-  if (!f.allFinite()) throw std::invalid_argument("Frame: non-finite load at node " + std::to_string(node));
-  impl_->dyn.nodal.segment<3>(3 * node) += f;
-  impl_->f_current = false;
-}
+void Frame::add_nodal_load(int node, const Vec3& f) { impl_->add_nodal_load(node, f); }
 
 void Frame::add_point_load(int e, double xi, const Vec2& F, double m) {
   impl_->check_element(e, xi);
   if (!F.allFinite() || !std::isfinite(m))
     throw std::invalid_argument("Frame: non-finite point load on element " + std::to_string(e));
-  const Eigen::Matrix<double, 6, 1> g = point_load_vector(e, xi, F, m);
-  const FrameElementDef& el = model().elements[e];
-  impl_->dyn.nodal.segment<3>(3 * el.i) += g.head<3>();
-  impl_->dyn.nodal.segment<3>(3 * el.j) += g.tail<3>();
-  impl_->f_current = false;
+  impl_->add_element_end_loads(e, point_load_vector(e, xi, F, m));
 }
 
 Eigen::Matrix<double, 6, 1> Frame::point_load_vector(int e, double xi, const Vec2& F, double m) const {
@@ -123,29 +83,13 @@ void Frame::add_point_mass(int e, double xi, const Eigen::Matrix2d& m, const Vec
   impl_->dyn.add_point_mass(3, el.i, el.j, G, m);
 }
 
-void Frame::add_distributed_load(int e, const Vec2& w_local) {
-  impl_->check_element(e, 0);
-  if (!w_local.allFinite()) throw std::invalid_argument("Frame: non-finite load on element " + std::to_string(e));
-  impl_->w[e] += w_local;
-  impl_->f_current = false;
-}
+void Frame::add_distributed_load(int e, const Vec2& w_local) { impl_->add_distributed_load(e, w_local); }
 
 double Frame::stable_time_step() const { return impl_->dyn.integrator->stable_time_step(); }
 double Frame::ringing_step() const { return impl_->sys.ringing_step(); }
 
-void Frame::advance(double dt) {
-  impl_->update_loads();
-  impl_->dyn.advance(impl_->sys, dt);
-}
-
-void Frame::solve_static(int increments) {
-  Impl& m = *impl_;
-  m.dyn.state.d.setZero();
-  m.f_current = false;
-  m.update_loads();
-  m.dyn.solve_static(m.sys, increments);
-  m.f_current = false;
-}
+void Frame::advance(double dt) { impl_->advance(dt); }
+void Frame::solve_static(int increments) { impl_->solve_static(increments); }
 
 std::vector<double> Frame::natural_frequencies(int n) const { return impl_->sys.natural_frequencies(n); }
 
@@ -183,7 +127,7 @@ double Frame::half_depth(int e, double xi) const {
 SectionForces Frame::forces_at(int e, double xi) const {
   impl_->check_element(e, xi);
   const FrameSystem& sys = impl_->sys;
-  const ChordState s = sys.transform().state(sys.chord(e), sys.element_dofs(e, impl_->dyn.state.d));
+  const ChordState s = sys.element_state(e, impl_->dyn.state.d);
   return sys.element(e).section_forces(sys.basic_forces(e, s.v), s.L, sys.element_load(e, impl_->w[e], impl_->dyn.state.d), xi);
 }
 
@@ -194,27 +138,11 @@ FibreStresses Frame::stresses_at(int e, double xi) const {
   return fibre_stresses(el.section, el.s0 + xi * (el.s1 - el.s0), forces_at(e, xi));
 }
 
-Vec3 Frame::reaction(int support) const {
-  const FrameModel& fm = model();
-  if (support < 0 || support >= static_cast<int>(fm.supports.size()))
-    throw std::invalid_argument("Frame: support index " + std::to_string(support) + " out of range");
-  const FrameSystem& sys = impl_->sys;
-  Eigen::VectorXd f = impl_->dyn.nodal;
-  sys.add_element_loads(impl_->w, impl_->dyn.state.d, f);
-  return impl_->dyn.reaction<3>(sys, impl_->dyn.residual(sys, f), fm.supports[support]);
-}
+Vec3 Frame::reaction(int support) const { return impl_->reaction(support, model().supports); }
 
 double Frame::kinetic_energy() const { return impl_->dyn.kinetic_energy(impl_->sys); }
 
-double Frame::strain_energy() const {
-  const FrameSystem& sys = impl_->sys;
-  const Eigen::VectorXd& d = impl_->dyn.state.d;
-  double u = 0.5 * d.dot(sys.springs().cwiseProduct(d));
-  for (int e = 0; e < sys.nelements(); ++e)
-    u += sys.fibre_beam(e) ? sys.fibre_beam(e)->elastic_energy()
-                           : sys.element(e).strain_energy(sys.transform().state(sys.chord(e), sys.element_dofs(e, d)).v);
-  return u;
-}
+double Frame::strain_energy() const { return impl_->strain_energy(); }
 
 double Frame::external_work() const { return impl_->dyn.work_ext; }
 double Frame::applied_work() const { return impl_->dyn.work_applied; }
@@ -229,13 +157,7 @@ std::optional<PlasticRecord> Frame::plastic_record(int e) const {
   return impl_->sys.fibres().record(e);
 }
 
-void Frame::save_state(StateWriter& w) const {
-  impl_->dyn.save_state(w, "frame", impl_->w, impl_->f_current);
-  impl_->sys.fibres().save_state(w);
-}
-void Frame::load_state(StateReader& r) {
-  impl_->dyn.load_state(r, "frame", impl_->w, impl_->f_current);
-  impl_->sys.fibres().load_state(r);
-}
+void Frame::save_state(StateWriter& w) const { impl_->save_state(w, "frame"); }
+void Frame::load_state(StateReader& r) { impl_->load_state(r, "frame"); }
 
 }  // namespace dmi

@@ -35,6 +35,7 @@ class FrameSystem final : public AssembledSystem {
   const Chord& chord(int e) const { return chords_[e]; }
   const CoordTransform& transform() const { return *transform_; }
   Vec6 element_dofs(int e, const Eigen::VectorXd& d) const;
+  ChordState element_state(int e, const Eigen::VectorXd& d) const { return transform_->state(chords_[e], element_dofs(e, d)); }
   // Basic forces of element e at deformations v: kb v, or a plastic element's from its fibres; k: dq/dv.
   Vec3 basic_forces(int e, const Vec3& v, Mat3* k = nullptr) const;
   const FibreBeam<1>* fibre_beam(int e) const { return fibres_.at(e); }

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "engine/structure/frame_dynamics.hpp"
+#include "engine/structure/frame_core.hpp"
 #include "engine/structure/space_frame_system.hpp"
 
 namespace dmi {
@@ -26,25 +26,8 @@ SpaceSupportDef SpaceSupportDef::pinned(int node) {
   return s;
 }
 
-struct SpaceFrame::Impl {
-  explicit Impl(SpaceFrameModel m) : sys(std::move(m)), dyn(sys, sys.model().integrator, sys.model().hht_alpha) {
-    w.assign(sys.nelements(), Vec3::Zero());
-  }
-  void update_loads() {
-    if (f_current && sys.linear()) return;
-    dyn.f = dyn.nodal;
-    sys.add_element_loads(w, dyn.state.d, dyn.f);
-    f_current = true;
-  }
-  void check_element(int e, double xi) const {
-    if (e < 0 || e >= sys.nelements())
-      throw std::invalid_argument("SpaceFrame: element index " + std::to_string(e) + " outside [0, " + std::to_string(sys.nelements()) + ")");
-    if (!(xi >= 0 && xi <= 1)) throw std::invalid_argument("SpaceFrame: element " + std::to_string(e) + ": xi = " + std::to_string(xi) + " outside [0, 1]");
-  }
-  void check_node(int n) const {
-    if (n < 0 || 6 * n >= sys.ndof())
-      throw std::invalid_argument("SpaceFrame: node index " + std::to_string(n) + " outside [0, " + std::to_string(sys.ndof() / 6) + ")");
-  }
+struct SpaceFrame::Impl : FrameCore<SpaceFrameSystem, Vec3, 6> {
+  explicit Impl(SpaceFrameModel m) : FrameCore(std::move(m), "SpaceFrame") {}
   // The element's current local axes and its end DOFs in them.
   Vec12 local_dofs(int e, const Eigen::VectorXd& x, Eigen::Matrix3d& R, double& L) const {
     const SpaceChordState s = sys.element_state(e, dyn.state.d);
@@ -60,11 +43,6 @@ struct SpaceFrame::Impl {
     const double u3 = sh.hermite[0] * ul(2) - sh.hermite[1] * ul(4) + sh.hermite[2] * ul(8) - sh.hermite[3] * ul(10);
     return {u1, u2, u3};
   }
-
-  SpaceFrameSystem sys;
-  FrameDynamics dyn;
-  std::vector<Vec3> w;  // uniform element loads, local axes (N/m)
-  bool f_current = false;
 };
 
 SpaceFrame::SpaceFrame(SpaceFrameModel model) : impl_(std::make_unique<Impl>(std::move(model))) {}
@@ -73,7 +51,7 @@ SpaceFrame::SpaceFrame(SpaceFrame&&) noexcept = default;
 SpaceFrame& SpaceFrame::operator=(SpaceFrame&&) noexcept = default;
 
 const SpaceFrameModel& SpaceFrame::model() const { return impl_->sys.model(); }
-int SpaceFrame::nnodes() const { return impl_->sys.ndof() / 6; }
+int SpaceFrame::nnodes() const { return impl_->nnodes(); }
 int SpaceFrame::nelements() const { return impl_->sys.nelements(); }
 const Eigen::VectorXd& SpaceFrame::displacement() const { return impl_->dyn.state.d; }
 const Eigen::VectorXd& SpaceFrame::velocity() const { return impl_->dyn.state.v; }
@@ -89,27 +67,14 @@ Eigen::Matrix3d SpaceFrame::axes(int e) const {
   return impl_->sys.element_state(e, impl_->dyn.state.d).R;
 }
 
-void SpaceFrame::clear_loads() {
-  impl_->dyn.clear_loads();
-  for (Vec3& w : impl_->w) w.setZero();
-  impl_->f_current = false;
-}
+void SpaceFrame::clear_loads() { impl_->clear_loads(); }
 
-void SpaceFrame::add_nodal_load(int node, const Vec6& f) {
-  impl_->check_node(node);
-  if (!f.allFinite()) throw std::invalid_argument("SpaceFrame: non-finite load at node " + std::to_string(node));
-  impl_->dyn.nodal.segment<6>(6 * node) += f;
-  impl_->f_current = false;
-}
+void SpaceFrame::add_nodal_load(int node, const Vec6& f) { impl_->add_nodal_load(node, f); }
 
 void SpaceFrame::add_point_load(int e, double xi, const Vec3& F, const Vec3& m) {
   impl_->check_element(e, xi);
   if (!F.allFinite() || !m.allFinite()) throw std::invalid_argument("SpaceFrame: non-finite point load on element " + std::to_string(e));
-  const Vec12 g = point_load_vector(e, xi, F, m);
-  const SpaceElementDef& el = model().elements[e];
-  impl_->dyn.nodal.segment<6>(6 * el.i) += g.head<6>();
-  impl_->dyn.nodal.segment<6>(6 * el.j) += g.tail<6>();
-  impl_->f_current = false;
+  impl_->add_element_end_loads(e, point_load_vector(e, xi, F, m));
 }
 
 Vec12 SpaceFrame::point_load_vector(int e, double xi, const Vec3& F, const Vec3& m) const {
@@ -141,29 +106,13 @@ void SpaceFrame::add_point_mass(int e, double xi, const Eigen::Matrix3d& m, cons
   impl_->dyn.add_point_mass(6, el.i, el.j, G, m);
 }
 
-void SpaceFrame::add_distributed_load(int e, const Vec3& w_local) {
-  impl_->check_element(e, 0);
-  if (!w_local.allFinite()) throw std::invalid_argument("SpaceFrame: non-finite load on element " + std::to_string(e));
-  impl_->w[e] += w_local;
-  impl_->f_current = false;
-}
+void SpaceFrame::add_distributed_load(int e, const Vec3& w_local) { impl_->add_distributed_load(e, w_local); }
 
 double SpaceFrame::stable_time_step() const { return impl_->dyn.integrator->stable_time_step(); }
 double SpaceFrame::ringing_step() const { return impl_->sys.ringing_step(); }
 
-void SpaceFrame::advance(double dt) {
-  impl_->update_loads();
-  impl_->dyn.advance(impl_->sys, dt);
-}
-
-void SpaceFrame::solve_static(int increments) {
-  Impl& m = *impl_;
-  m.dyn.state.d.setZero();
-  m.f_current = false;
-  m.update_loads();
-  m.dyn.solve_static(m.sys, increments);
-  m.f_current = false;
-}
+void SpaceFrame::advance(double dt) { impl_->advance(dt); }
+void SpaceFrame::solve_static(int increments) { impl_->solve_static(increments); }
 
 std::vector<double> SpaceFrame::natural_frequencies(int n) const { return impl_->sys.natural_frequencies(n); }
 
@@ -229,26 +178,11 @@ SpaceFibreStresses SpaceFrame::stresses_at(int e, double xi) const {
   return space_fibre_stresses(el.section, el.s0 + xi * (el.s1 - el.s0), forces_at(e, xi));
 }
 
-Vec6 SpaceFrame::reaction(int support) const {
-  const SpaceFrameModel& fm = model();
-  if (support < 0 || support >= static_cast<int>(fm.supports.size()))
-    throw std::invalid_argument("SpaceFrame: support index " + std::to_string(support) + " out of range");
-  const SpaceFrameSystem& sys = impl_->sys;
-  Eigen::VectorXd f = impl_->dyn.nodal;
-  sys.add_element_loads(impl_->w, impl_->dyn.state.d, f);
-  return impl_->dyn.reaction<6>(sys, impl_->dyn.residual(sys, f), fm.supports[support]);
-}
+Vec6 SpaceFrame::reaction(int support) const { return impl_->reaction(support, model().supports); }
 
 double SpaceFrame::kinetic_energy() const { return impl_->dyn.kinetic_energy(impl_->sys); }
 
-double SpaceFrame::strain_energy() const {
-  const SpaceFrameSystem& sys = impl_->sys;
-  const Eigen::VectorXd& d = impl_->dyn.state.d;
-  double u = 0.5 * d.dot(sys.springs().cwiseProduct(d));
-  for (int e = 0; e < sys.nelements(); ++e)
-    u += sys.fibre_beam(e) ? sys.fibre_beam(e)->elastic_energy() : sys.element(e).strain_energy(sys.element_state(e, d).v);
-  return u;
-}
+double SpaceFrame::strain_energy() const { return impl_->strain_energy(); }
 
 double SpaceFrame::external_work() const { return impl_->dyn.work_ext; }
 double SpaceFrame::applied_work() const { return impl_->dyn.work_applied; }
@@ -263,13 +197,7 @@ std::optional<PlasticRecord> SpaceFrame::plastic_record(int e) const {
   return impl_->sys.fibres().record(e);
 }
 
-void SpaceFrame::save_state(StateWriter& w) const {
-  impl_->dyn.save_state(w, "space_frame", impl_->w, impl_->f_current);
-  impl_->sys.fibres().save_state(w);
-}
-void SpaceFrame::load_state(StateReader& r) {
-  impl_->dyn.load_state(r, "space_frame", impl_->w, impl_->f_current);
-  impl_->sys.fibres().load_state(r);
-}
+void SpaceFrame::save_state(StateWriter& w) const { impl_->save_state(w, "space_frame"); }
+void SpaceFrame::load_state(StateReader& r) { impl_->load_state(r, "space_frame"); }
 
 }  // namespace dmi
