@@ -302,11 +302,147 @@ constexpr bool kVectorGather =
     false;
 #endif
 
+// One particle's sums over its stencil in G2P: its velocity, the FLIP increment, the velocity gradient, APIC's moments
+// B and D, and the empty-node fix's interpolated velocity and slopes: references to the caller's small arrays, which
+// the compiler can keep in registers one by one (not one aggregate of them all).
+template <int D> struct GatherSums {
+  double (&vp)[D], (&dv)[D], (&l)[D][D], (&b)[D][D], (&dd)[D][D], (&ubar)[D], (&gempty)[D];
+};
+
+// FLIP without the empty-node fix, row by row: the weights factor as w_x(a) W(r), so each row sums over its K nodes
+// with the x weights alone and scales once (a third of the multiplications of the node-by-node loop). gu: the velocity
+// the gradient is taken of.
+template <int D, class St, class Mode>
+[[gnu::always_inline]] inline void gather_rows(const GatherCtx<D>& c, const St& st, Index node0, const Index* rowoff, const double* gu,
+                                               const GatherSums<D>& s) {
+  constexpr int K = St::K, R = St::R;
+  const bool same = gu == c.gvl;  // USL: the gradient is taken of v^L, whose row sums are already there
+  for (int r = 0; r < R; ++r) {
+    const Index row = node0 + rowoff[r];
+    __builtin_prefetch(c.gvl + D * (row + kNodeAhead));
+    __builtin_prefetch(c.gv + D * (row + kNodeAhead));
+    double sv[D] = {}, sdv[D] = {}, sgx[D] = {}, su[D] = {};
+    for (int a = 0; a < K; ++a) {
+      const Index id = row + a;
+      const double wa = st.w[0][a];
+      const double* vl = c.gvl + D * id;
+      for (int k = 0; k < D; ++k) sv[k] += wa * vl[k];
+      if constexpr (Mode::velocity)
+        for (int k = 0; k < D; ++k) sdv[k] += wa * (vl[k] - c.gv[D * id + k]);
+      if constexpr (Mode::kinematics) {
+        const double* u = gu + D * id;
+        for (int k = 0; k < D; ++k) sgx[k] += st.dwx[a] * u[k];
+        if (!same)
+          for (int k = 0; k < D; ++k) su[k] += wa * u[k];
+      }
+    }
+    const double W = st.W[r];
+    for (int k = 0; k < D; ++k) s.vp[k] += W * sv[k];
+    if constexpr (Mode::velocity)
+      for (int k = 0; k < D; ++k) s.dv[k] += W * sdv[k];
+    if constexpr (Mode::kinematics) {
+      const double* sw = same ? sv : su;
+      for (int k = 0; k < D; ++k) {
+        s.l[k][0] += W * sgx[k];
+        for (int d = 1; d < D; ++d) s.l[k][d] += st.dW[d - 1][r] * sw[k];
+      }
+    }
+  }
+}
+
+// Node by node: APIC's moments, or FLIP's increment; the gradient, and with linear shapes the empty-node fix (see
+// gather_range).
+template <int D, class St, class Scheme, class Mode, bool EmptyFix, class Dist>
+[[gnu::always_inline]] inline void gather_nodes(const GatherCtx<D>& c, const St& st, const Dist& dist, Index node0, const Index* rowoff,
+                                                const double* gu, const GatherSums<D>& s) {
+  constexpr int K = St::K, R = St::R;
+  for (int r = 0; r < R; ++r) {
+    const Index row = node0 + rowoff[r];
+    __builtin_prefetch(c.gvl + D * (row + kNodeAhead));
+    __builtin_prefetch(c.gv + D * (row + kNodeAhead));
+    for (int a = 0; a < K; ++a) {
+      const Index id = row + a;
+      const double N = st.w[0][a] * st.W[r];
+      const double* vl = c.gvl + D * id;
+      if constexpr (Mode::velocity) {
+        if constexpr (Scheme::affine) {
+          double dx[D];
+          dist.at(r, a, dx);
+          for (int k = 0; k < D; ++k) {
+            for (int j = 0; j < D; ++j) s.b[k][j] += N * vl[k] * dx[j];
+            for (int j = k; j < D; ++j) s.dd[k][j] += N * dx[k] * dx[j];  // symmetric: upper triangle
+          }
+        } else {
+          for (int k = 0; k < D; ++k) s.dv[k] += N * (vl[k] - c.gv[D * id + k]);
+        }
+      }
+      for (int k = 0; k < D; ++k) s.vp[k] += N * vl[k];
+      if constexpr (Mode::kinematics) {
+        double dN[D];
+        dN[0] = st.dwx[a] * st.W[r];
+        for (int d = 1; d < D; ++d) dN[d] = st.w[0][a] * st.dW[d - 1][r];
+        const double* u = gu + D * id;
+        for (int k = 0; k < D; ++k)
+          for (int j = 0; j < D; ++j) s.l[k][j] += u[k] * dN[j];
+        if constexpr (EmptyFix) {
+          for (int k = 0; k < D; ++k) s.ubar[k] += N * u[k];
+          if (c.gm[id] == 0)
+            for (int j = 0; j < D; ++j) s.gempty[j] += dN[j];
+        }
+      }
+    }
+  }
+}
+
+// Particle i from its sums: velocity (FLIP blend or APIC's C_p), position, L and F <- (I + dt L) F. Returns 1 if one
+// became non-finite or the particle left the grid interior.
+template <int D, class Scheme, class Mode>
+[[gnu::always_inline]] inline int update_particle(const GatherCtx<D>& c, Index i, const GatherSums<D>& s) {
+  int bad = 0;
+  if constexpr (Mode::velocity) {
+    if constexpr (Scheme::affine) {
+      Mat<D> B, Dp;  // C_p = B_p D_p^-1; D_p > 0 for GIMP and B-splines, linear APIC is refused (Solver)
+      for (int k = 0; k < D; ++k)
+        for (int j = 0; j < D; ++j) B(k, j) = s.b[k][j], Dp(k, j) = j >= k ? s.dd[k][j] : s.dd[j][k];
+      for (int k = 0; k < D; ++k) c.v[i][k] = s.vp[k];
+      c.C[i] = B * Dp.inverse();
+    } else {
+      for (int k = 0; k < D; ++k) c.v[i][k] = c.blend * (c.v[i][k] + s.dv[k]) + (1 - c.blend) * s.vp[k];
+    }
+  }
+  if constexpr (Mode::kinematics) {
+    double lsum = 0;
+    for (int k = 0; k < D; ++k) {
+      c.x[i][k] += c.dt * s.vp[k];
+      const double xr = (c.x[i][k] - c.g.origin[k]) * c.g.ih;
+      if (!(xr >= c.g.lo[k] && xr < c.g.hi[k])) bad = 1;
+    }
+    // L and F through their column-major storage in scalars: a copy of F as a Mat goes through the stack as small
+    // stores read back by one wide load, which cannot be forwarded. F <- (I + dt L) F.
+    double* Lp = c.L[i].data();
+    double* Fp = c.F[i].data();
+    double f[D][D];
+    for (int k = 0; k < D; ++k)
+      for (int j = 0; j < D; ++j) Lp[j * D + k] = s.l[k][j], lsum += s.l[k][j], f[k][j] = Fp[j * D + k];
+    for (int k = 0; k < D; ++k)
+      for (int j = 0; j < D; ++j) {
+        double lf = 0;
+        for (int m = 0; m < D; ++m) lf += s.l[k][m] * f[m][j];
+        Fp[j * D + k] = f[k][j] + c.dt * lf;
+      }
+    if (!std::isfinite(lsum)) bad = 1;
+  }
+  double vsum = 0;
+  for (int k = 0; k < D; ++k) vsum += c.v[i][k];
+  if (!std::isfinite(vsum)) bad = 1;
+  return bad;
+}
+
 // G2P (Lin & Yang 2024, eqs. 13-14; APIC: Jiang et al. 2015) of particles [i0, i1). Returns 1 if one became non-finite or
 // left the grid interior.
 template <int D, class Shape, class Scheme, class Mode, bool SIMD> inline int gather_range(const GatherCtx<D> c, Index i0, Index i1) {
   using St = Stencil<D, Shape>;
-  constexpr int K = St::K, R = St::R;
+  constexpr int R = St::R;
   Index rowoff[R];
   c.g.template row_offsets<St>(rowoff);
   int bad = 0;
@@ -315,134 +451,32 @@ template <int D, class Shape, class Scheme, class Mode, bool SIMD> inline int ga
     st.compute(c.x[i], c.half[i], c.g.origin, c.g.ih);
     const Index node0 = c.bodies[c.body[i]].field * c.g.nn + c.g.base_id(st);
     const double* gu = Mode::gradient_of_remap ? c.gv : c.gvl;  // the velocity the gradient is taken of
-    double vp[D] = {}, dv[D] = {}, l[D][D] = {}, b[D][D] = {}, dd[D][D] = {};
+    double vp[D] = {}, dv[D] = {}, l[D][D] = {}, b[D][D] = {}, dd[D][D] = {}, ubar[D] = {}, gempty[D] = {};
+    const GatherSums<D> s{vp, dv, l, b, dd, ubar, gempty};
     // Linear shapes: a particle exactly on a grid line has weight 0 but slope 1/h at the node beyond it; at a body's
     // leading face that node is empty (v = 0), which read as a velocity gradient -v/h (stress in a rigid translation,
     // docs/reliability.md). An empty node is given the particle's interpolated velocity instead: with sum grad N = 0,
     // L += u_bar (x) sum over empty nodes of grad N.
     constexpr bool kEmptyFix = std::is_same_v<Shape, LinearShape> && Mode::kinematics;
-    [[maybe_unused]] double ubar[D] = {}, gempty[D] = {};
     constexpr bool kVector = kVectorGather<D, Shape, Scheme, Mode, SIMD>;
 #ifdef DMI_HAVE_AVX2_K3
     if constexpr (kVector) {
       const GatherRecK3 gk = gather_rec_k3_avx(c.rec, node0, c.g.stride[1], st.w[0], st.dw[0], st.w[1], st.dw[1], c.g.ih);
-      vp[0] = gk.vpx, vp[1] = gk.vpy, dv[0] = gk.dvx, dv[1] = gk.dvy;
-      l[0][0] = gk.l00, l[0][1] = gk.l01, l[1][0] = gk.l10, l[1][1] = gk.l11;
+      s.vp[0] = gk.vpx, s.vp[1] = gk.vpy, s.dv[0] = gk.dvx, s.dv[1] = gk.dvy;
+      s.l[0][0] = gk.l00, s.l[0][1] = gk.l01, s.l[1][0] = gk.l10, s.l[1][1] = gk.l11;
     }
 #endif
-    [[maybe_unused]] const NodeDistances<D, St> dist(st, c.g.h, std::bool_constant<Scheme::affine>{});
-    // FLIP without the empty-node fix, row by row: the weights factor as w_x(a) W(r), so each row sums over its K
-    // nodes with the x weights alone and scales once (a third of the multiplications of the node-by-node loop below).
     constexpr bool kRows = !kVector && !Scheme::affine && !kEmptyFix;
     if constexpr (kRows) {
-      const bool same = gu == c.gvl;  // USL: the gradient is taken of v^L, whose row sums are already there
-      for (int r = 0; r < R; ++r) {
-        const Index row = node0 + rowoff[r];
-        __builtin_prefetch(c.gvl + D * (row + kNodeAhead));
-        __builtin_prefetch(c.gv + D * (row + kNodeAhead));
-        double sv[D] = {}, sdv[D] = {}, sgx[D] = {}, su[D] = {};
-        for (int a = 0; a < K; ++a) {
-          const Index id = row + a;
-          const double wa = st.w[0][a];
-          const double* vl = c.gvl + D * id;
-          for (int k = 0; k < D; ++k) sv[k] += wa * vl[k];
-          if constexpr (Mode::velocity)
-            for (int k = 0; k < D; ++k) sdv[k] += wa * (vl[k] - c.gv[D * id + k]);
-          if constexpr (Mode::kinematics) {
-            const double* u = gu + D * id;
-            for (int k = 0; k < D; ++k) sgx[k] += st.dwx[a] * u[k];
-            if (!same)
-              for (int k = 0; k < D; ++k) su[k] += wa * u[k];
-          }
-        }
-        const double W = st.W[r];
-        for (int k = 0; k < D; ++k) vp[k] += W * sv[k];
-        if constexpr (Mode::velocity)
-          for (int k = 0; k < D; ++k) dv[k] += W * sdv[k];
-        if constexpr (Mode::kinematics) {
-          const double* sw = same ? sv : su;
-          for (int k = 0; k < D; ++k) {
-            l[k][0] += W * sgx[k];
-            for (int d = 1; d < D; ++d) l[k][d] += st.dW[d - 1][r] * sw[k];
-          }
-        }
-      }
-    }
-    for (int r = 0; r < (kVector || kRows ? 0 : R); ++r) {
-      const Index row = node0 + rowoff[r];
-      __builtin_prefetch(c.gvl + D * (row + kNodeAhead));
-      __builtin_prefetch(c.gv + D * (row + kNodeAhead));
-      for (int a = 0; a < K; ++a) {
-        const Index id = row + a;
-        const double N = st.w[0][a] * st.W[r];
-        const double* vl = c.gvl + D * id;
-        if constexpr (Mode::velocity) {
-          if constexpr (Scheme::affine) {
-            double dx[D];
-            dist.at(r, a, dx);
-            for (int k = 0; k < D; ++k) {
-              for (int j = 0; j < D; ++j) b[k][j] += N * vl[k] * dx[j];
-              for (int j = k; j < D; ++j) dd[k][j] += N * dx[k] * dx[j];  // symmetric: upper triangle
-            }
-          } else {
-            for (int k = 0; k < D; ++k) dv[k] += N * (vl[k] - c.gv[D * id + k]);
-          }
-        }
-        for (int k = 0; k < D; ++k) vp[k] += N * vl[k];
-        if constexpr (Mode::kinematics) {
-          double dN[D];
-          dN[0] = st.dwx[a] * st.W[r];
-          for (int d = 1; d < D; ++d) dN[d] = st.w[0][a] * st.dW[d - 1][r];
-          const double* u = gu + D * id;
-          for (int k = 0; k < D; ++k)
-            for (int j = 0; j < D; ++j) l[k][j] += u[k] * dN[j];
-          if constexpr (kEmptyFix) {
-            for (int k = 0; k < D; ++k) ubar[k] += N * u[k];
-            if (c.gm[id] == 0)
-              for (int j = 0; j < D; ++j) gempty[j] += dN[j];
-          }
-        }
-      }
+      gather_rows<D, St, Mode>(c, st, node0, rowoff, gu, s);
+    } else if constexpr (!kVector) {
+      const NodeDistances<D, St> dist(st, c.g.h, std::bool_constant<Scheme::affine>{});
+      gather_nodes<D, St, Scheme, Mode, kEmptyFix>(c, st, dist, node0, rowoff, gu, s);
     }
     if constexpr (kEmptyFix)
       for (int k = 0; k < D; ++k)
-        for (int j = 0; j < D; ++j) l[k][j] += ubar[k] * gempty[j];
-    if constexpr (Mode::velocity) {
-      if constexpr (Scheme::affine) {
-        Mat<D> B, Dp;  // C_p = B_p D_p^-1; D_p > 0 for GIMP and B-splines, linear APIC is refused (Solver)
-        for (int k = 0; k < D; ++k)
-          for (int j = 0; j < D; ++j) B(k, j) = b[k][j], Dp(k, j) = j >= k ? dd[k][j] : dd[j][k];
-        for (int k = 0; k < D; ++k) c.v[i][k] = vp[k];
-        c.C[i] = B * Dp.inverse();
-      } else {
-        for (int k = 0; k < D; ++k) c.v[i][k] = c.blend * (c.v[i][k] + dv[k]) + (1 - c.blend) * vp[k];
-      }
-    }
-    if constexpr (Mode::kinematics) {
-      double lsum = 0;
-      for (int k = 0; k < D; ++k) {
-        c.x[i][k] += c.dt * vp[k];
-        const double xr = (c.x[i][k] - c.g.origin[k]) * c.g.ih;
-        if (!(xr >= c.g.lo[k] && xr < c.g.hi[k])) bad = 1;
-      }
-      // L and F through their column-major storage in scalars: a copy of F as a Mat goes through the stack as small
-      // stores read back by one wide load, which cannot be forwarded. F <- (I + dt L) F.
-      double* Lp = c.L[i].data();
-      double* Fp = c.F[i].data();
-      double f[D][D];
-      for (int k = 0; k < D; ++k)
-        for (int j = 0; j < D; ++j) Lp[j * D + k] = l[k][j], lsum += l[k][j], f[k][j] = Fp[j * D + k];
-      for (int k = 0; k < D; ++k)
-        for (int j = 0; j < D; ++j) {
-          double lf = 0;
-          for (int m = 0; m < D; ++m) lf += l[k][m] * f[m][j];
-          Fp[j * D + k] = f[k][j] + c.dt * lf;
-        }
-      if (!std::isfinite(lsum)) bad = 1;
-    }
-    double vsum = 0;
-    for (int k = 0; k < D; ++k) vsum += c.v[i][k];
-    if (!std::isfinite(vsum)) bad = 1;
+        for (int j = 0; j < D; ++j) s.l[k][j] += s.ubar[k] * s.gempty[j];
+    bad |= update_particle<D, Scheme, Mode>(c, i, s);
   }
   return bad;
 }
