@@ -32,25 +32,23 @@ std::string read_text(const fs::path& p) {
   return in ? ss.str() : std::string();
 }
 
-json number_or_null(double v) { return std::isnan(v) ? json(nullptr) : json(v); }
+std::optional<double> finite_or_none(double v) { return std::isnan(v) ? std::nullopt : std::optional<double>(v); }
 
 // The design's figures for the summary: per variant, the largest utilisation and the peaks engineers size with.
-void fill_from_design(json& row, const design::DesignDocument& design) {
+void fill_from_design(SweepRow& row, const design::DesignDocument& design) {
   const design::Verdict& v = design.verdict;
-  row["verdict"] = v.status;
-  row["max_utilisation"] = v.governing ? json(v.governing->utilisation) : json(nullptr);
-  row["governing"] = v.governing ? json{{"id", v.governing->id}, {"member", v.governing->member}, {"variant", v.governing_variant}} : json(nullptr);
-  json vars = json::object();
+  row.verdict = v.status;
+  row.max_utilisation = v.governing ? std::optional<double>(v.governing->utilisation) : std::nullopt;
+  if (v.governing) row.governing = Governing{v.governing->id, v.governing->member, v.governing_variant};
+  else row.governing.reset();
+  row.variants.clear();
   for (const design::RunDesign& r : design.runs) {
     const design::Verdict& rv = r.verdict;
-    vars[r.variant.empty() ? "run" : r.variant] = {
-        {"max_utilisation", rv.governing ? json(rv.governing->utilisation) : json(nullptr)},
-        {"passed", rv.passed},
-        {"contact_peak_N", r.contact.present ? json(r.contact.peak_N) : json(nullptr)},
-        {"base_shear_N", number_or_null(r.base_abs_max(design::shear_key(r.dim())))},
-        {"base_moment_Nm", number_or_null(r.base_abs_max(design::moment_key(r.dim())))}};
+    row.variants[r.variant.empty() ? "run" : r.variant] = {
+        rv.governing ? std::optional<double>(rv.governing->utilisation) : std::nullopt, rv.passed,
+        r.contact.present ? std::optional<double>(r.contact.peak_N) : std::nullopt, finite_or_none(r.base_abs_max(design::shear_key(r.dim()))),
+        finite_or_none(r.base_abs_max(design::moment_key(r.dim())))};
   }
-  row["variants"] = vars;
 }
 
 // Hard links (copies where links fail) of every file under from into to, directories created.
@@ -108,15 +106,12 @@ std::vector<std::string> run_variants(const std::vector<ScenarioVariant>& varian
 
 }  // namespace
 
-json run_case(const SweepSpec& spec, std::size_t k, const SweepOptions& o) {
+SweepRow run_case(const SweepSpec& spec, std::size_t k, const SweepOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   const fs::path dir = fs::path(o.out_dir) / "cases" / case_id(k);
-  json row = {{"case", case_id(k)}, {"index", k + 1}, {"status", "ok"}, {"error", nullptr}, {"wall_seconds", 0.0},
-              {"simulated_seconds", 0.0}, {"verdict", nullptr}, {"max_utilisation", nullptr}, {"governing", nullptr},
-              {"variants", json::object()}};
-  json params = json::object();
-  for (std::size_t p = 0; p < spec.parameters.size(); ++p) params[spec.parameters[p]] = spec.cases[k][p];
-  row["parameters"] = params;
+  SweepRow row;
+  row.case_name = case_id(k), row.index = k + 1;
+  for (std::size_t p = 0; p < spec.parameters.size(); ++p) row.parameters[spec.parameters[p]] = spec.cases[k][p];
   try {
     fs::create_directories(dir);
     const std::string text = case_scenario(spec, k).dump(1) + "\n";
@@ -131,15 +126,15 @@ json run_case(const SweepSpec& spec, std::size_t k, const SweepOptions& o) {
       };
       const design::GridStudyOutcome g = design::run_grid_study(scen.string(), json::parse(text), h, spec.grid_ratio, dir.string(),
                                                                 o.limits_file, level_run, true, o.software_version);
-      row["simulated_seconds"] = sim_wall;
+      row.simulated_seconds = sim_wall;
       fill_from_design(row, g.design);
       double bound = 0;
       if (g.design.grid_study && g.design.grid_study->verdict)
         for (const auto& r : g.design.grid_study->verdict->runs) bound = std::max(bound, r.utilisation_bound);
-      row["utilisation_bound"] = bound;
-      row["grid_study_passed"] = g.passed;
-      if (o.case_reports) row["report"] = fs::relative(render::report_main(dir.string(), {"von_mises", true, o.pdf, o.software_version}).html, o.out_dir).string();
-      row["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      row.utilisation_bound = bound;
+      row.grid_study_passed = g.passed;
+      if (o.case_reports) row.report = fs::relative(render::report_main(dir.string(), {"von_mises", true, o.pdf, o.software_version}).html, o.out_dir).string();
+      row.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       return row;
     }
     std::vector<std::string> written;
@@ -151,26 +146,26 @@ json run_case(const SweepSpec& spec, std::size_t k, const SweepOptions& o) {
     }
     if (reused) {  // resumable: a finished case is kept (its scenario unchanged)
       for (const auto& w : written) sim_wall += read_results(w, false).info.stats.wall_seconds.value();
-      row["status"] = "reused";
+      row.status = "reused";
     } else {
       run_variants(variants, dir, o, sim_wall);
     }
-    row["simulated_seconds"] = sim_wall;
+    row.simulated_seconds = sim_wall;
     design::check_main(written, o.limits_file, false, (dir / "design.json").string(), true, o.software_version);
     fill_from_design(row, design::read_design_json((dir / "design.json").string()));
     if (o.case_reports && (!reused || !fs::exists(dir / "report.html"))) {
       const auto rf = render::report_main(dir.string(), {"von_mises", true, o.pdf, o.software_version});
-      row["report"] = fs::relative(rf.html, o.out_dir).string();
+      row.report = fs::relative(rf.html, o.out_dir).string();
     } else if (fs::exists(dir / "report.html")) {
-      row["report"] = fs::relative(dir / "report.html", o.out_dir).string();
+      row.report = fs::relative(dir / "report.html", o.out_dir).string();
     }
   } catch (const Interrupted&) {
     throw;
   } catch (const std::exception& e) {
-    row["status"] = "failed";
-    row["error"] = e.what();
+    row.status = "failed";
+    row.error = e.what();
   }
-  row["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  row.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return row;
 }
 

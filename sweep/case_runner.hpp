@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sweep/spec.hpp"
+#include "sweep/summary_record.hpp"
 
 namespace dmi::sweep {
 
@@ -22,6 +23,6 @@ struct SweepOptions {
 // Runs case k into OUT/cases/<id>/ and returns its summary row. A case whose complete results exist for the same
 // scenario is not simulated again (status "reused"); a case that fails (bad input, failed run) gets status "failed"
 // and its error, and never throws (except Interrupted, which stops the sweep).
-nlohmann::json run_case(const SweepSpec& spec, std::size_t k, const SweepOptions& o);
+SweepRow run_case(const SweepSpec& spec, std::size_t k, const SweepOptions& o);
 
 }  // namespace dmi::sweep

@@ -18,13 +18,11 @@ using json = nlohmann::json;
 
 namespace {
 
-void log_row(const json& row, int rank, std::size_t n, bool quiet) {
+void log_row(const SweepRow& row, int rank, std::size_t n, bool quiet) {
   if (quiet) return;
-  const json u = row["max_utilisation"];
-  std::printf("[rank %d] %s/%zu %-8s %7.1f s  %s%s\n", rank, row["case"].get<std::string>().c_str(), n,
-              row["status"].get<std::string>().c_str(), row["wall_seconds"].get<double>(),
-              u.is_number() ? ("max utilisation " + std::to_string(u.get<double>()).substr(0, 5)).c_str() : "",
-              row["error"].is_string() ? (" " + row["error"].get<std::string>()).c_str() : "");
+  std::printf("[rank %d] %s/%zu %-8s %7.1f s  %s%s\n", rank, row.case_name.c_str(), n, row.status.c_str(), row.wall_seconds,
+              row.max_utilisation ? ("max utilisation " + std::to_string(*row.max_utilisation).substr(0, 5)).c_str() : "",
+              row.error ? (" " + *row.error).c_str() : "");
   std::fflush(stdout);
 }
 
@@ -71,9 +69,9 @@ void abort_ranks(const Ranks& r, int code) {
   std::exit(code);
 }
 
-std::vector<json> run_cases(const SweepSpec& spec, const SweepOptions& o, const Ranks& r) {
+std::vector<SweepRow> run_cases(const SweepSpec& spec, const SweepOptions& o, const Ranks& r) {
   const std::size_t n = spec.cases.size();
-  std::vector<json> rows;
+  std::vector<SweepRow> rows;
   if (r.size == 1) {
     for (std::size_t k = 0; k < n; ++k) {
       rows.push_back(run_case(spec, k, o));
@@ -115,9 +113,9 @@ std::vector<json> run_cases(const SweepSpec& spec, const SweepOptions& o, const 
       MPI_Get_count(&st, MPI_CHAR, &len);
       std::string text(static_cast<std::size_t>(len), '\0');
       MPI_Recv(text.data(), len, MPI_CHAR, w, kTagRows, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-      for (const json& row : json::parse(text)) rows.push_back(row);
+      for (const json& row : json::parse(text)) rows.push_back(row_from_json(row));
     }
-    std::sort(rows.begin(), rows.end(), [](const json& a, const json& b) { return a["index"] < b["index"]; });
+    std::sort(rows.begin(), rows.end(), [](const SweepRow& a, const SweepRow& b) { return a.index < b.index; });
   } else {
     json mine = json::array();
     while (true) {
@@ -126,8 +124,9 @@ std::vector<json> run_cases(const SweepSpec& spec, const SweepOptions& o, const 
       MPI_Send(&dummy, 1, MPI_INT, 0, kTagRequest, MPI_COMM_WORLD);
       MPI_Recv(&k, 1, MPI_LONG, 0, kTagIndex, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
       if (k < 0) break;
-      mine.push_back(run_case(spec, static_cast<std::size_t>(k), o));
-      log_row(mine.back(), r.rank, n, o.quiet);
+      const SweepRow row = run_case(spec, static_cast<std::size_t>(k), o);
+      mine.push_back(to_json(row));
+      log_row(row, r.rank, n, o.quiet);
     }
     const std::string text = mine.dump();
     MPI_Send(text.data(), static_cast<int>(text.size()), MPI_CHAR, 0, kTagRows, MPI_COMM_WORLD);

@@ -23,6 +23,6 @@ void stop_ranks(const Ranks& r);
 [[noreturn]] void abort_ranks(const Ranks& r, int code);
 
 // Every case run once over the ranks; the rows in case order on rank 0, empty elsewhere.
-std::vector<nlohmann::json> run_cases(const SweepSpec& spec, const SweepOptions& o, const Ranks& r);
+std::vector<SweepRow> run_cases(const SweepSpec& spec, const SweepOptions& o, const Ranks& r);
 
 }  // namespace dmi::sweep

@@ -20,10 +20,10 @@ namespace {
 
 const char* kVariantOrder[] = {"with_buffer", "without_buffer", "run"};
 
-std::vector<std::string> variant_labels(const json& rows) {
+std::vector<std::string> variant_labels(const std::vector<SweepRow>& rows) {
   std::set<std::string> seen;
-  for (const json& r : rows)
-    for (const auto& [k, v] : r["variants"].items()) seen.insert(k);
+  for (const SweepRow& r : rows)
+    for (const auto& [k, v] : r.variants) seen.insert(k);
   std::vector<std::string> v;
   for (const char* l : kVariantOrder)
     if (seen.erase(l)) v.push_back(l);
@@ -44,7 +44,7 @@ bool axis_value(const json& v, double* x) {
 }
 
 // A column heading for a parameter: its last pointer token, or the last two when another parameter ends the same.
-std::string short_name(const std::string& ptr, const json& all) {
+std::string short_name(const std::string& ptr, const std::vector<std::string>& all) {
   auto tail = [](const std::string& p, int n) {
     std::size_t pos = p.size();
     for (int i = 0; i < n && pos != std::string::npos && pos > 0; ++i) pos = p.rfind('/', pos - 1);
@@ -52,7 +52,7 @@ std::string short_name(const std::string& ptr, const json& all) {
   };
   for (int n = 1; n < 8; ++n) {
     int same = 0;
-    for (const json& q : all) same += tail(q.get<std::string>(), n) == tail(ptr, n);
+    for (const std::string& q : all) same += tail(q, n) == tail(ptr, n);
     if (same == 1) return tail(ptr, n);
   }
   return ptr;
@@ -85,6 +85,21 @@ std::string fmt(const json& v, const char* f = "%.3g") {
   return b;
 }
 
+// The case's value of parameter ptr (null when the row has none).
+const json& param(const SweepRow& r, const std::string& ptr) {
+  static const json none;
+  const auto it = r.parameters.find(ptr);
+  return it == r.parameters.end() ? none : it->second;
+}
+
+// A variant's figures, empty where the case has no such variant.
+VariantFigures figures(const SweepRow& r, const std::string& label) {
+  const auto it = r.variants.find(label);
+  return it == r.variants.end() ? VariantFigures{} : it->second;
+}
+
+template <class T> json or_null(const std::optional<T>& v) { return v ? json(*v) : json(nullptr); }
+
 std::string file_b64(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::stringstream ss;
@@ -93,17 +108,17 @@ std::string file_b64(const fs::path& p) {
 }
 
 // Charts per numeric parameter: governing utilisation, base shear and base moment, one point set per variant.
-std::vector<std::pair<std::string, std::string>> charts(const json& s, const fs::path& images) {
+std::vector<std::pair<std::string, std::string>> charts(const SweepSummary& s, const fs::path& images) {
   std::vector<std::pair<std::string, std::string>> made;  // file, caption
-  const auto labels = variant_labels(s["cases"]);
+  const auto labels = variant_labels(s.cases);
   static const std::array<unsigned char, 3> pal[] = {{31, 119, 180}, {255, 127, 14}, {44, 160, 44}, {148, 103, 189},
                                                      {140, 86, 75}, {227, 119, 194}, {127, 127, 127}, {23, 190, 207}};
-  struct Q { const char* key; const char* title; const char* unit; double scale; };
-  const Q qs[] = {{"max_utilisation", "largest utilisation", "-", 1}, {"base_shear_N", "peak base shear", "kN", 1e-3},
-                  {"base_moment_Nm", "peak base moment", "kN m", 1e-3}};
+  struct Q { const char* key; const char* title; const char* unit; double scale; std::optional<double> VariantFigures::*field; };
+  const Q qs[] = {{"max_utilisation", "largest utilisation", "-", 1, &VariantFigures::max_utilisation},
+                  {"base_shear_N", "peak base shear", "kN", 1e-3, &VariantFigures::base_shear_N},
+                  {"base_moment_Nm", "peak base moment", "kN m", 1e-3, &VariantFigures::base_moment_Nm}};
   int p_index = 0;
-  for (const json& p : s["parameters"]) {
-    const std::string ptr = p;
+  for (const std::string& ptr : s.parameters) {
     ++p_index;
     for (const Q& q : qs) {
       render::ChartSpec c;
@@ -114,22 +129,23 @@ std::vector<std::pair<std::string, std::string>> charts(const json& s, const fs:
       // One line per variant and combination of the other parameters (e.g. utilisation against speed, one line per
       // buffer thickness), without_buffer dashed.
       std::vector<std::string> others;  // the other parameters that vary
-      for (const json& q2 : s["parameters"]) {
+      for (const std::string& q2 : s.parameters) {
         std::set<std::string> vals;
-        for (const json& row : s["cases"]) vals.insert(row["parameters"][q2.get<std::string>()].dump());
-        if (q2 != p && vals.size() > 1) others.push_back(q2);
+        for (const SweepRow& row : s.cases) vals.insert(param(row, q2).dump());
+        if (q2 != ptr && vals.size() > 1) others.push_back(q2);
       }
       std::vector<std::string> keys;
       std::map<std::string, render::Curve> series;
       std::map<std::string, std::size_t> colour;  // same colour for the with/without pair of one combination
-      for (const json& row : s["cases"]) {
+      for (const SweepRow& row : s.cases) {
         double x;
-        if (!axis_value(row["parameters"][ptr], &x)) continue;
+        if (!axis_value(param(row, ptr), &x)) continue;
         std::string group;
-        for (const auto& o : others) group += (group.empty() ? "" : ", ") + short_name(o, s["parameters"]) + " " + row["parameters"][o].dump();
+        for (const auto& o : others) group += (group.empty() ? "" : ", ") + short_name(o, s.parameters) + " " + param(row, o).dump();
         for (std::size_t l = 0; l < labels.size(); ++l) {
-          const json y = row["variants"].value(labels[l], json::object()).value(q.key, json());
-          if (!y.is_number()) continue;
+          const auto v = row.variants.find(labels[l]);
+          if (v == row.variants.end() || !(v->second.*q.field)) continue;
+          const double y = *(v->second.*q.field);
           const std::string key = labels[l] + (group.empty() ? "" : ", " + group);
           auto [it, fresh] = series.try_emplace(key);
           render::Curve& cv = it->second;
@@ -140,7 +156,7 @@ std::vector<std::pair<std::string, std::string>> charts(const json& s, const fs:
             cv.label = labels.size() == 1 && labels[0] == "run" ? (group.empty() ? "simulation" : group) : key;
             cv.dashed = labels[l] == "without_buffer";
           }
-          cv.x.push_back(x), cv.y.push_back(y.get<double>() * q.scale);
+          cv.x.push_back(x), cv.y.push_back(y * q.scale);
           lo = std::min(lo, x), hi = std::max(hi, x);
         }
       }
@@ -167,45 +183,42 @@ std::vector<std::pair<std::string, std::string>> charts(const json& s, const fs:
   return made;
 }
 
-std::string html(const json& s, const std::vector<std::pair<std::string, std::string>>& figs, const fs::path& images) {
-  const auto labels = variant_labels(s["cases"]);
-  const json& c = s["counts"];
+std::string html(const SweepSummary& s, const std::vector<std::pair<std::string, std::string>>& figs, const fs::path& images) {
+  const auto labels = variant_labels(s.cases);
+  const int cases = static_cast<int>(s.cases.size());
   std::ostringstream h;
-  h << "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << esc(s["name"]) << " — sweep summary</title><style>"
+  h << "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << esc(s.name) << " — sweep summary</title><style>"
     << render::kReportCss << "</style></head><body>\n";
-  h << "<p class=\"kicker\">damimpact " << esc(s["software_version"]) << " · parametric study</p><h1>" << esc(s["name"]) << "</h1>\n";
-  const bool all_pass = c["passed"] == c["cases"];
-  h << "<div class=\"verdict " << (c["failed_runs"].get<int>() > 0 ? "none" : all_pass ? "pass" : "fail") << "\"><div class=\"verdict-word\">"
-    << c["passed"].get<int>() << " / " << c["cases"].get<int>() << "</div><div class=\"verdict-text\">cases pass every design check"
-    << (c["failed_runs"].get<int>() > 0 ? "; " + std::to_string(c["failed_runs"].get<int>()) + " case(s) could not be run (see the table)" : std::string())
-    << ".</div></div>\n";
-  h << "<table class=\"kv\"><tr><th>sweep file</th><td class=\"mono\">" << esc(s["sweep_file"]) << "</td></tr><tr><th>base scenario</th><td class=\"mono\">"
-    << esc(s["base_file"]) << "</td></tr><tr><th>parameters</th><td class=\"mono\">";
-  for (const json& p : s["parameters"]) h << esc(p) << "<br>";
-  h << "</td></tr><tr><th>ranks × threads</th><td>" << s["ranks"] << " × " << s["threads_per_rank"] << "</td></tr><tr><th>wall time</th><td>"
-    << fmt(s["wall_seconds"], "%.1f") << " s (" << fmt(s["cases_per_hour"], "%.1f") << " cases per hour)</td></tr></table>\n";
+  h << "<p class=\"kicker\">damimpact " << esc(s.software_version) << " · parametric study</p><h1>" << esc(s.name) << "</h1>\n";
+  const bool all_pass = s.passed == cases;
+  h << "<div class=\"verdict " << (s.failed_runs > 0 ? "none" : all_pass ? "pass" : "fail") << "\"><div class=\"verdict-word\">" << s.passed
+    << " / " << cases << "</div><div class=\"verdict-text\">cases pass every design check"
+    << (s.failed_runs > 0 ? "; " + std::to_string(s.failed_runs) + " case(s) could not be run (see the table)" : std::string()) << ".</div></div>\n";
+  h << "<table class=\"kv\"><tr><th>sweep file</th><td class=\"mono\">" << esc(s.sweep_file) << "</td></tr><tr><th>base scenario</th><td class=\"mono\">"
+    << esc(s.base_file) << "</td></tr><tr><th>parameters</th><td class=\"mono\">";
+  for (const std::string& p : s.parameters) h << esc(p) << "<br>";
+  h << "</td></tr><tr><th>ranks × threads</th><td>" << s.ranks << " × " << s.threads_per_rank << "</td></tr><tr><th>wall time</th><td>"
+    << fmt(s.wall_seconds, "%.1f") << " s (" << fmt(s.cases_per_hour, "%.1f") << " cases per hour)</td></tr></table>\n";
   h << "<h2>Design envelope</h2><p class=\"lead\">Every combination, its verdict and its largest utilisation (the design run: with buffer "
        "in a comparison). A case passes when every check of its design run has utilisation ≤ 1.</p>\n";
   h << "<table class=\"grid\"><thead><tr><th>case</th>";
-  for (const json& p : s["parameters"]) h << "<th>" << esc(short_name(p, s["parameters"])) << "</th>";
+  for (const std::string& p : s.parameters) h << "<th>" << esc(short_name(p, s.parameters)) << "</th>";
   h << "<th>verdict</th>";
   for (const auto& l : labels) h << "<th class=\"num\">utilisation " << esc(l) << "</th><th class=\"num\">base shear " << esc(l) << " [kN]</th>";
   h << "<th>governing</th></tr></thead><tbody>\n";
-  for (const json& r : s["cases"]) {
-    h << "<tr><td>" << esc(r["case"]) << "</td>";
-    for (const json& p : s["parameters"]) h << "<td class=\"mono\">" << esc(r["parameters"][p.get<std::string>()].dump()) << "</td>";
-    const std::string st = r["status"] == "failed" ? "could not run" : r["verdict"].is_string() ? r["verdict"].get<std::string>() : "–";
+  for (const SweepRow& r : s.cases) {
+    h << "<tr><td>" << esc(r.case_name) << "</td>";
+    for (const std::string& p : s.parameters) h << "<td class=\"mono\">" << esc(param(r, p).dump()) << "</td>";
+    const std::string st = r.status == "failed" ? "could not run" : r.verdict.value_or("–");
     h << "<td class=\"" << (st == "pass" ? "ok" : "fail") << "\"><b>" << esc(st) << "</b>";
-    if (r["error"].is_string()) h << "<br><span class=\"small\">" << esc(r["error"]) << "</span>";
+    if (r.error) h << "<br><span class=\"small\">" << esc(*r.error) << "</span>";
     h << "</td>";
     for (const auto& l : labels) {
-      const json v = r["variants"].value(l, json::object());
-      const json shear = v.value("base_shear_N", json());
-      h << "<td class=\"num\">" << fmt(v.value("max_utilisation", json()), "%.2f") << "</td><td class=\"num\">"
-        << (shear.is_number() ? fmt(shear.get<double>() / 1e3, "%.1f") : "–") << "</td>";
+      const VariantFigures v = figures(r, l);
+      h << "<td class=\"num\">" << fmt(or_null(v.max_utilisation), "%.2f") << "</td><td class=\"num\">"
+        << (v.base_shear_N ? fmt(*v.base_shear_N / 1e3, "%.1f") : "–") << "</td>";
     }
-    const json g = r["governing"];
-    h << "<td class=\"small\">" << (g.is_object() ? esc(g.value("id", "") + " (" + g.value("member", "") + ")") : "–") << "</td></tr>\n";
+    h << "<td class=\"small\">" << (r.governing ? esc(r.governing->id + " (" + r.governing->member + ")") : "–") << "</td></tr>\n";
   }
   h << "</tbody></table>\n<h2>Charts</h2>\n";
   if (figs.empty()) h << "<p>No chart: no parameter with numeric values and two or more distinct values, or no case ran.</p>";
@@ -219,50 +232,50 @@ std::string html(const json& s, const std::vector<std::pair<std::string, std::st
 
 }  // namespace
 
-json summary_document(const SweepSpec& spec, const std::vector<json>& rows, const SweepRun& run, const std::string& version) {
-  int passed = 0, failed_runs = 0, reused = 0;
-  for (const json& r : rows) {
-    passed += r["verdict"] == "pass";
-    failed_runs += r["status"] == "failed";
-    reused += r["status"] == "reused";
+SweepSummary summary_document(const SweepSpec& spec, std::vector<SweepRow> rows, const SweepRun& run, const std::string& version) {
+  SweepSummary s;
+  s.software_version = version, s.name = spec.name, s.sweep_file = spec.file, s.base_file = spec.base_file, s.parameters = spec.parameters;
+  s.ranks = run.ranks, s.threads_per_rank = run.threads_per_rank, s.wall_seconds = run.wall_seconds;
+  s.cases_per_hour = run.wall_seconds > 0 ? 3600.0 * double(rows.size()) / run.wall_seconds : 0.0;
+  for (const SweepRow& r : rows) {
+    s.passed += r.verdict == "pass";
+    s.failed_runs += r.status == "failed";
+    s.reused += r.status == "reused";
   }
-  return {{"format", "damimpact-sweep"}, {"format_version", 1}, {"software_version", version}, {"name", spec.name},
-          {"sweep_file", spec.file}, {"base_file", spec.base_file}, {"parameters", spec.parameters}, {"ranks", run.ranks},
-          {"threads_per_rank", run.threads_per_rank}, {"wall_seconds", run.wall_seconds},
-          {"cases_per_hour", run.wall_seconds > 0 ? 3600.0 * double(rows.size()) / run.wall_seconds : 0.0},
-          {"counts", {{"cases", rows.size()}, {"passed", passed}, {"failed_runs", failed_runs}, {"reused", reused}}},
-          {"cases", rows}};
+  s.cases = std::move(rows);
+  return s;
 }
 
-std::string summary_csv(const json& s) {
-  const auto labels = variant_labels(s["cases"]);
+std::string summary_csv(const SweepSummary& s) {
+  const auto labels = variant_labels(s.cases);
   std::ostringstream o;
   o << "case";
-  for (const json& p : s["parameters"]) o << "," << csv_field(p);
+  for (const std::string& p : s.parameters) o << "," << csv_field(p);
   bool grid = false;  // a sweep with grid_study: the conservative bound u (1 + GCI) of each case
-  for (const json& r : s["cases"]) grid = grid || r.contains("utilisation_bound");
+  for (const SweepRow& r : s.cases) grid = grid || r.utilisation_bound.has_value();
   o << ",status,verdict,max_utilisation" << (grid ? ",utilisation_bound" : "") << ",governing_check,governing_member,governing_variant";
   for (const auto& l : labels) o << "," << l << "_max_utilisation," << l << "_contact_peak_N," << l << "_base_shear_N," << l << "_base_moment_Nm";
   o << ",wall_seconds,error\n";
-  for (const json& r : s["cases"]) {
-    o << csv_field(r["case"]);
-    for (const json& p : s["parameters"]) o << "," << csv_field(r["parameters"][p.get<std::string>()]);
-    const json g = r["governing"].is_object() ? r["governing"] : json::object();
-    o << "," << csv_field(r["status"]) << "," << csv_field(r["verdict"]) << "," << csv_field(r["max_utilisation"]) << ","
-      << (grid ? csv_field(r.value("utilisation_bound", json())) + "," : "") << csv_field(g.value("id", json())) << "," << csv_field(g.value("member", json())) << "," << csv_field(g.value("variant", json()));
+  for (const SweepRow& r : s.cases) {
+    o << csv_field(r.case_name);
+    for (const std::string& p : s.parameters) o << "," << csv_field(param(r, p));
+    const auto gov = [&](std::string Governing::*f) { return r.governing ? json(*r.governing.*f) : json(nullptr); };
+    o << "," << csv_field(r.status) << "," << csv_field(or_null(r.verdict)) << "," << csv_field(or_null(r.max_utilisation)) << ","
+      << (grid ? csv_field(or_null(r.utilisation_bound)) + "," : "") << csv_field(gov(&Governing::id)) << "," << csv_field(gov(&Governing::member)) << ","
+      << csv_field(gov(&Governing::variant));
     for (const auto& l : labels) {
-      const json v = r["variants"].value(l, json::object());
-      for (const char* k : {"max_utilisation", "contact_peak_N", "base_shear_N", "base_moment_Nm"}) o << "," << csv_field(v.value(k, json()));
+      const VariantFigures v = figures(r, l);
+      for (const std::optional<double>* f : {&v.max_utilisation, &v.contact_peak_N, &v.base_shear_N, &v.base_moment_Nm}) o << "," << csv_field(or_null(*f));
     }
-    o << "," << csv_field(r["wall_seconds"]) << "," << csv_field(r["error"]) << "\n";
+    o << "," << csv_field(r.wall_seconds) << "," << csv_field(or_null(r.error)) << "\n";
   }
   return o.str();
 }
 
-void write_summary(const json& s, const std::string& out_dir, bool pdf, bool quiet) {
+void write_summary(const SweepSummary& s, const std::string& out_dir, bool pdf, bool quiet) {
   const fs::path d = out_dir, images = d / "images";
   fs::create_directories(images);
-  render::write_text_atomic((d / "summary.json").string(), s.dump(1) + "\n");
+  render::write_text_atomic((d / "summary.json").string(), to_json(s).dump(1) + "\n");
   render::write_text_atomic((d / "summary.csv").string(), summary_csv(s));
   const auto figs = charts(s, images);
   render::write_text_atomic((d / "summary.html").string(), html(s, figs, images));

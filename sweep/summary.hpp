@@ -16,11 +16,10 @@ struct SweepRun {
 };
 
 // summary.json's document (format damimpact-sweep, version 1).
-nlohmann::json summary_document(const SweepSpec& spec, const std::vector<nlohmann::json>& rows, const SweepRun& run,
-                                const std::string& software_version);
+SweepSummary summary_document(const SweepSpec& spec, std::vector<SweepRow> rows, const SweepRun& run, const std::string& software_version);
 // summary.csv: one line per case, parameters first.
-std::string summary_csv(const nlohmann::json& summary);
+std::string summary_csv(const SweepSummary& summary);
 // Writes summary.json, summary.csv, images/*.png, summary.html and (with pdf) summary.pdf into out_dir.
-void write_summary(const nlohmann::json& summary, const std::string& out_dir, bool pdf, bool quiet);
+void write_summary(const SweepSummary& summary, const std::string& out_dir, bool pdf, bool quiet);
 
 }  // namespace dmi::sweep

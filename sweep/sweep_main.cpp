@@ -29,7 +29,7 @@ int sweep_main(const std::string& file, const SweepOptions& opts) {
     std::printf("sweep %s: %zu cases, %zu parameters, %d rank(s) x %d thread(s) -> %s\n", spec.name.c_str(), spec.cases.size(),
                 spec.parameters.size(), ranks.size, omp_get_max_threads(), o.out_dir.c_str());
   const auto t0 = std::chrono::steady_clock::now();
-  std::vector<nlohmann::json> rows;
+  std::vector<SweepRow> rows;
   try {
     rows = run_cases(spec, o, ranks);
   } catch (const std::exception& e) {  // an interrupt or an I/O failure outside a case: stop every rank
@@ -42,14 +42,13 @@ int sweep_main(const std::string& file, const SweepOptions& opts) {
     run.ranks = ranks.size;
     run.threads_per_rank = omp_get_max_threads();
     run.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const nlohmann::json s = summary_document(spec, rows, run, o.software_version);
+    const SweepSummary s = summary_document(spec, std::move(rows), run, o.software_version);
     write_summary(s, o.out_dir, o.pdf, o.quiet);
-    const auto& c = s["counts"];
+    const int cases = static_cast<int>(s.cases.size());
     if (!o.quiet)
-      std::printf("%d of %d cases pass; %d could not run; %d reused; %.1f s (%.1f cases per hour)\n", c["passed"].get<int>(),
-                  c["cases"].get<int>(), c["failed_runs"].get<int>(), c["reused"].get<int>(), run.wall_seconds,
-                  s["cases_per_hour"].get<double>());
-    rc = c["passed"] == c["cases"] ? 0 : 1;
+      std::printf("%d of %d cases pass; %d could not run; %d reused; %.1f s (%.1f cases per hour)\n", s.passed, cases, s.failed_runs, s.reused,
+                  run.wall_seconds, s.cases_per_hour);
+    rc = s.passed == cases ? 0 : 1;
   }
   stop_ranks(ranks);
   return rc;
