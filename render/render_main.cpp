@@ -197,11 +197,12 @@ std::optional<design::Check> plotted_check(const RunData& run) {
 
 }  // namespace
 
-json render_runs(const std::vector<RunData>& runs, const design::DesignDocument& design_doc, const std::string& image_dir, const RenderOptions& o,
-                 PictureHelper* helper) {
+Manifest render_runs(const std::vector<RunData>& runs, const design::DesignDocument& design_doc, const std::string& image_dir,
+                     const RenderOptions& o, PictureHelper* helper) {
   fs::create_directories(image_dir);
   const design::Limits& limits = design_doc.limits;
-  json manifest = json::array();
+  Manifest manifest;
+  manifest.quantity = o.quantity;
   const auto t0 = std::chrono::steady_clock::now();
   const bool assist = o.helper_of > 0, shared = assist || (helper && helper->active());
   const fs::path claims = assist ? fs::path(o.claims) : shared ? fs::path(helper->claims()) : fs::path();
@@ -223,14 +224,9 @@ json render_runs(const std::vector<RunData>& runs, const design::DesignDocument&
   std::vector<std::string> rendered;  // shared: told when the helper has ended
   auto add = [&](const std::string& file, const std::string& kind, const std::string& variant, const std::string& caption, int w, int h,
                  const FieldImage* f) {
-    json e{{"file", file}, {"kind", kind}, {"variant", variant}, {"caption", caption}, {"width", w}, {"height", h}};
-    if (f) {
-      e["particles_range_Pa"] = {f->particles.lo, f->particles.hi};
-      e["members_range_Pa"] = {f->members.lo, f->members.hi};
-      e["deform_scale"] = f->deform_scale;
-      e["quantity"] = o.quantity;
-    }
-    manifest.push_back(e);
+    Picture p{file, kind, variant, caption, w, h, std::nullopt, std::nullopt};
+    if (f) p.field = Picture::Field{f->particles.lo, f->particles.hi, f->members.lo, f->members.hi, f->deform_scale, o.quantity};
+    manifest.images.push_back(p);
     if (shared) rendered.push_back((fs::path(image_dir) / file).string());
     else if (!o.quiet) std::printf("rendered %s\n", (fs::path(image_dir) / file).string().c_str());
   };
@@ -384,7 +380,7 @@ json render_runs(const std::vector<RunData>& runs, const design::DesignDocument&
     spec.draw = mine();
     render_chart(spec, (fs::path(image_dir) / name).string());
     add(name, "chart", "", caption, spec.width, spec.height, nullptr);
-    manifest.back()["vector_file"] = fs::path(spec.svg_path).filename().string();
+    manifest.images.back().vector_file = fs::path(spec.svg_path).filename().string();
   };
   // Charts: every run overlaid (the bare run dashed).
   auto overlay = [&](const std::string& file, const std::string& title, const std::string& ylabel, auto&& series_of, double scale,
@@ -481,7 +477,7 @@ json render_runs(const std::vector<RunData>& runs, const design::DesignDocument&
       if (!e.curves.empty()) draw(e, "chart_envelope.png", e.title);
     }
   }
-  if (assist) return json{{"images", manifest}};  // the second process: the pictures only
+  if (assist) return manifest;  // the second process: the pictures only
   const bool helped = shared && helper->wait();
   stop_helper.h = nullptr;
   if (shared && !helped) {  // it failed: draw everything here (after removing what a picture it cut short left)
@@ -492,14 +488,14 @@ json render_runs(const std::vector<RunData>& runs, const design::DesignDocument&
   }
   for (const std::string& r : rendered)
     if (!o.quiet) std::printf("rendered %s\n", r.c_str());
-  for (const auto& e : manifest)
-    for (const char* k : {"file", "vector_file"})
-      if (e.contains(k) && !fs::exists(fs::path(image_dir) / e[k].get<std::string>()))
-        throw std::runtime_error((fs::path(image_dir) / e[k].get<std::string>()).string() + ": the picture was not written");
-  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  json out{{"images", manifest}, {"quantity", o.quantity}, {"render_seconds", secs}, {"processes", helped ? 2 : 1}};
-  std::ofstream(fs::path(image_dir) / "images.json") << out.dump(1) << "\n";
-  return out;
+  for (const Picture& p : manifest.images)
+    for (const std::optional<std::string>& f : {std::optional<std::string>(p.file), p.vector_file})
+      if (f && !fs::exists(fs::path(image_dir) / *f))
+        throw std::runtime_error((fs::path(image_dir) / *f).string() + ": the picture was not written");
+  manifest.render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  manifest.processes = helped ? 2 : 1;
+  std::ofstream(fs::path(image_dir) / "images.json") << to_json(manifest).dump(1) << "\n";
+  return manifest;
 }
 
 std::vector<RunData> pictured_runs(const std::vector<RunData>& runs) {
@@ -515,7 +511,7 @@ json render_main(const std::string& out_dir, const RenderOptions& o) {
   const std::vector<RunData> runs = pictured_runs(load_runs(out_dir, design_doc));
   std::error_code ec;
   const fs::path d = fs::is_directory(out_dir, ec) ? fs::path(out_dir) : fs::path(out_dir).parent_path();
-  return render_runs(runs, design_doc, (d / "images").string(), o, &helper);
+  return to_json(render_runs(runs, design_doc, (d / "images").string(), o, &helper));
 }
 
 }  // namespace dmi::render

@@ -14,6 +14,7 @@
 #include "design/members.hpp"
 #include "engine/io/results.hpp"
 #include "render/charts.hpp"
+#include "render/manifest.hpp"
 
 namespace dmi::render {
 
@@ -57,7 +58,7 @@ nlohmann::json render_main(const std::string& out_dir, const RenderOptions& o);
 // With an active helper, each picture is drawn by the process that claims it first (an exclusive file in the helper's
 // claims folder), so the helper takes pictures as soon as it is ready; render_runs waits for it (and draws every
 // picture itself if it failed; on an error of its own it stops the helper first).
-nlohmann::json render_runs(const std::vector<RunData>& runs, const design::DesignDocument& design_doc, const std::string& image_dir,
-                           const RenderOptions& o, PictureHelper* helper = nullptr);
+Manifest render_runs(const std::vector<RunData>& runs, const design::DesignDocument& design_doc, const std::string& image_dir,
+                     const RenderOptions& o, PictureHelper* helper = nullptr);
 
 }  // namespace dmi::render

@@ -209,12 +209,13 @@ ReportFiles report_main(const std::string& out_dir, const ReportOptions& o) {
   if (o.pdf) pdf.emplace((d / "report.pdf").string(), (d / "report.html").string());
   const fs::path images = d / "images";
   auto t0 = clock::now();
-  json manifest;
+  Manifest manifest;
   try {
     manifest = render_runs(pictured_runs(runs), design_doc, images.string(), RenderOptions{o.quantity, o.quiet, 1, 0, ""}, &helper);
   } catch (const std::exception& e) {  // no pictures is not a reason to have no report
     std::fprintf(stderr, "damimpact: warning: pictures not rendered (%s); the report has no figures\n", e.what());
-    manifest = json{{"images", json::array()}, {"error", e.what()}};
+    manifest = Manifest{};
+    manifest.error = e.what();
   }
   files.render_seconds = std::chrono::duration<double>(clock::now() - t0).count();
   t0 = clock::now();

@@ -30,7 +30,7 @@ struct ReportFiles {
 ReportFiles report_main(const std::string& out_dir, const ReportOptions& o);
 
 // The template's data (a JSON object mirrored into Mustache data).
-nlohmann::json report_data(const std::vector<RunData>& runs, const design::DesignDocument& design_doc, const nlohmann::json& manifest,
+nlohmann::json report_data(const std::vector<RunData>& runs, const design::DesignDocument& design_doc, const Manifest& manifest,
                            const std::string& image_dir, const std::string& software_version);
 
 // Mustache rendering of the compiled-in template with `data` (CSS inserted as "css").

@@ -438,7 +438,7 @@ json model_rows(const std::vector<RunData>& runs) {
 
 }  // namespace
 
-json report_data(const std::vector<RunData>& runs, const design::DesignDocument& design_doc, const json& manifest, const std::string& image_dir,
+json report_data(const std::vector<RunData>& runs, const design::DesignDocument& design_doc, const Manifest& manifest, const std::string& image_dir,
                  const std::string& software_version) {
   const RunData& first = runs.front();
   json d;
@@ -525,19 +525,19 @@ json report_data(const std::vector<RunData>& runs, const design::DesignDocument&
   json figs = json::array();
   int n = 1;
   for (const char* kind : {"field_comparison", "field_solid", "field_governing", "chart", "field_sequence"})
-    for (const auto& img : manifest.value("images", json::array())) {
-      if (img["kind"] != kind) continue;
+    for (const Picture& img : manifest.images) {
+      if (img.kind != kind) continue;
       // Charts as vector graphics where the renderer wrote them (sharp lines and text in the PDF), else the PNG.
-      const bool vector = img.contains("vector_file") && fs::exists(fs::path(image_dir) / img["vector_file"].get<std::string>());
-      std::ifstream in(fs::path(image_dir) / img[vector ? "vector_file" : "file"].get<std::string>(), std::ios::binary);
+      const bool vector = img.vector_file && fs::exists(fs::path(image_dir) / *img.vector_file);
+      std::ifstream in(fs::path(image_dir) / (vector ? *img.vector_file : img.file), std::ios::binary);
       std::stringstream ss;
       ss << in.rdbuf();
-      std::string caption = img["caption"];
-      if (img.contains("deform_scale") && img["deform_scale"].get<double>() > 0) caption += fmt("; members' centre line deformed × %g", img["deform_scale"].get<double>());
-      figs.push_back({{"n", std::to_string(n++)}, {"kind", img["kind"]}, {"caption", caption}, {"src", std::string(vector ? "data:image/svg+xml;base64," : "data:image/png;base64,") + base64(ss.str())}});
+      std::string caption = img.caption;
+      if (img.field && img.field->deform_scale > 0) caption += fmt("; members' centre line deformed × %g", img.field->deform_scale);
+      figs.push_back({{"n", std::to_string(n++)}, {"kind", img.kind}, {"caption", caption}, {"src", std::string(vector ? "data:image/svg+xml;base64," : "data:image/png;base64,") + base64(ss.str())}});
     }
   d["figures"] = figs;
-  d["no_figures_reason"] = manifest.value("error", std::string("the runs have no snapshots or members"));
+  d["no_figures_reason"] = manifest.error.value_or("the runs have no snapshots or members");
   estimates_data(runs, design_doc, space, d);
   health_data(runs, d);
   d["limit_rows"] = limit_rows(design_doc);
