@@ -28,6 +28,11 @@ enum class MemberContactMode { stick, separable, friction };
 enum class DecayKind { sharp, linear, cosine };
 enum class DistanceKind { node, material };
 
+// The members' steel under load reversals: bilinear with linear kinematic hardening (a sharp yield, reversed yielding
+// at a stress change of 2 f_y), or Menegotto & Pinto's (1973) smooth curve with Filippou, Popov & Bertero's (1983)
+// curvature that falls with the plastic excursion (the Bauschinger effect: a reversal yields gradually, well before 2 f_y).
+enum class SteelCurve { bilinear, menegotto_pinto };
+
 struct MaterialConfig {
   std::string name, model;
   double density = 0.0;                              // kg/m^3
@@ -46,6 +51,8 @@ struct MaterialConfig {
   double regularisation_alpha = 1.9;                      // - (mu_i: Barker & Gray 2017; 0 = none)
   double yield_strength = 0.0;                            // Pa (elastic_plastic: members' steel)
   double hardening_ratio = 0.01;                          // - (elastic_plastic: post-yield modulus / E)
+  SteelCurve steel_curve = SteelCurve::bilinear;          // elastic_plastic members' steel under reversals
+  double transition_r0 = 20, transition_a1 = 18.5, transition_a2 = 0.15;  // - (menegotto_pinto: R0, a1, a2)
 };
 
 }  // namespace dmi

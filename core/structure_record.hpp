@@ -21,6 +21,7 @@ struct ElementRecord {
   SectionRecord section;
   double youngs_modulus_Pa = 0, poisson_ratio = 0, density_kg_m3 = 0;
   double yield_strength_Pa = 0, hardening_ratio = 0;  // elasto-plastic when yield_strength_Pa > 0
+  std::string steel_curve;                            // "menegotto_pinto", or "" for the bilinear steel
   std::array<double, 3> e2{0, 0, 0};                  // space frames: the section's depth axis (global)
 };
 

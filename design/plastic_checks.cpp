@@ -174,6 +174,9 @@ std::optional<PlasticRecord> plastic_part(const Results& r, const FrameInfo& f, 
   if (!s || s->components.size() != 3 * f.elements.size() || s->samples() != r.time.size() || r.time.empty())
     throw std::runtime_error(where + ": frame/plastic is missing or malformed although the structure has elasto-plastic members");
   PlasticRecord out;
+  if (r.info.structure && std::any_of(r.info.structure->elements.begin(), r.info.structure->elements.end(),
+                                      [](const ElementRecord& e) { return e.steel_curve == "menegotto_pinto"; }))
+    out.member_model += " (Menegotto-Pinto steel)";
   for (std::size_t k = 0; k < f.members.size(); ++k) {
     const FrameInfo::Member& m = f.members[k];
     if (!m.plastic) continue;

@@ -78,6 +78,7 @@ ElementRecord element_from(const json& e, int dim, std::size_t nodes) {
   el.section = section_from(e.at("section"));
   el.youngs_modulus_Pa = e.at("youngs_modulus_Pa"), el.poisson_ratio = e.value("poisson_ratio", 0.0), el.density_kg_m3 = e.value("density_kg_m3", 0.0);
   el.yield_strength_Pa = e.value("yield_strength_Pa", 0.0), el.hardening_ratio = e.value("hardening_ratio", 0.0);
+  el.steel_curve = e.value("steel_curve", std::string());
   if (dim == 3) el.e2 = {e.at("e2").at(0).get<double>(), e.at("e2").at(1).get<double>(), e.at("e2").at(2).get<double>()};
   if (el.i < 0 || el.j < 0 || el.i >= int(nodes) || el.j >= int(nodes)) throw std::out_of_range("element node index");
   if (!(el.s0 >= 0 && el.s0 < el.s1 && el.s1 <= 1)) throw std::out_of_range("element span s0, s1 outside 0 <= s0 < s1 <= 1");
@@ -94,6 +95,7 @@ json structure_to_json(const StructureRecord& s) {
     if (e.yield_strength_Pa > 0) {
       elements.back()["yield_strength_Pa"] = e.yield_strength_Pa;
       elements.back()["hardening_ratio"] = e.hardening_ratio;
+      if (!e.steel_curve.empty()) elements.back()["steel_curve"] = e.steel_curve;
     }
     if (s.dimension == 3) elements.back()["e2"] = e.e2;
   }

@@ -112,6 +112,23 @@ void read_member_steel(Obj& o, MaterialConfig& m) {
   o.number("hardening_ratio", m.hardening_ratio,
            Spec{.doc = "post-yield modulus over E (linear kinematic hardening); the default 0.01 is the E/100 strain-hardening slope "
                        "of EN 1993-1-5 Annex C.6(2); 0 = perfectly plastic", .min = 0, .max = 0.5});
+  o.choice<SteelCurve>("steel_curve", m.steel_curve, {{"bilinear", SteelCurve::bilinear}, {"menegotto_pinto", SteelCurve::menegotto_pinto}},
+                       Spec{.doc = "the steel under load reversals: bilinear (the default: a sharp yield, reversed yielding after a stress "
+                                   "change of 2 f_y) or menegotto_pinto (Menegotto & Pinto 1973 with Filippou, Popov & Bertero 1983: a smooth "
+                                   "knee whose curvature falls with each plastic excursion, so a reversal yields gradually, the Bauschinger "
+                                   "effect of structural steel; it changes the rebound and the residual drift, little the first peak)"});
+  o.number("transition_r0", m.transition_r0,
+           Spec{.doc = "menegotto_pinto: R0, the sharpness of the first knee (20 for mild steel, Filippou et al. 1983; larger is "
+                       "sharper, towards the bilinear curve)", .min = 2, .max = 100});
+  o.number("transition_a1", m.transition_a1,
+           Spec{.doc = "menegotto_pinto: a1 in R = R0 - a1 xi / (a2 + xi), how much the knee softens with the plastic excursion xi "
+                       "(18.5, Filippou et al. 1983)", .min = 0, .max = 100});
+  o.number("transition_a2", m.transition_a2,
+           Spec{.doc = "menegotto_pinto: a2 in R = R0 - a1 xi / (a2 + xi) (0.15, Filippou et al. 1983)", .min = 1e-3, .max = 10});
+  if (!o.documenting() && m.transition_a1 >= m.transition_r0) {
+    const nlohmann::json v = m.transition_a1;
+    o.fail("transition_a1", &v, "less than transition_r0 (R = R0 - a1 xi / (a2 + xi) must stay above 0 at large excursions)");
+  }
 }
 
 // Bingham fluids: yield stress and its regularisation.

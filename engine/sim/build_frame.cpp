@@ -130,7 +130,8 @@ template <int D> typename FrameTypes<D>::Model build_model(const Scenario& s) {
       e.release_j = k + 1 == mc.elements && mc.release_end;
       e.member = static_cast<int>(fm.members.size());
       if (mat.model == "elastic_plastic") {
-        e.steel = SteelLaw{mat.youngs_modulus, mat.yield_strength, mat.hardening_ratio};
+        e.steel = SteelLaw{mat.youngs_modulus, mat.yield_strength, mat.hardening_ratio, mat.steel_curve, mat.transition_r0, mat.transition_a1,
+                           mat.transition_a2};
         e.integration_points = st.integration_points;
       }
       if constexpr (D == 3)
@@ -216,6 +217,7 @@ template <class F> StructureRecord structure_record(const Scenario& s, const F& 
     el.section = section_record(c);
     el.youngs_modulus_Pa = e.E, el.poisson_ratio = e.nu, el.density_kg_m3 = e.rho;
     if (e.steel.fy > 0) el.yield_strength_Pa = e.steel.fy, el.hardening_ratio = e.steel.hardening;
+    if (e.steel.fy > 0 && e.steel.curve == SteelCurve::menegotto_pinto) el.steel_curve = "menegotto_pinto";
     if constexpr (space) {
       const Eigen::Matrix3d a = frame.axes(static_cast<int>(k));
       el.e2 = {a(1, 0), a(1, 1), a(1, 2)};

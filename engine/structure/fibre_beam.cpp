@@ -9,6 +9,11 @@
 
 namespace dmi {
 
+namespace {
+// A plastic strain the member is said to have yielded at, as a fraction of the yield strain (Menegotto-Pinto).
+constexpr double kMeasurablePlasticStrain = 1e-3;
+}  // namespace
+
 std::vector<LobattoPoint> gauss_lobatto(int n) {
   // On [-1, 1]: n = 3: 0, +-1 (4/3, 1/3); n = 4: +-1/sqrt5 (5/6), +-1 (1/6); n = 5: 0 (32/45), +-sqrt(3/7) (49/90), +-1 (1/10).
   std::vector<std::pair<double, double>> r;
@@ -48,6 +53,10 @@ FibreBeam<NP>::FibreBeam(const Section& section, double s0, double s1, double L,
   }
   if constexpr (NP == 2) F(5, 5) = 1 / torsion_;
   k_elastic_ = F.inverse();
+  // Elastic below the yield strain (bilinear); Menegotto-Pinto's curve departs from E eps by (1 - b) a^R0 / R0 at
+  // eps = a eps_y on its first branch: below 1e-9 of the stress while a < (1e-9 R0 / (1 - b))^(1/R0) (0.41 for R0 20).
+  linear_strain_ = law_.curve == SteelCurve::bilinear ? law_.yield_strain()
+                                                      : law_.yield_strain() * std::pow(1e-9 * law_.r0 / (1 - law_.hardening), 1 / law_.r0);
   // Yield forces and deformations of the first section: the scales of the state determination's tolerance.
   const double A = ks_elastic_[0](0, 0) / law_.E, eps_y = law_.yield_strain();
   s_yield_(0) = law_.fy * A;
@@ -82,10 +91,11 @@ template <int NP> void FibreBeam<NP>::section(int g, const SecV& e, SecV& s, Sec
     SecV a;
     a(0) = 1;
     for (int c = 0; c < NP; ++c) a(1 + c) = -fibres_[f].c[c];
-    const FibreResponse r = steel_response(law_, history_[f], a.dot(e));
-    s += r.sigma * fibres_[f].area * a;
-    ks += r.tangent * fibres_[f].area * a * a.transpose();
-    if (h) (*h)[f] = r.history;
+    FibreHistory scratch;
+    double tangent = 0;
+    const double sigma = steel_stress(law_, history_[f], a.dot(e), tangent, h ? (*h)[f] : scratch);
+    s += sigma * fibres_[f].area * a;
+    ks += tangent * fibres_[f].area * a * a.transpose();
   }
   // A section yielded through (perfect plasticity, every fibre) keeps 1e-9 of its elastic stiffness in its tangent:
   // the flexibility stays finite.
@@ -93,14 +103,13 @@ template <int NP> void FibreBeam<NP>::section(int g, const SecV& e, SecV& s, Sec
 }
 
 template <int NP> bool FibreBeam<NP>::elastic_at(const VecV& v, Trial& t) const {
-  if (record_.yielded) return false;
+  if (record_.yielded || left_linear_) return false;
   t.q.noalias() = k_elastic_ * v;
   t.k = k_elastic_;
   t.e.resize(points_.size());
-  const double eps_y = law_.yield_strain();
   for (std::size_t g = 0; g < points_.size(); ++g) {
     t.e[g] = fs_elastic_[g] * (force_matrix(points_[g].xi) * t.q);
-    if (surface_strain(points_[g], t.e[g]) > eps_y) return false;
+    if (surface_strain(points_[g], t.e[g]) > linear_strain_) return false;
   }
   return true;
 }
@@ -174,6 +183,7 @@ template <int NP> void FibreBeam<NP>::respond(const VecV& v, VecV& q, MatV* k) c
 template <int NP> void FibreBeam<NP>::commit(const VecV& v) {
   Trial t = has_last_ && v == last_v_ ? std::move(last_) : state_at(v);
   has_last_ = false;
+  if (law_.curve != SteelCurve::bilinear && !t.history.empty()) left_linear_ = true;
   for (std::size_t g = 0; g < points_.size(); ++g) record_.peak_strain = std::max(record_.peak_strain, surface_strain(points_[g], t.e[g]));
   double energy = 0;
   if (t.history.empty()) {
@@ -186,7 +196,9 @@ template <int NP> void FibreBeam<NP>::commit(const VecV& v) {
         for (int c = 0; c < NP; ++c) eps -= fibres_[f].c[c] * t.e[&p - points_.data()](1 + c);
         const double sigma = law_.E * (eps - t.history[f].eps_p);
         if (deps_p != 0) {
-          record_.yielded = true;
+          // Menegotto-Pinto's knee is smooth: the member has yielded once a fibre's plastic strain is measurable.
+          if (law_.curve == SteelCurve::bilinear || accumulated_[f] + std::abs(deps_p) > kMeasurablePlasticStrain * law_.yield_strain())
+            record_.yielded = true;
           record_.plastic_work += sigma * deps_p * fibres_[f].area * p.weight;
           accumulated_[f] += std::abs(deps_p);
           record_.peak_plastic_strain = std::max(record_.peak_plastic_strain, accumulated_[f]);
@@ -201,14 +213,14 @@ template <int NP> void FibreBeam<NP>::commit(const VecV& v) {
 }
 
 template <int NP> void FibreBeam<NP>::save_state(StateWriter& w) const {
-  w.put(history_), w.put(accumulated_), w.put(record_), w.put(elastic_energy_), w.put(e_);
+  w.put(history_), w.put(accumulated_), w.put(record_), w.put(elastic_energy_), w.put(e_), w.put(left_linear_);
   for (int c = 0; c < NV; ++c) w.put(q_(c)), w.put(v_(c));
 }
 
 template <int NP> void FibreBeam<NP>::load_state(StateReader& r) {
   const std::size_t n = fibres_.size();
   has_last_ = false;
-  r.get(history_), r.get(accumulated_), r.get(record_), r.get(elastic_energy_), r.get(e_);
+  r.get(history_), r.get(accumulated_), r.get(record_), r.get(elastic_energy_), r.get(e_), r.get(left_linear_);
   for (int c = 0; c < NV; ++c) r.get(q_(c)), r.get(v_(c));
   r.expect_size("element sections", e_.size(), points_.size());
   r.expect_size("element fibres", history_.size(), n);

@@ -109,6 +109,8 @@ template <int NP> class FibreBeam {
   mutable Trial last_;
   mutable VecV last_v_;
   mutable bool has_last_ = false;
+  bool left_linear_ = false;  // Menegotto-Pinto: a state beyond linear_strain_ was committed (its fibres keep a history)
+  double linear_strain_ = 0;  // the surface strain below which the element is taken as elastic (a sharp law: eps_y)
 };
 
 extern template class FibreBeam<1>;

@@ -42,7 +42,7 @@ void FrameSystem::assemble() {
     elements_.emplace_back(el, c.L0, model_.theory);
     fibres_.beams.emplace_back();
     if (el.steel.fy > 0) {
-      fibres_.beams.back().emplace(el.section, el.s0, el.s1, c.L0, SteelLaw{el.E, el.steel.fy, el.steel.hardening}, el.integration_points);
+      fibres_.beams.back().emplace(el.section, el.s0, el.s1, c.L0, with_modulus(el.steel, el.E), el.integration_points);
       fibres_.any = true;
     }
     const BeamElement& be = elements_.back();

@@ -47,7 +47,7 @@ void SpaceFrameSystem::assemble() {
     fibres_.beams.emplace_back();
     if (el.steel.fy > 0) {
       const double torsion = elements_.back().stiffness()(5, 5);
-      fibres_.beams.back().emplace(el.section, el.s0, el.s1, c.L0, SteelLaw{el.E, el.steel.fy, el.steel.hardening}, el.integration_points, torsion);
+      fibres_.beams.back().emplace(el.section, el.s0, el.s1, c.L0, with_modulus(el.steel, el.E), el.integration_points, torsion);
       fibres_.any = true;
     }
     const SpaceBeamElement& be = elements_.back();

@@ -86,6 +86,16 @@ TEST(Restart, NewmarkFrameWithContactIsBitIdentical) {
   expect_bit_identical_restart(dmi::example_scenario("sdof_boulder_on_column.json"), "newmark", 1009, 1);
 }
 
+// A steel column that yields under the boulder, its fibres following Menegotto-Pinto: stopped while it yields, the
+// restart carries every fibre's branch (reversal point, asymptote, curvature) and repeats the run exactly.
+TEST(Restart, MenegottoPintoFibresAreBitIdentical) {
+  const nlohmann::json steel = {{"name", "concrete"}, {"model", "elastic_plastic"}, {"density", 7850}, {"youngs_modulus", 2e11},
+                                {"poisson_ratio", 0.3}, {"yield_strength", 1e8}, {"steel_curve", "menegotto_pinto"}};
+  const dmi::Scenario s = dmi::example_scenario("sdof_boulder_on_column.json", {{"/materials/1", steel}, {"/structure/members/0/section/width", 0.05},
+                                                                                {"/analysis/end_time", 0.016}});
+  expect_bit_identical_restart(s, "menegotto_pinto", 2501, 1);
+}
+
 // The same with the explicit frame (eqs. 27-29), stopped between sorts, restarted on 2 threads.
 TEST(Restart, ExplicitFrameIsBitIdentical) {
   const dmi::Scenario s = dmi::example_scenario("sdof_boulder_on_column.json", {{"/structure/integrator", "explicit"},
