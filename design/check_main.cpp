@@ -64,9 +64,7 @@ void run_summary(std::ostringstream& o, const RunDesign& r) {
   }
   if (r.contact.present && r.contact.peak_N > 0) {
     const Contact& c = r.contact;
-    double m2 = 0;
-    for (double v : c.impulse_N_s) m2 += v * v;
-    o << "  contact: peak " << eng(c.peak_N, "N") << " at " << eng(c.peak_time_s, "s") << ", impulse " << eng(std::sqrt(m2), "N s") << ", pulse "
+    o << "  contact: peak " << eng(c.peak_N, "N") << " at " << eng(c.peak_time_s, "s") << ", impulse " << eng(c.impulse_magnitude(), "N s") << ", pulse "
       << eng(c.pulse_end_s - c.pulse_start_s, "s") << "\n";
   }
   for (const Estimate& e : r.estimates) {

@@ -31,12 +31,7 @@ double member_max(const RunDesign& run, Extreme Station::*peak, double sign) {
 }
 
 double contact_peak(const RunDesign& r) { return r.contact.present ? r.contact.peak_N : NAN; }
-double contact_impulse(const RunDesign& r) {
-  if (!r.contact.present) return NAN;
-  double m2 = 0;
-  for (double v : r.contact.impulse_N_s) m2 += v * v;
-  return std::sqrt(m2);
-}
+double contact_impulse(const RunDesign& r) { return r.contact.present ? r.contact.impulse_magnitude() : NAN; }
 double level_utilisation(const RunDesign& r, const char* level) {
   const auto l = r.verdict.levels.find(level);
   return l == r.verdict.levels.end() ? NAN : l->second.max_utilisation();
@@ -53,8 +48,8 @@ PlaneAndSpace::Pair plane_and_space(const RunDesign& plane, const RunDesign& spa
   struct Q { const char* id; const char* title; const char* unit; std::function<double(const RunDesign&)> get; };
   auto level = [](const char* l) { return [l](const RunDesign& r) { return level_utilisation(r, l); }; };
   const std::vector<Q> qs = {
-      {"base_shear", "peak base shear", "N", [](const RunDesign& r) { return r.base_abs_max(shear_key(r.dim())); }},
-      {"base_moment", "peak base moment", "N m", [](const RunDesign& r) { return r.base_abs_max(moment_key(r.dim())); }},
+      {"base_shear", "peak base shear", "N", [](const RunDesign& r) { return r.base_abs_max(shear_key(r.dim())).value_or(NAN); }},
+      {"base_moment", "peak base moment", "N m", [](const RunDesign& r) { return r.base_abs_max(moment_key(r.dim())).value_or(NAN); }},
       {"contact_force", "peak contact force", "N", contact_peak},
       {"contact_impulse", "contact impulse", "N s", contact_impulse},
       {"serviceability", "governing utilisation, serviceability", "-", level("serviceability")},
@@ -94,9 +89,9 @@ BufferComparison compare_runs(const RunDesign& with, const RunDesign& without) {
   };
   auto peak = [](Extreme Station::*q, double sign) { return [q, sign](const RunDesign& r) { return member_max(r, q, sign); }; };
   const std::vector<Q> qs = {
-      {"base_shear", "peak base shear (plane |sum Fx|, space |(sum Fx, sum Fy)|)", "N", [](const RunDesign& r) { return r.base_abs_max(shear_key(r.dim())); }},
+      {"base_shear", "peak base shear (plane |sum Fx|, space |(sum Fx, sum Fy)|)", "N", [](const RunDesign& r) { return r.base_abs_max(shear_key(r.dim())).value_or(NAN); }},
       {"base_moment", "peak base moment (plane |sum M|, space the overturning |(Mx, My)|)", "N m",
-       [](const RunDesign& r) { return r.base_abs_max(moment_key(r.dim())); }},
+       [](const RunDesign& r) { return r.base_abs_max(moment_key(r.dim())).value_or(NAN); }},
       {"contact_force", "peak contact force", "N", contact_peak},
       {"contact_impulse", "contact impulse", "N s", contact_impulse},
       {"contact_duration", "contact pulse duration", "s",

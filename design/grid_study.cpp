@@ -45,13 +45,6 @@ double finite(double v, const std::string& what, const std::string& folder) {
 // A governing number of a run, none where the run has no such quantity.
 using Reading = std::function<std::optional<double>(const RunDesign&)>;
 
-std::optional<double> base_peak(const RunDesign& r, const char* key) {
-  if (!r.base_total) return std::nullopt;
-  for (const ReactionComponent& c : r.base_total->peaks.components)
-    if (c.key == key && c.abs.set) return c.abs.value;
-  return std::nullopt;
-}
-
 GridQuantity quantity(const std::string& variant, const std::string& id, const std::string& title, const std::string& unit,
                       const std::array<double, 3>& h, const std::array<double, 3>& f) {
   const GridConvergence c = grid_convergence(h, f);
@@ -96,9 +89,9 @@ GridStudyRecord grid_study_section(const std::array<DesignDocument, 3>& designs,
     };
     add("contact_force", "peak contact force", "N", [](const RunDesign& r) { return r.contact.present ? std::optional<double>(r.contact.peak_N) : std::nullopt; });
     add("base_shear", dim == 3 ? "peak base shear |(sum Fx, sum Fy)|" : "peak base shear |sum Fx|", "N",
-        [dim](const RunDesign& r) { return base_peak(r, shear_key(dim)); });
+        [dim](const RunDesign& r) { return r.base_abs_max(shear_key(dim)); });
     add("base_moment", dim == 3 ? "peak overturning moment |(sum Mx, sum My)|" : "peak base moment |sum M|", "N m",
-        [dim](const RunDesign& r) { return base_peak(r, moment_key(dim)); });
+        [dim](const RunDesign& r) { return r.base_abs_max(moment_key(dim)); });
     add("face_resultant", "face pressure resultant at its largest moment about the foot", "N", face(&FaceProfileAtMoment::resultant_N));
     add("face_height", "height of that resultant above the foot", "m", face(&FaceProfileAtMoment::height_m));
     add("debris_peak", "debris load: peak over the surge's passage", "N", debris([](const DebrisPhases& p) { return std::optional<double>(p.peak_N); }));

@@ -1,5 +1,6 @@
 // Support reactions and the contact load on the members, from the stored histories of results.h5.
 #pragma once
+#include <cmath>
 #include <array>
 #include <string>
 #include <vector>
@@ -57,6 +58,11 @@ struct Contact {
   // exceed the magnitude of the vector impulse when the force turns).
   double pulse_start_s = 0, pulse_end_s = 0, pulse_impulse_N_s = 0;
   double loaded_time_s = 0;  // total time with |F| >= 5 % of the peak
+  double impulse_magnitude() const {  // |sum F_i dt| (N s)
+    double m2 = 0;
+    for (double v : impulse_N_s) m2 += v * v;
+    return std::sqrt(m2);
+  }
 };
 
 Contact contact(const Results& r);

@@ -12,11 +12,11 @@ using nlohmann::json;
 using record::field;
 using record::text;
 
-double RunDesign::base_abs_max(const std::string& key) const {
-  if (!base_total) return NAN;
+std::optional<double> RunDesign::base_abs_max(const std::string& key) const {
+  if (!base_total) return std::nullopt;
   for (const ReactionComponent& c : base_total->peaks.components)
-    if (c.key == key) return c.abs.set ? c.abs.value : NAN;
-  return NAN;
+    if (c.key == key && c.abs.set) return c.abs.value;
+  return std::nullopt;
 }
 
 json to_json(const RunDesign& r) {

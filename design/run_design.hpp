@@ -46,8 +46,8 @@ struct RunDesign {
   std::vector<SensorPeak> sensors;
 
   int dim() const { return dimension.value_or(2); }
-  // The base total's component `key` (shear_key, moment_key) at its largest magnitude; NaN without a base total.
-  double base_abs_max(const std::string& key) const;
+  // The base total's component `key` (shear_key, moment_key) at its largest magnitude; none without a base total.
+  std::optional<double> base_abs_max(const std::string& key) const;
   // Where errors name this run: "design.json run <results_file>".
   std::string where() const { return "design.json run " + results_file; }
 };

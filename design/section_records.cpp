@@ -47,10 +47,8 @@ json to_json(const BaseTotal& b) {
 
 json to_json(const Contact& c) {
   if (!c.present) return nullptr;
-  double m2 = 0;
-  for (double v : c.impulse_N_s) m2 += v * v;
   return json{{"peak_force_N", c.peak_N}, {"peak_time_s", c.peak_time_s >= 0 ? json(c.peak_time_s) : json(nullptr)},
-              {"impulse_N_s", c.impulse_N_s}, {"impulse_magnitude_N_s", std::sqrt(m2)},
+              {"impulse_N_s", c.impulse_N_s}, {"impulse_magnitude_N_s", c.impulse_magnitude()},
               {"pulse", {{"start_s", c.pulse_start_s}, {"end_s", c.pulse_end_s}, {"duration_s", c.pulse_end_s - c.pulse_start_s},
                          {"impulse_N_s", c.pulse_impulse_N_s}}},
               {"loaded_time_s", c.loaded_time_s}, {"threshold", kPulseThreshold}};

@@ -32,8 +32,6 @@ std::string read_text(const fs::path& p) {
   return in ? ss.str() : std::string();
 }
 
-std::optional<double> finite_or_none(double v) { return std::isnan(v) ? std::nullopt : std::optional<double>(v); }
-
 // The design's figures for the summary: per variant, the largest utilisation and the peaks engineers size with.
 void fill_from_design(SweepRow& row, const design::DesignDocument& design) {
   const design::Verdict& v = design.verdict;
@@ -46,8 +44,8 @@ void fill_from_design(SweepRow& row, const design::DesignDocument& design) {
     const design::Verdict& rv = r.verdict;
     row.variants[r.variant.empty() ? "run" : r.variant] = {
         rv.governing ? std::optional<double>(rv.governing->utilisation) : std::nullopt, rv.passed,
-        r.contact.present ? std::optional<double>(r.contact.peak_N) : std::nullopt, finite_or_none(r.base_abs_max(design::shear_key(r.dim()))),
-        finite_or_none(r.base_abs_max(design::moment_key(r.dim())))};
+        r.contact.present ? std::optional<double>(r.contact.peak_N) : std::nullopt, r.base_abs_max(design::shear_key(r.dim())),
+        r.base_abs_max(design::moment_key(r.dim()))};
   }
 }
 
