@@ -47,16 +47,10 @@ std::optional<DampingShareRecord> damping_from_json(const json& j, const std::st
 }
 
 std::vector<VolumeHealthRecord> volume_health_from_json(const json& j, const std::string& w) {
-  std::vector<VolumeHealthRecord> out;
-  if (j.is_null()) return out;
-  if (!j.is_array()) throw std::runtime_error(w + " is not an array");
-  for (std::size_t k = 0; k < j.size(); ++k) {
-    const std::string at = w + "[" + std::to_string(k) + "]";
-    if (!j[k].is_object() || !j[k].contains("probe") || !j[k]["probe"].is_string()) throw std::runtime_error(at + ".probe is not a string");
-    out.push_back({j[k]["probe"], number(j[k], "final_ratio", at), number(j[k], "largest_ratio", at), number(j[k], "largest_time_s", at),
-                   number(j[k], "flag_above", at), flag(j[k], "flagged", at)});
-  }
-  return out;
+  return record::items<VolumeHealthRecord>(j, w, [](const json& v, const std::string& at) {
+    return VolumeHealthRecord{record::text(v, "probe", at), number(v, "final_ratio", at), number(v, "largest_ratio", at),
+                              number(v, "largest_time_s", at), number(v, "flag_above", at), flag(v, "flagged", at)};
+  });
 }
 
 }  // namespace dmi::design

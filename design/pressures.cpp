@@ -87,15 +87,9 @@ std::optional<FaceProfileAtMoment> face_profile_from_json(const json& j, const s
 }
 
 std::vector<SensorPeak> sensors_from_json(const json& j, const std::string& w) {
-  std::vector<SensorPeak> out;
-  if (j.is_null()) return out;
-  if (!j.is_array()) throw std::runtime_error(w + " is not an array");
-  for (std::size_t k = 0; k < j.size(); ++k) {
-    const std::string at = w + "[" + std::to_string(k) + "]";
-    if (!j[k].is_object() || !j[k].contains("name") || !j[k]["name"].is_string()) throw std::runtime_error(at + ".name is not a string");
-    out.push_back({j[k]["name"], number(j[k], "peak_pressure_Pa", at), number(j[k], "peak_time_s", at), number(j[k], "mean_pressure_Pa", at)});
-  }
-  return out;
+  return record::items<SensorPeak>(j, w, [](const json& s, const std::string& at) {
+    return SensorPeak{record::text(s, "name", at), number(s, "peak_pressure_Pa", at), number(s, "peak_time_s", at), number(s, "mean_pressure_Pa", at)};
+  });
 }
 
 }  // namespace dmi::design

@@ -69,4 +69,13 @@ inline std::vector<double> numbers(const json& j, const char* key, const std::st
   return out;
 }
 
+// A list read item by item, reader(item, "<where>[k]"); null reads as none.
+template <class T, class Reader> std::vector<T> items(const json& j, const std::string& where, Reader&& reader) {
+  std::vector<T> out;
+  if (j.is_null()) return out;
+  if (!j.is_array()) throw std::runtime_error(where + " is not an array");
+  for (std::size_t k = 0; k < j.size(); ++k) out.push_back(reader(j[k], where + "[" + std::to_string(k) + "]"));
+  return out;
+}
+
 }  // namespace dmi::design::record

@@ -66,8 +66,7 @@ RunDesign run_design_from_json(const json& j, const std::string& where) {
   }
   r.reference = j.contains("reference") && record::flag(j, "reference", where);
   r.members = members_from_json(j, where);
-  const json& supports = record::list(j, "supports", where);
-  for (std::size_t k = 0; k < supports.size(); ++k) r.supports.push_back(reaction_from_json(supports[k], where + ".supports[" + std::to_string(k) + "]"));
+  r.supports = record::items<ReactionPeaks>(record::list(j, "supports", where), where + ".supports", reaction_from_json);
   r.base_total = base_total_from_json(field(j, "base_total", where), where + ".base_total");
   r.contact = contact_from_json(field(j, "contact", where), where + ".contact");
   r.solid = solid_design_from_json(field(j, "solid", where), where + ".solid");
