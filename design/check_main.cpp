@@ -197,10 +197,11 @@ std::vector<std::string> resolve(const std::string& p) {
 
 void write_design_json(const std::string& path, const DesignDocument& doc) {
   const fs::path target = path, tmp = path + "." + std::to_string(::getpid()) + ".tmp";
+  const std::string text = to_json(doc).dump(1) + "\n";  // before the file exists: a failure leaves nothing behind
   {
     std::ofstream o(tmp);
     if (!o) throw InputError(target.string() + ": cannot write design.json here");
-    o << to_json(doc).dump(1) << "\n";
+    o << text;
     o.flush();
     if (!o) {
       std::error_code ec;

@@ -69,6 +69,7 @@ std::vector<RunData> load_runs(const std::string& out_dir, design::DesignDocumen
     }
   }
   std::vector<design::RunDesign> entries;
+  std::vector<bool> from_file;
   for (auto& r : runs) {
     const design::RunDesign* found = nullptr;
     if (written)
@@ -80,10 +81,12 @@ std::vector<RunData> load_runs(const std::string& out_dir, design::DesignDocumen
       throw InputError(e.what());
     }
     entries.push_back(r.design);
+    from_file.push_back(found != nullptr);
   }
-  // Which run is the bare reference of a comparison: design_document's pairing (by variant and folder).
+  // Which run is the bare reference of a comparison: as design.json says, else design_document's pairing.
   design::DesignDocument paired = design::design_document(std::move(entries), design::Limits{}, "");
-  for (std::size_t i = 0; i < runs.size(); ++i) runs[i].design.reference = paired.runs[i].reference;
+  for (std::size_t i = 0; i < runs.size(); ++i)
+    if (!from_file[i]) runs[i].design.reference = paired.runs[i].reference;
   design_doc = written ? std::move(*written) : std::move(paired);
   return runs;
 }

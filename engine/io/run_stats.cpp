@@ -55,7 +55,7 @@ bool ends(const std::string& s, const std::string& p) { return s.size() >= p.siz
 std::size_t period_index(const std::string& name) {
   if (!starts(name, kPeriod)) return 0;
   const std::string k = name.substr(std::string(kPeriod).size());
-  if (k.empty() || k.find_first_not_of("0123456789") != std::string::npos || k[0] == '0') return 0;
+  if (k.empty() || k.size() > 6 || k.find_first_not_of("0123456789") != std::string::npos || k[0] == '0') return 0;
   return std::stoul(k);
 }
 

@@ -125,7 +125,7 @@ void read_member_steel(Obj& o, MaterialConfig& m) {
                        "(18.5, Filippou et al. 1983)", .min = 0, .max = 100});
   o.number("transition_a2", m.transition_a2,
            Spec{.doc = "menegotto_pinto: a2 in R = R0 - a1 xi / (a2 + xi) (0.15, Filippou et al. 1983)", .min = 1e-3, .max = 10});
-  if (!o.documenting() && m.transition_a1 >= m.transition_r0) {
+  if (!o.documenting() && m.steel_curve == SteelCurve::menegotto_pinto && m.transition_a1 >= m.transition_r0) {
     const nlohmann::json v = m.transition_a1;
     o.fail("transition_a1", &v, "less than transition_r0 (R = R0 - a1 xi / (a2 + xi) must stay above 0 at large excursions)");
   }

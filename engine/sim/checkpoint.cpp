@@ -14,7 +14,7 @@ namespace dmi {
 namespace {
 // The last character is the layout's version: raised whenever what a checkpoint holds, or its scenario fingerprint,
 // changes, so that an older checkpoint is refused as such.
-constexpr char kMagic[8] = {'D', 'M', 'I', 'C', 'K', 'P', 'T', 'B'};
+constexpr char kMagic[8] = {'D', 'M', 'I', 'C', 'K', 'P', 'T', 'C'};
 }
 
 std::uint64_t fnv1a(const std::string& bytes, std::uint64_t h) {

@@ -10,8 +10,8 @@
 namespace dmi {
 
 namespace {
-// A plastic strain the member is said to have yielded at, as a fraction of the yield strain (Menegotto-Pinto).
-constexpr double kMeasurablePlasticStrain = 1e-3;
+// The plastic strain a Menegotto-Pinto member is said to have yielded at, as a fraction of the yield strain.
+constexpr double kYieldedPlasticStrain = 0.1;
 }  // namespace
 
 std::vector<LobattoPoint> gauss_lobatto(int n) {
@@ -38,6 +38,7 @@ FibreBeam<NP>::FibreBeam(const Section& section, double s0, double s1, double L,
     fibres_.insert(fibres_.end(), f.begin(), f.end());
   }
   history_.assign(fibres_.size(), FibreHistory{});
+  if (law_.curve == SteelCurve::menegotto_pinto) curve_.assign(fibres_.size(), CurveState{});
   accumulated_.assign(fibres_.size(), 0.0);
   e_.assign(points_.size(), SecV::Zero());
   q_.setZero(), v_.setZero();
@@ -83,19 +84,37 @@ template <int NP> double FibreBeam<NP>::surface_strain(const Point& p, const Sec
   }
 }
 
-template <int NP> void FibreBeam<NP>::section(int g, const SecV& e, SecV& s, SecM& ks, std::vector<FibreHistory>* h) const {
+template <int NP> void FibreBeam<NP>::section(int g, const SecV& e, SecV& s, SecM& ks, Trial* t) const {
   const Point& p = points_[g];
   s.setZero();
   ks.setZero();
-  for (int f = p.first; f < p.first + p.count; ++f) {
+  const auto add = [&](int f, const SecV& a, double sigma, double tangent) {
+    s += sigma * fibres_[f].area * a;
+    ks += tangent * fibres_[f].area * a * a.transpose();
+  };
+  const auto direction = [&](int f) {  // d eps / d (eps_0, kappa_1 .. kappa_NP) of fibre f
     SecV a;
     a(0) = 1;
     for (int c = 0; c < NP; ++c) a(1 + c) = -fibres_[f].c[c];
-    FibreHistory scratch;
-    double tangent = 0;
-    const double sigma = steel_stress(law_, history_[f], a.dot(e), tangent, h ? (*h)[f] : scratch);
-    s += sigma * fibres_[f].area * a;
-    ks += tangent * fibres_[f].area * a * a.transpose();
+    return a;
+  };
+  if (law_.curve == SteelCurve::menegotto_pinto) {
+    for (int f = p.first; f < p.first + p.count; ++f) {
+      const SecV a = direction(f);
+      const double eps = a.dot(e);
+      CurveState scratch;
+      double tangent = 0;
+      const double sigma = menegotto_pinto_stress(law_, curve_[f], eps, tangent, t ? t->curve[f] : scratch);
+      if (t) t->history[f].eps_p = eps - sigma / law_.E;
+      add(f, a, sigma, tangent);
+    }
+  } else {
+    for (int f = p.first; f < p.first + p.count; ++f) {
+      const SecV a = direction(f);
+      const FibreResponse r = bilinear_response(law_, history_[f], a.dot(e));
+      if (t) t->history[f] = r.history;
+      add(f, a, r.sigma, r.tangent);
+    }
   }
   // A section yielded through (perfect plasticity, every fibre) keeps 1e-9 of its elastic stiffness in its tangent:
   // the flexibility stays finite.
@@ -125,6 +144,7 @@ template <int NP> typename FibreBeam<NP>::Trial FibreBeam<NP>::state_at(const Ve
     t.q = q_;
     t.e = e_;
     t.history = history_;
+    t.curve = curve_;
     bool ok = true;
     for (int j = 1; j <= k && ok; ++j) ok = iterate(v_ + (v - v_) * (double(j) / k), t, damped);
     if (ok) return t;
@@ -147,7 +167,7 @@ template <int NP> bool FibreBeam<NP>::iterate(const VecV& v, Trial& t, bool damp
     for (int g = 0; g < n; ++g) {
       SecV s;
       SecM ks;
-      section(g, t.e[g], s, ks, &t.history);
+      section(g, t.e[g], s, ks, &t);
       fs[g] = ks.inverse();
       const BMat b = force_matrix(points_[g].xi);
       ds[g] = b * t.q - s;
@@ -196,8 +216,9 @@ template <int NP> void FibreBeam<NP>::commit(const VecV& v) {
         for (int c = 0; c < NP; ++c) eps -= fibres_[f].c[c] * t.e[&p - points_.data()](1 + c);
         const double sigma = law_.E * (eps - t.history[f].eps_p);
         if (deps_p != 0) {
-          // Menegotto-Pinto's knee is smooth: the member has yielded once a fibre's plastic strain is measurable.
-          if (law_.curve == SteelCurve::bilinear || accumulated_[f] + std::abs(deps_p) > kMeasurablePlasticStrain * law_.yield_strain())
+          // Menegotto-Pinto's knee is smooth: the member has yielded once a fibre's plastic strain reaches a tenth of
+          // the yield strain (on the first branch at 1.1 eps_y, the stress then within 1 % of f_y).
+          if (law_.curve == SteelCurve::bilinear || std::abs(t.history[f].eps_p) >= kYieldedPlasticStrain * law_.yield_strain())
             record_.yielded = true;
           record_.plastic_work += sigma * deps_p * fibres_[f].area * p.weight;
           accumulated_[f] += std::abs(deps_p);
@@ -207,23 +228,25 @@ template <int NP> void FibreBeam<NP>::commit(const VecV& v) {
       }
     if constexpr (NP == 2) energy += 0.5 * t.q(5) * v(5);
     history_ = std::move(t.history);
+    curve_ = std::move(t.curve);
   }
   q_ = t.q, v_ = v, e_ = std::move(t.e);
   elastic_energy_ = energy;
 }
 
 template <int NP> void FibreBeam<NP>::save_state(StateWriter& w) const {
-  w.put(history_), w.put(accumulated_), w.put(record_), w.put(elastic_energy_), w.put(e_), w.put(left_linear_);
+  w.put(history_), w.put(curve_), w.put(accumulated_), w.put(record_), w.put(elastic_energy_), w.put(e_), w.put(left_linear_);
   for (int c = 0; c < NV; ++c) w.put(q_(c)), w.put(v_(c));
 }
 
 template <int NP> void FibreBeam<NP>::load_state(StateReader& r) {
   const std::size_t n = fibres_.size();
   has_last_ = false;
-  r.get(history_), r.get(accumulated_), r.get(record_), r.get(elastic_energy_), r.get(e_), r.get(left_linear_);
+  r.get(history_), r.get(curve_), r.get(accumulated_), r.get(record_), r.get(elastic_energy_), r.get(e_), r.get(left_linear_);
   for (int c = 0; c < NV; ++c) r.get(q_(c)), r.get(v_(c));
   r.expect_size("element sections", e_.size(), points_.size());
   r.expect_size("element fibres", history_.size(), n);
+  r.expect_size("element fibres", curve_.size(), law_.curve == SteelCurve::menegotto_pinto ? n : 0);
   r.expect_size("element fibres", accumulated_.size(), n);
 }
 

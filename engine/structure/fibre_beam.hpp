@@ -80,11 +80,12 @@ template <int NP> class FibreBeam {
     MatV k;
     std::vector<SecV> e;
     std::vector<FibreHistory> history;
+    std::vector<CurveState> curve;  // Menegotto-Pinto
   };
   BMat force_matrix(double xi) const;  // b(xi): s = b q
   double surface_strain(const Point& p, const SecV& e) const;
-  // s(e) and its tangent at point p from the committed histories (fibre histories after the increment in h).
-  void section(int g, const SecV& e, SecV& s, SecM& ks, std::vector<FibreHistory>* h) const;
+  // s(e) and its tangent at point p from the committed histories (the fibres' histories after the increment in t).
+  void section(int g, const SecV& e, SecV& s, SecM& ks, Trial* t) const;
   bool elastic_at(const VecV& v, Trial& t) const;  // virgin and every surface within its elastic range
   Trial state_at(const VecV& v) const;
   // Element state determination from t (damped: halved steps where the unbalance stops falling); false: not converged.
@@ -95,6 +96,7 @@ template <int NP> class FibreBeam {
   std::vector<Point> points_;
   std::vector<Fibre> fibres_;
   std::vector<FibreHistory> history_;  // committed, one per fibre
+  std::vector<CurveState> curve_;      // committed, one per fibre (Menegotto-Pinto; empty for the bilinear law)
   std::vector<double> accumulated_;    // accumulated plastic strain, one per fibre
   VecV q_, v_;                         // committed basic forces and deformations
   std::vector<SecV> e_;                // committed section deformations, one per point

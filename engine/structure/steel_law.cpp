@@ -6,25 +6,25 @@ namespace dmi {
 
 namespace {
 
-// The intersection of the elastic line from the reversal (eps_r, sigma_r) with the asymptote of direction d:
-// sigma = d f_y + b E (eps - d eps_y).
-void intersection(const SteelLaw& law, double d, FibreHistory& h) {
-  const double b = law.hardening, E = law.E, ey = law.yield_strain();
-  h.eps_0 = (d * law.fy - b * E * d * ey - h.sigma_r + E * h.eps_r) / (E - b * E);
-  h.sigma_0 = d * law.fy + b * E * (h.eps_0 - d * ey);
+// A new branch from the reversal point (eps_r, sigma_r) towards the asymptote of direction d: its strain span to the
+// intersection, s_e = (d f_y (1 - b) + b E eps_r - sigma_r) / (E (1 - b)).
+double span_to_asymptote(const SteelLaw& law, double d, double eps_r, double sigma_r) {
+  const double b = law.hardening, E = law.E;
+  return (d * law.fy * (1 - b) + b * E * eps_r - sigma_r) / (E * (1 - b));
 }
 
-// The branch's R = R0 - a1 xi / (a2 + xi) from the plastic excursion xi of the extreme strain it heads for.
-void curvature(const SteelLaw& law, FibreHistory& h) {
+// The branch's R = R0 - a1 xi / (a2 + xi), xi the plastic excursion |eps_m - eps_0| / eps_y of the extreme strain it
+// heads for.
+void curvature(const SteelLaw& law, CurveState& h) {
   const double eps_m = h.direction > 0 ? h.eps_max : h.eps_min;
-  const double xi = std::abs(eps_m - h.eps_0) / law.yield_strain();
+  const double xi = std::abs(eps_m - (h.eps_r + h.span)) / law.yield_strain();
   h.R = law.r0 - law.a1 * xi / (law.a2 + xi);
   h.linear_below = std::pow(1e-17, 1 / h.R), h.asymptote_above = std::pow(1e17, 1 / h.R);
 }
 
 }  // namespace
 
-double menegotto_pinto_stress(const SteelLaw& law, const FibreHistory& c, double eps, double& tangent, FibreHistory& h) {
+double menegotto_pinto_stress(const SteelLaw& law, const CurveState& c, double eps, double& tangent, CurveState& h) {
   h = c;
   const double ey = law.yield_strain(), deps = eps - h.eps;
   if (h.direction == 0) {  // virgin: the first branch from the origin towards the asymptote it heads for
@@ -32,19 +32,22 @@ double menegotto_pinto_stress(const SteelLaw& law, const FibreHistory& c, double
     h.direction = deps > 0 ? 1 : -1;
     h.eps_max = ey, h.eps_min = -ey;
     h.eps_r = h.sigma_r = 0;
-    h.eps_0 = h.direction * ey, h.sigma_0 = h.direction * law.fy;
+    h.span = h.direction * ey;
     curvature(law, h);
   } else if (deps * h.direction < 0) {  // a reversal at the committed point: a new branch
-    h.eps_r = h.eps, h.sigma_r = h.sigma;
-    if (h.direction > 0) h.eps_max = std::max(h.eps_max, h.eps);
-    else h.eps_min = std::min(h.eps_min, h.eps);
-    h.direction = -h.direction;
-    intersection(law, h.direction, h);
-    curvature(law, h);
+    const double span = span_to_asymptote(law, -h.direction, h.eps, h.sigma);
+    // A point already on the asymptote it would head for (a reversal of a reversal by round-off) stays on its branch.
+    if (-h.direction * span > 1e-9 * ey) {
+      h.eps_r = h.eps, h.sigma_r = h.sigma;
+      if (h.direction > 0) h.eps_max = std::max(h.eps_max, h.eps);
+      else h.eps_min = std::min(h.eps_min, h.eps);
+      h.direction = -h.direction;
+      h.span = span;
+      curvature(law, h);
+    }
   }
   const double R = h.R, b = law.hardening;
-  const double scale_e = h.eps_0 - h.eps_r, scale_s = h.sigma_0 - h.sigma_r;
-  const double es = (eps - h.eps_r) / scale_e, a = std::abs(es);
+  const double es = (eps - h.eps_r) / h.span, a = std::abs(es), scale_s = law.E * h.span;
   // g = (1 + a^R)^(1/R) and t = (1 + a^R)^-(1 + 1/R), past the knee through q = a^-R (a^R overflows for a sharp knee).
   double g = 1, t = 1;
   if (a < h.linear_below) {
@@ -59,9 +62,8 @@ double menegotto_pinto_stress(const SteelLaw& law, const FibreHistory& c, double
     g = a * u, t = q / a / ((1 + q) * u);
   }
   const double sigma = h.sigma_r + scale_s * (b * es + (1 - b) * es / g);
-  tangent = scale_s / scale_e * (b + (1 - b) * t);
+  tangent = law.E * (b + (1 - b) * t);
   h.eps = eps, h.sigma = sigma;
-  h.eps_p = eps - sigma / law.E;
   return sigma;
 }
 

@@ -17,7 +17,9 @@
 // xi = |eps_m - eps_0| / eps_y the plastic excursion of the previous branch (eps_m the largest strain reached in the
 // direction the branch heads for). The asymptotes of tension and compression are sigma = +-f_y + b E (eps -+ eps_y);
 // the first branch starts at the origin with (eps_0, sigma_0) = +-(eps_y, f_y). Its plastic strain is taken as
-// eps - sigma / E (what unloading along E would leave), for the plastic work and the elastic energy.
+// eps - sigma / E (what unloading along E would leave), for the plastic work and the elastic energy. The elastic line
+// and the asymptote of a branch meet at eps_0 = eps_r + s_e with s_e = (d f_y (1 - b) + b E eps_r - sigma_r) / (E (1 - b))
+// and sigma_0 = sigma_r + E s_e: s_e is kept as such (eps_0 - eps_r would cancel to nothing far out on an asymptote).
 #pragma once
 #include <cmath>
 
@@ -41,11 +43,14 @@ inline SteelLaw with_modulus(SteelLaw law, double E) {
 
 struct FibreHistory {
   double eps_p = 0, alpha = 0;  // plastic strain, back stress (Pa; bilinear)
-  // menegotto_pinto: the committed strain and stress, the branch's reversal point and asymptote intersection, the
-  // largest strains reached each way, and the direction (0 virgin, +1 loading in tension, -1 in compression).
-  double eps = 0, sigma = 0, eps_r = 0, sigma_r = 0, eps_0 = 0, sigma_0 = 0, eps_max = 0, eps_min = 0;
-  // The branch's curvature R and the normalised strains |eps*| below and above which its curve is its asymptote's to
-  // machine precision ((|eps*|^R below 1e-17 or above 1e17: no power to evaluate there).
+};
+
+// A Menegotto-Pinto fibre's state: the committed strain and stress, the branch's reversal point, its strain span to
+// the asymptote intersection, the largest strains reached each way, and the direction (0 virgin, +1 loading in
+// tension, -1 in compression); the branch's curvature R and the normalised strains |eps*| below and above which its
+// curve is the elastic line or the asymptote to machine precision (|eps*|^R below 1e-17 or above 1e17).
+struct CurveState {
+  double eps = 0, sigma = 0, eps_r = 0, sigma_r = 0, span = 0, eps_max = 0, eps_min = 0;
   double R = 0, linear_below = 0, asymptote_above = 0;
   int direction = 0;
 };
@@ -67,24 +72,20 @@ inline FibreResponse bilinear_response(const SteelLaw& law, const FibreHistory& 
   return r;
 }
 
-// Menegotto-Pinto from the committed history c to strain eps (a reversal starts a new branch at the committed point):
-// the stress, its tangent, and the history after it written whole into `next`.
-double menegotto_pinto_stress(const SteelLaw& law, const FibreHistory& c, double eps, double& tangent, FibreHistory& next);
+inline FibreResponse steel_response(const SteelLaw& law, const FibreHistory& h, double eps) { return bilinear_response(law, h, eps); }
 
-inline FibreResponse steel_response(const SteelLaw& law, const FibreHistory& h, double eps) {
-  if (law.curve == SteelCurve::bilinear) return bilinear_response(law, h, eps);
-  FibreResponse r;
-  r.sigma = menegotto_pinto_stress(law, h, eps, r.tangent, r.history);
+// Menegotto-Pinto from the committed state c to strain eps (a reversal starts a new branch at the committed point):
+// the stress, its tangent, and the state after it written whole into `next`.
+double menegotto_pinto_stress(const SteelLaw& law, const CurveState& c, double eps, double& tangent, CurveState& next);
+
+struct CurveResponse {
+  double sigma = 0, tangent = 0;
+  CurveState state;
+};
+inline CurveResponse menegotto_pinto_response(const SteelLaw& law, const CurveState& c, double eps) {
+  CurveResponse r;
+  r.sigma = menegotto_pinto_stress(law, c, eps, r.tangent, r.state);
   return r;
-}
-
-// The stress at eps from the committed history c and its tangent; `next` receives what the increment changes of the
-// history (the bilinear law's plastic strain and back stress; the whole Menegotto-Pinto history).
-inline double steel_stress(const SteelLaw& law, const FibreHistory& c, double eps, double& tangent, FibreHistory& next) {
-  if (law.curve != SteelCurve::bilinear) return menegotto_pinto_stress(law, c, eps, tangent, next);
-  const FibreResponse r = bilinear_response(law, c, eps);
-  tangent = r.tangent, next.eps_p = r.history.eps_p, next.alpha = r.history.alpha;
-  return r.sigma;
 }
 
 }  // namespace dmi
