@@ -41,12 +41,10 @@ std::optional<BufferComparison> comparison_from_json(const json& j, const std::s
   if (j.is_null()) return std::nullopt;
   BufferComparison c;
   c.note = text(j, "note", where);
-  const json& rows = list(j, "quantities", where);
-  for (std::size_t k = 0; k < rows.size(); ++k) {
-    const std::string at = where + ".quantities[" + std::to_string(k) + "]";
-    c.quantities.push_back({text(rows[k], "id", at), text(rows[k], "title", at), text(rows[k], "unit", at), number(rows[k], "with_buffer", at),
-                            number(rows[k], "without_buffer", at), number_or_none(rows[k], "reduction_percent", at)});
-  }
+  c.quantities = record::items<BufferComparison::Quantity>(list(j, "quantities", where), where + ".quantities", [](const json& q, const std::string& at) {
+    return BufferComparison::Quantity{text(q, "id", at), text(q, "title", at), text(q, "unit", at), number(q, "with_buffer", at),
+                                      number(q, "without_buffer", at), number_or_none(q, "reduction_percent", at)};
+  });
   return c;
 }
 
@@ -54,18 +52,14 @@ std::optional<PlaneAndSpace> plane_and_space_from_json(const json& j, const std:
   if (j.is_null()) return std::nullopt;
   PlaneAndSpace p;
   p.note = text(j, "note", where);
-  const json& pairs = list(j, "pairs", where);
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    const std::string at = where + ".pairs[" + std::to_string(k) + "]";
-    PlaneAndSpace::Pair pair{text(pairs[k], "variant", at), flag_or_none(pairs[k], "plane_passed", at), flag_or_none(pairs[k], "space_passed", at), {}};
-    const json& rows = list(pairs[k], "quantities", at);
-    for (std::size_t n = 0; n < rows.size(); ++n) {
-      const std::string q = at + ".quantities[" + std::to_string(n) + "]";
-      pair.quantities.push_back({text(rows[n], "id", q), text(rows[n], "title", q), text(rows[n], "unit", q), number(rows[n], "plane", q),
-                                 number(rows[n], "space", q), number_or_none(rows[n], "ratio", q)});
-    }
-    p.pairs.push_back(pair);
-  }
+  const auto quantity = [](const json& q, const std::string& at) {
+    return PlaneAndSpace::Quantity{text(q, "id", at), text(q, "title", at), text(q, "unit", at), number(q, "plane", at), number(q, "space", at),
+                                   number_or_none(q, "ratio", at)};
+  };
+  p.pairs = record::items<PlaneAndSpace::Pair>(list(j, "pairs", where), where + ".pairs", [&](const json& pair, const std::string& at) {
+    return PlaneAndSpace::Pair{text(pair, "variant", at), flag_or_none(pair, "plane_passed", at), flag_or_none(pair, "space_passed", at),
+                               record::items<PlaneAndSpace::Quantity>(list(pair, "quantities", at), at + ".quantities", quantity)};
+  });
   return p;
 }
 

@@ -61,7 +61,7 @@ std::optional<GridStudyRecord> grid_study_from_json(const json& j, const std::st
   if (f.size() != 3 || !f[0].is_string() || !f[1].is_string() || !f[2].is_string()) throw std::runtime_error(w + ".folders is not three names");
   g.folders = {f[0].get<std::string>(), f[1].get<std::string>(), f[2].get<std::string>()};
   const json& qs = list(j, "quantities", w);
-  for (std::size_t k = 0; k < qs.size(); ++k) g.quantities.push_back(quantity_from(qs[k], w + ".quantities[" + std::to_string(k) + "]"));
+  g.quantities = record::items<GridQuantity>(qs, w + ".quantities", quantity_from);
   g.not_converged = count(j, "not_converged", w);
   if (j.contains("verdict")) {
     const json& v = j["verdict"];

@@ -106,14 +106,11 @@ std::optional<SolidDesign> solid_design_from_json(const json& j, const std::stri
   if (j.is_null()) return std::nullopt;
   SolidDesign s;
   s.model = solid_model_from_json(field(j, "model", where), where + ".model");
-  const json& cases = list(j, "cases", where);
-  for (std::size_t k = 0; k < cases.size(); ++k) {
-    const json& c = cases[k];
-    const std::string at = where + ".cases[" + std::to_string(k) + "]";
-    s.cases.push_back({text(c, "name", at), text(c, "type", at), number(c, "load_resultant_N", at), number(c, "max_nodal_base_reaction_N", at),
-                       number(c, "max_displacement_m", at), peak_from(c, "von_mises", at), peak_from(c, "max_principal", at),
-                       peak_from(c, "min_principal", at)});
-  }
+  s.cases = record::items<SolidDesignCase>(list(j, "cases", where), where + ".cases", [](const json& c, const std::string& at) {
+    return SolidDesignCase{text(c, "name", at), text(c, "type", at), number(c, "load_resultant_N", at), number(c, "max_nodal_base_reaction_N", at),
+                           number(c, "max_displacement_m", at), peak_from(c, "von_mises", at), peak_from(c, "max_principal", at),
+                           peak_from(c, "min_principal", at)};
+  });
   return s;
 }
 

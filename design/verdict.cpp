@@ -55,10 +55,7 @@ Check check_from_json(const json& j, const std::string& where) {
 }
 
 std::vector<Check> checks_from_json(const json& run, const std::string& where) {
-  const json& items = list(run, "checks", where);
-  std::vector<Check> out;
-  for (std::size_t k = 0; k < items.size(); ++k) out.push_back(check_from_json(items[k], where + ".checks[" + std::to_string(k) + "]"));
-  return out;
+  return record::items<Check>(list(run, "checks", where), where + ".checks", check_from_json);
 }
 
 Verdict run_verdict(const std::vector<Check>& checks, const std::string& judged) {

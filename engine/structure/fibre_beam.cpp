@@ -99,10 +99,10 @@ template <int NP> void FibreBeam<NP>::section(int g, const SecV& e, SecV& s, Sec
     return a;
   };
   if (law_.curve == SteelCurve::menegotto_pinto) {
+    CurveState scratch;  // the state after the increment, when no trial keeps it
     for (int f = p.first; f < p.first + p.count; ++f) {
       const SecV a = direction(f);
       const double eps = a.dot(e);
-      CurveState scratch;
       double tangent = 0;
       const double sigma = menegotto_pinto_stress(law_, curve_[f], eps, tangent, t ? t->curve[f] : scratch);
       if (t) t->history[f].eps_p = eps - sigma / law_.E;

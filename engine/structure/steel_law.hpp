@@ -72,8 +72,6 @@ inline FibreResponse bilinear_response(const SteelLaw& law, const FibreHistory& 
   return r;
 }
 
-inline FibreResponse steel_response(const SteelLaw& law, const FibreHistory& h, double eps) { return bilinear_response(law, h, eps); }
-
 // Menegotto-Pinto from the committed state c to strain eps (a reversal starts a new branch at the committed point):
 // the stress, its tangent, and the state after it written whole into `next`.
 double menegotto_pinto_stress(const SteelLaw& law, const CurveState& c, double eps, double& tangent, CurveState& next);

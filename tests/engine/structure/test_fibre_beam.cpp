@@ -26,17 +26,17 @@ using test::rel;
 TEST(SteelLaw, BilinearKinematicHardeningByHand) {
   const SteelLaw law{200e9, 250e6, 0.02};  // eps_y = 1.25e-3, E_t = 4 GPa, H = 4.0816 GPa
   FibreHistory h;
-  FibreResponse r = steel_response(law, h, 1e-3);
+  FibreResponse r = bilinear_response(law, h, 1e-3);
   EXPECT_DOUBLE_EQ(r.sigma, 200e6);
   EXPECT_DOUBLE_EQ(r.tangent, 200e9);
-  r = steel_response(law, h, 2.5e-3);  // 250 + 4 GPa (2.5e-3 - 1.25e-3) = 255 MPa
+  r = bilinear_response(law, h, 2.5e-3);  // 250 + 4 GPa (2.5e-3 - 1.25e-3) = 255 MPa
   EXPECT_NEAR(r.sigma, 255e6, 1e-3);
   EXPECT_NEAR(r.tangent, 4e9, 1e-3);
   h = r.history;                       // back stress 5 MPa: reversed yield at 255 - 500 = -245 MPa
-  r = steel_response(law, h, 2.5e-3 - 2.45e-3);
+  r = bilinear_response(law, h, 2.5e-3 - 2.45e-3);
   EXPECT_NEAR(r.sigma, 255e6 - 200e9 * 2.45e-3, 1e-3);  // -235 MPa: still elastic
   EXPECT_DOUBLE_EQ(r.tangent, 200e9);
-  r = steel_response(law, h, -0.5e-3);  // reversed yield at -245 MPa reached at eps = 0, then E_t: -245 - 4 GPa 0.5e-3
+  r = bilinear_response(law, h, -0.5e-3);  // reversed yield at -245 MPa reached at eps = 0, then E_t: -245 - 4 GPa 0.5e-3
   EXPECT_NEAR(r.sigma, -247e6, 1e-3);
   EXPECT_NEAR(r.tangent, 4e9, 1e-3);
 }

@@ -29,7 +29,7 @@ struct OneFibre {
       sigma = r.sigma, t = r.tangent;
       if (commit) c = r.state;
     } else {
-      const FibreResponse r = steel_response(law, h, eps);
+      const FibreResponse r = bilinear_response(law, h, eps);
       sigma = r.sigma, t = r.tangent;
       if (commit) h = r.history;
     }
@@ -95,8 +95,8 @@ TEST(SteelCurve, AReversalYieldsGraduallyAsFilippouEtAlWrite) {
   // The Bauschinger effect: far less compression than the bilinear law's -0.96 f_y at the same strain.
   FibreHistory hb;
   const SteelLaw bl{kE, kFy, kB};
-  for (int k = 1; k <= 250; ++k) hb = steel_response(bl, hb, k * 0.02 * ey).history;
-  EXPECT_NEAR(steel_response(bl, hb, 3 * ey).sigma / kFy, -0.96, 1e-9);
+  for (int k = 1; k <= 250; ++k) hb = bilinear_response(bl, hb, k * 0.02 * ey).history;
+  EXPECT_NEAR(bilinear_response(bl, hb, 3 * ey).sigma / kFy, -0.96, 1e-9);
   EXPECT_GT(at3.sigma / kFy, -0.5);
 }
 
